@@ -1,0 +1,64 @@
+/** @file chain_equations.cpp
+ *  Benchmark: the Euler–Lagrange equations of the planar N-link pendulum (point
+ *  masses m1..mN on rods l1..lN, all distinct symbols, absolute angles q1..qN),
+ *  derived from point positions and simplified to canonical trig form, N = 2..12.
+ *  Prints N, the median wall time of the whole derivation (scene text to simplified
+ *  equations), and the size of the result. Usage: chain_equations [max_N] [reps] */
+#include "engine/analysis.h"
+#include "scene/lower.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace {
+
+std::string chain_scene(int links)
+{
+    std::string parameters = "parameters g", coordinates = "coordinates", points, x, y;
+    for (int k = 1; k <= links; ++k) {
+        std::string i = std::to_string(k);
+        parameters += " m" + i + " l" + i;
+        coordinates += " q" + i;
+        x += (k > 1 ? " + " : "") + ("l" + i + "*sin(q" + i + ")");
+        y += " - l" + i + "*cos(q" + i + ")";
+        points += "point P" + i + " mass m" + i + " at (" + x + "," + y + ")\n";
+    }
+    return parameters + "\n" + coordinates + "\n" + points + "gravity g along (0, -1)\nwant equations\n";
+}
+
+std::size_t term_count(const GiNaC::ex& e)
+{
+    GiNaC::ex expanded = e.expand();
+    return GiNaC::is_a<GiNaC::add>(expanded) ? expanded.nops() : 1;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    int max_links = argc > 1 ? std::atoi(argv[1]) : 12;
+    int reps = argc > 2 ? std::atoi(argv[2]) : 7;
+    std::printf("%4s %12s %12s %10s\n", "N", "median_ms", "min_ms", "terms");
+    for (int links = 2; links <= max_links; ++links) {
+        std::string text = chain_scene(links);
+        std::vector<double> times;
+        std::size_t terms = 0;
+        for (int r = 0; r < reps; ++r) {
+            auto start = std::chrono::steady_clock::now();
+            lagrange::model scene = lagrange::load_model(lagrange::source_text("chain.lag", text));
+            lagrange::analysis result = lagrange::analyze(scene);
+            std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+            times.push_back(elapsed.count());
+            terms = 0;
+            for (const GiNaC::ex& e : *result.equations)
+                terms += term_count(e);
+        }
+        std::sort(times.begin(), times.end());
+        std::printf("%4d %12.3f %12.3f %10zu\n", links, times[times.size() / 2], times.front(), terms);
+        std::fflush(stdout);
+    }
+}

@@ -1,0 +1,39 @@
+/** @file lagrangian.h
+ *  The Lagrangian L = T − V from energies, points, gravity and springs, and the
+ *  total time derivative with q, q̇, q̈ as plain symbols. */
+#pragma once
+
+#include "mechanics/simplify.h"
+#include "scene/model.h"
+
+#include <ginac/ginac.h>
+
+namespace lagrange {
+
+/// The simplifier for a scene: canonical trig form in its coordinates, the
+/// embedded rules and the scene's own (`use`), grouping by accelerations and velocities.
+simplifier make_simplifier(const model& scene);
+
+/// d/dt e = ∂e/∂t + Σ (∂e/∂q q̇ + ∂e/∂q̇ q̈).
+GiNaC::ex time_derivative(const GiNaC::ex& e, const model& scene);
+
+struct lagrangian_result {
+    GiNaC::ex kinetic_built;   ///< T as built from points and `T` lines, before simplification
+    GiNaC::ex potential_built; ///< V as built from gravity, springs and `V` lines
+    GiNaC::ex kinetic;         ///< T simplified (the part of L quadratic in the velocities)
+    GiNaC::ex potential;       ///< V simplified (minus the part of L free of velocities)
+    GiNaC::ex gyroscopic;      ///< the part of L linear in the velocities (0 unless `L` says otherwise)
+    GiNaC::ex lagrangian;      ///< L simplified
+    bool split = true;         ///< false if L is not a polynomial of degree ≤ 2 in the velocities
+};
+
+/// Builds T, V and L. Throws scene_error-free computation_error if a spring's
+/// length has no value (coincident fixed ends).
+lagrangian_result derive_lagrangian(const model& scene, const simplifier& simplify);
+
+/// The Euler–Lagrange equations d/dt(∂L/∂q̇) − ∂L/∂q, one per coordinate, each
+/// meaning `expr = 0`, simplified and grouped by accelerations and velocities.
+std::vector<GiNaC::ex> derive_equations(const model& scene, const lagrangian_result& lagrangian,
+                                        const simplifier& simplify);
+
+} // namespace lagrange

@@ -1,0 +1,659 @@
+/** @file rules.cpp
+ *  A pattern matcher for rewrite rules that does not depend on GiNaC's term order:
+ *  sums match any k of their terms, products match their factors in any order, and
+ *  a wildcard factor takes the rest of a product (numeric coefficient included). */
+#include "mechanics/rules.h"
+
+#include <algorithm>
+#include <typeinfo>
+#include <unordered_map>
+#include <utility>
+
+namespace lagrange {
+
+namespace {
+
+using GiNaC::ex;
+using GiNaC::exmap;
+using GiNaC::exvector;
+using GiNaC::numeric;
+
+/// How many elementary match attempts one top-level match may spend: the search over
+/// assignments of pattern terms to target terms is exponential in the worst case.
+constexpr long match_budget = 200000;
+
+/// How many times the rules may fire at one node within one pass.
+constexpr int applications_per_node = 64;
+
+/// State of one top-level match: the remaining budget of attempts.
+struct match_context {
+    long budget = match_budget;
+};
+
+bool is_leaf(const ex& e)
+{
+    return (kind_of(e) == node_kind::symbol) || (kind_of(e) == node_kind::number) ||
+           (kind_of(e) == node_kind::constant);
+}
+
+/// Equality by meaning: structurally equal, or the difference expands to zero.
+bool same_value(const ex& a, const ex& b)
+{
+    if (a.is_equal(b))
+        return true;
+    if (is_leaf(a) && is_leaf(b))
+        return false;
+    return (a - b).expand().is_zero();
+}
+
+/// `e` expanded; a product of factors without sums is returned as it is.
+ex expanded(const ex& e)
+{
+    if (kind_of(e) == node_kind::product) {
+        for (size_t i = 0; i < e.nops(); ++i) {
+            const ex& f = e.op(i);
+            const node_kind kind = kind_of(f);
+            if (kind == node_kind::sum || kind == node_kind::product ||
+                (kind == node_kind::power && kind_of(f.op(0)) == node_kind::sum))
+                return e.expand();
+        }
+        return e;
+    }
+    const node_kind kind = kind_of(e);
+    if (kind == node_kind::symbol || kind == node_kind::number || kind == node_kind::function)
+        return e;
+    return e.expand();
+}
+
+bool has_wildcard(const ex& p)
+{
+    if (kind_of(p) == node_kind::wildcard)
+        return true;
+    for (size_t i = 0; i < p.nops(); ++i)
+        if (has_wildcard(p.op(i)))
+            return true;
+    return false;
+}
+
+/// True if `p` contains a wildcard that `bindings` does not bind.
+bool has_unbound_wildcard(const ex& p, const exmap& bindings)
+{
+    if ((kind_of(p) == node_kind::wildcard))
+        return bindings.find(p) == bindings.end();
+    for (size_t i = 0; i < p.nops(); ++i)
+        if (has_unbound_wildcard(p.op(i), bindings))
+            return true;
+    return false;
+}
+
+/// The terms of a sum (a non-sum is a one-term sum; zero has no terms).
+exvector terms_of(const ex& e)
+{
+    exvector terms;
+    if ((kind_of(e) == node_kind::sum)) {
+        terms.reserve(e.nops());
+        for (size_t i = 0; i < e.nops(); ++i)
+            terms.push_back(e.op(i));
+    } else if (!e.is_zero()) {
+        terms.push_back(e);
+    }
+    return terms;
+}
+
+/// A product split into its numeric coefficient and its other factors.
+struct product_parts {
+    numeric coefficient = 1;
+    exvector factors;
+};
+
+product_parts split_product(const ex& e)
+{
+    product_parts parts;
+    if ((kind_of(e) == node_kind::number)) {
+        parts.coefficient = GiNaC::ex_to<numeric>(e);
+    } else if ((kind_of(e) == node_kind::product)) {
+        for (size_t i = 0; i < e.nops(); ++i) {
+            const ex& f = e.op(i);
+            if ((kind_of(f) == node_kind::number))
+                parts.coefficient *= GiNaC::ex_to<numeric>(f);
+            else
+                parts.factors.push_back(f);
+        }
+    } else {
+        parts.factors.push_back(e);
+    }
+    return parts;
+}
+
+ex product_of(const exvector& factors)
+{
+    if (factors.empty())
+        return 1;
+    if (factors.size() == 1)
+        return factors.front();
+    return GiNaC::dynallocate<GiNaC::mul>(factors);
+}
+
+ex sum_of(const exvector& terms)
+{
+    if (terms.empty())
+        return 0;
+    if (terms.size() == 1)
+        return terms.front();
+    return GiNaC::dynallocate<GiNaC::add>(terms);
+}
+
+bool match_node(const ex& e, const ex& pattern, exmap& bindings, match_context& context);
+
+/// Matcher of a sum pattern against the terms of a target sum. In `partial` mode the
+/// pattern's terms match distinct terms of the target and the others stay; otherwise
+/// every target term must be used, and one unbound bare wildcard term, if the pattern
+/// has one, takes the terms left over.
+class sum_matcher {
+public:
+    sum_matcher(const ex& target, const ex& pattern, bool partial, match_context& context)
+        : targets_(terms_of(target)), patterns_(terms_of(pattern)), partial_(partial),
+          context_(context), target_used_(targets_.size(), false),
+          pattern_done_(patterns_.size(), false)
+    {
+    }
+
+    bool run(exmap& bindings) { return step(bindings); }
+
+    /// Indices of the target terms that the pattern used (valid after a successful run).
+    std::vector<size_t> used_terms() const
+    {
+        std::vector<size_t> used;
+        for (size_t i = 0; i < target_used_.size(); ++i)
+            if (target_used_[i])
+                used.push_back(i);
+        return used;
+    }
+
+private:
+    /// The pattern term to match next: a fully bound one (cheapest), else one with
+    /// structure, else a bare wildcard. Returns patterns_.size() when all are done.
+    size_t next_pattern(const exmap& bindings) const
+    {
+        size_t structured = patterns_.size();
+        size_t bare = patterns_.size();
+        for (size_t j = 0; j < patterns_.size(); ++j) {
+            if (pattern_done_[j])
+                continue;
+            if (!has_unbound_wildcard(patterns_[j], bindings))
+                return j;
+            if ((kind_of(patterns_[j]) == node_kind::wildcard)) {
+                if (bare == patterns_.size())
+                    bare = j;
+            } else if (structured == patterns_.size()) {
+                structured = j;
+            }
+        }
+        return structured != patterns_.size() ? structured : bare;
+    }
+
+    size_t unused_count() const
+    {
+        return static_cast<size_t>(std::count(target_used_.begin(), target_used_.end(), false));
+    }
+
+    /// Finds a target term that is structurally equal to the expanded `part`.
+    bool find_unused(const ex& part, size_t& index)
+    {
+        if (expanded_targets_.empty()) {
+            for (size_t i = 0; i < targets_.size(); ++i) {
+                expanded_targets_.push_back(targets_[i].expand());
+                by_hash_.emplace(expanded_targets_.back().gethash(), i);
+            }
+        }
+        auto range = by_hash_.equal_range(part.gethash());
+        for (auto it = range.first; it != range.second; ++it)
+            if (!target_used_[it->second] && expanded_targets_[it->second].is_equal(part)) {
+                index = it->second;
+                return true;
+            }
+        return false;
+    }
+
+    bool finish(exmap&) const { return partial_ || unused_count() == 0; }
+
+    bool step(exmap& bindings)
+    {
+        const size_t j = next_pattern(bindings);
+        if (j == patterns_.size())
+            return finish(bindings);
+        if (--context_.budget < 0)
+            return false;
+        const ex& p = patterns_[j];
+        pattern_done_[j] = true;
+        bool found = false;
+        if (!has_unbound_wildcard(p, bindings))
+            found = step_bound(p, bindings);
+        else if ((kind_of(p) == node_kind::wildcard) && !partial_ && last_pattern(j))
+            found = step_absorb(p, bindings);
+        else
+            found = step_search(p, bindings);
+        if (!found)
+            pattern_done_[j] = false;
+        return found;
+    }
+
+    bool last_pattern(size_t j) const
+    {
+        for (size_t k = 0; k < patterns_.size(); ++k)
+            if (k != j && !pattern_done_[k])
+                return false;
+        return true;
+    }
+
+    /// A pattern term without unbound wildcards: its value (a sum, possibly) must be
+    /// found term by term among the unused target terms.
+    bool step_bound(const ex& p, exmap& bindings)
+    {
+        const ex value = expanded((kind_of(p) == node_kind::wildcard)
+                                      ? bindings.find(p)->second
+                                      : p.subs(bindings, GiNaC::subs_options::no_pattern));
+        std::vector<size_t> taken;
+        for (const ex& part : terms_of(value)) {
+            size_t index = 0;
+            if (!find_unused(part, index)) {
+                for (size_t t : taken)
+                    target_used_[t] = false;
+                return false;
+            }
+            target_used_[index] = true;
+            taken.push_back(index);
+        }
+        if (step(bindings))
+            return true;
+        for (size_t t : taken)
+            target_used_[t] = false;
+        return false;
+    }
+
+    /// The last pattern term, a bare unbound wildcard, takes all unused target terms.
+    bool step_absorb(const ex& p, exmap& bindings)
+    {
+        exvector rest;
+        for (size_t i = 0; i < targets_.size(); ++i)
+            if (!target_used_[i])
+                rest.push_back(targets_[i]);
+        if (rest.empty())
+            return false;
+        bindings[p] = sum_of(rest);
+        std::fill(target_used_.begin(), target_used_.end(), true);
+        return true;
+    }
+
+    /// A pattern term with unbound wildcards: try it against every unused target term.
+    bool step_search(const ex& p, exmap& bindings)
+    {
+        for (size_t i = 0; i < targets_.size(); ++i) {
+            if (target_used_[i])
+                continue;
+            if (context_.budget < 0)
+                return false;
+            exmap saved = bindings;
+            if (match_node(targets_[i], p, bindings, context_)) {
+                target_used_[i] = true;
+                if (step(bindings))
+                    return true;
+                target_used_[i] = false;
+            }
+            bindings = std::move(saved);
+        }
+        return false;
+    }
+
+    exvector targets_;
+    exvector expanded_targets_;
+    exvector patterns_;
+    bool partial_;
+    match_context& context_;
+    std::vector<bool> target_used_;
+    std::vector<bool> pattern_done_;
+    std::unordered_multimap<unsigned, size_t> by_hash_;
+};
+
+/// Matcher of a product pattern against a target's factors: structured pattern factors
+/// match distinct target factors in any order, then the wildcard factors share what
+/// is left (the last unbound one takes the rest, numeric coefficients included).
+class product_matcher {
+public:
+    product_matcher(const ex& target, const ex& pattern, match_context& context)
+        : target_(split_product(target)), context_(context), target_used_(target_.factors.size(), false)
+    {
+        const product_parts pattern_parts = split_product(pattern);
+        pattern_coefficient_ = pattern_parts.coefficient;
+        for (const ex& f : pattern_parts.factors)
+            ((kind_of(f) == node_kind::wildcard) ? wildcards_ : structured_).push_back(f);
+    }
+
+    bool run(exmap& bindings) { return match_structured(0, bindings); }
+
+private:
+    bool match_structured(size_t j, exmap& bindings)
+    {
+        if (j == structured_.size())
+            return match_wildcards(bindings);
+        for (size_t i = 0; i < target_.factors.size(); ++i) {
+            if (target_used_[i])
+                continue;
+            if (--context_.budget < 0)
+                return false;
+            exmap saved = bindings;
+            if (match_node(target_.factors[i], structured_[j], bindings, context_)) {
+                target_used_[i] = true;
+                if (match_structured(j + 1, bindings))
+                    return true;
+                target_used_[i] = false;
+            }
+            bindings = std::move(saved);
+        }
+        return false;
+    }
+
+    /// Unbound wildcards but the last take single target factors; the last takes the
+    /// remainder; bound wildcards must account for what they are bound to.
+    bool match_wildcards(exmap& bindings)
+    {
+        exvector unbound;
+        for (const ex& w : wildcards_)
+            if (bindings.find(w) == bindings.end() && !contains(unbound, w))
+                unbound.push_back(w);
+        if (unbound.size() > 1) {
+            // The first unbound wildcard takes one factor (which stays in the remainder,
+            // divided out again below as a bound value).
+            const ex w = unbound.front();
+            for (size_t i = 0; i < target_.factors.size(); ++i) {
+                if (target_used_[i] || contains(assigned_, target_.factors[i]))
+                    continue;
+                if (--context_.budget < 0)
+                    return false;
+                exmap saved = bindings;
+                bindings[w] = target_.factors[i];
+                assigned_.push_back(target_.factors[i]);
+                if (match_wildcards(bindings))
+                    return true;
+                assigned_.pop_back();
+                bindings = std::move(saved);
+            }
+            return false;
+        }
+        exvector rest;
+        for (size_t i = 0; i < target_.factors.size(); ++i)
+            if (!target_used_[i])
+                rest.push_back(target_.factors[i]);
+        const numeric coefficient = target_.coefficient / pattern_coefficient_;
+        if (!coefficient.is_equal(numeric(1)))
+            rest.push_back(coefficient);
+        const ex remainder = product_of(rest);
+        ex bound_product = 1;
+        int absorbing_occurrences = 0;
+        for (const ex& w : wildcards_) {
+            if (!unbound.empty() && w.is_equal(unbound.front())) {
+                ++absorbing_occurrences;
+                continue;
+            }
+            bound_product *= bindings.find(w)->second;
+        }
+        if (unbound.empty())
+            return same_value(remainder, bound_product);
+        if (absorbing_occurrences > 1)
+            return false;
+        const ex value = bound_product.is_equal(ex(1)) ? remainder : remainder / bound_product;
+        if (value.is_zero())
+            return false;
+        bindings[unbound.front()] = value;
+        return true;
+    }
+
+    static bool contains(const exvector& v, const ex& x)
+    {
+        return std::any_of(v.begin(), v.end(), [&](const ex& y) { return y.is_equal(x); });
+    }
+
+    product_parts target_;
+    match_context& context_;
+    std::vector<bool> target_used_;
+    numeric pattern_coefficient_ = 1;
+    exvector structured_;
+    exvector wildcards_;
+    exvector assigned_;
+};
+
+bool match_node(const ex& e, const ex& pattern, exmap& bindings, match_context& context)
+{
+    if (--context.budget < 0)
+        return false;
+    if ((kind_of(pattern) == node_kind::wildcard)) {
+        auto it = bindings.find(pattern);
+        if (it != bindings.end())
+            return same_value(it->second, e);
+        bindings[pattern] = e;
+        return true;
+    }
+    if (!has_wildcard(pattern))
+        return same_value(e, pattern);
+    if ((kind_of(pattern) == node_kind::sum)) {
+        if (!(kind_of(e) == node_kind::sum))
+            return false;
+        return sum_matcher(e, pattern, false, context).run(bindings);
+    }
+    if ((kind_of(pattern) == node_kind::product))
+        return product_matcher(e, pattern, context).run(bindings);
+    if ((kind_of(pattern) == node_kind::power)) {
+        if (!(kind_of(e) == node_kind::power))
+            return false;
+        return match_node(e.op(0), pattern.op(0), bindings, context) &&
+               match_node(e.op(1), pattern.op(1), bindings, context);
+    }
+    if ((kind_of(pattern) == node_kind::function)) {
+        if (!(kind_of(e) == node_kind::function) ||
+            GiNaC::ex_to<GiNaC::function>(e).get_serial() !=
+                GiNaC::ex_to<GiNaC::function>(pattern).get_serial() ||
+            e.nops() != pattern.nops())
+            return false;
+        for (size_t i = 0; i < e.nops(); ++i)
+            if (!match_node(e.op(i), pattern.op(i), bindings, context))
+                return false;
+        return true;
+    }
+    // Any other container: same type and size, operands in order.
+    if (typeid(GiNaC::ex_to<GiNaC::basic>(e)) != typeid(GiNaC::ex_to<GiNaC::basic>(pattern)) ||
+        e.nops() != pattern.nops())
+        return false;
+    for (size_t i = 0; i < e.nops(); ++i)
+        if (!match_node(e.op(i), pattern.op(i), bindings, context))
+            return false;
+    return true;
+}
+
+/// A cheap necessary condition for `pattern` to match at the top of `e`.
+bool may_match(const ex& e, const ex& pattern)
+{
+    if ((kind_of(pattern) == node_kind::wildcard) || (kind_of(pattern) == node_kind::product))
+        return true;
+    if ((kind_of(pattern) == node_kind::sum))
+        return (kind_of(e) == node_kind::sum) && e.nops() >= pattern.nops();
+    if ((kind_of(pattern) == node_kind::function))
+        return (kind_of(e) == node_kind::function) &&
+               GiNaC::ex_to<GiNaC::function>(e).get_serial() ==
+                   GiNaC::ex_to<GiNaC::function>(pattern).get_serial();
+    return typeid(GiNaC::ex_to<GiNaC::basic>(e)) == typeid(GiNaC::ex_to<GiNaC::basic>(pattern));
+}
+
+/// Applies `rule` at the top of `e`; returns false if it does not match.
+bool apply_rule(const ex& e, const rewrite_rule& rule, ex& result)
+{
+    if (!may_match(e, rule.pattern))
+        return false;
+    match_context context;
+    exmap bindings;
+    if ((kind_of(rule.pattern) == node_kind::sum) && (kind_of(e) == node_kind::sum)) {
+        sum_matcher matcher(e, rule.pattern, true, context);
+        if (!matcher.run(bindings))
+            return false;
+        std::vector<bool> used(e.nops(), false);
+        for (size_t i : matcher.used_terms())
+            used[i] = true;
+        exvector rest;
+        for (size_t i = 0; i < e.nops(); ++i)
+            if (!used[i])
+                rest.push_back(e.op(i));
+        rest.push_back(rule.replacement.subs(bindings, GiNaC::subs_options::no_pattern));
+        result = sum_of(rest);
+    } else {
+        if (!match_node(e, rule.pattern, bindings, context))
+            return false;
+        result = rule.replacement.subs(bindings, GiNaC::subs_options::no_pattern);
+    }
+    return !result.is_equal(e);
+}
+
+/// Hands out precomputed operands, in order, to GiNaC's map().
+class replace_operands : public GiNaC::map_function {
+public:
+    explicit replace_operands(const exvector& operands) : operands_(operands) {}
+    ex operator()(const ex&) override { return operands_.at(next_++); }
+
+private:
+    const exvector& operands_;
+    size_t next_ = 0;
+};
+
+/// One bottom-up pass of the rules over an expression. GiNaC's map() rebuilds every
+/// sum and product it visits; this rebuilds only what changed.
+class rewrite_pass {
+public:
+    explicit rewrite_pass(const std::vector<rewrite_rule>& rules) : rules_(rules) {}
+
+    ex operator()(const ex& e)
+    {
+        bool node_changed = false;
+        ex x = visit(e, node_changed);
+        changed = changed || node_changed;
+        return x;
+    }
+
+    bool changed = false;
+
+private:
+    ex visit(const ex& e, bool& node_changed)
+    {
+        ex x = e;
+        if (e.nops() > 0 && kind_of(e) != node_kind::number) {
+            exvector operands;
+            operands.reserve(e.nops());
+            bool operands_changed = false;
+            for (size_t i = 0; i < e.nops(); ++i)
+                operands.push_back(visit(e.op(i), operands_changed));
+            if (operands_changed) {
+                node_changed = true;
+                x = rebuild(e, operands);
+            }
+        }
+        for (int applied = 0; applied < applications_per_node; ++applied) {
+            bool fired = false;
+            for (const rewrite_rule& rule : rules_) {
+                ex result;
+                if (apply_rule(x, rule, result)) {
+                    x = result;
+                    fired = true;
+                    node_changed = true;
+                    break;
+                }
+            }
+            if (!fired)
+                break;
+        }
+        return x;
+    }
+
+    static ex rebuild(const ex& e, const exvector& operands)
+    {
+        switch (kind_of(e)) {
+        case node_kind::sum:
+            return sum_of(operands);
+        case node_kind::product:
+            return product_of(operands);
+        case node_kind::power:
+            return GiNaC::pow(operands[0], operands[1]);
+        default: {
+            replace_operands replacer(operands);
+            return e.map(replacer);
+        }
+        }
+    }
+
+    const std::vector<rewrite_rule>& rules_;
+};
+
+} // namespace
+
+node_kind kind_of(const GiNaC::ex& e)
+{
+    // The type_info objects of GiNaC's classes live in libginac, so comparing their
+    // addresses is exact for these classes; anything else takes the slow path.
+    static const std::pair<const std::type_info*, node_kind> known[] = {
+        {&typeid(GiNaC::add), node_kind::sum},
+        {&typeid(GiNaC::mul), node_kind::product},
+        {&typeid(GiNaC::numeric), node_kind::number},
+        {&typeid(GiNaC::power), node_kind::power},
+        {&typeid(GiNaC::function), node_kind::function},
+        {&typeid(GiNaC::realsymbol), node_kind::symbol},
+        {&typeid(GiNaC::possymbol), node_kind::symbol},
+        {&typeid(GiNaC::symbol), node_kind::symbol},
+        {&typeid(GiNaC::wildcard), node_kind::wildcard},
+        {&typeid(GiNaC::constant), node_kind::constant},
+    };
+    const std::type_info* type = &typeid(GiNaC::ex_to<GiNaC::basic>(e));
+    for (const auto& [known_type, kind] : known)
+        if (type == known_type)
+            return kind;
+    if (GiNaC::is_a<GiNaC::add>(e))
+        return node_kind::sum;
+    if (GiNaC::is_a<GiNaC::mul>(e))
+        return node_kind::product;
+    if (GiNaC::is_a<GiNaC::numeric>(e))
+        return node_kind::number;
+    if (GiNaC::is_a<GiNaC::power>(e))
+        return node_kind::power;
+    if (GiNaC::is_a<GiNaC::function>(e))
+        return node_kind::function;
+    if (GiNaC::is_a<GiNaC::symbol>(e))
+        return node_kind::symbol;
+    if (GiNaC::is_a<GiNaC::wildcard>(e))
+        return node_kind::wildcard;
+    if (GiNaC::is_a<GiNaC::constant>(e))
+        return node_kind::constant;
+    return node_kind::other;
+}
+
+bool match(const GiNaC::ex& e, const GiNaC::ex& pattern, GiNaC::exmap& bindings)
+{
+    match_context context;
+    exmap trial = bindings;
+    const bool matched = (kind_of(pattern) == node_kind::sum) && (kind_of(e) == node_kind::sum)
+                             ? sum_matcher(e, pattern, true, context).run(trial)
+                             : match_node(e, pattern, trial, context);
+    if (matched)
+        bindings = std::move(trial);
+    return matched;
+}
+
+GiNaC::ex rewrite(const GiNaC::ex& e, const std::vector<rewrite_rule>& rules, int max_passes)
+{
+    if (rules.empty())
+        return e;
+    ex x = e;
+    for (int pass = 0; pass < max_passes; ++pass) {
+        rewrite_pass rewriter(rules);
+        x = rewriter(x);
+        if (!rewriter.changed)
+            break;
+    }
+    return x;
+}
+
+} // namespace lagrange

@@ -1,0 +1,44 @@
+/** @file rules.h
+ *  Rewrite rules (`LHS -> RHS`, wildcards $0 $1 ...) and the matcher that applies them
+ *  independently of GiNaC's term order. */
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+/// One rule: every match of `pattern` (with GiNaC wildcards) is replaced by `replacement`.
+struct rewrite_rule {
+    GiNaC::ex pattern;
+    GiNaC::ex replacement;
+    std::string origin; ///< "file:line", for messages
+};
+
+/// A rules file compiled into the program (generated from rules/*.rules).
+struct embedded_rule_file {
+    const char* name;
+    const char* text;
+};
+const std::vector<embedded_rule_file>& embedded_rule_files();
+
+/// What an expression is at its top node. GiNaC's is_a<> is a dynamic_cast, and
+/// with libstdc++ every failed one compares type names as strings; the matcher and
+/// the canonical form ask this very often, so they use kind_of instead.
+enum class node_kind { number, symbol, constant, sum, product, power, function, wildcard, other };
+
+node_kind kind_of(const GiNaC::ex& e);
+
+/// Matches `pattern` against `e`, extending `bindings` (wildcard -> expression).
+/// Sums and products match independently of operand order: a sum pattern of k
+/// terms matches k of the terms of a sum, and a product pattern's single
+/// unbound wildcard factor takes whatever the other factors leave.
+bool match(const GiNaC::ex& e, const GiNaC::ex& pattern, GiNaC::exmap& bindings);
+
+/// Applies the rules everywhere in `e`, innermost first, until nothing changes
+/// or `max_passes` passes have run.
+GiNaC::ex rewrite(const GiNaC::ex& e, const std::vector<rewrite_rule>& rules, int max_passes = 16);
+
+} // namespace lagrange

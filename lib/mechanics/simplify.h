@@ -1,0 +1,43 @@
+/** @file simplify.h
+ *  Exact canonical form of trigonometric polynomials in the coordinates, and the
+ *  simplifier that the mechanics stages use (canonical form, then rules, then a
+ *  compact grouping by velocities and accelerations). */
+#pragma once
+
+#include "mechanics/rules.h"
+
+#include <ginac/ginac.h>
+
+#include <vector>
+
+namespace lagrange {
+
+/// Canonical form of `e` as a trigonometric polynomial in `angles`: every sin/cos
+/// whose argument is a linear combination of the angles (rational coefficients,
+/// plus a constant) is written as a sum of c·cos(n·q + ...) and c·sin(n·q) with
+/// integer vectors n whose first nonzero entry is positive, products linearized,
+/// and the result expanded. Two expressions are equal as functions of the angles
+/// iff their canonical forms are equal (given canonical coefficients).
+/// Other subexpressions (sqrt, exp, sin of non-linear arguments) are kept as atoms,
+/// their arguments canonicalized recursively.
+GiNaC::ex trig_canonical(const GiNaC::ex& e, const GiNaC::lst& angles);
+
+/// True if a and b are equal as trigonometric polynomials in `angles`.
+bool trig_equal(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::lst& angles);
+
+/// Writes `e` as a sum over the distinct monomials in `variables` (e.g. the
+/// accelerations and velocities), each coefficient factored: the compact form
+/// (M+m)*l^2*theta_ddot + m*l^2*cos(theta-phi)*phi_ddot + ...
+GiNaC::ex collect_compact(const GiNaC::ex& e, const GiNaC::lst& variables);
+
+/// What the mechanics stages call: canonical trig form in `angles`, then the rules,
+/// then collect_compact over `variables`.
+struct simplifier {
+    GiNaC::lst angles;
+    GiNaC::lst variables;
+    std::vector<rewrite_rule> rules;
+
+    GiNaC::ex operator()(const GiNaC::ex& e) const;
+};
+
+} // namespace lagrange

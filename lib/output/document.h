@@ -1,0 +1,25 @@
+/** @file document.h
+ *  Printers of a whole analysis: text for people, a LaTeX document, JSON.
+ *  They take results and never compute mechanics. */
+#pragma once
+
+#include "engine/analysis.h"
+
+#include <ostream>
+#include <string>
+
+namespace lagrange {
+
+struct document_options {
+    bool timings = false; ///< include each stage's time (`--timings`)
+};
+
+void write_text(std::ostream& out, const analysis& result, const document_options& options = {});
+
+/// A complete LaTeX document (amsmath) that pdflatex compiles.
+void write_latex(std::ostream& out, const analysis& result, const document_options& options = {});
+
+/// One JSON object with the keys of the spec (§4).
+void write_json(std::ostream& out, const analysis& result, const document_options& options = {});
+
+} // namespace lagrange

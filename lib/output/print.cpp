@@ -1,0 +1,1027 @@
+/** @file print.cpp
+ *  Deterministic printers for expressions in plain, text and LaTeX syntax. The
+ *  expression tree is walked here, not by GiNaC's printers, so that the order of
+ *  terms and factors depends on their printed form only. */
+#include "output/print.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+#include <utility>
+
+namespace lagrange {
+
+namespace {
+
+using GiNaC::ex;
+using GiNaC::is_a;
+using GiNaC::numeric;
+
+// ---------------------------------------------------------------------------
+// Names
+
+struct greek_letter {
+    const char* text;
+    const char* latex;
+};
+
+const std::map<std::string, greek_letter>& greek_letters()
+{
+    static const std::map<std::string, greek_letter> letters = {
+        {"alpha", {"α", "\\alpha"}},     {"beta", {"β", "\\beta"}},
+        {"gamma", {"γ", "\\gamma"}},     {"delta", {"δ", "\\delta"}},
+        {"epsilon", {"ε", "\\epsilon"}}, {"varepsilon", {"ϵ", "\\varepsilon"}},
+        {"zeta", {"ζ", "\\zeta"}},       {"eta", {"η", "\\eta"}},
+        {"theta", {"θ", "\\theta"}},     {"vartheta", {"ϑ", "\\vartheta"}},
+        {"iota", {"ι", "\\iota"}},       {"kappa", {"κ", "\\kappa"}},
+        {"lambda", {"λ", "\\lambda"}},   {"mu", {"μ", "\\mu"}},
+        {"nu", {"ν", "\\nu"}},           {"xi", {"ξ", "\\xi"}},
+        {"omicron", {"ο", "o"}},         {"pi", {"π", "\\pi"}},
+        {"varpi", {"ϖ", "\\varpi"}},     {"rho", {"ρ", "\\rho"}},
+        {"varrho", {"ϱ", "\\varrho"}},   {"sigma", {"σ", "\\sigma"}},
+        {"varsigma", {"ς", "\\varsigma"}}, {"tau", {"τ", "\\tau"}},
+        {"upsilon", {"υ", "\\upsilon"}}, {"phi", {"φ", "\\phi"}},
+        {"varphi", {"ϕ", "\\varphi"}},   {"chi", {"χ", "\\chi"}},
+        {"psi", {"ψ", "\\psi"}},         {"omega", {"ω", "\\omega"}},
+        {"Gamma", {"Γ", "\\Gamma"}},     {"Delta", {"Δ", "\\Delta"}},
+        {"Theta", {"Θ", "\\Theta"}},     {"Lambda", {"Λ", "\\Lambda"}},
+        {"Xi", {"Ξ", "\\Xi"}},           {"Pi", {"Π", "\\Pi"}},
+        {"Sigma", {"Σ", "\\Sigma"}},     {"Upsilon", {"Υ", "\\Upsilon"}},
+        {"Phi", {"Φ", "\\Phi"}},         {"Psi", {"Ψ", "\\Psi"}},
+        {"Omega", {"Ω", "\\Omega"}},
+    };
+    return letters;
+}
+
+bool ends_with(const std::string& s, const std::string& suffix)
+{
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+
+/// A name part split into its letters and its trailing digit run: "theta12" -> ("theta", "12").
+std::pair<std::string, std::string> split_trailing_digits(const std::string& part)
+{
+    std::size_t end = part.size();
+    while (end > 0 && is_digit(part[end - 1]))
+        --end;
+    if (end == 0)
+        return {part, ""}; // all digits: a number, not a letter with a subscript
+    return {part.substr(0, end), part.substr(end)};
+}
+
+/// A word as a LaTeX symbol: Greek letter, single letter, or upright multi-letter name.
+std::string latex_word(const std::string& word)
+{
+    auto greek = greek_letters().find(word);
+    if (greek != greek_letters().end())
+        return greek->second.latex;
+    if (word.size() == 1 || std::all_of(word.begin(), word.end(), is_digit))
+        return word;
+    return "\\mathrm{" + word + "}";
+}
+
+/// A word as text: Greek letters in Unicode, anything else unchanged.
+std::string text_word(const std::string& word)
+{
+    auto greek = greek_letters().find(word);
+    return greek != greek_letters().end() ? greek->second.text : word;
+}
+
+/// A subscript part in LaTeX: its own trailing digits become a further subscript.
+std::string latex_part(const std::string& part)
+{
+    auto [letters, digits] = split_trailing_digits(part);
+    std::string out = latex_word(letters);
+    if (!digits.empty())
+        out += "_{" + digits + "}";
+    return out;
+}
+
+/// A name with underscores that do not separate subscripts ("a__b", "a_"), in LaTeX.
+std::string latex_literal(const std::string& name)
+{
+    std::string out = "\\mathrm{";
+    for (char c : name) {
+        if (c == '_')
+            out += "\\_";
+        else
+            out += c;
+    }
+    return out + "}";
+}
+
+// ---------------------------------------------------------------------------
+// Pieces of printed output
+
+/// How tightly a printed piece binds; a piece is parenthesized where its
+/// surroundings need a tighter one.
+enum level : int {
+    relation_level = 0,
+    sum_level = 1,     ///< a sum or a leading minus sign
+    product_level = 2, ///< a product, a quotient, a rational number
+    power_level = 3,
+    atom_level = 4,
+};
+
+/// One printed subexpression: its plain form (also the sort key) and its form in
+/// the requested syntax, each with its binding level.
+struct piece {
+    std::string plain;
+    std::string out;
+    int plain_level = atom_level;
+    int out_level = atom_level;
+    /// LaTeX only: the same as `out` with the function argument in parentheses
+    /// (`\sin\left(\theta\right)` for `\sin\theta`); empty when not applicable.
+    std::string closed;
+};
+
+std::string parenthesize(const std::string& s, syntax syn)
+{
+    if (syn == syntax::latex)
+        return "\\left(" + s + "\\right)";
+    return "(" + s + ")";
+}
+
+/// The piece, parenthesized in each syntax where it binds less tightly than `needed`.
+piece wrap(const piece& p, int needed, syntax syn)
+{
+    piece w = p;
+    if (p.plain_level < needed) {
+        w.plain = "(" + p.plain + ")";
+        w.plain_level = atom_level;
+    }
+    if (p.out_level < needed) {
+        w.out = parenthesize(p.out, syn);
+        w.out_level = atom_level;
+        w.closed.clear();
+    }
+    return w;
+}
+
+piece negated(const piece& p)
+{
+    piece n;
+    n.plain = "-" + p.plain;
+    n.out = "-" + p.out;
+    n.plain_level = sum_level;
+    n.out_level = sum_level;
+    return n;
+}
+
+/// An integer as Unicode superscript: "-20" -> "⁻²⁰".
+std::string superscript(const std::string& integer)
+{
+    static const char* const digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+    std::string out;
+    for (char c : integer)
+        out += c == '-' ? "⁻" : digits[c - '0'];
+    return out;
+}
+
+// ---------------------------------------------------------------------------
+// Numbers
+
+/// The shortest decimal that reads back as the same double, in a form GiNaC's
+/// parser takes as a float: "9.81", "0.01", "2.0", "1e-14", "1.5e20".
+std::string shortest_decimal(double value)
+{
+    char buffer[64];
+    for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+        if (std::strtod(buffer, nullptr) == value)
+            break;
+    }
+    std::string s = buffer;
+    std::string mantissa = s;
+    std::string exponent;
+    std::size_t e = s.find('e');
+    if (e != std::string::npos) {
+        mantissa = s.substr(0, e);
+        std::string digits = s.substr(e + 1);
+        bool negative = !digits.empty() && digits[0] == '-';
+        if (!digits.empty() && (digits[0] == '-' || digits[0] == '+'))
+            digits.erase(0, 1);
+        digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
+        exponent = (negative ? "-" : "") + digits;
+    }
+    if (exponent.empty() && mantissa.find('.') == std::string::npos)
+        mantissa += ".0";
+    return exponent.empty() ? mantissa : mantissa + "e" + exponent;
+}
+
+/// A nonnegative float in each syntax.
+piece float_piece(const numeric& n, syntax syn)
+{
+    double value = n.to_double();
+    std::string plain;
+    if (std::isfinite(value)) {
+        plain = shortest_decimal(value);
+    } else { // beyond the range of a double: CLN's own digits, "1.0E400"
+        std::ostringstream os;
+        os << ex(n);
+        plain = os.str();
+        std::replace(plain.begin(), plain.end(), 'E', 'e');
+    }
+    piece p;
+    p.plain = plain;
+    p.out = plain;
+    std::size_t e = plain.find('e');
+    if (e != std::string::npos) {
+        p.plain_level = product_level;
+        p.out_level = product_level;
+        if (syn == syntax::latex)
+            p.out = plain.substr(0, e) + "\\times10^{" + plain.substr(e + 1) + "}";
+        else if (syn == syntax::text)
+            p.out = plain.substr(0, e) + "×10" + superscript(plain.substr(e + 1));
+    }
+    return p;
+}
+
+/// The integer as decimal digits.
+std::string integer_string(const numeric& n)
+{
+    static const numeric small(1L << 30);
+    if (n < small && -n < small)
+        return std::to_string(n.to_long());
+    std::ostringstream os;
+    os << ex(n);
+    return os.str();
+}
+
+/// A real or complex number in each syntax.
+piece number_piece(const numeric& n, syntax syn)
+{
+    if (!n.is_real()) {
+        const numeric re = n.real();
+        const numeric im = n.imag();
+        piece unit;
+        unit.plain = "I";
+        unit.out = syn == syntax::plain ? "I" : "i";
+        piece imaginary = unit;
+        numeric magnitude = GiNaC::abs(im);
+        if (magnitude != 1) {
+            piece m = wrap(number_piece(magnitude, syn), product_level, syn);
+            imaginary.plain = m.plain + "*I";
+            imaginary.out = m.out + (syn == syntax::plain ? "*" : syn == syntax::text ? "·" : " ") + unit.out;
+            imaginary.plain_level = product_level;
+            imaginary.out_level = product_level;
+        }
+        if (re.is_zero())
+            return im < 0 ? negated(imaginary) : imaginary;
+        piece sum = number_piece(re, syn);
+        const char* sign = im < 0 ? "-" : "+";
+        sum.plain += sign + imaginary.plain;
+        sum.out += (syn == syntax::plain ? std::string(sign) : " " + std::string(sign) + " ") + imaginary.out;
+        sum.plain_level = sum_level;
+        sum.out_level = sum_level;
+        return sum;
+    }
+    if (n < 0)
+        return negated(number_piece(-n, syn));
+    piece p;
+    if (n.is_integer()) {
+        p.plain = integer_string(n);
+        p.out = p.plain;
+    } else if (n.is_rational()) {
+        const std::string numer = integer_string(n.numer());
+        const std::string denom = integer_string(n.denom());
+        p.plain = numer + "/" + denom;
+        p.out = syn == syntax::latex ? "\\frac{" + numer + "}{" + denom + "}" : p.plain;
+        p.plain_level = product_level;
+        p.out_level = product_level;
+    } else {
+        p = float_piece(n, syn);
+    }
+    return p;
+}
+
+// ---------------------------------------------------------------------------
+// Functions
+
+/// LaTeX command of a function printed as an operator (`\sin x`); empty if none.
+std::string latex_operator(const std::string& name)
+{
+    static const std::map<std::string, std::string> operators = {
+        {"sin", "\\sin"},     {"cos", "\\cos"},       {"tan", "\\tan"},
+        {"sinh", "\\sinh"},   {"cosh", "\\cosh"},     {"tanh", "\\tanh"},
+        {"asin", "\\arcsin"}, {"acos", "\\arccos"},   {"atan", "\\arctan"},
+        {"log", "\\ln"},
+    };
+    auto found = operators.find(name);
+    return found != operators.end() ? found->second : std::string();
+}
+
+/// Functions whose powers print as `\sin^{2}\theta` in LaTeX.
+bool is_trigonometric(const std::string& name)
+{
+    static const char* const names[] = {"sin", "cos", "tan", "sinh", "cosh", "tanh"};
+    return std::find_if(std::begin(names), std::end(names), [&](const char* n) { return name == n; }) !=
+           std::end(names);
+}
+
+/// An argument simple enough to follow a LaTeX operator without parentheses.
+bool is_bare_argument(const ex& e)
+{
+    if (is_a<GiNaC::symbol>(e) || is_a<GiNaC::constant>(e))
+        return true;
+    return is_a<numeric>(e) && GiNaC::ex_to<numeric>(e).is_pos_integer();
+}
+
+/// `\sin` followed by an argument: a space only where the argument starts with a letter or digit.
+std::string apply_operator(const std::string& command, const std::string& argument)
+{
+    if (!argument.empty() && (is_letter(argument[0]) || is_digit(argument[0])))
+        return command + " " + argument;
+    return command + argument;
+}
+
+// ---------------------------------------------------------------------------
+// Term order
+
+/// The exponent of `s` in a term: 2 in x*s^2, -1 in x/s, the highest in a sum factor.
+numeric exponent_in(const ex& e, const ex& s)
+{
+    if (e.is_equal(s))
+        return 1;
+    if (is_a<GiNaC::power>(e)) {
+        if (!is_a<numeric>(e.op(1)) || !GiNaC::ex_to<numeric>(e.op(1)).is_real())
+            return 0;
+        return exponent_in(e.op(0), s) * GiNaC::ex_to<numeric>(e.op(1));
+    }
+    if (is_a<GiNaC::mul>(e)) {
+        numeric total = 0;
+        for (const ex& factor : e)
+            total += exponent_in(factor, s);
+        return total;
+    }
+    if (is_a<GiNaC::add>(e)) {
+        numeric highest = 0;
+        bool first = true;
+        for (const ex& term : e) {
+            numeric k = exponent_in(term, s);
+            if (first || k > highest)
+                highest = k;
+            first = false;
+        }
+        return highest;
+    }
+    return 0;
+}
+
+/// A term of a sum, printed, with what orders it.
+struct sum_term {
+    piece body;                     ///< the term without its sign
+    bool negative = false;
+    bool constant = false;          ///< a number only
+    bool real = true;               ///< a real coefficient: the sign is known
+    std::string monomial;           ///< plain form without the numeric coefficient
+    std::vector<numeric> exponents; ///< per group symbol, groups concatenated
+    std::vector<numeric> degrees;   ///< per group
+};
+
+/// Compares terms by the term order's groups: total degree, then exponents,
+/// both descending. Negative if `a` comes first.
+int compare_degrees(const sum_term& a, const sum_term& b)
+{
+    for (std::size_t g = 0; g < a.degrees.size(); ++g)
+        if (a.degrees[g] != b.degrees[g])
+            return a.degrees[g] > b.degrees[g] ? -1 : 1;
+    for (std::size_t k = 0; k < a.exponents.size(); ++k)
+        if (a.exponents[k] != b.exponents[k])
+            return a.exponents[k] > b.exponents[k] ? -1 : 1;
+    return 0;
+}
+
+/// Compares terms by their printed form, numbers last. Negative if `a` comes first.
+int compare_forms(const sum_term& a, const sum_term& b)
+{
+    if (a.constant != b.constant)
+        return a.constant ? 1 : -1;
+    if (int c = a.monomial.compare(b.monomial))
+        return c;
+    return a.body.plain.compare(b.body.plain);
+}
+
+// ---------------------------------------------------------------------------
+// The printer
+
+class printer {
+public:
+    printer(syntax syn, const term_order& order) : syn_(syn), order_(order) {}
+
+    piece render(const ex& e) const
+    {
+        if (is_a<numeric>(e))
+            return number_piece(GiNaC::ex_to<numeric>(e), syn_);
+        if (is_a<GiNaC::symbol>(e))
+            return symbol_piece(e);
+        if (is_a<GiNaC::add>(e))
+            return sum_piece(e);
+        if (is_a<GiNaC::mul>(e)) {
+            numeric coefficient = 1;
+            GiNaC::exvector factors;
+            split_term(e, coefficient, factors);
+            return product_piece(coefficient, factors);
+        }
+        if (is_a<GiNaC::power>(e))
+            return power_piece(e);
+        if (is_a<GiNaC::function>(e))
+            return function_piece(e);
+        if (is_a<GiNaC::constant>(e))
+            return constant_piece(e);
+        if (is_a<GiNaC::relational>(e))
+            return relation_piece(e);
+        return fallback_piece(e);
+    }
+
+private:
+    syntax syn_;
+    const term_order& order_;
+
+    const char* times() const { return syn_ == syntax::plain ? "*" : syn_ == syntax::text ? "·" : " "; }
+
+    piece symbol_piece(const ex& e) const
+    {
+        const std::string& name = GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+        piece p;
+        p.plain = name;
+        p.out = syn_ == syntax::plain ? name : print_name(name, syn_);
+        return p;
+    }
+
+    piece constant_piece(const ex& e) const
+    {
+        piece p;
+        if (e.is_equal(GiNaC::Pi)) {
+            p.plain = "Pi";
+            p.out = syn_ == syntax::latex ? "\\pi" : syn_ == syntax::text ? "π" : "Pi";
+            return p;
+        }
+        if (e.is_equal(GiNaC::Euler)) {
+            p.plain = "Euler";
+            p.out = syn_ == syntax::latex ? "\\gamma_{E}" : syn_ == syntax::text ? "γ" : "Euler";
+            return p;
+        }
+        return fallback_piece(e);
+    }
+
+    /// Anything without a printer here: GiNaC's own output, parenthesized where it matters.
+    piece fallback_piece(const ex& e) const
+    {
+        std::ostringstream plain;
+        plain << e;
+        piece p;
+        p.plain = plain.str();
+        if (syn_ == syntax::latex) {
+            std::ostringstream latex;
+            latex << GiNaC::latex << e << GiNaC::dflt;
+            p.out = latex.str();
+        } else {
+            p.out = p.plain;
+        }
+        if (!is_a<GiNaC::constant>(e)) {
+            p.plain_level = sum_level;
+            p.out_level = sum_level;
+        }
+        return p;
+    }
+
+    /// A term as its numeric coefficient times its other factors (nested products flattened).
+    static void split_term(const ex& e, numeric& coefficient, GiNaC::exvector& factors)
+    {
+        if (is_a<numeric>(e)) {
+            coefficient *= GiNaC::ex_to<numeric>(e);
+        } else if (is_a<GiNaC::mul>(e)) {
+            for (const ex& factor : e)
+                split_term(factor, coefficient, factors);
+        } else {
+            factors.push_back(e);
+        }
+    }
+
+    /// Joins printed factors, in order, with the syntax's multiplication sign.
+    void join_factors(const std::vector<piece>& items, std::string& plain, std::string& out) const
+    {
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            const piece& item = items[i];
+            const bool last = i + 1 == items.size();
+            const std::string& item_out = !last && !item.closed.empty() ? item.closed : item.out;
+            if (i > 0) {
+                plain += '*';
+                if (syn_ == syntax::latex && !item_out.empty() && is_digit(item_out[0]))
+                    out += " \\cdot ";
+                else
+                    out += times();
+            }
+            plain += item.plain;
+            out += item_out;
+        }
+    }
+
+    /// A factor of a product, printed, and parenthesized as a factor.
+    struct factor_item {
+        piece raw;
+        piece wrapped;
+        int rank = 0; ///< see factor_rank
+    };
+
+    factor_item make_item(const piece& p, int rank = 0) const { return {p, wrap(p, product_level, syn_), rank}; }
+
+    /// Where a factor stands in a product: sums first, then symbols (parameters),
+    /// then functions, then the term order's variables in their given order
+    /// (m*l^2*cos(theta-phi)*theta_dot*phi_dot, as textbooks write it).
+    int factor_rank(const ex& base) const
+    {
+        if (is_a<GiNaC::add>(base))
+            return 0;
+        int position = 0;
+        for (const auto& group : order_.groups)
+            for (const ex& s : group) {
+                ++position;
+                if (base.is_equal(s))
+                    return 2 + position;
+            }
+        if (is_a<GiNaC::function>(base))
+            return 2;
+        return 1;
+    }
+
+    /// Joins factors above or below a LaTeX fraction line, where a single factor needs no parentheses.
+    void join_items(const std::vector<factor_item>& items, std::string& plain, std::string& out) const
+    {
+        std::vector<piece> wrapped;
+        wrapped.reserve(items.size());
+        for (const auto& item : items)
+            wrapped.push_back(item.wrapped);
+        join_factors(wrapped, plain, out);
+        if (syn_ == syntax::latex && items.size() == 1)
+            out = items.front().raw.out;
+    }
+
+    /// A product printed without its sign.
+    struct product_result {
+        piece body;
+        bool negative = false;
+        std::string monomial; ///< plain form without the coefficient: a term's sort key in a sum
+    };
+
+    /// coefficient * factors: factors sorted by their plain form, those with a
+    /// negative exponent as a denominator, sums with an integer exponent in a
+    /// sign of their own (GiNaC's choice depends on its internal order).
+    product_result product_parts(numeric coefficient, const GiNaC::exvector& factors) const
+    {
+        std::vector<factor_item> numerator;
+        std::vector<factor_item> denominator;
+        for (const ex& factor : factors) {
+            ex base = factor;
+            numeric k = 1;
+            if (is_a<GiNaC::power>(factor) && is_a<numeric>(factor.op(1)) &&
+                GiNaC::ex_to<numeric>(factor.op(1)).is_real()) {
+                base = factor.op(0);
+                k = GiNaC::ex_to<numeric>(factor.op(1));
+            } else if (is_a<GiNaC::power>(factor)) {
+                numerator.push_back(make_item(render(factor), 1));
+                continue;
+            }
+            const bool below = k < 0;
+            const numeric magnitude = below ? -k : k;
+            piece item;
+            if (is_a<GiNaC::add>(base) && k.is_integer()) {
+                auto [sum, flipped] = canonical_sum(base);
+                if (flipped && k.is_odd())
+                    coefficient = -coefficient;
+                item = magnitude == 1 ? sum : power_of(sum, magnitude);
+            } else if (below) {
+                item = render(GiNaC::pow(base, magnitude));
+            } else {
+                item = render(factor);
+            }
+            (below ? denominator : numerator).push_back(make_item(item, factor_rank(base)));
+        }
+        auto by_plain = [](const factor_item& a, const factor_item& b) {
+            return a.rank != b.rank ? a.rank < b.rank : a.wrapped.plain < b.wrapped.plain;
+        };
+        std::stable_sort(numerator.begin(), numerator.end(), by_plain);
+        std::stable_sort(denominator.begin(), denominator.end(), by_plain);
+
+        product_result result;
+        result.negative = coefficient.is_real() && coefficient < 0;
+        if (result.negative)
+            coefficient = -coefficient;
+
+        std::string ignored;
+        join_items(numerator, result.monomial, ignored);
+        if (!denominator.empty()) {
+            std::string below_plain;
+            join_items(denominator, below_plain, ignored);
+            result.monomial = (numerator.empty() ? "1" : result.monomial) + "/" + below_plain;
+        }
+
+        if (factors.empty()) {
+            result.body = number_piece(coefficient, syn_);
+            return result;
+        }
+
+        const bool rational = coefficient.is_rational();
+        piece& body = result.body;
+        body.plain_level = product_level;
+        body.out_level = product_level;
+        if (denominator.empty()) {
+            std::vector<factor_item> items;
+            if (coefficient != 1) {
+                factor_item c = make_item(number_piece(coefficient, syn_));
+                if (rational && !coefficient.is_integer() && syn_ == syntax::text)
+                    c.wrapped.out = "(" + c.wrapped.out + ")";
+                items.push_back(c);
+            }
+            items.insert(items.end(), numerator.begin(), numerator.end());
+            if (items.size() == 1) {
+                body = items.front().wrapped;
+                return result;
+            }
+            std::vector<piece> wrapped;
+            for (const auto& item : items)
+                wrapped.push_back(item.wrapped);
+            join_factors(wrapped, body.plain, body.out);
+            return result;
+        }
+
+        // A quotient: integer parts of the coefficient go above and below the line.
+        std::vector<factor_item> above;
+        std::vector<factor_item> below;
+        if (rational) {
+            if (coefficient.numer() != 1 || numerator.empty())
+                above.push_back(make_item(number_piece(coefficient.numer(), syn_)));
+            if (coefficient.denom() != 1)
+                below.push_back(make_item(number_piece(coefficient.denom(), syn_)));
+        } else {
+            above.push_back(make_item(number_piece(coefficient, syn_)));
+        }
+        above.insert(above.end(), numerator.begin(), numerator.end());
+        below.insert(below.end(), denominator.begin(), denominator.end());
+
+        std::string above_plain, above_out, below_plain, below_out;
+        join_items(above, above_plain, above_out);
+        join_items(below, below_plain, below_out);
+        const bool single_below = below.size() == 1;
+        if (!single_below || below.front().wrapped.plain_level < power_level)
+            below_plain = "(" + below_plain + ")";
+        if (syn_ == syntax::latex) {
+            body.out = "\\frac{" + above_out + "}{" + below_out + "}";
+        } else {
+            if (!single_below || below.front().wrapped.out_level < power_level)
+                below_out = "(" + below_out + ")";
+            body.out = above_out + "/" + below_out;
+        }
+        body.plain = above_plain + "/" + below_plain;
+        return result;
+    }
+
+    piece product_piece(const numeric& coefficient, const GiNaC::exvector& factors) const
+    {
+        product_result parts = product_parts(coefficient, factors);
+        return parts.negative ? negated(parts.body) : parts.body;
+    }
+
+    /// The terms of a sum, printed, with what orders them.
+    std::vector<sum_term> sum_terms(const ex& e) const
+    {
+        std::vector<sum_term> terms;
+        terms.reserve(e.nops());
+        for (const ex& term : e) {
+            numeric coefficient = 1;
+            GiNaC::exvector factors;
+            split_term(term, coefficient, factors);
+            product_result parts = product_parts(coefficient, factors);
+            sum_term t;
+            t.negative = parts.negative;
+            t.constant = factors.empty();
+            t.real = coefficient.is_real();
+            t.body = wrap(parts.body, product_level, syn_);
+            t.monomial = std::move(parts.monomial);
+            for (const auto& group : order_.groups) {
+                numeric degree = 0;
+                for (const ex& s : group) {
+                    t.exponents.push_back(exponent_in(term, s));
+                    degree += t.exponents.back();
+                }
+                t.degrees.push_back(degree);
+            }
+            terms.push_back(std::move(t));
+        }
+        return terms;
+    }
+
+    /// The terms ordered by the term order's groups, positive terms before
+    /// negative ones, constants last, then by their plain form; then joined.
+    piece assemble_sum(std::vector<sum_term>& terms) const
+    {
+        std::sort(terms.begin(), terms.end(), [](const sum_term& a, const sum_term& b) {
+            if (int c = compare_degrees(a, b))
+                return c < 0;
+            if (a.negative != b.negative)
+                return b.negative;
+            if (int c = compare_forms(a, b))
+                return c < 0;
+            return false;
+        });
+
+        piece result;
+        result.plain_level = sum_level;
+        result.out_level = sum_level;
+        for (std::size_t i = 0; i < terms.size(); ++i) {
+            const sum_term& t = terms[i];
+            if (i == 0) {
+                if (t.negative) {
+                    result.plain += '-';
+                    result.out += '-';
+                }
+            } else {
+                result.plain += t.negative ? '-' : '+';
+                if (syn_ == syntax::plain)
+                    result.out += t.negative ? "-" : "+";
+                else
+                    result.out += t.negative ? " - " : " + ";
+            }
+            result.plain += t.body.plain;
+            result.out += t.body.out;
+        }
+        return result;
+    }
+
+    piece sum_piece(const ex& e) const
+    {
+        std::vector<sum_term> terms = sum_terms(e);
+        return assemble_sum(terms);
+    }
+
+    /// The sum or its negative, whichever has a positive leading term (by the
+    /// order without signs); true if negated. For a factor whose sign can go
+    /// into the coefficient: GiNaC writes (c-d)^3 or -(d-c)^3 depending on its
+    /// internal order.
+    std::pair<piece, bool> canonical_sum(const ex& e) const
+    {
+        std::vector<sum_term> terms = sum_terms(e);
+        const sum_term* leading = nullptr;
+        for (const auto& t : terms) {
+            if (!t.real)
+                return {assemble_sum(terms), false};
+            if (!leading) {
+                leading = &t;
+                continue;
+            }
+            int c = compare_degrees(t, *leading);
+            if (c == 0)
+                c = compare_forms(t, *leading);
+            if (c < 0)
+                leading = &t;
+        }
+        if (!leading || !leading->negative)
+            return {assemble_sum(terms), false};
+        for (auto& t : terms)
+            t.negative = !t.negative;
+        return {assemble_sum(terms), true};
+    }
+
+    piece power_piece(const ex& e) const
+    {
+        const ex& base = e.op(0);
+        const ex& exponent = e.op(1);
+        if (!is_a<numeric>(exponent))
+            return power_of(render(base), exponent);
+        const numeric& k = GiNaC::ex_to<numeric>(exponent);
+        if (k.is_real() && k < 0)
+            return product_piece(1, {e});
+        if (k == numeric(1, 2))
+            return sqrt_piece(base);
+        if (syn_ == syntax::latex && k.is_pos_integer() && is_a<GiNaC::function>(base) && base.nops() == 1 &&
+            is_trigonometric(GiNaC::ex_to<GiNaC::function>(base).get_name()))
+            return trigonometric_power_piece(base, k);
+        if (is_a<GiNaC::add>(base) && k.is_integer()) {
+            auto [sum, flipped] = canonical_sum(base);
+            piece p = power_of(sum, exponent);
+            return flipped && k.is_odd() ? negated(p) : p;
+        }
+        return power_of(render(base), exponent);
+    }
+
+    /// A printed base raised to `exponent`.
+    piece power_of(const piece& base, const ex& exponent) const
+    {
+        const piece b = wrap(base, atom_level, syn_);
+        const piece x = render(exponent);
+        piece p;
+        p.plain_level = power_level;
+        p.out_level = power_level;
+        const bool plain_bare = x.plain_level == atom_level;
+        p.plain = b.plain + "^" + (plain_bare ? x.plain : "(" + x.plain + ")");
+        const numeric* k = is_a<numeric>(exponent) ? &GiNaC::ex_to<numeric>(exponent) : nullptr;
+        switch (syn_) {
+        case syntax::plain:
+            p.out = p.plain;
+            break;
+        case syntax::text:
+            if (k && k->is_nonneg_integer())
+                p.out = b.out + superscript(x.out);
+            else
+                p.out = b.out + "^" + (x.out_level == atom_level ? x.out : "(" + x.out + ")");
+            break;
+        case syntax::latex:
+            if (k && k->is_rational() && !k->is_integer())
+                p.out = b.out + "^{" + x.plain + "}";
+            else
+                p.out = b.out + "^{" + x.out + "}";
+            break;
+        }
+        return p;
+    }
+
+    piece sqrt_piece(const ex& base) const
+    {
+        const piece b = render(base);
+        piece p;
+        p.plain = "sqrt(" + b.plain + ")";
+        switch (syn_) {
+        case syntax::plain:
+            p.out = p.plain;
+            break;
+        case syntax::text:
+            p.out = "√" + (b.out_level == atom_level ? b.out : "(" + b.out + ")");
+            p.out_level = power_level;
+            break;
+        case syntax::latex:
+            p.out = "\\sqrt{" + b.out + "}";
+            break;
+        }
+        return p;
+    }
+
+    /// `\sin^{2}\theta` (LaTeX only).
+    piece trigonometric_power_piece(const ex& function, const numeric& k) const
+    {
+        const piece argument = render(function.op(0));
+        const std::string command =
+            latex_operator(GiNaC::ex_to<GiNaC::function>(function).get_name()) + "^{" + integer_string(k) + "}";
+        piece p;
+        p.plain = GiNaC::ex_to<GiNaC::function>(function).get_name() + "(" + argument.plain + ")^" + integer_string(k);
+        p.plain_level = power_level;
+        p.out_level = power_level;
+        p.closed = command + "\\left(" + argument.out + "\\right)";
+        p.out = is_bare_argument(function.op(0)) ? apply_operator(command, argument.out) : p.closed;
+        return p;
+    }
+
+    piece function_piece(const ex& e) const
+    {
+        const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+        std::vector<piece> arguments;
+        arguments.reserve(e.nops());
+        for (const ex& argument : e)
+            arguments.push_back(render(argument));
+
+        piece p;
+        p.plain = name + "(";
+        for (std::size_t i = 0; i < arguments.size(); ++i)
+            p.plain += (i > 0 ? "," : "") + arguments[i].plain;
+        p.plain += ")";
+
+        auto joined = [&](const char* separator) {
+            std::string s;
+            for (std::size_t i = 0; i < arguments.size(); ++i)
+                s += (i > 0 ? separator : "") + arguments[i].out;
+            return s;
+        };
+        switch (syn_) {
+        case syntax::plain:
+            p.out = p.plain;
+            break;
+        case syntax::text:
+            if (name == "abs" && arguments.size() == 1)
+                p.out = "|" + arguments[0].out + "|";
+            else
+                p.out = (name == "log" ? std::string("ln") : name) + "(" + joined(", ") + ")";
+            break;
+        case syntax::latex: {
+            const std::string command = latex_operator(name);
+            if (name == "exp" && arguments.size() == 1) {
+                p.out = "e^{" + arguments[0].out + "}";
+                p.out_level = power_level;
+            } else if (name == "abs" && arguments.size() == 1) {
+                p.out = "\\left|" + arguments[0].out + "\\right|";
+            } else if (!command.empty() && arguments.size() == 1) {
+                p.closed = command + "\\left(" + arguments[0].out + "\\right)";
+                if (is_bare_argument(e.op(0))) {
+                    p.out = apply_operator(command, arguments[0].out);
+                    p.out_level = power_level;
+                } else {
+                    p.out = p.closed;
+                    p.closed.clear();
+                }
+            } else {
+                p.out = "\\operatorname{" + name + "}\\left(" + joined(", ") + "\\right)";
+            }
+            break;
+        }
+        }
+        return p;
+    }
+
+    piece relation_piece(const ex& e) const
+    {
+        const piece lhs = render(e.lhs());
+        const piece rhs = render(e.rhs());
+        const char* plain_op = "==";
+        const char* text_op = "=";
+        const char* latex_op = "=";
+        if (e.info(GiNaC::info_flags::relation_not_equal)) {
+            plain_op = "!=", text_op = "≠", latex_op = "\\neq";
+        } else if (e.info(GiNaC::info_flags::relation_less)) {
+            plain_op = "<", text_op = "<", latex_op = "<";
+        } else if (e.info(GiNaC::info_flags::relation_less_or_equal)) {
+            plain_op = "<=", text_op = "≤", latex_op = "\\le";
+        } else if (e.info(GiNaC::info_flags::relation_greater)) {
+            plain_op = ">", text_op = ">", latex_op = ">";
+        } else if (e.info(GiNaC::info_flags::relation_greater_or_equal)) {
+            plain_op = ">=", text_op = "≥", latex_op = "\\ge";
+        }
+        piece p;
+        p.plain = lhs.plain + plain_op + rhs.plain;
+        switch (syn_) {
+        case syntax::plain: p.out = p.plain; break;
+        case syntax::text: p.out = lhs.out + " " + text_op + " " + rhs.out; break;
+        case syntax::latex: p.out = lhs.out + " " + latex_op + " " + rhs.out; break;
+        }
+        p.plain_level = relation_level;
+        p.out_level = relation_level;
+        return p;
+    }
+};
+
+} // namespace
+
+std::string print(const GiNaC::ex& e, syntax s, const term_order& order)
+{
+    return printer(s, order).render(e).out;
+}
+
+std::string print_name(const std::string& name, syntax s)
+{
+    if (s == syntax::plain)
+        return name;
+
+    int dots = 0;
+    std::string base = name;
+    if (ends_with(name, "_ddot") && name.size() > 5) {
+        dots = 2;
+        base = name.substr(0, name.size() - 5);
+    } else if (ends_with(name, "_dot") && name.size() > 4) {
+        dots = 1;
+        base = name.substr(0, name.size() - 4);
+    }
+
+    std::vector<std::string> parts;
+    for (std::size_t start = 0;;) {
+        std::size_t end = base.find('_', start);
+        parts.push_back(base.substr(start, end == std::string::npos ? std::string::npos : end - start));
+        if (end == std::string::npos)
+            break;
+        start = end + 1;
+    }
+    const bool regular = std::none_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); });
+    auto [letters, digits] = regular ? split_trailing_digits(parts[0]) : std::make_pair(base, std::string());
+
+    if (s == syntax::latex) {
+        std::string head = regular ? latex_word(letters) : latex_literal(base);
+        if (dots > 0)
+            head = (dots == 2 ? "\\ddot{" : "\\dot{") + head + "}";
+        std::vector<std::string> subscripts;
+        if (!digits.empty())
+            subscripts.push_back(digits);
+        for (std::size_t i = 1; regular && i < parts.size(); ++i)
+            subscripts.push_back(latex_part(parts[i]));
+        std::string nested;
+        for (auto it = subscripts.rbegin(); it != subscripts.rend(); ++it)
+            nested = nested.empty() ? *it : *it + "_{" + nested + "}";
+        return nested.empty() ? head : head + "_{" + nested + "}";
+    }
+
+    // text
+    std::string head = regular ? text_word(letters) : base;
+    const bool one_letter = (regular && greek_letters().count(letters) > 0) || (letters.size() == 1 && is_letter(letters[0]));
+    if (dots > 0)
+        head += one_letter ? (dots == 2 ? "\u0308" : "\u0307") : (dots == 2 ? "''" : "'");
+    std::string out = head + digits;
+    for (std::size_t i = 1; regular && i < parts.size(); ++i) {
+        auto [sub_letters, sub_digits] = split_trailing_digits(parts[i]);
+        out += "_" + text_word(sub_letters) + sub_digits;
+    }
+    return out;
+}
+
+} // namespace lagrange

@@ -1,0 +1,37 @@
+/** @file print.h
+ *  Deterministic printing of expressions in three syntaxes. GiNaC's own term order
+ *  can change from run to run; these printers order terms and factors themselves. */
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+enum class syntax {
+    plain, ///< GiNaC's plain syntax (`^` powers, `q_dot`); used in JSON
+    text,  ///< for people: Greek letters, dots over velocities (Unicode)
+    latex, ///< LaTeX math: \dot{\theta}, \theta_{1}, no 1.5E-20 floats
+};
+
+/// How to order the terms of a sum: groups of symbols in priority order. Terms
+/// are sorted by their total degree in the first group (descending), then by their
+/// exponent vector in that group (lexicographic, descending), then the next group,
+/// and finally by their printed form. Example: {{theta_ddot, phi_ddot},
+/// {theta_dot, phi_dot}} puts accelerations first, then velocities, then the rest.
+struct term_order {
+    std::vector<std::vector<GiNaC::ex>> groups;
+};
+
+/// Prints `e`. Factors of a product are ordered by their printed form (numeric
+/// coefficient first); sums by `order`, then by printed form. Byte-identical
+/// output for equal expressions, whatever GiNaC's internal order.
+std::string print(const GiNaC::ex& e, syntax s, const term_order& order = {});
+
+/// How a symbol name prints: `theta_dot` -> "θ̇" / "\dot{\theta}", `theta1` ->
+/// "θ1" / "\theta_{1}", `l_2` -> "l_{2}", `M` -> "M", `omega` -> "\omega".
+std::string print_name(const std::string& name, syntax s);
+
+} // namespace lagrange

@@ -1,0 +1,845 @@
+/** @file lower.cpp
+ *  Semantic checks and lowering of a scene: declared names only, no duplicates,
+ *  `q'` only for coordinates, reserved names, exact integers and rationals, and
+ *  no arithmetic that could hang or exhaust memory. GiNaC only ever sees
+ *  expressions built here, never text. */
+#include "scene/lower.h"
+
+#include "scene/lexer.h"
+#include "scene/parser.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace lagrange {
+
+const std::vector<std::pair<product, std::string>>& product_names()
+{
+    static const std::vector<std::pair<product, std::string>> names = {
+        {product::equations, "equations"},
+        {product::equilibrium, "equilibrium"},
+        {product::linearization, "linearization"},
+        {product::characteristic, "characteristic"},
+        {product::frequencies, "frequencies"},
+        {product::modes, "modes"},
+        {product::normal_coordinates, "normal_coordinates"},
+        {product::asymptotic, "asymptotic"},
+        {product::numeric, "numeric"},
+        {product::inertia, "inertia"},
+        {product::euler, "euler"},
+        {product::simulation, "simulation"},
+        {product::workprecision, "workprecision"},
+    };
+    return names;
+}
+
+std::optional<product> product_from_name(const std::string& name)
+{
+    for (const auto& [p, n] : product_names())
+        if (n == name)
+            return p;
+    return std::nullopt;
+}
+
+GiNaC::lst model::positions() const
+{
+    GiNaC::lst result;
+    for (const coordinate& c : coordinates)
+        result.append(c.position);
+    return result;
+}
+
+GiNaC::lst model::velocities() const
+{
+    GiNaC::lst result;
+    for (const coordinate& c : coordinates)
+        result.append(c.velocity);
+    return result;
+}
+
+GiNaC::lst model::accelerations() const
+{
+    GiNaC::lst result;
+    for (const coordinate& c : coordinates)
+        result.append(c.acceleration);
+    return result;
+}
+
+namespace {
+
+// ---- limits that keep exact arithmetic from hanging --------------------------
+constexpr long max_integer_exponent = 1000;     ///< |n| in x^n
+constexpr long max_exponent_denominator = 1000; ///< q in x^(p/q)
+constexpr long max_number_bits = 100000;        ///< about 30,000 decimal digits
+
+const std::set<std::string>& function_names()
+{
+    static const std::set<std::string> names = {"sin", "cos", "tan", "exp", "log", "sqrt", "sinh",
+                                                 "cosh", "tanh", "asin", "acos", "atan", "abs"};
+    return names;
+}
+
+const std::set<std::string>& reserved_names()
+{
+    static const std::set<std::string> names = {
+        "scene", "parameters", "coordinates", "let", "point", "gravity", "spring", "body",
+        "omega", "torque", "equilibrium", "ratio", "limit", "values", "initial", "simulate",
+        "use", "want", "mass", "at", "along", "between", "and", "rest", "region", "density",
+        "inertia", "axis", "orientation", "until", "step", "method", "tolerance", "t", "Pi",
+        "pi", "oo", "dot", "T", "V", "L"};
+    return names;
+}
+
+bool ends_with(const std::string& s, const std::string& suffix)
+{
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+/// What a name in an expression stands for.
+struct name_entry {
+    enum class kind { parameter, coordinate, shorthand, ratio } name_kind;
+    GiNaC::ex value;        ///< the symbol, or a shorthand's expression
+    std::size_t index = 0;  ///< coordinate index
+    source_location declared;
+};
+
+/// Where an expression stands decides what it may contain.
+struct expr_context {
+    const char* what;              ///< "a position", "a value", ... for messages
+    bool coordinates = true;       ///< q
+    bool velocities = false;       ///< q'
+    bool parameters = true;
+    bool time = true;              ///< t
+    bool wildcards = false;        ///< $0 (rules)
+};
+
+class lowering {
+public:
+    lowering(const source_text& source, file_reader read_file)
+        : source_(source), read_file_(std::move(read_file)) {}
+
+    model run(const scene_ast& ast)
+    {
+        scene_.file = source_.file();
+        scene_.kinetic_terms = 0;
+        scene_.potential_terms = 0;
+        for (const statement& s : ast.statements)
+            lower_statement(s);
+        finish();
+        return std::move(scene_);
+    }
+
+    /// Lowering of expressions for rule files and `--values`: names of `scene` resolve.
+    void adopt_names(const model& scene)
+    {
+        for (const parameter& p : scene.parameters)
+            names_[p.name] = {name_entry::kind::parameter, p.symbol, 0, {}};
+        for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
+            names_[scene.coordinates[i].name] = {name_entry::kind::coordinate,
+                                                 scene.coordinates[i].position, i, {}};
+        coordinates_ = scene.coordinates;
+        scene_.time = scene.time;
+    }
+
+    GiNaC::ex expression(const expr_node& node, const expr_context& context) { return lower(node, context); }
+
+    value_point values_line(const statement& s) { return lower_values(s); }
+
+private:
+    // ---- statements ---------------------------------------------------------------
+
+    void lower_statement(const statement& s)
+    {
+        const std::string& k = s.keyword;
+        if (k == "scene") {
+            if (seen_title_)
+                throw scene_error(s.where, "the scene's title is given twice");
+            seen_title_ = true;
+            scene_.title = s.text;
+        } else if (k == "parameters") {
+            for (const name_ref& n : s.names)
+                declare_parameter(n);
+        } else if (k == "coordinates") {
+            for (const name_ref& n : s.names)
+                declare_coordinate(n);
+        } else if (k == "let") {
+            declare_name(s.names[0], "shorthand");
+            expr_context context{"a shorthand"};
+            context.velocities = true;
+            names_[s.names[0].name] = {name_entry::kind::shorthand, lower(*s.value, context), 0, s.names[0].where};
+        } else if (k == "T" || k == "V" || k == "L") {
+            lower_energy(s);
+        } else if (k == "point") {
+            lower_point(s);
+        } else if (k == "gravity") {
+            lower_gravity(s);
+        } else if (k == "spring") {
+            lower_spring(s);
+        } else if (k == "body" || k == "omega" || k == "torque") {
+            throw scene_error(s.where, "rigid bodies (`" + k + "`) are not supported yet in this version");
+        } else if (k == "equilibrium") {
+            lower_equilibrium(s);
+        } else if (k == "ratio") {
+            lower_ratio(s);
+        } else if (k == "limit") {
+            lower_limit(s);
+        } else if (k == "values") {
+            scene_.values.push_back(lower_values(s));
+        } else if (k == "initial") {
+            lower_initial(s);
+        } else if (k == "simulate") {
+            lower_simulate(s);
+        } else if (k == "use") {
+            lower_use(s);
+        } else if (k == "want") {
+            lower_want(s);
+        }
+    }
+
+    void declare_name(const name_ref& n, const char* what)
+    {
+        if (reserved_names().count(n.name) || function_names().count(n.name))
+            throw scene_error(n.where, quote(n.name) + " is reserved and cannot name a " + what);
+        if (ends_with(n.name, "_dot") || ends_with(n.name, "_ddot"))
+            throw scene_error(n.where, "names ending in `_dot` or `_ddot` are reserved for velocities "
+                                       "and accelerations; write " + quote(n.name.substr(0, n.name.rfind('_')) + "'") +
+                                           " for a velocity");
+        auto found = names_.find(n.name);
+        if (found != names_.end())
+            throw scene_error(n.where, quote(n.name) + " is already declared at line " +
+                                           std::to_string(found->second.declared.line));
+    }
+
+    void declare_parameter(const name_ref& n)
+    {
+        declare_name(n, "parameter");
+        parameter p{n.name, GiNaC::possymbol(n.name)};
+        names_[n.name] = {name_entry::kind::parameter, p.symbol, 0, n.where};
+        scene_.parameters.push_back(p);
+    }
+
+    void declare_coordinate(const name_ref& n)
+    {
+        declare_name(n, "coordinate");
+        coordinate c{n.name, GiNaC::realsymbol(n.name), GiNaC::realsymbol(n.name + "_dot"),
+                     GiNaC::realsymbol(n.name + "_ddot")};
+        names_[n.name] = {name_entry::kind::coordinate, c.position, scene_.coordinates.size(), n.where};
+        scene_.coordinates.push_back(c);
+        coordinates_.push_back(c);
+    }
+
+    void lower_energy(const statement& s)
+    {
+        expr_context context{"an energy"};
+        context.velocities = true;
+        GiNaC::ex value = lower(*s.value, context);
+        if (s.keyword == "L") {
+            if (scene_.lagrangian_terms)
+                throw scene_error(s.where, "the Lagrangian `L` is given twice");
+            if (energy_line_)
+                throw scene_error(s.where, "`L` gives the whole Lagrangian: it cannot be combined with the `" +
+                                               energy_keyword_ + "` line at line " +
+                                               std::to_string(energy_line_->line));
+            scene_.lagrangian_terms = value;
+            lagrangian_line_ = s.where;
+            return;
+        }
+        if (lagrangian_line_)
+            throw scene_error(s.where, quote(s.keyword) + " cannot be combined with the Lagrangian `L` at line " +
+                                           std::to_string(lagrangian_line_->line));
+        if (!energy_line_) {
+            energy_line_ = s.where;
+            energy_keyword_ = s.keyword;
+        }
+        (s.keyword == "T" ? scene_.kinetic_terms : scene_.potential_terms) += value;
+    }
+
+    std::vector<GiNaC::ex> lower_vector(const vector_expr& v, const expr_context& context)
+    {
+        std::vector<GiNaC::ex> components;
+        for (const expr_ptr& c : v.components)
+            components.push_back(lower(*c, context));
+        while (components.size() < 3)
+            components.push_back(0);
+        return components;
+    }
+
+    void lower_point(const statement& s)
+    {
+        const name_ref& n = s.names[0];
+        auto found = points_.find(n.name);
+        if (found != points_.end())
+            throw scene_error(n.where, "point `" + n.name + "` is already declared at line " +
+                                           std::to_string(found->second.line));
+        points_[n.name] = n.where;
+        point_mass p;
+        p.name = n.name;
+        p.where = n.where;
+        p.mass = lower(*s.value, expr_context{"a mass", false});
+        p.position = lower_vector(*s.vector, expr_context{"a position"});
+        scene_.points.push_back(std::move(p));
+    }
+
+    void lower_gravity(const statement& s)
+    {
+        if (scene_.gravity)
+            throw scene_error(s.where, "gravity is given twice");
+        gravity_field g;
+        g.strength = lower(*s.value, expr_context{"the strength of gravity", false, false, true, false});
+        std::vector<GiNaC::ex> d = lower_vector(*s.vector, expr_context{"a direction", false, false, true, false});
+        GiNaC::ex norm2 = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).expand();
+        if (norm2.is_zero())
+            throw scene_error(s.vector->where, "the direction of gravity is the zero vector");
+        GiNaC::ex norm = GiNaC::sqrt(norm2);
+        for (GiNaC::ex& component : d)
+            component = (component / norm).normal();
+        g.direction = d;
+        scene_.gravity = g;
+    }
+
+    std::vector<GiNaC::ex> lower_endpoint(const endpoint& e)
+    {
+        if (e.position)
+            return lower_vector(*e.position, expr_context{"a position"});
+        for (const point_mass& p : scene_.points)
+            if (p.name == e.point->name)
+                return p.position;
+        throw scene_error(e.point->where, "unknown point " + quote(e.point->name) + ": declare it with `point` first");
+    }
+
+    void lower_spring(const statement& s)
+    {
+        spring sp;
+        sp.stiffness = lower(*s.value, expr_context{"a stiffness", false, false, true, false});
+        sp.end_a = lower_endpoint(*s.end_a);
+        sp.end_b = lower_endpoint(*s.end_b);
+        sp.rest_length = s.rest ? lower(*s.rest, expr_context{"a rest length", false, false, true, false})
+                                : GiNaC::ex(0);
+        scene_.springs.push_back(std::move(sp));
+    }
+
+    const name_entry& coordinate_named(const name_ref& n)
+    {
+        auto found = names_.find(n.name);
+        if (found == names_.end() || found->second.name_kind != name_entry::kind::coordinate)
+            throw scene_error(n.where, quote(n.name) + " is not a coordinate");
+        return found->second;
+    }
+
+    void lower_equilibrium(const statement& s)
+    {
+        if (scene_.equilibrium)
+            throw scene_error(s.where, "the equilibrium is given twice");
+        std::vector<std::optional<GiNaC::ex>> values(coordinates_.size());
+        for (const assignment& a : s.assignments) {
+            if (a.velocity)
+                throw scene_error(a.target.where, "an equilibrium gives positions only, not velocities");
+            std::size_t i = coordinate_named(a.target).index;
+            if (values[i])
+                throw scene_error(a.target.where, quote(a.target.name) + " is given twice");
+            values[i] = lower(*a.value, expr_context{"an equilibrium value", false, false, true, false});
+        }
+        std::vector<GiNaC::ex> equilibrium;
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            if (!values[i])
+                throw scene_error(s.where, "the equilibrium does not give coordinate `" +
+                                               coordinates_[i].name + "`");
+            equilibrium.push_back(*values[i]);
+        }
+        scene_.equilibrium = equilibrium;
+    }
+
+    void lower_ratio(const statement& s)
+    {
+        if (scene_.ratio)
+            throw scene_error(s.where, "a ratio is given twice");
+        declare_name(s.names[0], "ratio");
+        GiNaC::ex definition = lower(*s.value, expr_context{"a ratio", false, false, true, false});
+        GiNaC::ex numerator = definition.numer(), denominator = definition.denom();
+        if (!GiNaC::is_a<GiNaC::possymbol>(numerator) || !GiNaC::is_a<GiNaC::possymbol>(denominator))
+            throw scene_error(s.value->where, "a ratio is one parameter over another, such as `m/M`");
+        ratio_request r{s.names[0].name, GiNaC::possymbol(s.names[0].name), definition};
+        names_[r.name] = {name_entry::kind::ratio, r.symbol, 0, s.names[0].where};
+        scene_.ratio = r;
+    }
+
+    void lower_limit(const statement& s)
+    {
+        if (scene_.limit)
+            throw scene_error(s.where, "a limit is given twice");
+        const name_ref& n = s.names[0];
+        auto found = names_.find(n.name);
+        if (found == names_.end() || (found->second.name_kind != name_entry::kind::ratio &&
+                                      found->second.name_kind != name_entry::kind::parameter))
+            throw scene_error(n.where, quote(n.name) + " is not a ratio or a parameter");
+        scene_.limit = limit_request{n.name, s.limit_target->name == "oo"};
+    }
+
+    GiNaC::ex constant_value(const expr_node& node, const char* what)
+    {
+        GiNaC::ex value = lower(node, expr_context{what, false, false, false, false});
+        GiNaC::ex number = value.evalf();
+        if (!GiNaC::is_a<GiNaC::numeric>(number) || !GiNaC::ex_to<GiNaC::numeric>(number).is_real())
+            throw scene_error(node.where, std::string(what) + " must be a real number");
+        return value;
+    }
+
+    value_point lower_values(const statement& s)
+    {
+        value_point point;
+        point.where = s.where;
+        std::set<std::string> seen;
+        for (const assignment& a : s.assignments) {
+            auto found = names_.find(a.target.name);
+            if (found == names_.end() || found->second.name_kind != name_entry::kind::parameter || a.velocity)
+                throw scene_error(a.target.where, quote(a.target.name + (a.velocity ? "'" : "")) +
+                                                      " is not a parameter");
+            if (!seen.insert(a.target.name).second)
+                throw scene_error(a.target.where, quote(a.target.name) + " is given twice");
+            point.values.emplace_back(a.target.name, constant_value(*a.value, "a parameter value"));
+        }
+        return point;
+    }
+
+    void lower_initial(const statement& s)
+    {
+        if (scene_.initial)
+            throw scene_error(s.where, "the initial state is given twice");
+        initial_state state;
+        for (const assignment& a : s.assignments) {
+            std::size_t i = coordinate_named(a.target).index;
+            auto& target = a.velocity ? state.velocities : state.positions;
+            const std::string& name = coordinates_[i].name;
+            if (target.count(name))
+                throw scene_error(a.target.where, "`" + name + (a.velocity ? "'" : "") + "` is given twice");
+            target[name] = constant_value(*a.value, "an initial value");
+        }
+        scene_.initial = state;
+    }
+
+    GiNaC::ex positive_constant(const expr_node& node, const char* what)
+    {
+        GiNaC::ex value = constant_value(node, what);
+        if (!GiNaC::ex_to<GiNaC::numeric>(value.evalf()).is_positive())
+            throw scene_error(node.where, std::string(what) + " must be positive");
+        return value;
+    }
+
+    void lower_simulate(const statement& s)
+    {
+        if (scene_.simulation)
+            throw scene_error(s.where, "`simulate` is given twice");
+        simulation_request r;
+        r.until = positive_constant(*s.value, "the end time");
+        if (s.step)
+            r.step = positive_constant(*s.step, "the step");
+        if (s.tolerance)
+            r.tolerance = positive_constant(*s.tolerance, "the tolerance");
+        if (s.method)
+            r.method = s.method->name;
+        scene_.simulation = r;
+    }
+
+    void lower_use(const statement& s)
+    {
+        std::string path = s.text;
+        if (path.empty())
+            throw scene_error(s.where, "`use` needs a file name");
+        if (path[0] != '/') {
+            std::string folder = source_.file();
+            std::size_t slash = folder.rfind('/');
+            folder = (folder == "-" || folder == "<stdin>" || slash == std::string::npos) ? "" : folder.substr(0, slash + 1);
+            path = folder + path;
+        }
+        std::string text = read_file_ ? read_file_(path, s.where) : read_from_disk(path, s.where);
+        source_text rules_source(path, text);
+        std::vector<rewrite_rule> rules = load_rules(rules_source, &scene_);
+        scene_.rules.insert(scene_.rules.end(), rules.begin(), rules.end());
+    }
+
+    static std::string read_from_disk(const std::string& path, const source_location& where)
+    {
+        std::ifstream in(path, std::ios::binary);
+        if (!in)
+            throw scene_error(where, "cannot read the rules file `" + path + "`");
+        std::ostringstream text;
+        text << in.rdbuf();
+        constexpr std::size_t max_size = 16u << 20;
+        if (text.str().size() > max_size)
+            throw scene_error(where, "the rules file `" + path + "` is larger than 16 MB");
+        return text.str();
+    }
+
+    void lower_want(const statement& s)
+    {
+        for (const name_ref& n : s.names) {
+            std::optional<product> p = product_from_name(n.name);
+            if (!p) {
+                std::string items;
+                for (const auto& [unused, name] : product_names())
+                    items += (items.empty() ? "" : ", ") + name;
+                throw scene_error(n.where, "unknown product " + quote(n.name) + "; the products are: " + items);
+            }
+            scene_.wanted.insert(*p);
+        }
+    }
+
+    void finish()
+    {
+        if (scene_.coordinates.empty())
+            throw scene_error({source_.file(), 1, 1}, "the scene declares no coordinates (`coordinates q1 q2 ...`)");
+        if (scene_.limit && scene_.ratio && scene_.limit->variable != scene_.ratio->name &&
+            names_.at(scene_.limit->variable).name_kind != name_entry::kind::parameter)
+            throw scene_error({source_.file(), 1, 1}, "the limit's variable is not declared");
+    }
+
+    // ---- expressions ---------------------------------------------------------------
+
+    [[noreturn]] static void fail(const expr_node& node, const std::string& message)
+    {
+        throw scene_error(node.where, message);
+    }
+
+    static long bits_of(const GiNaC::numeric& n)
+    {
+        if (!n.is_rational())
+            return 0;
+        return GiNaC::numer(n).int_length() + GiNaC::denom(n).int_length();
+    }
+
+    /// Every exact number stays below max_number_bits; complex numbers are refused.
+    static GiNaC::ex checked(const GiNaC::ex& value, const expr_node& node)
+    {
+        if (GiNaC::is_a<GiNaC::numeric>(value)) {
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(value);
+            if (!n.is_real())
+                fail(node, "this is not a real number (the square root or power of a negative number?)");
+            if (bits_of(n) > max_number_bits)
+                fail(node, "number too large (more than 30,000 digits)");
+        }
+        return value;
+    }
+
+    GiNaC::ex lower(const expr_node& node, const expr_context& context)
+    {
+        using kind = expr_node::kind;
+        switch (node.node_kind) {
+        case kind::integer:
+            return GiNaC::numeric(node.text.c_str());
+        case kind::decimal: {
+            errno = 0;
+            double value = std::strtod(node.text.c_str(), nullptr);
+            if (errno == ERANGE || !std::isfinite(value))
+                fail(node, "the number " + node.text + " is out of the range of floating point");
+            return GiNaC::numeric(value);
+        }
+        case kind::wildcard:
+            if (!context.wildcards)
+                fail(node, "wildcards (`$0`) belong in rule files");
+            return GiNaC::wild(static_cast<unsigned>(std::stoul(node.text)));
+        case kind::name:
+            return lower_name(node, context);
+        case kind::velocity:
+            return lower_velocity(node, node.text, context);
+        case kind::negate:
+            return checked(-lower(*node.operands[0], context), node);
+        case kind::sum: {
+            GiNaC::exvector terms;
+            for (std::size_t i = 0; i < node.operands.size(); ++i) {
+                GiNaC::ex term = lower(*node.operands[i], context);
+                terms.push_back(node.ops[i] == '-' ? -term : term);
+            }
+            return checked(GiNaC::add(terms), node);
+        }
+        case kind::product: {
+            GiNaC::ex result = 1;
+            for (std::size_t i = 0; i < node.operands.size(); ++i) {
+                GiNaC::ex factor = lower(*node.operands[i], context);
+                if (node.ops[i] == '/') {
+                    if (factor.is_zero())
+                        fail(*node.operands[i], "division by zero");
+                    result = checked(result / factor, node);
+                } else {
+                    result = checked(result * factor, node);
+                }
+            }
+            return result;
+        }
+        case kind::power:
+            return lower_power(node, context);
+        case kind::call:
+            return lower_call(node, context);
+        }
+        fail(node, "unexpected expression");
+    }
+
+    GiNaC::ex lower_name(const expr_node& node, const expr_context& context)
+    {
+        const std::string& name = node.text;
+        if (name == "Pi" || name == "pi")
+            return GiNaC::Pi;
+        if (name == "t") {
+            if (!context.time)
+                fail(node, std::string("time `t` cannot appear in ") + context.what);
+            return scene_.time;
+        }
+        if (function_names().count(name) || name == "dot")
+            fail(node, quote(name) + " is a function: write `" + name + "(...)`");
+        auto found = names_.find(name);
+        if (found == names_.end()) {
+            if (ends_with(name, "_dot") || ends_with(name, "_ddot"))
+                fail(node, "unknown name " + quote(name) + "; the velocity of `q` is written `q'`");
+            fail(node, "unknown name " + quote(name) + ": declare it with `parameters`, `coordinates` or `let`");
+        }
+        const name_entry& entry = found->second;
+        switch (entry.name_kind) {
+        case name_entry::kind::parameter:
+            if (!context.parameters)
+                fail(node, "parameter `" + name + "` cannot appear in " + context.what + ": give a number");
+            return entry.value;
+        case name_entry::kind::coordinate:
+            if (!context.coordinates)
+                fail(node, "coordinate `" + name + "` cannot appear in " + context.what);
+            return entry.value;
+        case name_entry::kind::shorthand:
+            if ((!context.coordinates && has_position(entry.value)) ||
+                (!context.velocities && has_velocity(entry.value)))
+                fail(node, "shorthand `" + name + "` depends on the motion and cannot appear in " + context.what);
+            return entry.value;
+        case name_entry::kind::ratio:
+            fail(node, quote(name) + " is a ratio: it names results, and cannot appear in expressions");
+        }
+        fail(node, "unexpected name");
+    }
+
+    bool has_position(const GiNaC::ex& e) const
+    {
+        for (const coordinate& c : coordinates_)
+            if (e.has(c.position))
+                return true;
+        return false;
+    }
+
+    bool has_velocity(const GiNaC::ex& e) const
+    {
+        for (const coordinate& c : coordinates_)
+            if (e.has(c.velocity))
+                return true;
+        return false;
+    }
+
+    GiNaC::ex lower_velocity(const expr_node& node, const std::string& name, const expr_context& context)
+    {
+        auto found = names_.find(name);
+        if (found == names_.end() || found->second.name_kind != name_entry::kind::coordinate)
+            fail(node, quote(name + "'") + ": only coordinates have velocities, and " + quote(name) + " is not a coordinate");
+        if (!context.velocities)
+            fail(node, std::string("velocities cannot appear in ") + context.what);
+        return coordinates_[found->second.index].velocity;
+    }
+
+    GiNaC::ex lower_power(const expr_node& node, const expr_context& context)
+    {
+        GiNaC::ex base = lower(*node.operands[0], context);
+        GiNaC::ex exponent = lower(*node.operands[1], context);
+        if (GiNaC::is_a<GiNaC::numeric>(exponent)) {
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(exponent);
+            if (n.is_rational()) {
+                if (GiNaC::abs(GiNaC::numer(n)) > max_integer_exponent ||
+                    GiNaC::denom(n) > max_exponent_denominator)
+                    fail(*node.operands[1], "exponent too large: powers go up to " +
+                                                std::to_string(max_integer_exponent) +
+                                                " (and roots up to the " +
+                                                std::to_string(max_exponent_denominator) + "th)");
+                if (GiNaC::is_a<GiNaC::numeric>(base)) {
+                    const GiNaC::numeric& b = GiNaC::ex_to<GiNaC::numeric>(base);
+                    if (b.is_zero() && n.is_negative())
+                        fail(node, "division by zero (zero to a negative power)");
+                    if (bits_of(b) * GiNaC::abs(GiNaC::numer(n)).to_long() > max_number_bits)
+                        fail(node, "number too large (more than 30,000 digits)");
+                }
+            }
+        }
+        return checked(GiNaC::pow(base, exponent), node);
+    }
+
+    GiNaC::ex lower_call(const expr_node& node, const expr_context& context)
+    {
+        const std::string& f = node.text;
+        if (f == "dot") {
+            if (node.operands.size() != 1 || node.operands[0]->node_kind != expr_node::kind::name)
+                fail(node, "`dot(q)` takes the name of one coordinate");
+            return lower_velocity(*node.operands[0], node.operands[0]->text, context);
+        }
+        if (!function_names().count(f)) {
+            if (names_.count(f))
+                fail(node, quote(f) + " is not a function: write `" + f + "*(...)` to multiply");
+            fail(node, "unknown function " + quote(f) + "; the functions are sin cos tan exp log sqrt "
+                                                "sinh cosh tanh asin acos atan abs");
+        }
+        if (node.operands.size() != 1)
+            fail(node, quote(f) + " takes one argument");
+        GiNaC::ex x = lower(*node.operands[0], context);
+        try {
+            GiNaC::ex value;
+            if (f == "sin") value = GiNaC::sin(x);
+            else if (f == "cos") value = GiNaC::cos(x);
+            else if (f == "tan") value = GiNaC::tan(x);
+            else if (f == "exp") value = GiNaC::exp(x);
+            else if (f == "log") value = GiNaC::log(x);
+            else if (f == "sqrt") value = GiNaC::sqrt(x);
+            else if (f == "sinh") value = GiNaC::sinh(x);
+            else if (f == "cosh") value = GiNaC::cosh(x);
+            else if (f == "tanh") value = GiNaC::tanh(x);
+            else if (f == "asin") value = GiNaC::asin(x);
+            else if (f == "acos") value = GiNaC::acos(x);
+            else if (f == "atan") value = GiNaC::atan(x);
+            else value = GiNaC::abs(x);
+            return checked(value, node);
+        } catch (const scene_error&) {
+            throw;
+        } catch (const std::exception&) {
+            fail(node, quote(f) + " has no value here (a pole or a point outside its domain)");
+        }
+    }
+
+    const source_text& source_;
+    file_reader read_file_;
+    model scene_;
+    std::map<std::string, name_entry> names_;
+    std::map<std::string, source_location> points_;
+    std::vector<coordinate> coordinates_;
+    bool seen_title_ = false;
+    std::optional<source_location> energy_line_;
+    std::string energy_keyword_;
+    std::optional<source_location> lagrangian_line_;
+};
+
+/// The labels of the wildcards in `e`.
+std::set<unsigned> wildcards_in(const GiNaC::ex& e)
+{
+    std::set<unsigned> labels;
+    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
+        if (GiNaC::is_a<GiNaC::wildcard>(*i))
+            labels.insert(GiNaC::ex_to<GiNaC::wildcard>(*i).get_label());
+    return labels;
+}
+
+/// Runs `body`, attaching the offending line of `source` to any scene_error.
+template <typename F>
+auto with_source(const source_text& source, F body) -> decltype(body())
+{
+    try {
+        return body();
+    } catch (scene_error& error) {
+        attach_line(error, source);
+        throw;
+    }
+}
+
+} // namespace
+
+model load_model(const source_text& source, const file_reader& read_file)
+{
+    return with_source(source, [&] {
+        std::vector<token> tokens = tokenize(source);
+        scene_ast ast = parse_scene(tokens);
+        return lowering(source, read_file).run(ast);
+    });
+}
+
+void add_values(model& scene, const std::string& text)
+{
+    const std::string prefix = "values ";
+    source_text source("--values", prefix + text);
+    try {
+        std::vector<token> tokens = tokenize(source);
+        scene_ast ast = parse_scene(tokens);
+        if (ast.statements.size() != 1)
+            throw scene_error({"--values", 1, 1}, "give values as `a=1,b=2`");
+        lowering lower(source, {});
+        lower.adopt_names(scene);
+        scene.values.push_back(lower.values_line(ast.statements[0]));
+    } catch (scene_error& error) {
+        source_location at = error.where();
+        at.column = std::max(1, at.column - static_cast<int>(prefix.size()));
+        scene_error shifted(at, error.what());
+        shifted.attach_line_text(text);
+        throw shifted;
+    }
+}
+
+std::set<product> parse_want_list(const std::string& text)
+{
+    std::set<product> wanted;
+    std::stringstream items(text);
+    std::string item;
+    int column = 1;
+    while (std::getline(items, item, ',')) {
+        std::size_t first = item.find_first_not_of(' ');
+        std::size_t last = item.find_last_not_of(' ');
+        std::string name = first == std::string::npos ? "" : item.substr(first, last - first + 1);
+        std::optional<product> p = product_from_name(name);
+        if (!p) {
+            std::string all;
+            for (const auto& [unused, n] : product_names())
+                all += (all.empty() ? "" : ", ") + n;
+            scene_error error({"--want", 1, column + static_cast<int>(first == std::string::npos ? 0 : first)},
+                              "unknown product " + quote(name) + "; the products are: " + all);
+            error.attach_line_text(text);
+            throw error;
+        }
+        wanted.insert(*p);
+        column += static_cast<int>(item.size()) + 1;
+    }
+    return wanted;
+}
+
+std::vector<rewrite_rule> load_rules(const source_text& source, const model* scene)
+{
+    return with_source(source, [&] {
+        lexer_options options;
+        options.allow_wildcards = true;
+        std::vector<parsed_rule> parsed = parse_rules(tokenize(source, options));
+        lowering lower(source, {});
+        if (scene)
+            lower.adopt_names(*scene);
+        expr_context context{"a rule"};
+        context.velocities = true;
+        context.wildcards = true;
+        std::vector<rewrite_rule> rules;
+        for (const parsed_rule& r : parsed) {
+            GiNaC::ex pattern = lower.expression(*r.pattern, context);
+            GiNaC::ex replacement = lower.expression(*r.replacement, context);
+            if (GiNaC::is_a<GiNaC::numeric>(pattern))
+                throw scene_error(r.where, "a rule's pattern cannot be a number");
+            std::set<unsigned> pattern_wilds = wildcards_in(pattern);
+            for (unsigned label : wildcards_in(replacement))
+                if (!pattern_wilds.count(label))
+                    throw scene_error(r.where, "wildcard `$" + std::to_string(label) +
+                                                   "` of the replacement does not appear in the pattern");
+            rules.push_back({pattern, replacement,
+                             source.file() + ":" + std::to_string(r.where.line)});
+        }
+        return rules;
+    });
+}
+
+const std::vector<rewrite_rule>& embedded_rules()
+{
+    static const std::vector<rewrite_rule> rules = [] {
+        std::vector<rewrite_rule> all;
+        for (const embedded_rule_file& file : embedded_rule_files()) {
+            std::vector<rewrite_rule> some = load_rules(source_text(std::string("rules/") + file.name, file.text), nullptr);
+            all.insert(all.end(), some.begin(), some.end());
+        }
+        return all;
+    }();
+    return rules;
+}
+
+} // namespace lagrange

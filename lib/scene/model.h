@@ -1,0 +1,141 @@
+/** @file model.h
+ *  The model: what a scene said, as plain data, with every symbol created once.
+ *  It knows nothing of printing or of the command line. */
+#pragma once
+
+#include "mechanics/rules.h"
+#include "scene/source.h"
+
+#include <ginac/ginac.h>
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+/// A generalized coordinate q with its velocity and acceleration as plain symbols,
+/// named `q`, `q_dot` and `q_ddot` (the reserved suffixes tell printers which is which).
+struct coordinate {
+    std::string name;
+    GiNaC::realsymbol position;
+    GiNaC::realsymbol velocity;
+    GiNaC::realsymbol acceleration;
+};
+
+/// A constant symbol of the scene, assumed real and positive.
+struct parameter {
+    std::string name;
+    GiNaC::possymbol symbol;
+};
+
+/// A point mass: adds ½ m |ṙ|² to T (and −m g·r to V under gravity).
+struct point_mass {
+    std::string name;
+    GiNaC::ex mass;
+    std::vector<GiNaC::ex> position; ///< 2 or 3 components, in the coordinates
+    source_location where;
+};
+
+/// Uniform gravity of strength g along a unit vector.
+struct gravity_field {
+    GiNaC::ex strength;
+    std::vector<GiNaC::ex> direction; ///< normalized, 2 or 3 components
+};
+
+/// A spring between two points or fixed positions: adds ½ k (|r_A − r_B| − a)² to V.
+struct spring {
+    GiNaC::ex stiffness;
+    std::vector<GiNaC::ex> end_a;
+    std::vector<GiNaC::ex> end_b;
+    GiNaC::ex rest_length; ///< 0 if omitted
+};
+
+/// `ratio rho = m/M`: results are also written with `numerator` replaced by rho·denominator.
+struct ratio_request {
+    std::string name;
+    GiNaC::possymbol symbol;
+    GiNaC::ex definition; ///< m/M
+};
+
+/// `limit rho -> 0` or `limit rho -> oo`.
+struct limit_request {
+    std::string variable;
+    bool to_infinity = false;
+};
+
+/// One `values` line: exact or floating values of parameters, in the order written.
+struct value_point {
+    std::vector<std::pair<std::string, GiNaC::ex>> values;
+    source_location where;
+};
+
+/// `initial q = 0.1, q' = 0`: entries not named are 0.
+struct initial_state {
+    std::map<std::string, GiNaC::ex> positions;  ///< by coordinate name
+    std::map<std::string, GiNaC::ex> velocities; ///< by coordinate name
+    std::map<std::string, GiNaC::ex> others;     ///< e.g. body angular velocities
+};
+
+/// `simulate until T_end [step dt] [method NAME] [tolerance tol]`.
+struct simulation_request {
+    GiNaC::ex until;
+    std::optional<GiNaC::ex> step;
+    std::string method = "auto";
+    std::optional<GiNaC::ex> tolerance;
+};
+
+/// The products a scene can ask for (§4 of the spec), in the spec's order.
+enum class product {
+    equations,
+    equilibrium,
+    linearization,
+    characteristic,
+    frequencies,
+    modes,
+    normal_coordinates,
+    asymptotic,
+    numeric,
+    inertia,
+    euler,
+    simulation,
+    workprecision,
+};
+
+/// Spec names of the products, in order.
+const std::vector<std::pair<product, std::string>>& product_names();
+std::optional<product> product_from_name(const std::string& name);
+
+/// Everything a scene said.
+struct model {
+    std::string file;
+    std::string title;
+    GiNaC::realsymbol time{"t"};
+    std::vector<parameter> parameters;
+    std::vector<coordinate> coordinates;
+
+    GiNaC::ex kinetic_terms;   ///< sum of the `T = ...` lines (0 if none)
+    GiNaC::ex potential_terms; ///< sum of the `V = ...` lines (0 if none)
+    std::optional<GiNaC::ex> lagrangian_terms; ///< an `L = ...` line
+    std::vector<point_mass> points;
+    std::optional<gravity_field> gravity;
+    std::vector<spring> springs;
+
+    std::optional<std::vector<GiNaC::ex>> equilibrium; ///< one value per coordinate
+    std::optional<ratio_request> ratio;
+    std::optional<limit_request> limit;
+    std::vector<value_point> values;
+    std::optional<initial_state> initial;
+    std::optional<simulation_request> simulation;
+    std::vector<rewrite_rule> rules; ///< from `use` lines (the embedded rules are added by the stages)
+    std::set<product> wanted; ///< empty: everything the scene supports
+
+    /// Positions, velocities and accelerations of all coordinates, in order.
+    GiNaC::lst positions() const;
+    GiNaC::lst velocities() const;
+    GiNaC::lst accelerations() const;
+};
+
+} // namespace lagrange

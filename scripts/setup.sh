@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs what is missing (Debian packages, as root), then configures and builds
+# lagrange in Release mode in ./build. Used by example.sh and test.sh.
+#   LAGRANGE_WITH_LATEX=1  also installs pdflatex (the tests compile LaTeX output)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev)
+if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then
+  packages+=(texlive-latex-base)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  if [ "$(id -u)" = 0 ]; then sudo=(); else sudo=(sudo); fi
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@" >&2
+cmake --build build -j "$(nproc)" >&2

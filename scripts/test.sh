@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Quick start, command 2: install what is missing (with pdflatex), build (Release),
+# and run the whole test suite with ctest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+LAGRANGE_WITH_LATEX=1 scripts/setup.sh
+cd build
+ctest --output-on-failure -j "$(nproc)" "$@"

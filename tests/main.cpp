@@ -1,0 +1,4 @@
+/** @file main.cpp
+ *  The Catch2 test runner. */
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>

@@ -1,0 +1,178 @@
+/** @file test_cli.cpp
+ *  The command line: exit codes, hostile input, determinism, JSON keys, LaTeX that compiles. */
+#include "cli_runner.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <random>
+
+using namespace lagrange_test;
+
+namespace {
+
+const std::string examples = std::string(LAGRANGE_SOURCE_DIR) + "/examples/";
+const std::string double_pendulum = examples + "double_pendulum.lag";
+
+} // namespace
+
+TEST_CASE("cli: --version and --help", "[cli]")
+{
+    cli_result version = run_cli("--version");
+    CHECK(version.exit_code == 0);
+    CHECK(version.out.find("lagrange") != std::string::npos);
+    cli_result help = run_cli("--help");
+    CHECK(help.exit_code == 0);
+    CHECK(help.out.find("--want") != std::string::npos);
+}
+
+TEST_CASE("cli: usage errors exit with 2", "[cli]")
+{
+    CHECK(run_cli("").exit_code == 2);
+    CHECK(run_cli("--no-such-option " + double_pendulum).exit_code == 2);
+    CHECK(run_cli("--format pdf " + double_pendulum).exit_code == 2);
+    cli_result missing = run_cli("/no/such/scene.lag");
+    CHECK(missing.exit_code == 2);
+    CHECK(missing.err.find("no such file") != std::string::npos);
+    CHECK(run_cli("/tmp").exit_code == 2);
+    cli_result want = run_cli("--want nonsense " + double_pendulum);
+    CHECK(want.exit_code == 2);
+    CHECK(want.err.rfind("--want:1:1: error: unknown product", 0) == 0);
+}
+
+TEST_CASE("cli: a product not computed by this version exits with 1 and says why", "[cli]")
+{
+    cli_result r = run_cli("--want modes " + double_pendulum);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("`modes` is not computed by this version") != std::string::npos);
+}
+
+TEST_CASE("cli: check", "[cli]")
+{
+    cli_result ok = run_cli("check " + double_pendulum);
+    CHECK(ok.exit_code == 0);
+    CHECK(ok.out.find("ok (2 coordinates, 4 parameters)") != std::string::npos);
+    std::string bad = temporary_file("bad.lag", "parameters m\ncoordinates q\nT = m*w\n");
+    cli_result error = run_cli("check " + bad);
+    CHECK(error.exit_code == 2);
+    CHECK(error.err == bad + ":3:7: error: unknown name `w`: declare it with `parameters`, `coordinates` or `let`\n"
+                             "T = m*w\n"
+                             "      ^\n");
+}
+
+TEST_CASE("cli: standard input", "[cli]")
+{
+    cli_result r = run_cli("- --format json", "parameters m k\ncoordinates x\nT = 1/2*m*x'^2\nV = 1/2*k*x^2\n");
+    REQUIRE(r.exit_code == 0);
+    nlohmann::json doc = nlohmann::json::parse(r.out);
+    CHECK(doc["equations"][0] == "m*x_ddot+k*x");
+    cli_result error = run_cli("-", "coordinates x\nT = w\n");
+    CHECK(error.exit_code == 2);
+    CHECK(error.err.rfind("<stdin>:2:5: error:", 0) == 0);
+}
+
+TEST_CASE("cli: the double pendulum's equations as JSON", "[cli]")
+{
+    cli_result r = run_cli(double_pendulum + " --want equations --format json --timings");
+    REQUIRE(r.exit_code == 0);
+    nlohmann::json doc = nlohmann::json::parse(r.out);
+    CHECK(doc["scene"] == "Double pendulum: equal lengths, unequal masses");
+    CHECK(doc["coordinates"] == nlohmann::json::array({"theta", "phi"}));
+    CHECK(doc["parameters"] == nlohmann::json::array({"M", "m", "l", "g"}));
+    CHECK(doc["stages"] == nlohmann::json::array({"lagrangian", "equations"}));
+    CHECK(doc["timings"].contains("equations"));
+    REQUIRE(doc["equations"].size() == 2);
+    // The strings are checked by meaning in test_lagrangian.cpp; here: the compact form.
+    std::string theta = doc["equations"][0];
+    CHECK(theta.find("theta_ddot") < theta.find("phi_ddot"));
+    CHECK(theta.find("(M+m)") != std::string::npos);
+    CHECK(theta.find("sin(theta)") != std::string::npos);
+}
+
+TEST_CASE("cli: output is byte-identical from run to run", "[cli][determinism]")
+{
+    for (const char* format : {"text", "json", "latex"}) {
+        cli_result first = run_cli(double_pendulum + " --format " + format);
+        cli_result second = run_cli(double_pendulum + " --format " + format);
+        REQUIRE(first.exit_code == 0);
+        CHECK(first.out == second.out);
+    }
+}
+
+TEST_CASE("cli: -o writes the file", "[cli]")
+{
+    std::string path = temporary_file("out.json", "");
+    cli_result r = run_cli(double_pendulum + " --format json -o " + path);
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.empty());
+    CHECK(nlohmann::json::parse(read_file(path)).contains("equations"));
+}
+
+TEST_CASE("cli: hostile input exits with 2 and a located message, never a crash or a hang", "[cli][hostile]")
+{
+    const std::string header = "parameters m\ncoordinates q\n";
+    std::mt19937 random(7);
+    std::string binary(4096, '\0');
+    for (char& c : binary)
+        c = static_cast<char>(random() & 0xFF);
+    std::string sum_line = header + "T = ";
+    for (int i = 0; i < 200000; ++i)
+        sum_line += "m*q'^2+";
+    sum_line += "m\nV = q @\n";
+    struct hostile {
+        const char* name;
+        std::string text;
+    };
+    std::vector<hostile> inputs = {
+        {"nesting 10000 deep", header + "V = " + std::string(10000, '(') + "q" + std::string(10000, ')') + "\n"},
+        {"unary minus 10000 deep", header + "V = " + std::string(10000, '-') + "q\n"},
+        {"power tower 10000 high", [&] {
+             std::string s = header + "V = q";
+             for (int i = 0; i < 10000; ++i)
+                 s += "^q";
+             return s + "\n";
+         }()},
+        {"1 MB line of garbage", header + std::string(1 << 20, 'x') + "\n"},
+        {"1 MB line of sums, error at its end", sum_line},
+        {"1 MB number", header + "V = " + std::string(1 << 20, '7') + "\n"},
+        {"2^(2^64)", header + "V = 2^(2^64)*q\n"},
+        {"factorial(10^9)", header + "V = factorial(10^9)\n"},
+        {"huge float", header + "V = 1e999999999*q\n"},
+        {"NUL bytes", header + std::string("V = q\0\0\0", 8) + "\n"},
+        {"invalid UTF-8", header + "V = q \xC0\xAF\n"},
+        {"binary file", binary},
+        {"empty file", ""},
+        {"only a byte-order mark", "\xEF\xBB\xBF"},
+        {"unterminated string", "scene \"title\n"},
+        {"imaginary unit", header + "V = (-4)^(1/2)*q\n"},
+    };
+    for (const hostile& h : inputs) {
+        INFO(h.name);
+        std::string path = temporary_file("hostile.lag", h.text);
+        cli_result r = run_cli(path, "", 10);
+        CHECK(r.exit_code == 2);
+        CHECK(r.err.rfind(path + ":", 0) == 0);
+        CHECK(r.err.find(": error: ") != std::string::npos);
+        CHECK(r.err.find('^') != std::string::npos);
+        CHECK(r.err.size() < 2000);
+    }
+}
+
+TEST_CASE("cli: the LaTeX output compiles with pdflatex", "[cli][latex]")
+{
+    if (std::system("command -v pdflatex >/dev/null 2>&1") != 0)
+        FAIL("pdflatex is not installed (the test command installs texlive-latex-base)");
+    std::string folder = temporary_file("latex-probe", "");
+    std::string tex = temporary_file("double_pendulum.tex", "");
+    cli_result r = run_cli(double_pendulum + " --format latex -o " + tex);
+    REQUIRE(r.exit_code == 0);
+    std::string directory = tex.substr(0, tex.rfind('/'));
+    std::string command = "cd " + directory + " && pdflatex -interaction=nonstopmode -halt-on-error double_pendulum.tex"
+                          " >pdflatex.out 2>&1";
+    int status = std::system(command.c_str());
+    INFO(read_file(directory + "/pdflatex.out"));
+    CHECK(status == 0);
+    std::string log = read_file(directory + "/double_pendulum.log");
+    CHECK(log.find("Overfull") == std::string::npos);
+}

@@ -1,0 +1,291 @@
+/** @file test_scene.cpp
+ *  The front end: lexer, parser, semantic checks and lowering. One case per error path. */
+#include "scene/lexer.h"
+#include "scene/lower.h"
+#include "scene/parser.h"
+
+#include <catch2/catch.hpp>
+
+using namespace lagrange;
+
+namespace {
+
+model load(const std::string& text) { return load_model(source_text("test.lag", text)); }
+
+/// Loads `text`, expecting a scene_error at line:column whose message contains `fragment`.
+void require_error(const std::string& text, int line, int column, const std::string& fragment)
+{
+    INFO("scene:\n" << text);
+    try {
+        load(text);
+        FAIL("no error");
+    } catch (const scene_error& e) {
+        INFO("message: " << e.what());
+        CHECK(e.where().file == "test.lag");
+        CHECK(e.where().line == line);
+        CHECK(e.where().column == column);
+        CHECK(std::string(e.what()).find(fragment) != std::string::npos);
+        CHECK(e.has_line_text());
+    }
+}
+
+const std::string header = "parameters m g l\ncoordinates q\n";
+
+} // namespace
+
+TEST_CASE("lexer: tokens carry line and column", "[lexer]")
+{
+    source_text source("a.lag", "parameters m\n  T = 1/2*m*q'^2 # comment\n");
+    std::vector<token> tokens = tokenize(source);
+    REQUIRE(tokens.size() >= 6);
+    CHECK(tokens[0].text == "parameters");
+    CHECK(tokens[0].where.line == 1);
+    CHECK(tokens[0].where.column == 1);
+    CHECK(tokens[2].kind == token_kind::newline);
+    CHECK(tokens[3].text == "T");
+    CHECK(tokens[3].where.line == 2);
+    CHECK(tokens[3].where.column == 3);
+    CHECK(tokens.back().kind == token_kind::end);
+}
+
+TEST_CASE("lexer: byte-order mark, CRLF and continuation", "[lexer]")
+{
+    model scene = load("\xEF\xBB\xBFparameters m \\\r\n  k\r\ncoordinates x\r\nT = 1/2*m*x'^2\r\nV = 1/2*k*x^2\r\n");
+    REQUIRE(scene.parameters.size() == 2);
+    CHECK(scene.parameters[1].name == "k");
+    CHECK(scene.coordinates.size() == 1);
+}
+
+TEST_CASE("lexer: columns count code points in comments and strings", "[lexer]")
+{
+    require_error("scene \"θ-pendulum\" @\n", 1, 20, "unexpected character");
+}
+
+TEST_CASE("lexer: error paths", "[lexer]")
+{
+    require_error(header + "T = m*q'^2 @\n", 3, 12, "unexpected character `@`");
+    require_error(header + "T = θ\n", 3, 5, "names are ASCII");
+    require_error(header + "T = m\xFF\n", 3, 6, "invalid UTF-8");
+    require_error(header + std::string("T = m\0", 6) + "\n", 3, 6, "control character");
+    require_error(header + "# bad \xC3\x28 byte\n", 3, 7, "invalid UTF-8");
+    require_error("scene \"open\n", 1, 7, "unterminated string");
+    require_error(header + "T = 2x\n", 3, 6, "a number cannot run into a name");
+    require_error(header + "T = m \\ q\n", 3, 7, "continues a line only at its end");
+    require_error(header + "T = " + std::string(2000, '1') + "\n", 3, 5, "number too long");
+    require_error(header + "T = $0\n", 3, 5, "unexpected character `$`");
+}
+
+TEST_CASE("parser: error paths", "[parser]")
+{
+    require_error("parameters\n", 1, 11, "expected a name after `parameters`");
+    require_error("frobnicate x\n", 1, 1, "unknown statement `frobnicate`");
+    require_error("42\n", 1, 1, "expected a statement");
+    require_error(header + "T = (m*q'\n", 3, 10, "expected `)`");
+    require_error(header + "T = m*\n", 3, 7, "expected an expression");
+    require_error(header + "point P mass m to (l, 0)\n", 3, 16, "expected `at`");
+    require_error(header + "point P mass m at (l)\n", 3, 21, "a vector has 2 or 3 components");
+    require_error(header + "point P mass m at (l, 0, 0, 0)\n", 3, 27, "a vector has 2 or 3 components");
+    require_error(header + "T = m*(q+1)'\n", 3, 12, "follows a coordinate's name only");
+    require_error(header + "limit m -> 1\n", 3, 12, "expected `0` or `oo`");
+    require_error(header + "simulate until 1 step 0.1 step 0.2\n", 3, 27, "given twice");
+    require_error(header + "simulate 10\n", 3, 10, "expected `until`");
+    require_error(header + "spring k between (0,0) or (1,1)\n", 3, 24, "expected `and`");
+    require_error(header + "T = m q\n", 3, 7, "expected the end of the statement");
+    require_error(header + "want equations modes\n", 3, 16, "expected the end of the statement");
+    require_error(header + "body B disk(l) mass m spin (0,0,1)\n", 3, 23, "expected `axis`");
+}
+
+TEST_CASE("parser: nesting deeper than the limit is an error, not a crash", "[parser]")
+{
+    std::string deep = std::string(10000, '(') + "q" + std::string(10000, ')');
+    require_error(header + "V = " + deep + "\n", 3, 5 + max_expression_depth, "nested more than");
+    std::string minus(10000, '-');
+    require_error(header + "V = " + minus + "q\n", 3, 5 + max_expression_depth, "nested more than");
+}
+
+TEST_CASE("parser: every statement of the language parses", "[parser]")
+{
+    std::string text = R"(scene "all"
+parameters M m l g k a
+coordinates x y
+let r = sqrt(x^2 + y^2)
+point P mass m at (x, y)
+point Q mass M at (x + l, y, 0)
+gravity g along (0, -1)
+spring k between P and Q rest a
+spring k between (0, 0) and P
+equilibrium x = 0, y = 0
+values M = 1, m = 1/2, l = 1, g = 9.81, k = 1e3, a = 0.5
+initial x = 0.1, x' = 0, y' = 2
+simulate until 10 step 0.01 method rk45 tolerance 1e-9
+want equations
+)";
+    model scene = load(text);
+    CHECK(scene.title == "all");
+    CHECK(scene.points.size() == 2);
+    CHECK(scene.springs.size() == 2);
+    CHECK(scene.values.size() == 1);
+    REQUIRE(scene.simulation);
+    CHECK(scene.simulation->method == "rk45");
+    CHECK(scene.wanted == std::set<product>{product::equations});
+    REQUIRE(scene.initial);
+    CHECK(scene.initial->velocities.count("y"));
+}
+
+TEST_CASE("parser: rigid-body statements parse and are refused at their position", "[parser]")
+{
+    require_error(header + "body B disk(l) mass m axis z at (0, 0, l)\n", 3, 1, "not supported yet");
+    require_error(header + "body B region ball(l) density 1 + x^2\n", 3, 1, "not supported yet");
+    require_error(header + "body B inertia (1, 2, 3) mass m orientation zxz(q, q, q)\n", 3, 1, "not supported yet");
+    require_error(header + "omega B (q, q, q)\n", 3, 1, "not supported yet");
+    require_error(header + "torque B (0, 0, 1)\n", 3, 1, "not supported yet");
+}
+
+TEST_CASE("lower: numbers stay exact, decimals are floats", "[lower]")
+{
+    model scene = load("parameters m\ncoordinates x\nT = 1/3*m*x'^2 + 123456789012345678901234567890*m\nV = 1e-14*x^2\n");
+    GiNaC::ex t = scene.kinetic_terms;
+    GiNaC::symbol unused;
+    GiNaC::ex coefficient = t.coeff(scene.coordinates[0].velocity, 2);
+    CHECK((coefficient - GiNaC::numeric(1, 3) * scene.parameters[0].symbol).expand().is_zero());
+    CHECK(t.has(GiNaC::numeric("123456789012345678901234567890")));
+    GiNaC::ex v = scene.potential_terms.coeff(scene.coordinates[0].position, 2);
+    REQUIRE(GiNaC::is_a<GiNaC::numeric>(v));
+    CHECK_FALSE(GiNaC::ex_to<GiNaC::numeric>(v).is_rational());
+    CHECK(GiNaC::ex_to<GiNaC::numeric>(v).to_double() == Approx(1e-14).epsilon(1e-15));
+}
+
+TEST_CASE("lower: let shorthands are substituted", "[lower]")
+{
+    model scene = load("parameters m k\ncoordinates x\nlet s = k*x^2\nV = 1/2*s\n");
+    GiNaC::ex expected = GiNaC::numeric(1, 2) * scene.parameters[1].symbol * GiNaC::pow(scene.coordinates[0].position, 2);
+    CHECK((scene.potential_terms - expected).expand().is_zero());
+}
+
+TEST_CASE("lower: I is a name, not the imaginary unit", "[lower]")
+{
+    model scene = load("parameters I\ncoordinates x\nT = 1/2*I*x'^2\n");
+    CHECK_FALSE(scene.kinetic_terms.has(GiNaC::I));
+}
+
+TEST_CASE("lower: error paths", "[lower]")
+{
+    require_error(header + "T = m*z'^2\n", 3, 7, "`z'`: only coordinates have velocities");
+    require_error(header + "T = m*w\n", 3, 7, "unknown name `w`");
+    require_error(header + "T = m*q_dot^2\n", 3, 7, "the velocity of `q` is written `q'`");
+    require_error(header + "T = m*g'^2\n", 3, 7, "only coordinates have velocities");
+    require_error("parameters m m\n", 1, 14, "already declared at line 1");
+    require_error("parameters m\ncoordinates m\n", 2, 13, "already declared");
+    require_error("parameters sin\n", 1, 12, "reserved");
+    require_error("parameters t\n", 1, 12, "reserved");
+    require_error("parameters L\n", 1, 12, "reserved");
+    require_error("parameters x_dot\n", 1, 12, "reserved for velocities");
+    require_error(header + "T = 1/2*m*q'^2\nL = 1/2*m*q'^2\n", 4, 1, "cannot be combined with the `T` line");
+    require_error(header + "L = 1/2*m*q'^2\nV = m*g*q\n", 4, 1, "cannot be combined with the Lagrangian");
+    require_error(header + "L = q\nL = q\n", 4, 1, "given twice");
+    require_error(header + "T = m/0\n", 3, 7, "division by zero");
+    require_error(header + "T = m*0^(-1)\n", 3, 8, "division by zero");
+    require_error(header + "T = log(0)\n", 3, 5, "`log` has no value here");
+    require_error(header + "T = tan(Pi/2)\n", 3, 5, "`tan` has no value here");
+    require_error(header + "T = 2^(2^64)\n", 3, 9, "exponent too large");
+    require_error(header + "T = (2^1000)^1000\n", 3, 13, "number too large");
+    require_error(header + "T = factorial(10^9)\n", 3, 5, "unknown function `factorial`");
+    require_error(header + "T = m(q)\n", 3, 5, "is not a function");
+    require_error(header + "T = sin\n", 3, 5, "is a function");
+    require_error(header + "T = sin(q, q)\n", 3, 5, "takes one argument");
+    require_error(header + "T = dot(m)\n", 3, 9, "`m` is not a coordinate");
+    require_error(header + "T = (-1)^(1/2)\n", 3, 9, "not a real number");
+    require_error(header + "T = 1e999999\n", 3, 5, "out of the range");
+    require_error(header + "point P mass m at (q', 0)\n", 3, 20, "velocities cannot appear in a position");
+    require_error(header + "point P mass q at (q, 0)\n", 3, 14, "coordinate `q` cannot appear in a mass");
+    require_error(header + "point P mass m at (q, 0)\npoint P mass m at (q, 0)\n", 4, 7, "already declared");
+    require_error(header + "gravity g along (0, 0)\n", 3, 17, "zero vector");
+    require_error(header + "gravity g along (0, -1)\ngravity g along (0, -1)\n", 4, 1, "given twice");
+    require_error(header + "spring g between P and (0, 0)\n", 3, 18, "unknown point `P`");
+    require_error(header + "equilibrium q' = 0\n", 3, 13, "positions only");
+    require_error(header + "equilibrium m = 0\n", 3, 13, "is not a coordinate");
+    require_error("parameters m\ncoordinates q p\nequilibrium q = 0\n", 3, 1, "does not give coordinate `p`");
+    require_error(header + "equilibrium q = 0, q = 1\n", 3, 20, "given twice");
+    require_error(header + "values m = 1, m = 2\n", 3, 15, "given twice");
+    require_error(header + "values q = 1\n", 3, 8, "is not a parameter");
+    require_error(header + "values m = g\n", 3, 12, "give a number");
+    require_error(header + "initial q = 0, q' = 1, q = 2\n", 3, 24, "given twice");
+    require_error(header + "ratio r = m*g\n", 3, 11, "one parameter over another");
+    require_error(header + "ratio r = m/g\nV = r*q\n", 4, 5, "is a ratio");
+    require_error(header + "limit z -> 0\n", 3, 7, "is not a ratio or a parameter");
+    require_error(header + "simulate until -1\n", 3, 16, "must be positive");
+    require_error(header + "want everything\n", 3, 6, "unknown product `everything`");
+    require_error(header + "use \"no-such-file.rules\"\n", 3, 1, "cannot read the rules file");
+    require_error(header + "scene \"a\"\nscene \"b\"\n", 4, 1, "given twice");
+    require_error("parameters m\n", 1, 1, "declares no coordinates");
+    require_error("", 1, 1, "declares no coordinates");
+}
+
+TEST_CASE("lower: use adds rules, errors in a rules file point into it", "[lower]")
+{
+    auto reader = [](const std::string& path, const source_location&) -> std::string {
+        if (path == "good.rules")
+            return "# comment\ncos($0)^2 -> 1 - sin($0)^2\n";
+        return "sin($0) -> $1\n";
+    };
+    model scene = load_model(source_text("test.lag", header + "use \"good.rules\"\n"), reader);
+    REQUIRE(scene.rules.size() == 1);
+    CHECK(scene.rules[0].origin == "good.rules:2");
+    try {
+        load_model(source_text("test.lag", header + "use \"bad.rules\"\n"), reader);
+        FAIL("no error");
+    } catch (const scene_error& e) {
+        CHECK(e.where().file == "bad.rules");
+        CHECK(e.where().line == 1);
+        CHECK(std::string(e.what()).find("does not appear in the pattern") != std::string::npos);
+        CHECK(e.line_text() == "sin($0) -> $1");
+    }
+}
+
+TEST_CASE("lower: the embedded rules parse", "[lower][rules]")
+{
+    CHECK_NOTHROW(embedded_rules());
+}
+
+TEST_CASE("lower: --values and --want from the command line", "[lower]")
+{
+    model scene = load(header);
+    add_values(scene, "m=1, g=9.81");
+    REQUIRE(scene.values.size() == 1);
+    CHECK(scene.values[0].values.size() == 2);
+    try {
+        add_values(scene, "m=1,z=2");
+        FAIL("no error");
+    } catch (const scene_error& e) {
+        CHECK(e.where().file == "--values");
+        CHECK(e.where().column == 5);
+    }
+    CHECK(parse_want_list("equations, modes") == std::set<product>{product::equations, product::modes});
+    try {
+        parse_want_list("equations,nonsense");
+        FAIL("no error");
+    } catch (const scene_error& e) {
+        CHECK(e.where().column == 11);
+    }
+}
+
+TEST_CASE("format_error: location, line and caret", "[source]")
+{
+    scene_error error({"s.lag", 2, 5}, "unknown name `w`");
+    error.attach_line_text("T = w");
+    CHECK(format_error(error) == "s.lag:2:5: error: unknown name `w`\nT = w\n    ^\n");
+}
+
+TEST_CASE("format_error: a 1 MB line is shown as a short window", "[source]")
+{
+    scene_error error({"s.lag", 1, 500000}, "bad");
+    error.attach_line_text(std::string(1000000, 'a'));
+    std::string text = format_error(error);
+    CHECK(text.size() < 400);
+    std::size_t second_line = text.find('\n') + 1;
+    std::size_t third_line = text.find('\n', second_line) + 1;
+    std::string shown = text.substr(second_line, third_line - second_line - 1);
+    std::string caret = text.substr(third_line);
+    CHECK(caret.back() == '\n');
+    CHECK(caret.size() - 2 < shown.size());
+}
