@@ -28,12 +28,23 @@ constexpr int applications_per_node = 64;
 /// State of one top-level match: the remaining budget of attempts.
 struct match_context {
     long budget = match_budget;
+    bool in_argument = false; ///< matching inside a function's argument
 };
+
+/// The gcd of the numeric coefficients of `e` (1 where it is not a polynomial).
+numeric coefficient_content(const ex& e)
+{
+    try {
+        return e.expand().integer_content();
+    } catch (const std::exception&) {
+        return 1;
+    }
+}
 
 bool is_leaf(const ex& e)
 {
-    return (kind_of(e) == node_kind::symbol) || (kind_of(e) == node_kind::number) ||
-           (kind_of(e) == node_kind::constant);
+    const ex_kind kind = ex_kind_of(e);
+    return kind == ex_kind::symbol || kind == ex_kind::number || kind == ex_kind::constant;
 }
 
 /// Equality by meaning: structurally equal, or the difference expands to zero.
@@ -49,25 +60,25 @@ bool same_value(const ex& a, const ex& b)
 /// `e` expanded; a product of factors without sums is returned as it is.
 ex expanded(const ex& e)
 {
-    if (kind_of(e) == node_kind::product) {
+    if (ex_kind_of(e) == ex_kind::product) {
         for (size_t i = 0; i < e.nops(); ++i) {
             const ex& f = e.op(i);
-            const node_kind kind = kind_of(f);
-            if (kind == node_kind::sum || kind == node_kind::product ||
-                (kind == node_kind::power && kind_of(f.op(0)) == node_kind::sum))
+            const ex_kind kind = ex_kind_of(f);
+            if (kind == ex_kind::sum || kind == ex_kind::product ||
+                (kind == ex_kind::power && ex_kind_of(f.op(0)) == ex_kind::sum))
                 return e.expand();
         }
         return e;
     }
-    const node_kind kind = kind_of(e);
-    if (kind == node_kind::symbol || kind == node_kind::number || kind == node_kind::function)
+    const ex_kind kind = ex_kind_of(e);
+    if (kind == ex_kind::symbol || kind == ex_kind::number || kind == ex_kind::function)
         return e;
     return e.expand();
 }
 
 bool has_wildcard(const ex& p)
 {
-    if (kind_of(p) == node_kind::wildcard)
+    if (ex_kind_of(p) == ex_kind::wildcard)
         return true;
     for (size_t i = 0; i < p.nops(); ++i)
         if (has_wildcard(p.op(i)))
@@ -78,7 +89,7 @@ bool has_wildcard(const ex& p)
 /// True if `p` contains a wildcard that `bindings` does not bind.
 bool has_unbound_wildcard(const ex& p, const exmap& bindings)
 {
-    if ((kind_of(p) == node_kind::wildcard))
+    if (ex_kind_of(p) == ex_kind::wildcard)
         return bindings.find(p) == bindings.end();
     for (size_t i = 0; i < p.nops(); ++i)
         if (has_unbound_wildcard(p.op(i), bindings))
@@ -90,7 +101,7 @@ bool has_unbound_wildcard(const ex& p, const exmap& bindings)
 exvector terms_of(const ex& e)
 {
     exvector terms;
-    if ((kind_of(e) == node_kind::sum)) {
+    if (ex_kind_of(e) == ex_kind::sum) {
         terms.reserve(e.nops());
         for (size_t i = 0; i < e.nops(); ++i)
             terms.push_back(e.op(i));
@@ -109,12 +120,12 @@ struct product_parts {
 product_parts split_product(const ex& e)
 {
     product_parts parts;
-    if ((kind_of(e) == node_kind::number)) {
+    if (ex_kind_of(e) == ex_kind::number) {
         parts.coefficient = GiNaC::ex_to<numeric>(e);
-    } else if ((kind_of(e) == node_kind::product)) {
+    } else if (ex_kind_of(e) == ex_kind::product) {
         for (size_t i = 0; i < e.nops(); ++i) {
             const ex& f = e.op(i);
-            if ((kind_of(f) == node_kind::number))
+            if (ex_kind_of(f) == ex_kind::number)
                 parts.coefficient *= GiNaC::ex_to<numeric>(f);
             else
                 parts.factors.push_back(f);
@@ -182,7 +193,7 @@ private:
                 continue;
             if (!has_unbound_wildcard(patterns_[j], bindings))
                 return j;
-            if ((kind_of(patterns_[j]) == node_kind::wildcard)) {
+            if (ex_kind_of(patterns_[j]) == ex_kind::wildcard) {
                 if (bare == patterns_.size())
                     bare = j;
             } else if (structured == patterns_.size()) {
@@ -202,8 +213,10 @@ private:
     {
         if (expanded_targets_.empty()) {
             for (size_t i = 0; i < targets_.size(); ++i) {
-                expanded_targets_.push_back(targets_[i].expand());
+                expanded_targets_.push_back(expanded(targets_[i]));
                 by_hash_.emplace(expanded_targets_.back().gethash(), i);
+                if (!expanded_targets_.back().is_equal(targets_[i]))
+                    unexpanded_targets_.push_back(i);
             }
         }
         auto range = by_hash_.equal_range(part.gethash());
@@ -215,13 +228,13 @@ private:
         return false;
     }
 
-    bool finish(exmap&) const { return partial_ || unused_count() == 0; }
+    bool finish() const { return partial_ || unused_count() == 0; }
 
     bool step(exmap& bindings)
     {
         const size_t j = next_pattern(bindings);
         if (j == patterns_.size())
-            return finish(bindings);
+            return finish();
         if (--context_.budget < 0)
             return false;
         const ex& p = patterns_[j];
@@ -229,7 +242,7 @@ private:
         bool found = false;
         if (!has_unbound_wildcard(p, bindings))
             found = step_bound(p, bindings);
-        else if ((kind_of(p) == node_kind::wildcard) && !partial_ && last_pattern(j))
+        else if (ex_kind_of(p) == ex_kind::wildcard && !partial_ && last_pattern(j))
             found = step_absorb(p, bindings);
         else
             found = step_search(p, bindings);
@@ -247,27 +260,36 @@ private:
     }
 
     /// A pattern term without unbound wildcards: its value (a sum, possibly) must be
-    /// found term by term among the unused target terms.
+    /// found term by term among the unused target terms, or be equal by meaning to one
+    /// unused target term that is not in expanded form.
     bool step_bound(const ex& p, exmap& bindings)
     {
-        const ex value = expanded((kind_of(p) == node_kind::wildcard)
+        const ex value = expanded(ex_kind_of(p) == ex_kind::wildcard
                                       ? bindings.find(p)->second
                                       : p.subs(bindings, GiNaC::subs_options::no_pattern));
         std::vector<size_t> taken;
+        bool found = true;
         for (const ex& part : terms_of(value)) {
             size_t index = 0;
             if (!find_unused(part, index)) {
-                for (size_t t : taken)
-                    target_used_[t] = false;
-                return false;
+                found = false;
+                break;
             }
             target_used_[index] = true;
             taken.push_back(index);
         }
-        if (step(bindings))
+        if (found && step(bindings))
             return true;
         for (size_t t : taken)
             target_used_[t] = false;
+        for (size_t i : unexpanded_targets_) {
+            if (target_used_[i] || !same_value(targets_[i], value))
+                continue;
+            target_used_[i] = true;
+            if (step(bindings))
+                return true;
+            target_used_[i] = false;
+        }
         return false;
     }
 
@@ -313,6 +335,7 @@ private:
     std::vector<bool> target_used_;
     std::vector<bool> pattern_done_;
     std::unordered_multimap<unsigned, size_t> by_hash_;
+    std::vector<size_t> unexpanded_targets_;
 };
 
 /// Matcher of a product pattern against a target's factors: structured pattern factors
@@ -321,12 +344,13 @@ private:
 class product_matcher {
 public:
     product_matcher(const ex& target, const ex& pattern, match_context& context)
-        : target_(split_product(target)), context_(context), target_used_(target_.factors.size(), false)
+        : target_(split_product(target)), context_(context), target_used_(target_.factors.size(), false),
+          whole_target_(target)
     {
         const product_parts pattern_parts = split_product(pattern);
         pattern_coefficient_ = pattern_parts.coefficient;
         for (const ex& f : pattern_parts.factors)
-            ((kind_of(f) == node_kind::wildcard) ? wildcards_ : structured_).push_back(f);
+            (ex_kind_of(f) == ex_kind::wildcard ? wildcards_ : structured_).push_back(f);
     }
 
     bool run(exmap& bindings) { return match_structured(0, bindings); }
@@ -404,6 +428,11 @@ private:
         const ex value = bound_product.is_equal(ex(1)) ? remainder : remainder / bound_product;
         if (value.is_zero())
             return false;
+        // Inside an argument a wildcard takes whole multiples only: `cos(2*$0)` matches
+        // cos(2*theta) and cos(2*theta-2*phi), not cos(theta) with $0 = theta/2.
+        if (context_.in_argument && !coefficient_content(value).is_integer() &&
+            coefficient_content(whole_target_).is_integer())
+            return false;
         bindings[unbound.front()] = value;
         return true;
     }
@@ -416,6 +445,7 @@ private:
     product_parts target_;
     match_context& context_;
     std::vector<bool> target_used_;
+    ex whole_target_;
     numeric pattern_coefficient_ = 1;
     exvector structured_;
     exvector wildcards_;
@@ -426,7 +456,7 @@ bool match_node(const ex& e, const ex& pattern, exmap& bindings, match_context& 
 {
     if (--context.budget < 0)
         return false;
-    if ((kind_of(pattern) == node_kind::wildcard)) {
+    if (ex_kind_of(pattern) == ex_kind::wildcard) {
         auto it = bindings.find(pattern);
         if (it != bindings.end())
             return same_value(it->second, e);
@@ -435,29 +465,32 @@ bool match_node(const ex& e, const ex& pattern, exmap& bindings, match_context& 
     }
     if (!has_wildcard(pattern))
         return same_value(e, pattern);
-    if ((kind_of(pattern) == node_kind::sum)) {
-        if (!(kind_of(e) == node_kind::sum))
+    if (ex_kind_of(pattern) == ex_kind::sum) {
+        if (ex_kind_of(e) != ex_kind::sum)
             return false;
         return sum_matcher(e, pattern, false, context).run(bindings);
     }
-    if ((kind_of(pattern) == node_kind::product))
+    if (ex_kind_of(pattern) == ex_kind::product)
         return product_matcher(e, pattern, context).run(bindings);
-    if ((kind_of(pattern) == node_kind::power)) {
-        if (!(kind_of(e) == node_kind::power))
+    if (ex_kind_of(pattern) == ex_kind::power) {
+        if (ex_kind_of(e) != ex_kind::power)
             return false;
         return match_node(e.op(0), pattern.op(0), bindings, context) &&
                match_node(e.op(1), pattern.op(1), bindings, context);
     }
-    if ((kind_of(pattern) == node_kind::function)) {
-        if (!(kind_of(e) == node_kind::function) ||
+    if (ex_kind_of(pattern) == ex_kind::function) {
+        if (ex_kind_of(e) != ex_kind::function ||
             GiNaC::ex_to<GiNaC::function>(e).get_serial() !=
                 GiNaC::ex_to<GiNaC::function>(pattern).get_serial() ||
             e.nops() != pattern.nops())
             return false;
-        for (size_t i = 0; i < e.nops(); ++i)
-            if (!match_node(e.op(i), pattern.op(i), bindings, context))
-                return false;
-        return true;
+        const bool was_in_argument = context.in_argument;
+        context.in_argument = true;
+        bool matched = true;
+        for (size_t i = 0; i < e.nops() && matched; ++i)
+            matched = match_node(e.op(i), pattern.op(i), bindings, context);
+        context.in_argument = was_in_argument;
+        return matched;
     }
     // Any other container: same type and size, operands in order.
     if (typeid(GiNaC::ex_to<GiNaC::basic>(e)) != typeid(GiNaC::ex_to<GiNaC::basic>(pattern)) ||
@@ -472,12 +505,12 @@ bool match_node(const ex& e, const ex& pattern, exmap& bindings, match_context& 
 /// A cheap necessary condition for `pattern` to match at the top of `e`.
 bool may_match(const ex& e, const ex& pattern)
 {
-    if ((kind_of(pattern) == node_kind::wildcard) || (kind_of(pattern) == node_kind::product))
+    if (ex_kind_of(pattern) == ex_kind::wildcard || ex_kind_of(pattern) == ex_kind::product)
         return true;
-    if ((kind_of(pattern) == node_kind::sum))
-        return (kind_of(e) == node_kind::sum) && e.nops() >= pattern.nops();
-    if ((kind_of(pattern) == node_kind::function))
-        return (kind_of(e) == node_kind::function) &&
+    if (ex_kind_of(pattern) == ex_kind::sum)
+        return ex_kind_of(e) == ex_kind::sum && e.nops() >= pattern.nops();
+    if (ex_kind_of(pattern) == ex_kind::function)
+        return ex_kind_of(e) == ex_kind::function &&
                GiNaC::ex_to<GiNaC::function>(e).get_serial() ==
                    GiNaC::ex_to<GiNaC::function>(pattern).get_serial();
     return typeid(GiNaC::ex_to<GiNaC::basic>(e)) == typeid(GiNaC::ex_to<GiNaC::basic>(pattern));
@@ -490,7 +523,7 @@ bool apply_rule(const ex& e, const rewrite_rule& rule, ex& result)
         return false;
     match_context context;
     exmap bindings;
-    if ((kind_of(rule.pattern) == node_kind::sum) && (kind_of(e) == node_kind::sum)) {
+    if (ex_kind_of(rule.pattern) == ex_kind::sum && ex_kind_of(e) == ex_kind::sum) {
         sum_matcher matcher(e, rule.pattern, true, context);
         if (!matcher.run(bindings))
             return false;
@@ -542,7 +575,7 @@ private:
     ex visit(const ex& e, bool& node_changed)
     {
         ex x = e;
-        if (e.nops() > 0 && kind_of(e) != node_kind::number) {
+        if (e.nops() > 0 && ex_kind_of(e) != ex_kind::number) {
             exvector operands;
             operands.reserve(e.nops());
             bool operands_changed = false;
@@ -572,12 +605,12 @@ private:
 
     static ex rebuild(const ex& e, const exvector& operands)
     {
-        switch (kind_of(e)) {
-        case node_kind::sum:
+        switch (ex_kind_of(e)) {
+        case ex_kind::sum:
             return sum_of(operands);
-        case node_kind::product:
+        case ex_kind::product:
             return product_of(operands);
-        case node_kind::power:
+        case ex_kind::power:
             return GiNaC::pow(operands[0], operands[1]);
         default: {
             replace_operands replacer(operands);
@@ -591,50 +624,50 @@ private:
 
 } // namespace
 
-node_kind kind_of(const GiNaC::ex& e)
+ex_kind ex_kind_of(const GiNaC::ex& e)
 {
     // The type_info objects of GiNaC's classes live in libginac, so comparing their
     // addresses is exact for these classes; anything else takes the slow path.
-    static const std::pair<const std::type_info*, node_kind> known[] = {
-        {&typeid(GiNaC::add), node_kind::sum},
-        {&typeid(GiNaC::mul), node_kind::product},
-        {&typeid(GiNaC::numeric), node_kind::number},
-        {&typeid(GiNaC::power), node_kind::power},
-        {&typeid(GiNaC::function), node_kind::function},
-        {&typeid(GiNaC::realsymbol), node_kind::symbol},
-        {&typeid(GiNaC::possymbol), node_kind::symbol},
-        {&typeid(GiNaC::symbol), node_kind::symbol},
-        {&typeid(GiNaC::wildcard), node_kind::wildcard},
-        {&typeid(GiNaC::constant), node_kind::constant},
+    static const std::pair<const std::type_info*, ex_kind> known[] = {
+        {&typeid(GiNaC::add), ex_kind::sum},
+        {&typeid(GiNaC::mul), ex_kind::product},
+        {&typeid(GiNaC::numeric), ex_kind::number},
+        {&typeid(GiNaC::power), ex_kind::power},
+        {&typeid(GiNaC::function), ex_kind::function},
+        {&typeid(GiNaC::realsymbol), ex_kind::symbol},
+        {&typeid(GiNaC::possymbol), ex_kind::symbol},
+        {&typeid(GiNaC::symbol), ex_kind::symbol},
+        {&typeid(GiNaC::wildcard), ex_kind::wildcard},
+        {&typeid(GiNaC::constant), ex_kind::constant},
     };
     const std::type_info* type = &typeid(GiNaC::ex_to<GiNaC::basic>(e));
     for (const auto& [known_type, kind] : known)
         if (type == known_type)
             return kind;
     if (GiNaC::is_a<GiNaC::add>(e))
-        return node_kind::sum;
+        return ex_kind::sum;
     if (GiNaC::is_a<GiNaC::mul>(e))
-        return node_kind::product;
+        return ex_kind::product;
     if (GiNaC::is_a<GiNaC::numeric>(e))
-        return node_kind::number;
+        return ex_kind::number;
     if (GiNaC::is_a<GiNaC::power>(e))
-        return node_kind::power;
+        return ex_kind::power;
     if (GiNaC::is_a<GiNaC::function>(e))
-        return node_kind::function;
+        return ex_kind::function;
     if (GiNaC::is_a<GiNaC::symbol>(e))
-        return node_kind::symbol;
+        return ex_kind::symbol;
     if (GiNaC::is_a<GiNaC::wildcard>(e))
-        return node_kind::wildcard;
+        return ex_kind::wildcard;
     if (GiNaC::is_a<GiNaC::constant>(e))
-        return node_kind::constant;
-    return node_kind::other;
+        return ex_kind::constant;
+    return ex_kind::other;
 }
 
 bool match(const GiNaC::ex& e, const GiNaC::ex& pattern, GiNaC::exmap& bindings)
 {
     match_context context;
     exmap trial = bindings;
-    const bool matched = (kind_of(pattern) == node_kind::sum) && (kind_of(e) == node_kind::sum)
+    const bool matched = ex_kind_of(pattern) == ex_kind::sum && ex_kind_of(e) == ex_kind::sum
                              ? sum_matcher(e, pattern, true, context).run(trial)
                              : match_node(e, pattern, trial, context);
     if (matched)

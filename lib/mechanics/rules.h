@@ -26,10 +26,10 @@ const std::vector<embedded_rule_file>& embedded_rule_files();
 
 /// What an expression is at its top node. GiNaC's is_a<> is a dynamic_cast, and
 /// with libstdc++ every failed one compares type names as strings; the matcher and
-/// the canonical form ask this very often, so they use kind_of instead.
-enum class node_kind { number, symbol, constant, sum, product, power, function, wildcard, other };
+/// the canonical form ask this very often, so they use ex_kind_of instead.
+enum class ex_kind { number, symbol, constant, sum, product, power, function, wildcard, other };
 
-node_kind kind_of(const GiNaC::ex& e);
+ex_kind ex_kind_of(const GiNaC::ex& e);
 
 /// Matches `pattern` against `e`, extending `bindings` (wildcard -> expression).
 /// Sums and products match independently of operand order: a sum pattern of k

@@ -35,6 +35,28 @@ struct frequency_less {
     }
 };
 
+struct frequency_hash {
+    size_t operator()(const frequency& n) const
+    {
+        size_t h = n.size();
+        for (const numeric& x : n)
+            h = h * 1000003u ^ x.gethash();
+        return h;
+    }
+};
+
+struct frequency_equal {
+    bool operator()(const frequency& a, const frequency& b) const
+    {
+        if (a.size() != b.size())
+            return false;
+        for (size_t i = 0; i < a.size(); ++i)
+            if (!a[i].is_equal(b[i]))
+                return false;
+        return true;
+    }
+};
+
 /// Sign of the first nonzero entry of a frequency (0 for the zero frequency).
 int leading_sign(const frequency& n)
 {
@@ -57,7 +79,7 @@ using fourier_series = std::map<frequency, harmonic, frequency_less>;
 /// a ± b, with a shortcut for numbers.
 ex plus(const ex& a, const ex& b, int sign)
 {
-    if ((kind_of(a) == node_kind::number) && (kind_of(b) == node_kind::number)) {
+    if (ex_kind_of(a) == ex_kind::number && ex_kind_of(b) == ex_kind::number) {
         const numeric& x = GiNaC::ex_to<numeric>(a);
         const numeric& y = GiNaC::ex_to<numeric>(b);
         return sign > 0 ? x.add(y) : x.sub(y);
@@ -94,7 +116,7 @@ frequency combine(const frequency& a, const frequency& b, int sign)
 /// a·b, with a shortcut for numbers (most harmonic coefficients are rationals).
 ex times(const ex& a, const ex& b)
 {
-    if ((kind_of(a) == node_kind::number) && (kind_of(b) == node_kind::number))
+    if (ex_kind_of(a) == ex_kind::number && ex_kind_of(b) == ex_kind::number)
         return GiNaC::ex_to<numeric>(a).mul(GiNaC::ex_to<numeric>(b));
     return a * b;
 }
@@ -103,7 +125,7 @@ ex times(const ex& a, const ex& b)
 ex half_sum(const ex& a, const ex& b, int sign)
 {
     static const numeric half(1, 2);
-    if ((kind_of(a) == node_kind::number) && (kind_of(b) == node_kind::number)) {
+    if (ex_kind_of(a) == ex_kind::number && ex_kind_of(b) == ex_kind::number) {
         const numeric& x = GiNaC::ex_to<numeric>(a);
         const numeric& y = GiNaC::ex_to<numeric>(b);
         return half.mul(sign > 0 ? x.add(y) : x.sub(y));
@@ -138,9 +160,9 @@ fourier_series multiply(const fourier_series& a, const fourier_series& b)
     }
     for (auto it = product.begin(); it != product.end();) {
         harmonic& h = it->second;
-        if (!(kind_of(h.cos_part) == node_kind::number))
+        if (ex_kind_of(h.cos_part) != ex_kind::number)
             h.cos_part = h.cos_part.expand();
-        if (!(kind_of(h.sin_part) == node_kind::number))
+        if (ex_kind_of(h.sin_part) != ex_kind::number)
             h.sin_part = h.sin_part.expand();
         if (h.cos_part.is_zero() && h.sin_part.is_zero())
             it = product.erase(it);
@@ -153,7 +175,7 @@ fourier_series multiply(const fourier_series& a, const fourier_series& b)
 exvector terms_of(const ex& e)
 {
     exvector terms;
-    if ((kind_of(e) == node_kind::sum)) {
+    if (ex_kind_of(e) == ex_kind::sum) {
         terms.reserve(e.nops());
         for (size_t i = 0; i < e.nops(); ++i)
             terms.push_back(e.op(i));
@@ -166,7 +188,7 @@ exvector terms_of(const ex& e)
 exvector factors_of(const ex& e)
 {
     exvector factors;
-    if ((kind_of(e) == node_kind::product)) {
+    if (ex_kind_of(e) == ex_kind::product) {
         factors.reserve(e.nops());
         for (size_t i = 0; i < e.nops(); ++i)
             factors.push_back(e.op(i));
@@ -213,14 +235,14 @@ bool is_sin_or_cos(const ex& e)
 /// (a denominator that only normal() can combine).
 bool has_compound_denominator(const ex& e)
 {
-    if ((kind_of(e) == node_kind::sum) || (kind_of(e) == node_kind::product)) {
+    if (ex_kind_of(e) == ex_kind::sum || ex_kind_of(e) == ex_kind::product) {
         for (size_t i = 0; i < e.nops(); ++i)
             if (has_compound_denominator(e.op(i)))
                 return true;
         return false;
     }
-    if ((kind_of(e) == node_kind::power))
-        return is_negative_integer(e.op(1)) && !(kind_of(e.op(0)) == node_kind::symbol);
+    if (ex_kind_of(e) == ex_kind::power)
+        return is_negative_integer(e.op(1)) && ex_kind_of(e.op(0)) != ex_kind::symbol;
     return false;
 }
 
@@ -250,11 +272,11 @@ public:
     }
 
 private:
-    bool is_angle(const ex& e) const { return (kind_of(e) == node_kind::symbol) && index_.count(e) != 0; }
+    bool is_angle(const ex& e) const { return (ex_kind_of(e) == ex_kind::symbol) && index_.count(e) != 0; }
 
     bool has_angle(const ex& e) const
     {
-        if ((kind_of(e) == node_kind::symbol))
+        if (ex_kind_of(e) == ex_kind::symbol)
             return index_.count(e) != 0;
         for (size_t i = 0; i < e.nops(); ++i)
             if (has_angle(e.op(i)))
@@ -266,13 +288,13 @@ private:
     /// negative power of something that depends on the angles.
     bool has_angle_denominator(const ex& e) const
     {
-        if ((kind_of(e) == node_kind::sum) || (kind_of(e) == node_kind::product)) {
+        if (ex_kind_of(e) == ex_kind::sum || ex_kind_of(e) == ex_kind::product) {
             for (size_t i = 0; i < e.nops(); ++i)
                 if (has_angle_denominator(e.op(i)))
                     return true;
             return false;
         }
-        if ((kind_of(e) == node_kind::power)) {
+        if (ex_kind_of(e) == ex_kind::power) {
             if (is_negative_integer(e.op(1)))
                 return has_angle(e.op(0));
             if (is_positive_integer(e.op(1)))
@@ -292,7 +314,7 @@ private:
                 n[index_.at(term)] += 1;
                 continue;
             }
-            if ((kind_of(term) == node_kind::product) && term.nops() == 2) {
+            if (ex_kind_of(term) == ex_kind::product && term.nops() == 2) {
                 const ex& factor = term.op(0);
                 const ex& coefficient = term.op(1);
                 if (is_angle(factor) && coefficient.info(GiNaC::info_flags::rational)) {
@@ -341,7 +363,7 @@ private:
     /// functions other than harmonics, bases and exponents of non-integer powers.
     ex prepare(const ex& e) const
     {
-        if ((kind_of(e) == node_kind::sum) || (kind_of(e) == node_kind::product)) {
+        if (ex_kind_of(e) == ex_kind::sum || ex_kind_of(e) == ex_kind::product) {
             exvector operands;
             operands.reserve(e.nops());
             bool changed = false;
@@ -351,14 +373,14 @@ private:
             }
             if (!changed)
                 return e;
-            return (kind_of(e) == node_kind::sum) ? sum_of(operands) : product_of(operands);
+            return (ex_kind_of(e) == ex_kind::sum) ? sum_of(operands) : product_of(operands);
         }
-        if ((kind_of(e) == node_kind::power)) {
+        if (ex_kind_of(e) == ex_kind::power) {
             if (e.op(1).info(GiNaC::info_flags::integer))
                 return GiNaC::pow(prepare(e.op(0)), e.op(1));
             return GiNaC::pow(canonical(e.op(0)), canonical(e.op(1)));
         }
-        if ((kind_of(e) == node_kind::function)) {
+        if (ex_kind_of(e) == ex_kind::function) {
             fourier_series unused;
             if (as_harmonic(e, unused))
                 return e;
@@ -376,7 +398,7 @@ private:
         for (const ex& factor : factors_of(term)) {
             const fourier_series* series = harmonic_of(factor);
             int exponent = 1;
-            if (series == nullptr && kind_of(factor) == node_kind::power && is_positive_integer(factor.op(1))) {
+            if (series == nullptr && ex_kind_of(factor) == ex_kind::power && is_positive_integer(factor.op(1))) {
                 series = harmonic_of(factor.op(0));
                 exponent = GiNaC::ex_to<numeric>(factor.op(1)).to_int();
             }
@@ -421,7 +443,7 @@ private:
     {
         if (part.is_zero())
             return;
-        if (kind_of(part) == node_kind::number) {
+        if (ex_kind_of(part) == ex_kind::number) {
             coefficient.push_back(part);
             coefficient.push_back(function);
             result.push_back(product_of(coefficient));
@@ -484,7 +506,7 @@ private:
     /// the angles, else nullptr. Remembered per expression.
     const fourier_series* harmonic_of(const ex& e) const
     {
-        if (kind_of(e) != node_kind::function || !is_sin_or_cos(e))
+        if (ex_kind_of(e) != ex_kind::function || !is_sin_or_cos(e))
             return nullptr;
         auto& bucket = harmonics_[e.gethash()];
         for (const auto& [known, series] : bucket)
@@ -500,7 +522,7 @@ private:
     /// A term's coefficient times a harmonic's coefficient, expanded.
     static ex scaled(const ex& coefficient, const ex& harmonic_coefficient)
     {
-        if ((kind_of(harmonic_coefficient) == node_kind::number))
+        if (ex_kind_of(harmonic_coefficient) == ex_kind::number)
             return coefficient * harmonic_coefficient;
         return (coefficient * harmonic_coefficient).expand();
     }
@@ -561,7 +583,7 @@ private:
 
     std::map<ex, size_t, GiNaC::ex_is_less> index_;
     exvector angles_;
-    mutable std::map<frequency, harmonic, frequency_less> functions_;
+    mutable std::unordered_map<frequency, harmonic, frequency_hash, frequency_equal> functions_;
     mutable std::unordered_map<unsigned, std::deque<std::pair<ex, fourier_series>>> harmonics_;
 };
 
@@ -575,9 +597,9 @@ monomial_exponents exponents_of(const ex& term)
 {
     monomial_exponents exponents;
     for (const ex& factor : factors_of(term)) {
-        if ((kind_of(factor) == node_kind::number))
+        if (ex_kind_of(factor) == ex_kind::number)
             continue;
-        if ((kind_of(factor) == node_kind::power) && (kind_of(factor.op(1)) == node_kind::number))
+        if (ex_kind_of(factor) == ex_kind::power && ex_kind_of(factor.op(1)) == ex_kind::number)
             exponents[factor.op(0)] += GiNaC::ex_to<numeric>(factor.op(1));
         else
             exponents[factor] += 1;
@@ -589,7 +611,7 @@ numeric coefficient_of(const ex& term)
 {
     numeric c = 1;
     for (const ex& factor : factors_of(term))
-        if ((kind_of(factor) == node_kind::number))
+        if (ex_kind_of(factor) == ex_kind::number)
             c *= GiNaC::ex_to<numeric>(factor);
     return c;
 }
@@ -695,7 +717,7 @@ GiNaC::ex collect_compact(const GiNaC::ex& e, const GiNaC::lst& variables)
     auto is_variable_power = [&](const ex& f) {
         if (variable_set.count(f) != 0)
             return true;
-        return (kind_of(f) == node_kind::power) && variable_set.count(f.op(0)) != 0 &&
+        return (ex_kind_of(f) == ex_kind::power) && variable_set.count(f.op(0)) != 0 &&
                f.op(1).info(GiNaC::info_flags::integer);
     };
     std::map<ex, exvector, GiNaC::ex_is_less> by_monomial;
