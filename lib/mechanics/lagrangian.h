@@ -14,6 +14,9 @@ namespace lagrange {
 /// embedded rules and the scene's own (`use`), grouping by accelerations and velocities.
 simplifier make_simplifier(const model& scene);
 
+/// ∂e/∂variable.
+GiNaC::ex differentiate(const GiNaC::ex& e, const GiNaC::symbol& variable);
+
 /// d/dt e = ∂e/∂t + Σ (∂e/∂q q̇ + ∂e/∂q̇ q̈).
 GiNaC::ex time_derivative(const GiNaC::ex& e, const model& scene);
 
@@ -24,6 +27,7 @@ struct lagrangian_result {
     GiNaC::ex potential;       ///< V simplified (minus the part of L free of velocities)
     GiNaC::ex gyroscopic;      ///< the part of L linear in the velocities (0 unless `L` says otherwise)
     GiNaC::ex lagrangian;      ///< L simplified
+    GiNaC::ex lagrangian_canonical; ///< L in canonical trig form (expanded): what the equations use
     bool split = true;         ///< false if L is not a polynomial of degree ≤ 2 in the velocities
 };
 

@@ -711,13 +711,22 @@ bool trig_equal(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::lst& angles
     return difference.is_zero() || difference.normal().is_zero();
 }
 
-GiNaC::ex collect_compact(const GiNaC::ex& e, const GiNaC::lst& variables)
+GiNaC::ex collect_compact(const GiNaC::ex& e, const GiNaC::lst& variables, const GiNaC::lst& angles)
 {
     const std::set<ex, GiNaC::ex_is_less> variable_set(variables.begin(), variables.end());
+    auto is_angle_function = [&](const ex& f) {
+        if (ex_kind_of(f) != ex_kind::function)
+            return false;
+        for (const ex& angle : angles)
+            if (f.has(angle))
+                return true;
+        return false;
+    };
     auto is_variable_power = [&](const ex& f) {
-        if (variable_set.count(f) != 0)
+        if (variable_set.count(f) != 0 || is_angle_function(f))
             return true;
-        return (ex_kind_of(f) == ex_kind::power) && variable_set.count(f.op(0)) != 0 &&
+        return (ex_kind_of(f) == ex_kind::power) &&
+               (variable_set.count(f.op(0)) != 0 || is_angle_function(f.op(0))) &&
                f.op(1).info(GiNaC::info_flags::integer);
     };
     std::map<ex, exvector, GiNaC::ex_is_less> by_monomial;
@@ -740,9 +749,13 @@ GiNaC::ex collect_compact(const GiNaC::ex& e, const GiNaC::lst& variables)
     return sum_of(result);
 }
 
-GiNaC::ex simplifier::operator()(const GiNaC::ex& e) const
+GiNaC::ex simplifier::canonical(const GiNaC::ex& e) const { return trig_canonical(e, angles); }
+
+GiNaC::ex simplifier::compact(const GiNaC::ex& canonical_form) const
 {
-    return collect_compact(rewrite(trig_canonical(e, angles), rules), variables);
+    return collect_compact(rewrite(canonical_form, rules), variables, angles);
 }
+
+GiNaC::ex simplifier::operator()(const GiNaC::ex& e) const { return compact(canonical(e)); }
 
 } // namespace lagrange

@@ -26,9 +26,10 @@ GiNaC::ex trig_canonical(const GiNaC::ex& e, const GiNaC::lst& angles);
 bool trig_equal(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::lst& angles);
 
 /// Writes `e` as a sum over the distinct monomials in `variables` (e.g. the
-/// accelerations and velocities), each coefficient factored: the compact form
+/// accelerations and velocities) and in the functions of `angles` (cos(theta-phi)),
+/// each coefficient factored: the compact form
 /// (M+m)*l^2*theta_ddot + m*l^2*cos(theta-phi)*phi_ddot + ...
-GiNaC::ex collect_compact(const GiNaC::ex& e, const GiNaC::lst& variables);
+GiNaC::ex collect_compact(const GiNaC::ex& e, const GiNaC::lst& variables, const GiNaC::lst& angles = {});
 
 /// What the mechanics stages call: canonical trig form in `angles`, then the rules,
 /// then collect_compact over `variables`.
@@ -37,6 +38,11 @@ struct simplifier {
     GiNaC::lst variables;
     std::vector<rewrite_rule> rules;
 
+    /// trig_canonical in the angles: the exact form to compute with.
+    GiNaC::ex canonical(const GiNaC::ex& e) const;
+    /// The rules, then collect_compact: the form to show, from a canonical form.
+    GiNaC::ex compact(const GiNaC::ex& canonical_form) const;
+    /// compact(canonical(e)).
     GiNaC::ex operator()(const GiNaC::ex& e) const;
 };
 
