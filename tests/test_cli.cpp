@@ -158,21 +158,3 @@ TEST_CASE("cli: hostile input exits with 2 and a located message, never a crash 
         CHECK(r.err.size() < 2000);
     }
 }
-
-TEST_CASE("cli: the LaTeX output compiles with pdflatex", "[cli][latex]")
-{
-    if (std::system("command -v pdflatex >/dev/null 2>&1") != 0)
-        FAIL("pdflatex is not installed (the test command installs texlive-latex-base)");
-    std::string folder = temporary_file("latex-probe", "");
-    std::string tex = temporary_file("double_pendulum.tex", "");
-    cli_result r = run_cli(double_pendulum + " --format latex -o " + tex);
-    REQUIRE(r.exit_code == 0);
-    std::string directory = tex.substr(0, tex.rfind('/'));
-    std::string command = "cd " + directory + " && pdflatex -interaction=nonstopmode -halt-on-error double_pendulum.tex"
-                          " >pdflatex.out 2>&1";
-    int status = std::system(command.c_str());
-    INFO(read_file(directory + "/pdflatex.out"));
-    CHECK(status == 0);
-    std::string log = read_file(directory + "/double_pendulum.log");
-    CHECK(log.find("Overfull") == std::string::npos);
-}

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cstdio>
 
 namespace lagrange {
@@ -81,6 +82,49 @@ std::string latex_escape(const std::string& text)
     return out;
 }
 
+/// A rough width of LaTeX math in characters: a command counts as one, braces,
+/// sub/superscript marks and sizing commands as none.
+std::size_t latex_width(const std::string& latex)
+{
+    std::size_t width = 0;
+    for (std::size_t i = 0; i < latex.size(); ++i) {
+        char c = latex[i];
+        if (c == '\\') {
+            std::size_t j = i + 1;
+            while (j < latex.size() && std::isalpha(static_cast<unsigned char>(latex[j])))
+                ++j;
+            std::string command = latex.substr(i + 1, j - i - 1);
+            if (command != "left" && command != "right" && command != "frac")
+                ++width;
+            i = j > i + 1 ? j - 1 : j;
+        } else if (c != '{' && c != '}' && c != '^' && c != '_' && c != ' ') {
+            ++width;
+        }
+    }
+    return width;
+}
+
+/// Rows of an align* environment: `lhs &= terms rhs`, broken before a term
+/// when the line would grow wider than the page holds.
+std::string latex_rows(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs)
+{
+    constexpr std::size_t line_width = 62;
+    std::string out = lhs + (lhs.empty() ? "&" : " &= ");
+    std::size_t width = latex_width(lhs);
+    bool first = true;
+    for (const std::string& term : terms) {
+        std::size_t w = latex_width(term);
+        if (!first && width + w > line_width) {
+            out += "\\\\\n&\\quad";
+            width = 4;
+        }
+        out += (first ? "" : " ") + term;
+        width += w + 1;
+        first = false;
+    }
+    return out + rhs;
+}
+
 } // namespace
 
 void write_text(std::ostream& out, const analysis& result, const document_options& options)
@@ -129,17 +173,19 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
         const lagrangian_result& l = *result.lagrangian;
         out << "\\subsection*{Lagrangian}\n\\begin{align*}\n";
         if (l.split) {
-            out << "T &= " << print(l.kinetic, syntax::latex, velocity_order(scene)) << "\\\\\n";
+            out << latex_rows("T", print_terms(l.kinetic, syntax::latex, velocity_order(scene)), "") << "\\\\\n";
             if (!l.gyroscopic.is_zero())
-                out << "L_1 &= " << print(l.gyroscopic, syntax::latex, velocity_order(scene)) << "\\\\\n";
-            out << "V &= " << print(l.potential, syntax::latex) << "\\\\\n";
+                out << latex_rows("L_1", print_terms(l.gyroscopic, syntax::latex, velocity_order(scene)), "")
+                    << "\\\\\n";
+            out << latex_rows("V", print_terms(l.potential, syntax::latex), "") << "\\\\\n";
         }
-        out << "L &= " << print(l.lagrangian, syntax::latex, velocity_order(scene)) << "\n\\end{align*}\n";
+        out << latex_rows("L", print_terms(l.lagrangian, syntax::latex, velocity_order(scene)), "")
+            << "\n\\end{align*}\n";
     }
     if (result.equations) {
         out << "\\subsection*{Equations of motion}\n\\begin{align*}\n";
         for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
-            out << print((*result.equations)[i], syntax::latex, equation_order(scene)) << " &= 0"
+            out << latex_rows("", print_terms((*result.equations)[i], syntax::latex, equation_order(scene)), " = 0")
                 << (i + 1 < scene.coordinates.size() ? "\\\\\n" : "\n");
         out << "\\end{align*}\n";
     }

@@ -440,6 +440,22 @@ public:
         return fallback_piece(e);
     }
 
+    /// The terms of `e` (a sum, or one term), in printed order, each after the
+    /// first with its sign in front ("+ x", "- y").
+    std::vector<std::string> term_strings(const ex& e) const
+    {
+        if (!is_a<GiNaC::add>(e))
+            return {render(e).out};
+        std::vector<sum_term> terms = sum_terms(e);
+        sort_terms(terms);
+        std::vector<std::string> out;
+        for (std::size_t i = 0; i < terms.size(); ++i) {
+            const char* sign = terms[i].negative ? (i == 0 ? "-" : "- ") : (i == 0 ? "" : "+ ");
+            out.push_back(sign + terms[i].body.out);
+        }
+        return out;
+    }
+
 private:
     syntax syn_;
     const term_order& order_;
@@ -720,7 +736,7 @@ private:
 
     /// The terms ordered by the term order's groups, positive terms before
     /// negative ones, constants last, then by their plain form; then joined.
-    piece assemble_sum(std::vector<sum_term>& terms) const
+    static void sort_terms(std::vector<sum_term>& terms)
     {
         std::sort(terms.begin(), terms.end(), [](const sum_term& a, const sum_term& b) {
             if (int c = compare_degrees(a, b))
@@ -731,6 +747,11 @@ private:
                 return c < 0;
             return false;
         });
+    }
+
+    piece assemble_sum(std::vector<sum_term>& terms) const
+    {
+        sort_terms(terms);
 
         piece result;
         result.plain_level = sum_level;
@@ -968,6 +989,11 @@ private:
 std::string print(const GiNaC::ex& e, syntax s, const term_order& order)
 {
     return printer(s, order).render(e).out;
+}
+
+std::vector<std::string> print_terms(const GiNaC::ex& e, syntax s, const term_order& order)
+{
+    return printer(s, order).term_strings(e);
 }
 
 std::string print_name(const std::string& name, syntax s)

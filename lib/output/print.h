@@ -30,6 +30,11 @@ struct term_order {
 /// output for equal expressions, whatever GiNaC's internal order.
 std::string print(const GiNaC::ex& e, syntax s, const term_order& order = {});
 
+/// The terms of a sum in the order `print` uses, the first with a sign only if
+/// negative ("-x"), the others with theirs in front ("+ y", "- z"); for breaking
+/// long expressions across lines. Not for `plain`.
+std::vector<std::string> print_terms(const GiNaC::ex& e, syntax s, const term_order& order = {});
+
 /// How a symbol name prints: `theta_dot` -> "θ̇" / "\dot{\theta}", `theta1` ->
 /// "θ1" / "\theta_{1}", `l_2` -> "l_{2}", `M` -> "M", `omega` -> "\omega".
 std::string print_name(const std::string& name, syntax s);

@@ -1,0 +1,37 @@
+/** @file scene_helpers.h
+ *  Helpers shared by the front-end tests: load a scene from text, expect an error at a position. */
+#pragma once
+
+#include "scene/lower.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+namespace lagrange_test {
+
+inline lagrange::model load(const std::string& text)
+{
+    return lagrange::load_model(lagrange::source_text("test.lag", text));
+}
+
+/// Loads `text`, expecting a scene_error at line:column whose message contains `fragment`.
+inline void require_error(const std::string& text, int line, int column, const std::string& fragment)
+{
+    INFO("scene:\n" << text);
+    try {
+        load(text);
+        FAIL("no error");
+    } catch (const lagrange::scene_error& e) {
+        INFO("message: " << e.what());
+        CHECK(e.where().file == "test.lag");
+        CHECK(e.where().line == line);
+        CHECK(e.where().column == column);
+        CHECK(std::string(e.what()).find(fragment) != std::string::npos);
+        CHECK(e.has_line_text());
+    }
+}
+
+const std::string header = "parameters m g l\ncoordinates q\n";
+
+} // namespace lagrange_test

@@ -1,0 +1,94 @@
+/** @file test_examples.cpp
+ *  Every example scene runs in every format, and its LaTeX compiles with pdflatex. */
+#include "cli_runner.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+using namespace lagrange_test;
+
+namespace {
+
+std::vector<std::string> example_scenes()
+{
+    std::vector<std::string> scenes;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(LAGRANGE_SOURCE_DIR) + "/examples"))
+        if (entry.path().extension() == ".lag")
+            scenes.push_back(entry.path().string());
+    std::sort(scenes.begin(), scenes.end());
+    return scenes;
+}
+
+/// Compiles `tex` (a path) with pdflatex in its folder; returns pdflatex's log.
+std::string compile_latex(const std::string& tex, int& status)
+{
+    std::string directory = tex.substr(0, tex.rfind('/'));
+    std::string name = tex.substr(tex.rfind('/') + 1);
+    std::string command = "cd " + directory + " && pdflatex -interaction=nonstopmode -halt-on-error " + name +
+                          " >/dev/null 2>&1";
+    status = std::system(command.c_str());
+    return read_file(tex.substr(0, tex.size() - 4) + ".log");
+}
+
+} // namespace
+
+TEST_CASE("examples: every scene runs in every format", "[examples]")
+{
+    std::vector<std::string> scenes = example_scenes();
+    REQUIRE(scenes.size() >= 5);
+    for (const std::string& scene : scenes) {
+        INFO(scene);
+        CHECK(run_cli("check " + scene).exit_code == 0);
+        cli_result text = run_cli(scene);
+        CHECK(text.exit_code == 0);
+        CHECK(text.err.empty());
+        cli_result json = run_cli(scene + " --format json");
+        REQUIRE(json.exit_code == 0);
+        nlohmann::json doc = nlohmann::json::parse(json.out);
+        CHECK(doc.contains("stages"));
+        CHECK(doc["equations"].size() == doc["coordinates"].size());
+    }
+}
+
+TEST_CASE("examples: the LaTeX of every scene compiles with pdflatex, without overfull boxes", "[examples][latex]")
+{
+    if (std::system("command -v pdflatex >/dev/null 2>&1") != 0)
+        FAIL("pdflatex is not installed (the test command installs texlive-latex-base)");
+    for (const std::string& scene : example_scenes()) {
+        INFO(scene);
+        std::string stem = scene.substr(scene.rfind('/') + 1);
+        std::string tex = temporary_file(stem.substr(0, stem.size() - 4) + ".tex", "");
+        REQUIRE(run_cli(scene + " --format latex -o " + tex).exit_code == 0);
+        int status = 0;
+        std::string log = compile_latex(tex, status);
+        INFO(log.substr(log.size() > 3000 ? log.size() - 3000 : 0));
+        CHECK(status == 0);
+        CHECK(log.find("Overfull \\hbox") == std::string::npos);
+    }
+}
+
+TEST_CASE("examples: LaTeX with floats, Greek names and subscripts compiles", "[examples][latex]")
+{
+    if (std::system("command -v pdflatex >/dev/null 2>&1") != 0)
+        FAIL("pdflatex is not installed (the test command installs texlive-latex-base)");
+    std::string scene = temporary_file("floats.lag", "scene \"Floats & names_with_underscores 100%\"\n"
+                                                     "parameters m_1 omega0 kappa\ncoordinates theta1 x_cm\n"
+                                                     "T = 1/2*m_1*(theta1'^2 + x_cm'^2)\n"
+                                                     "V = 1.5e-20*kappa*theta1^2 + 2.5e12*omega0*x_cm^2\n");
+    std::string tex = temporary_file("floats.tex", "");
+    cli_result r = run_cli(scene + " --format latex -o " + tex);
+    REQUIRE(r.exit_code == 0);
+    std::string latex = read_file(tex);
+    CHECK(latex.find("E-20") == std::string::npos);
+    CHECK(latex.find("e-20") == std::string::npos);
+    CHECK(latex.find("10^{-20}") != std::string::npos);
+    CHECK(latex.find("\\ddot{\\theta}_{1}") != std::string::npos);
+    int status = 0;
+    std::string log = compile_latex(tex, status);
+    INFO(log.substr(log.size() > 3000 ? log.size() - 3000 : 0));
+    CHECK(status == 0);
+}
