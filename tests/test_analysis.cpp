@@ -33,18 +33,47 @@ TEST_CASE("analysis: equations run the lagrangian stage, then the equations", "[
         CHECK(s.seconds >= 0);
 }
 
-TEST_CASE("analysis: without --want, the scene's want line decides, else every available product", "[analysis]")
+TEST_CASE("analysis: without --want, the scene's want line decides, else what the scene supports", "[analysis]")
 {
     model plain = load(oscillator);
-    CHECK(analyze(plain).wanted == available_products());
+    std::set<product> small_oscillations = {product::equations,      product::equilibrium, product::linearization,
+                                            product::characteristic, product::frequencies, product::modes,
+                                            product::normal_coordinates};
+    CHECK(analyze(plain).wanted == small_oscillations);
+    model with_values = load(oscillator + "values m = 1, k = 4\n");
+    analysis numeric = analyze(with_values);
+    CHECK(numeric.wanted.count(product::numeric));
+    REQUIRE(numeric.numeric);
+    CHECK(numeric.numeric->at(0).omega.at(0) == Approx(2.0).epsilon(1e-15));
     model asking = load(oscillator + "want equations\n");
     CHECK(analyze(asking).wanted == std::set<product>{product::equations});
 }
 
 TEST_CASE("analysis: a product this version does not compute is a computation error", "[analysis]")
 {
-    model scene = load(oscillator + "want modes\n");
+    model scene = load(oscillator + "want inertia\n");
     REQUIRE_THROWS_MATCHES(analyze(scene), computation_error,
-                           Catch::Matchers::Message("`modes` is not computed by this version of lagrange yet"));
-    CHECK_THROWS_AS(analyze(load(oscillator), {product::inertia}), computation_error);
+                           Catch::Matchers::Message("`inertia` is not computed by this version of lagrange yet"));
+    CHECK_THROWS_AS(analyze(load(oscillator), {product::euler}), computation_error);
+}
+
+TEST_CASE("analysis: only the stages a product needs run", "[analysis]")
+{
+    model scene = load(oscillator + "values m = 1, k = 4\n");
+    CHECK(stage_names(analyze(scene, {product::characteristic})) ==
+          std::vector<std::string>{"lagrangian", "equilibrium", "linearization", "characteristic"});
+    CHECK(stage_names(analyze(scene, {product::numeric})) ==
+          std::vector<std::string>{"lagrangian", "equilibrium", "linearization", "numeric"});
+}
+
+TEST_CASE("analysis: a wanted product that cannot be done is an error; by default it is a note", "[analysis]")
+{
+    const std::string no_values = oscillator + "want numeric\n";
+    REQUIRE_THROWS_AS(analyze(load(no_values)), computation_error);
+    const std::string free_coordinate = "parameters m k\ncoordinates x y\nT = 1/2*m*x'^2\nV = 1/2*k*x^2 + k*y^2\n";
+    analysis by_default = analyze(load(free_coordinate));
+    CHECK(by_default.equations);
+    REQUIRE(by_default.notes.size() == 1);
+    CHECK(by_default.notes[0].find("no kinetic energy") != std::string::npos);
+    CHECK_THROWS_AS(analyze(load(free_coordinate), {product::modes}), computation_error);
 }

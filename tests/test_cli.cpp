@@ -43,9 +43,9 @@ TEST_CASE("cli: usage errors exit with 2", "[cli]")
 
 TEST_CASE("cli: a product not computed by this version exits with 1 and says why", "[cli]")
 {
-    cli_result r = run_cli("--want modes " + double_pendulum);
+    cli_result r = run_cli("--want inertia " + double_pendulum);
     CHECK(r.exit_code == 1);
-    CHECK(r.err.find("`modes` is not computed by this version") != std::string::npos);
+    CHECK(r.err.find("`inertia` is not computed by this version") != std::string::npos);
 }
 
 TEST_CASE("cli: check", "[cli]")

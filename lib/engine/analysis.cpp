@@ -9,7 +9,11 @@ namespace lagrange {
 
 const std::set<product>& available_products()
 {
-    static const std::set<product> products = {product::equations};
+    static const std::set<product> products = {
+        product::equations,       product::equilibrium, product::linearization,      product::characteristic,
+        product::frequencies,     product::modes,       product::normal_coordinates, product::asymptotic,
+        product::numeric,
+    };
     return products;
 }
 
@@ -23,13 +27,46 @@ std::string name_of(product p)
     return "?";
 }
 
-/// Times one stage and records it.
+/// Times one stage and records it. A failure inside the algebra (GiNaC throws
+/// plain std::exceptions with internal messages) becomes a computation_error
+/// that names the stage.
 void run_stage(analysis& result, const std::string& name, const std::function<void()>& stage)
 {
     auto start = std::chrono::steady_clock::now();
-    stage();
+    try {
+        stage();
+    } catch (const computation_error&) {
+        throw;
+    } catch (const scene_error&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception&) {
+        throw computation_error("the `" + name + "` stage could not be done for this scene symbolically");
+    }
     std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     result.stages.push_back({name, elapsed.count()});
+}
+
+bool wants_any(const std::set<product>& wanted, std::initializer_list<product> products)
+{
+    for (product p : products)
+        if (wanted.count(p))
+            return true;
+    return false;
+}
+
+/// The products a scene supports when it has no `want` line.
+std::set<product> default_products(const model& scene)
+{
+    std::set<product> products = {product::equations};
+    products.insert({product::equilibrium, product::linearization, product::characteristic,
+                     product::frequencies, product::modes, product::normal_coordinates});
+    if (scene.limit)
+        products.insert(product::asymptotic);
+    if (!scene.values.empty())
+        products.insert(product::numeric);
+    return products;
 }
 
 } // namespace
@@ -38,19 +75,63 @@ analysis analyze(const model& scene, const std::set<product>& wanted)
 {
     analysis result;
     result.scene = &scene;
-    result.wanted = !wanted.empty() ? wanted : !scene.wanted.empty() ? scene.wanted : available_products();
+    const bool by_default = wanted.empty() && scene.wanted.empty();
+    result.wanted = !wanted.empty() ? wanted : !scene.wanted.empty() ? scene.wanted : default_products(scene);
     for (product p : result.wanted)
         if (!available_products().count(p))
             throw computation_error("`" + name_of(p) + "` is not computed by this version of lagrange yet");
 
-    bool need_equations = result.wanted.count(product::equations) > 0;
-    bool need_lagrangian = need_equations;
+    const std::set<product>& w = result.wanted;
+    bool need_numeric = w.count(product::numeric) > 0;
+    bool need_asymptotic = w.count(product::asymptotic) > 0;
+    bool need_modes = need_asymptotic ||
+                      wants_any(w, {product::frequencies, product::modes, product::normal_coordinates});
+    bool need_characteristic = need_modes || w.count(product::characteristic) > 0;
+    bool need_linearization = need_characteristic || need_numeric || w.count(product::linearization) > 0;
+    bool need_equilibria = need_linearization || w.count(product::equilibrium) > 0;
+    bool need_equations = w.count(product::equations) > 0;
 
     simplifier simplify = make_simplifier(scene);
-    if (need_lagrangian)
-        run_stage(result, "lagrangian", [&] { result.lagrangian = derive_lagrangian(scene, simplify); });
+    run_stage(result, "lagrangian", [&] { result.lagrangian = derive_lagrangian(scene, simplify); });
     if (need_equations)
-        run_stage(result, "equations", [&] { result.equations = derive_equations(scene, *result.lagrangian, simplify); });
+        run_stage(result, "equations",
+                  [&] { result.equations = derive_equations(scene, *result.lagrangian, simplify); });
+    if (!need_equilibria)
+        return result;
+
+    // The small-oscillation stages. In a default run, what cannot be done is a note.
+    try {
+        if (!result.lagrangian->split)
+            throw computation_error("the Lagrangian is not quadratic in the velocities, so it has no "
+                                    "kinetic and potential energy to linearize");
+        if (need_asymptotic && !scene.limit)
+            throw computation_error("`asymptotic` needs a `limit` line, such as `limit rho -> 0`");
+        if (need_numeric && scene.values.empty())
+            throw computation_error("`numeric` needs a `values` line or --values");
+        run_stage(result, "equilibrium",
+                  [&] { result.equilibria = find_equilibria(scene, *result.lagrangian, simplify); });
+        if (!need_linearization)
+            return result;
+        const equilibrium_point& point = result.equilibria->points.at(result.equilibria->chosen);
+        run_stage(result, "linearization",
+                  [&] { result.linearization = linearize(scene, *result.lagrangian, point.position, simplify); });
+        if (need_characteristic)
+            run_stage(result, "characteristic",
+                      [&] { result.characteristic = characteristic_polynomial(scene, *result.linearization); });
+        if (need_modes)
+            run_stage(result, "modes", [&] {
+                result.modes = symbolic_modes(scene, *result.linearization, *result.characteristic);
+            });
+        if (need_asymptotic)
+            run_stage(result, "asymptotic", [&] { result.asymptotic = asymptotic_limit(scene, *result.modes); });
+        if (need_numeric)
+            run_stage(result, "numeric",
+                      [&] { result.numeric = numeric_normal_modes(scene, *result.linearization); });
+    } catch (const computation_error& error) {
+        if (!by_default)
+            throw;
+        result.notes.push_back(std::string("small oscillations not computed: ") + error.what());
+    }
     return result;
 }
 

@@ -4,6 +4,8 @@
 #pragma once
 
 #include "mechanics/lagrangian.h"
+#include "mechanics/oscillations.h"
+#include "numeric/normal_modes.h"
 #include "scene/model.h"
 
 #include <optional>
@@ -23,16 +25,25 @@ struct analysis {
     const model* scene = nullptr;
     std::set<product> wanted;            ///< what was asked for (resolved)
     std::vector<stage_time> stages;      ///< the stages that ran, in order, with their times
+    std::vector<std::string> notes;      ///< products left out of a default run, and why
     std::optional<lagrangian_result> lagrangian;
     std::optional<std::vector<GiNaC::ex>> equations;
+    std::optional<equilibria_result> equilibria;
+    std::optional<linearization_result> linearization;
+    std::optional<characteristic_result> characteristic;
+    std::optional<modes_result> modes;
+    std::optional<asymptotic_result> asymptotic;
+    std::optional<std::vector<numeric_modes>> numeric;
 };
 
 /// The products this version computes.
 const std::set<product>& available_products();
 
-/// Runs the stages that `wanted` needs (if empty: the scene's `want` line, or every
-/// available product the scene supports). Throws computation_error for a product
-/// this version does not compute, or when a stage cannot be done.
+/// Runs the stages that `wanted` needs. If `wanted` is empty: the scene's `want`
+/// line, or else every available product the scene's content supports (then a
+/// product that cannot be computed is left out with a note instead of failing).
+/// Throws computation_error for a product this version does not compute, or when
+/// a stage of an explicitly wanted product cannot be done.
 analysis analyze(const model& scene, const std::set<product>& wanted = {});
 
 } // namespace lagrange

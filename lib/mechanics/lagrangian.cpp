@@ -2,9 +2,12 @@
  *  L = T − V and the Euler–Lagrange equations. */
 #include "mechanics/lagrangian.h"
 
+#include "mechanics/harmonic.h"
 #include "scene/lower.h"
 
 #include <map>
+#include <memory>
+#include <optional>
 
 namespace lagrange {
 
@@ -182,6 +185,72 @@ void split_by_velocity_degree(const model& scene, lagrangian_result& result)
     result.potential = -l.coeff(scale, 0);
 }
 
+/// True if every entry of `list` is a symbol (harmonic spaces need symbols as angles).
+bool all_symbols(const GiNaC::lst& list)
+{
+    for (const GiNaC::ex& e : list)
+        if (!GiNaC::is_a<GiNaC::symbol>(e))
+            return false;
+    return true;
+}
+
+} // namespace
+
+/// L as a harmonic polynomial over the symbols of a scene, with the index pairs
+/// (q, q̇), (q̇, q̈) and the index of t for the total time derivative.
+struct harmonic_lagrangian {
+    harmonic_lagrangian(const model& scene, const GiNaC::lst& angles) : space(angles), lagrangian(space)
+    {
+        time = space.add_symbol(scene.time);
+        for (const coordinate& c : scene.coordinates) {
+            const std::size_t velocity = space.add_symbol(c.velocity);
+            rates.emplace_back(space.add_symbol(c.position), velocity);
+            rates.emplace_back(velocity, space.add_symbol(c.acceleration));
+        }
+        for (const parameter& p : scene.parameters)
+            space.add_symbol(p.symbol);
+    }
+
+    /// L in harmonic form if `l` converts, else nullptr.
+    static std::shared_ptr<harmonic_lagrangian> of(const model& scene, const GiNaC::lst& angles, const GiNaC::ex& l)
+    {
+        if (!all_symbols(angles))
+            return nullptr;
+        auto h = std::make_shared<harmonic_lagrangian>(scene, angles);
+        if (!h->space.add_symbols_of(l))
+            return nullptr;
+        std::optional<harmonic_polynomial> p = to_harmonic(l, h->space);
+        if (!p)
+            return nullptr;
+        h->lagrangian = std::move(*p);
+        return h;
+    }
+
+    /// True if no term has a negative power of t, a coordinate, velocity or acceleration
+    /// (the condition under which the expanded derivatives stay in canonical form).
+    bool is_polynomial_in_motion() const
+    {
+        std::vector<bool> moves(space.symbol_count(), false);
+        moves[time] = true;
+        for (const auto& [variable, rate] : rates)
+            moves[variable] = moves[rate] = true;
+        for (std::size_t i = 0; i < lagrangian.size(); ++i) {
+            const harmonic_term t = lagrangian.term(i);
+            for (std::size_t s = 0; s < lagrangian.symbol_count(); ++s)
+                if (moves[s] && t.exponents[s] < 0)
+                    return false;
+        }
+        return true;
+    }
+
+    harmonic_space space;
+    std::vector<std::pair<std::size_t, std::size_t>> rates;
+    std::size_t time = 0;
+    harmonic_polynomial lagrangian;
+};
+
+namespace {
+
 } // namespace
 
 lagrangian_result derive_lagrangian(const model& scene, const simplifier& simplify)
@@ -227,6 +296,25 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
         }
         return result;
     }
+    if (all_symbols(simplify.angles)) {
+        auto h = std::make_shared<harmonic_lagrangian>(scene, simplify.angles);
+        if (h->space.add_symbols_of(kinetic) && h->space.add_symbols_of(potential)) {
+            std::optional<harmonic_polynomial> kinetic_harmonic = to_harmonic(kinetic, h->space);
+            std::optional<harmonic_polynomial> potential_harmonic = to_harmonic(potential, h->space);
+            if (kinetic_harmonic && potential_harmonic) {
+                // What trig_canonical and compact give for T and V, without GiNaC's expansion.
+                h->lagrangian = *kinetic_harmonic;
+                h->lagrangian -= *potential_harmonic;
+                result.lagrangian_canonical = to_ex(h->lagrangian);
+                const std::vector<GiNaC::ex> compact = simplify.compact({*kinetic_harmonic, *potential_harmonic});
+                result.kinetic = compact[0];
+                result.potential = compact[1];
+                result.lagrangian = result.kinetic - result.potential;
+                result.harmonic = std::move(h);
+                return result;
+            }
+        }
+    }
     GiNaC::ex kinetic_canonical = simplify.canonical(kinetic);
     GiNaC::ex potential_canonical = simplify.canonical(potential);
     result.lagrangian_canonical = kinetic_canonical - potential_canonical;
@@ -245,6 +333,22 @@ std::vector<GiNaC::ex> derive_equations(const model& scene, const lagrangian_res
     const GiNaC::ex& l = lagrangian.lagrangian_canonical;
     // Derivatives of a polynomial in sines and cosines of single harmonics stay in
     // that form once expanded; anything else goes through the canonical form again.
+    std::shared_ptr<const harmonic_lagrangian> harmonic = lagrangian.harmonic;
+    if (!harmonic)
+        harmonic = harmonic_lagrangian::of(scene, simplify.angles, l);
+    if (harmonic && harmonic->is_polynomial_in_motion()) {
+        // The same expanded derivatives as below, in harmonic polynomial arithmetic.
+        const harmonic_space& space = harmonic->space;
+        const harmonic_polynomial& h = harmonic->lagrangian;
+        std::vector<harmonic_polynomial> expanded;
+        for (const coordinate& c : scene.coordinates) {
+            harmonic_polynomial equation =
+                h.derivative(*space.index_of(c.velocity)).total_derivative(harmonic->rates, harmonic->time);
+            equation -= h.derivative(*space.index_of(c.position));
+            expanded.push_back(std::move(equation));
+        }
+        return simplify.compact(expanded);
+    }
     bool stays_canonical = is_harmonic_polynomial(l, scene);
     for (const coordinate& c : scene.coordinates) {
         GiNaC::ex momentum = differentiate(l, c.velocity);

@@ -8,6 +8,9 @@
 
 #include <ginac/ginac.h>
 
+#include <memory>
+#include <vector>
+
 namespace lagrange {
 
 /// The simplifier for a scene: canonical trig form in its coordinates, the
@@ -20,6 +23,8 @@ GiNaC::ex differentiate(const GiNaC::ex& e, const GiNaC::symbol& variable);
 /// d/dt e = ∂e/∂t + Σ (∂e/∂q q̇ + ∂e/∂q̇ q̈).
 GiNaC::ex time_derivative(const GiNaC::ex& e, const model& scene);
 
+struct harmonic_lagrangian;
+
 struct lagrangian_result {
     GiNaC::ex kinetic_built;   ///< T as built from points and `T` lines, before simplification
     GiNaC::ex potential_built; ///< V as built from gravity, springs and `V` lines
@@ -29,6 +34,8 @@ struct lagrangian_result {
     GiNaC::ex lagrangian;      ///< L simplified
     GiNaC::ex lagrangian_canonical; ///< L in canonical trig form (expanded): what the equations use
     bool split = true;         ///< false if L is not a polynomial of degree ≤ 2 in the velocities
+    /// L as a harmonic polynomial when it is one (spares derive_equations a conversion).
+    std::shared_ptr<const harmonic_lagrangian> harmonic;
 };
 
 /// Builds T, V and L. Throws scene_error-free computation_error if a spring's

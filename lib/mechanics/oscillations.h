@@ -61,6 +61,7 @@ struct modes_result {
     /// The same with the scene's `ratio` substituted (m -> rho*M), if it has one.
     std::vector<GiNaC::ex> frequencies_in_ratio;
     std::vector<std::vector<GiNaC::ex>> modes_in_ratio;
+    std::vector<GiNaC::ex> normal_coordinates_in_ratio;
 };
 
 modes_result symbolic_modes(const model& scene, const linearization_result& linear,
@@ -70,6 +71,7 @@ struct asymptotic_result {
     std::string label; ///< "rho -> 0" or "rho -> oo"
     std::vector<GiNaC::ex> frequencies;
     std::vector<std::vector<GiNaC::ex>> modes;
+    std::vector<GiNaC::ex> normal_coordinates; ///< leading term of each coefficient
 };
 
 /// The leading behaviour of the frequencies and modes in the scene's `limit`.

@@ -5,8 +5,15 @@
  *  simplifier that chains them with the rewrite rules. */
 #include "mechanics/simplify.h"
 
+#include "mechanics/harmonic.h"
+
+#include <cln/integer.h>
+
+#include <algorithm>
+#include <cstdint>
 #include <deque>
 #include <map>
+#include <optional>
 #include <set>
 #include <unordered_map>
 #include <utility>
@@ -587,6 +594,23 @@ private:
     mutable std::unordered_map<unsigned, std::deque<std::pair<ex, fourier_series>>> harmonics_;
 };
 
+/// The canonical form computed with harmonic polynomials, if `e` is one (sums,
+/// products and integer powers of symbols and of sin/cos of integer combinations of
+/// the angles): the same expression as the general path builds, much faster.
+std::optional<ex> harmonic_canonical(const ex& e, const GiNaC::lst& angles)
+{
+    for (const ex& q : angles)
+        if (ex_kind_of(q) != ex_kind::symbol)
+            return std::nullopt;
+    harmonic_space space(angles);
+    if (!space.add_symbols_of(e))
+        return std::nullopt;
+    std::optional<harmonic_polynomial> p = to_harmonic(e, space);
+    if (!p)
+        return std::nullopt;
+    return to_ex(*p);
+}
+
 /// Largest number of terms for which a coefficient is handed to GiNaC's factor().
 constexpr size_t factor_term_limit = 12;
 
@@ -698,9 +722,190 @@ exvector compact_factors(const ex& c)
     return result;
 }
 
+struct key_hash {
+    size_t operator()(const std::vector<std::int32_t>& key) const
+    {
+        std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+        for (std::int32_t x : key) {
+            h ^= static_cast<std::uint32_t>(x);
+            h *= 0xff51afd7ed558ccdULL;
+            h ^= h >> 32;
+        }
+        return static_cast<size_t>(h);
+    }
+};
+
+/// The terms of one group of collect_compact over a harmonic polynomial: indices of
+/// the polynomial's terms that share their monomial in the variables and harmonics.
+struct harmonic_group {
+    std::vector<size_t> terms;
+};
+
+/// compact_factors for a coefficient given as terms of a harmonic polynomial whose
+/// exponents count only for the symbols not in `variable`: the same factors, with
+/// the content taken out without building the expanded coefficient first.
+exvector compact_factors(const harmonic_polynomial& p, const std::vector<size_t>& terms,
+                         const std::vector<bool>& variable)
+{
+    const harmonic_space& space = p.space();
+    const size_t symbols = p.symbol_count();
+    auto term_ex = [&](size_t i, const cln::cl_RA& divisor, const std::vector<std::int32_t>& subtracted) {
+        const harmonic_term t = p.term(i);
+        exvector factors;
+        const cln::cl_RA c = *t.coefficient / divisor;
+        if (!cln::equal(c, cln::cl_RA(1)))
+            factors.push_back(harmonic_space::number(c));
+        for (size_t s = 0; s < symbols; ++s) {
+            if (variable[s])
+                continue;
+            const std::int32_t e = t.exponents[s] - subtracted[s];
+            if (e != 0)
+                factors.push_back(space.power(s, e));
+        }
+        return product_of(factors);
+    };
+    const std::vector<std::int32_t> none(symbols, 0);
+    if (terms.size() == 1)
+        return {term_ex(terms.front(), 1, none)};
+
+    cln::cl_I numerator_gcd = 0;
+    cln::cl_I denominator_lcm = 1;
+    bool all_negative = true;
+    std::vector<std::int32_t> common(symbols, 0);
+    std::vector<bool> in_all(symbols, true);
+    for (size_t k = 0; k < terms.size(); ++k) {
+        const harmonic_term t = p.term(terms[k]);
+        numerator_gcd = cln::gcd(numerator_gcd, cln::numerator(*t.coefficient));
+        denominator_lcm = cln::lcm(denominator_lcm, cln::denominator(*t.coefficient));
+        all_negative = all_negative && cln::minusp(*t.coefficient);
+        for (size_t s = 0; s < symbols; ++s) {
+            if (variable[s] || !in_all[s])
+                continue;
+            const std::int32_t e = t.exponents[s];
+            if (e == 0) {
+                in_all[s] = false;
+                common[s] = 0;
+            } else if (k == 0 || e < common[s]) {
+                common[s] = e;
+            }
+        }
+    }
+    cln::cl_RA content = numerator_gcd / denominator_lcm;
+    if (all_negative)
+        content = -content;
+    exvector content_factors;
+    for (size_t s = 0; s < symbols; ++s)
+        if (!variable[s] && in_all[s] && common[s] != 0)
+            content_factors.push_back(space.power(s, common[s]));
+        else
+            common[s] = 0;
+
+    exvector cofactor_terms;
+    cofactor_terms.reserve(terms.size());
+    bool linear = true;
+    for (size_t i : terms) {
+        cofactor_terms.push_back(term_ex(i, content, common));
+        const harmonic_term t = p.term(i);
+        int degree_symbols = 0;
+        for (size_t s = 0; s < symbols && linear; ++s) {
+            if (variable[s])
+                continue;
+            const std::int32_t e = t.exponents[s] - common[s];
+            if (e != 0 && (e != 1 || ++degree_symbols > 1))
+                linear = false;
+        }
+    }
+    ex cofactor = sum_of(cofactor_terms);
+    if (cofactor_terms.size() <= factor_term_limit && !linear)
+        cofactor = factor_polynomial(cofactor);
+
+    exvector result = content_factors;
+    if (!cln::equal(content, cln::cl_RA(1)))
+        result.push_back(harmonic_space::number(content));
+    for (const ex& factor : factors_of(cofactor))
+        result.push_back(factor);
+    return result;
+}
+
+/// collect_compact over a harmonic polynomial;
+/// nullopt if a variable is not a symbol (then only the general path applies).
+std::optional<ex> collect_compact_harmonic(const harmonic_polynomial& p, const GiNaC::lst& variables,
+                                           const GiNaC::lst& angles)
+{
+    const harmonic_space& space = p.space();
+    const size_t symbols = p.symbol_count();
+    std::vector<bool> variable(symbols, false);
+    for (const ex& v : variables) {
+        if (ex_kind_of(v) != ex_kind::symbol)
+            return std::nullopt;
+        if (auto index = space.index_of(v); index && *index < symbols)
+            variable[*index] = true;
+    }
+    // A harmonic is an angle function for collect_compact if one of `angles` is in its argument.
+    std::vector<bool> listed_angle(space.angle_count(), false);
+    for (const ex& q : angles)
+        if (auto index = space.index_of(q); index && *index < space.angle_count())
+            listed_angle[*index] = true;
+    auto is_angle_function = [&](const harmonic_term& t) {
+        if (t.kind == wave::none)
+            return false;
+        for (size_t i = 0; i < space.angle_count(); ++i)
+            if (t.frequency[i] != 0 && listed_angle[i])
+                return true;
+        return false;
+    };
+
+    // Groups keyed by the monomial: harmonic (if an angle function) and variable exponents.
+    std::unordered_map<std::vector<std::int32_t>, size_t, key_hash> index;
+    std::vector<std::vector<std::int32_t>> keys;
+    std::vector<harmonic_group> groups;
+    std::vector<bool> harmonic_in_monomial;
+    std::vector<std::int32_t> key;
+    for (size_t i = 0; i < p.size(); ++i) {
+        const harmonic_term t = p.term(i);
+        const bool angle_function = is_angle_function(t);
+        if (t.kind != wave::none && !angle_function)
+            return std::nullopt; // a harmonic in a coefficient: only the general path handles it
+        key.assign(1, angle_function ? static_cast<std::int32_t>(t.kind) : 0);
+        for (size_t a = 0; a < space.angle_count(); ++a)
+            key.push_back(angle_function ? t.frequency[a] : 0);
+        for (size_t s = 0; s < symbols; ++s)
+            key.push_back(variable[s] ? t.exponents[s] : 0);
+        auto [it, inserted] = index.emplace(key, groups.size());
+        if (inserted) {
+            groups.emplace_back();
+            keys.push_back(key);
+            harmonic_in_monomial.push_back(angle_function);
+        }
+        groups[it->second].terms.push_back(i);
+    }
+    exvector result;
+    result.reserve(groups.size());
+    for (size_t g = 0; g < groups.size(); ++g) {
+        exvector factors = compact_factors(p, groups[g].terms, variable);
+        exvector monomial;
+        const harmonic_term t = p.term(groups[g].terms.front());
+        for (size_t s = 0; s < symbols; ++s)
+            if (variable[s] && t.exponents[s] != 0)
+                monomial.push_back(space.power(s, t.exponents[s]));
+        if (harmonic_in_monomial[g])
+            monomial.push_back(space.wave_function(t.kind, t.frequency));
+        factors.push_back(product_of(monomial));
+        result.push_back(product_of(factors));
+    }
+    return sum_of(result);
+}
+
 } // namespace
 
 GiNaC::ex trig_canonical(const GiNaC::ex& e, const GiNaC::lst& angles)
+{
+    if (std::optional<ex> fast = harmonic_canonical(e, angles))
+        return *fast;
+    return canonicalizer(angles).canonical(e);
+}
+
+GiNaC::ex trig_canonical_general(const GiNaC::ex& e, const GiNaC::lst& angles)
 {
     return canonicalizer(angles).canonical(e);
 }
@@ -749,11 +954,62 @@ GiNaC::ex collect_compact(const GiNaC::ex& e, const GiNaC::lst& variables, const
     return sum_of(result);
 }
 
+GiNaC::ex collect_compact(const harmonic_polynomial& p, const GiNaC::lst& variables, const GiNaC::lst& angles)
+{
+    if (std::optional<ex> grouped = collect_compact_harmonic(p, variables, angles))
+        return *grouped;
+    return collect_compact(to_ex(p), variables, angles);
+}
+
 GiNaC::ex simplifier::canonical(const GiNaC::ex& e) const { return trig_canonical(e, angles); }
 
 GiNaC::ex simplifier::compact(const GiNaC::ex& canonical_form) const
 {
     return collect_compact(rewrite(canonical_form, rules), variables, angles);
+}
+
+GiNaC::ex simplifier::compact(const harmonic_polynomial& canonical_form) const
+{
+    rewrite_screen screen(rules);
+    return compact_harmonic(canonical_form, screen);
+}
+
+std::vector<GiNaC::ex> simplifier::compact(const std::vector<harmonic_polynomial>& canonical_forms) const
+{
+    rewrite_screen screen(rules);
+    std::vector<GiNaC::ex> compact_forms;
+    compact_forms.reserve(canonical_forms.size());
+    for (const harmonic_polynomial& p : canonical_forms)
+        compact_forms.push_back(compact_harmonic(p, screen));
+    return compact_forms;
+}
+
+GiNaC::ex simplifier::compact_harmonic(const harmonic_polynomial& canonical_form, rewrite_screen& screen) const
+{
+    // The rewrite changes nothing if no rule can fire at any node: then group the
+    // polynomial directly, without building its expanded expression.
+    const harmonic_space& space = canonical_form.space();
+    std::unordered_map<const GiNaC::basic*, size_t> index;
+    exvector atoms;
+    std::vector<std::vector<size_t>> term_atoms(canonical_form.size());
+    auto note = [&](const ex& atom, std::vector<size_t>& term) {
+        auto [it, inserted] = index.emplace(&GiNaC::ex_to<GiNaC::basic>(atom), atoms.size());
+        if (inserted)
+            atoms.push_back(atom);
+        term.push_back(it->second);
+    };
+    for (size_t i = 0; i < canonical_form.size(); ++i) {
+        const harmonic_term t = canonical_form.term(i);
+        for (size_t s = 0; s < canonical_form.symbol_count(); ++s)
+            if (t.exponents[s] != 0)
+                note(space.power(s, t.exponents[s]), term_atoms[i]);
+        if (t.kind != wave::none)
+            note(space.wave_function(t.kind, t.frequency), term_atoms[i]);
+    }
+    if (!screen.may_fire(atoms, term_atoms))
+        if (std::optional<ex> grouped = collect_compact_harmonic(canonical_form, variables, angles))
+            return *grouped;
+    return compact(to_ex(canonical_form));
 }
 
 GiNaC::ex simplifier::operator()(const GiNaC::ex& e) const { return compact(canonical(e)); }

@@ -12,6 +12,8 @@
 
 namespace lagrange {
 
+class harmonic_polynomial;
+
 /// Canonical form of `e` as a trigonometric polynomial in `angles`: every sin/cos
 /// whose argument is a linear combination of the angles (rational coefficients,
 /// plus a constant) is written as a sum of c·cos(n·q + ...) and c·sin(n·q) with
@@ -22,6 +24,10 @@ namespace lagrange {
 /// their arguments canonicalized recursively.
 GiNaC::ex trig_canonical(const GiNaC::ex& e, const GiNaC::lst& angles);
 
+/// trig_canonical by the general path only, without the shortcut through harmonic
+/// polynomials (the two agree exactly where the shortcut applies; tests compare them).
+GiNaC::ex trig_canonical_general(const GiNaC::ex& e, const GiNaC::lst& angles);
+
 /// True if a and b are equal as trigonometric polynomials in `angles`.
 bool trig_equal(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::lst& angles);
 
@@ -30,6 +36,9 @@ bool trig_equal(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::lst& angles
 /// each coefficient factored: the compact form
 /// (M+m)*l^2*theta_ddot + m*l^2*cos(theta-phi)*phi_ddot + ...
 GiNaC::ex collect_compact(const GiNaC::ex& e, const GiNaC::lst& variables, const GiNaC::lst& angles = {});
+
+/// collect_compact(to_ex(p), variables, angles), grouped in the harmonic polynomial.
+GiNaC::ex collect_compact(const harmonic_polynomial& p, const GiNaC::lst& variables, const GiNaC::lst& angles = {});
 
 /// What the mechanics stages call: canonical trig form in `angles`, then the rules,
 /// then collect_compact over `variables`.
@@ -42,8 +51,17 @@ struct simplifier {
     GiNaC::ex canonical(const GiNaC::ex& e) const;
     /// The rules, then collect_compact: the form to show, from a canonical form.
     GiNaC::ex compact(const GiNaC::ex& canonical_form) const;
+    /// compact(to_ex(canonical_form)), without building the expanded expression when
+    /// no rule can fire.
+    GiNaC::ex compact(const harmonic_polynomial& canonical_form) const;
+    /// compact() of several harmonic polynomials over one space, sharing what is
+    /// learned about their common parts.
+    std::vector<GiNaC::ex> compact(const std::vector<harmonic_polynomial>& canonical_forms) const;
     /// compact(canonical(e)).
     GiNaC::ex operator()(const GiNaC::ex& e) const;
+
+private:
+    GiNaC::ex compact_harmonic(const harmonic_polynomial& canonical_form, rewrite_screen& screen) const;
 };
 
 } // namespace lagrange

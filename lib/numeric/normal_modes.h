@@ -4,6 +4,7 @@
 #pragma once
 
 #include "mechanics/oscillations.h"
+#include "numeric/expression_program.h"
 #include "scene/model.h"
 
 #include <Eigen/Dense>
@@ -20,8 +21,74 @@ struct numeric_modes {
     std::vector<double> omega;                          ///< sign(ω²)·√|ω²|: a negative entry is the growth
                                                         ///< rate of an imaginary frequency
     Eigen::MatrixXd modes;                              ///< columns, Aᵀ T A = I
-    std::vector<double> error;                          ///< estimated relative error of each ω
+    std::vector<double> error;                          ///< bound on the relative error of each ω;
+                                                        ///< for a zero mode (ω = 0) the absolute error
     std::string method;                                 ///< which numeric path gave these
+};
+
+/// The numeric routes from T and V to the modes.
+enum class modes_method {
+    automatic,           ///< the best exact route, then high precision if its bound exceeds the tolerance
+    closed_form,         ///< 1 or 2 coordinates: det(V − ω²T) = 0 solved in double-double (Vieta for
+                         ///< the smaller root) from symbolically simplified coefficients
+    symbolic_normalized, ///< K = L⁻¹VL⁻ᵀ with T = LLᵀ done symbolically, then Eigen's symmetric solver
+    eigen_generalized,   ///< T and V evaluated, then Eigen's GeneralizedSelfAdjointEigenSolver
+    high_precision,      ///< T and V at `digits` digits (CLN), Cholesky and cyclic Jacobi in cln::cl_F
+};
+std::string to_string(modes_method m); ///< "closed form", "symbolic normalization", ...
+
+struct compiled_modes_options {
+    modes_method method = modes_method::automatic;
+    double tolerance = 1e-13; ///< automatic: relative error bound above which high precision is used
+    int digits = 50;          ///< decimal digits of the high-precision route
+};
+
+/// T and V compiled once (symbolic simplification and normalization, then straight-line
+/// code), evaluated at many parameter points. Not thread-safe: it keeps its workspace;
+/// copy it per thread.
+class compiled_modes {
+public:
+    /// `parameters` in the order evaluate() takes their values; `coordinate_names`
+    /// (optional) name coordinates in error messages. Throws computation_error if T or
+    /// V holds a symbol that is not a parameter.
+    compiled_modes(const std::vector<parameter>& parameters, const linearization_result& linear,
+                   compiled_modes_options options = {}, std::vector<std::string> coordinate_names = {});
+
+    std::size_t size() const { return size_; } ///< number of coordinates
+    /// Whether T or V depends on parameter `k` (those it does not need no value).
+    bool uses(std::size_t k) const { return used_[k]; }
+
+    /// Modes at one point, into caller buffers of size() entries (modes: size()², column-major,
+    /// may be null). Returns the route that produced them. Throws computation_error when T is
+    /// singular or indefinite there.
+    modes_method evaluate(const double* parameter_values, double* omega_squared, double* omega, double* error,
+                          double* modes);
+    numeric_modes evaluate(const double* parameter_values);
+
+private:
+    modes_method closed_form(const double* p, double* w2, double* w, double* error, double* modes);
+    modes_method normalized(const double* p, double* w2, double* w, double* error, double* modes);
+    modes_method generalized(const double* p, double* w2, double* w, double* error, double* modes);
+    modes_method high_precision(const double* p, double* w2, double* w, double* error, double* modes, int digits);
+    bool acceptable(const double* error, const double* w) const;
+    [[noreturn]] void not_positive_definite(std::size_t coordinate) const;
+
+    std::size_t size_ = 0;
+    compiled_modes_options options_;
+    std::vector<parameter> parameters_;
+    std::vector<bool> used_;
+    std::vector<std::string> coordinate_names_;
+    GiNaC::matrix kinetic_, potential_;
+    expression_program closed_;     ///< size ≤ 2: [det T, b, det V, b² − 4 det T det V, T upper, V upper]
+    expression_program normalized_; ///< [pivots of T = LLᵀ, K upper, L⁻¹ lower], if found
+    expression_program entries_;    ///< [T upper, V upper]
+    bool has_closed_ = false, has_normalized_ = false;
+    std::size_t singular_coordinate_ = static_cast<std::size_t>(-1); ///< T's pivot there is identically 0
+    std::vector<double> scratch_double_;
+    std::vector<bounded_double> scratch_bounded_, out_bounded_;
+    std::vector<double_double> scratch_dd_, out_dd_;
+    Eigen::MatrixXd work_;
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> symmetric_solver_;
 };
 
 /// Numeric modes at every `values` point of the scene. Throws computation_error

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cctype>
+#include <charconv>
 #include <cstdio>
 
 namespace lagrange {
@@ -63,11 +64,32 @@ std::vector<std::string> parameter_names(const model& scene)
     return names;
 }
 
-/// LaTeX special characters in free text (titles).
+/// LaTeX special characters in free text (titles, notes); the few non-ASCII
+/// characters that messages use become math, any other one a `?`.
 std::string latex_escape(const std::string& text)
 {
+    static const std::vector<std::pair<std::string, std::string>> unicode = {
+        {"∂", "$\\partial$"}, {"²", "$^2$"}, {"≤", "$\\le$"}, {"→", "$\\to$"}, {"·", "$\\cdot$"},
+        {"−", "$-$"},          {"ω", "$\\omega$"}, {"θ", "$\\theta$"}, {"φ", "$\\phi$"}, {"ρ", "$\\rho$"}};
     std::string out;
-    for (char c : text) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        char c = text[i];
+        if (static_cast<unsigned char>(c) >= 0x80) {
+            bool known = false;
+            for (const auto& [from, to] : unicode)
+                if (text.compare(i, from.size(), from) == 0) {
+                    out += to;
+                    i += from.size() - 1;
+                    known = true;
+                    break;
+                }
+            if (!known) {
+                out += '?';
+                while (i + 1 < text.size() && (static_cast<unsigned char>(text[i + 1]) & 0xC0) == 0x80)
+                    ++i;
+            }
+            continue;
+        }
         switch (c) {
         case '\\': out += "\\textbackslash{}"; break;
         case '{': case '}': case '$': case '&': case '#': case '_': case '%':
@@ -106,10 +128,11 @@ std::size_t latex_width(const std::string& latex)
 
 /// Rows of an align* environment: `lhs &= terms rhs`, broken before a term
 /// when the line would grow wider than the page holds.
-std::string latex_rows(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs)
+std::string latex_rows(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs,
+                       const std::string& relation = "=")
 {
     constexpr std::size_t line_width = 62;
-    std::string out = lhs + (lhs.empty() ? "&" : " &= ");
+    std::string out = lhs + (lhs.empty() ? "&" : " &" + relation + " ");
     std::size_t width = latex_width(lhs);
     bool first = true;
     for (const std::string& term : terms) {
@@ -123,6 +146,152 @@ std::string latex_rows(const std::string& lhs, const std::vector<std::string>& t
         first = false;
     }
     return out + rhs;
+}
+
+/// A whole display of `lhs = terms rhs`: an align* broken across lines, or, when
+/// a single term is wider than the page, the line scaled down to the page width.
+std::string latex_display(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs,
+                          const std::string& relation = "=")
+{
+    constexpr std::size_t line_width = 62;
+    std::size_t widest = 0;
+    for (const std::string& term : terms)
+        widest = std::max(widest, latex_width(term) + (terms.size() == 1 ? latex_width(lhs) : 0));
+    if (widest <= line_width)
+        return "\\begin{align*}\n" + latex_rows(lhs, terms, rhs, relation) + "\n\\end{align*}\n";
+    std::string joined;
+    for (const std::string& term : terms)
+        joined += (joined.empty() ? "" : " ") + term;
+    return "\\[\\resizebox{\\linewidth}{!}{$\\displaystyle " + (lhs.empty() ? "" : lhs + " " + relation + " ") + joined + rhs +
+           "$}\\]\n";
+}
+
+term_order omega_order(const analysis& result)
+{
+    term_order order;
+    if (result.characteristic)
+        order.groups.push_back({result.characteristic->omega});
+    return order;
+}
+
+/// `coordinate = value` pairs of a point, in coordinate order.
+std::string position_text(const model& scene, const std::vector<GiNaC::ex>& position, syntax s)
+{
+    std::string out;
+    for (std::size_t i = 0; i < position.size(); ++i)
+        out += (i ? ", " : "") + print_name(scene.coordinates[i].name, s) + " = " + print(position[i], s);
+    return out;
+}
+
+std::string vector_text(const std::vector<GiNaC::ex>& v, syntax s)
+{
+    std::string out = "(";
+    for (std::size_t i = 0; i < v.size(); ++i)
+        out += (i ? ", " : "") + print(v[i], s);
+    return out + ")";
+}
+
+std::string matrix_latex(const GiNaC::matrix& m)
+{
+    std::string out = "\\begin{pmatrix}";
+    for (unsigned i = 0; i < m.rows(); ++i) {
+        for (unsigned j = 0; j < m.cols(); ++j)
+            out += (j ? " & " : "") + print(m(i, j), syntax::latex);
+        out += i + 1 < m.rows() ? " \\\\ " : "";
+    }
+    return out + "\\end{pmatrix}";
+}
+
+/// The shortest decimal that reads back as the same double.
+std::string number(double x)
+{
+    char buffer[64];
+    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return error == std::errc() ? std::string(buffer, end) : std::string("?");
+}
+
+} // namespace
+
+namespace {
+
+void write_oscillations_text(std::ostream& out, const analysis& result)
+{
+    const model& scene = *result.scene;
+    const syntax s = syntax::text;
+    if (result.equilibria) {
+        out << "\nEquilibria\n";
+        for (std::size_t k = 0; k < result.equilibria->points.size(); ++k) {
+            const equilibrium_point& p = result.equilibria->points[k];
+            out << "  " << position_text(scene, p.position, s) << ": " << to_string(p.kind)
+                << (k == result.equilibria->chosen && result.linearization ? "  (linearized about)" : "") << '\n';
+        }
+    }
+    if (result.linearization) {
+        const linearization_result& l = *result.linearization;
+        out << "\nLinearization\n";
+        for (const char* which : {"T", "V"}) {
+            const GiNaC::matrix& m = std::string(which) == "T" ? l.kinetic : l.potential;
+            out << "  " << which << " =";
+            for (unsigned i = 0; i < m.rows(); ++i) {
+                out << (i ? "      " : " ") << "[";
+                for (unsigned j = 0; j < m.cols(); ++j)
+                    out << (j ? ", " : "") << print(m(i, j), s);
+                out << "]\n";
+            }
+        }
+    }
+    if (result.characteristic)
+        out << "\nCharacteristic polynomial\n  " << print(result.characteristic->polynomial, s, omega_order(result))
+            << " = 0\n";
+    if (result.modes) {
+        const modes_result& m = *result.modes;
+        if (!m.closed_form) {
+            out << "\nNormal modes\n  no closed form found (see the numeric modes)\n";
+        } else {
+            std::string w2 = print_name(result.characteristic->omega.get_name(), s) + "²";
+            out << "\nNormal modes\n";
+            for (std::size_t k = 0; k < m.frequencies.size(); ++k) {
+                out << "  " << w2 << " = " << print(m.frequencies[k], s) << '\n';
+                if (k < m.modes.size())
+                    out << "    mode " << vector_text(m.modes[k], s) << '\n';
+                if (k < m.normal_coordinates.size())
+                    out << "    ζ = " << print(m.normal_coordinates[k], s) << '\n';
+            }
+            if (scene.ratio && !m.frequencies_in_ratio.empty()) {
+                out << "  with " << print_name(scene.ratio->name, s) << " = " << print(scene.ratio->definition, s)
+                    << ":\n";
+                for (std::size_t k = 0; k < m.frequencies_in_ratio.size(); ++k)
+                    out << "    " << w2 << " = " << print(m.frequencies_in_ratio[k], s) << '\n';
+            }
+        }
+    }
+    if (result.asymptotic) {
+        const asymptotic_result& a = *result.asymptotic;
+        out << "\nAsymptotic (" << a.label << ")\n";
+        for (std::size_t k = 0; k < a.frequencies.size(); ++k) {
+            out << "  " << print_name(result.characteristic->omega.get_name(), s) << "² → "
+                << print(a.frequencies[k], s);
+            if (k < a.modes.size())
+                out << ",  mode " << vector_text(a.modes[k], s);
+            out << '\n';
+        }
+    }
+    if (result.numeric) {
+        out << "\nNumeric modes\n";
+        for (const numeric_modes& n : *result.numeric) {
+            out << "  at";
+            for (const auto& [name, value] : n.values)
+                out << ' ' << print_name(name, s) << " = " << number(value);
+            out << "  (" << n.method << ")\n";
+            for (std::size_t k = 0; k < n.omega.size(); ++k) {
+                out << "    ω = " << number(n.omega[k]) << "  (relative error ≤ " << number(n.error[k])
+                    << ")  mode (";
+                for (Eigen::Index i = 0; i < n.modes.rows(); ++i)
+                    out << (i ? ", " : "") << number(n.modes(i, static_cast<Eigen::Index>(k)));
+                out << ")\n";
+            }
+        }
+    }
 }
 
 } // namespace
@@ -151,6 +320,9 @@ void write_text(std::ostream& out, const analysis& result, const document_option
             out << "  " << print_name(scene.coordinates[i].name, syntax::text) << ":  "
                 << print((*result.equations)[i], syntax::text, equation_order(scene)) << " = 0\n";
     }
+    write_oscillations_text(out, result);
+    for (const std::string& note : result.notes)
+        out << "\nnote: " << note << '\n';
     if (options.timings) {
         out << "\nStages\n";
         for (const stage_time& s : result.stages)
@@ -158,12 +330,76 @@ void write_text(std::ostream& out, const analysis& result, const document_option
     }
 }
 
+namespace {
+
+void write_oscillations_latex(std::ostream& out, const analysis& result)
+{
+    const model& scene = *result.scene;
+    const syntax s = syntax::latex;
+    if (result.equilibria) {
+        out << "\\subsection*{Equilibria}\n\\begin{itemize}\n";
+        for (const equilibrium_point& p : result.equilibria->points)
+            out << "\\item $" << position_text(scene, p.position, s) << "$: " << to_string(p.kind) << "\n";
+        out << "\\end{itemize}\n";
+    }
+    if (result.linearization)
+        out << "\\subsection*{Linearization}\n\\begin{align*}\nT &= " << matrix_latex(result.linearization->kinetic)
+            << ", & V &= " << matrix_latex(result.linearization->potential) << "\n\\end{align*}\n";
+    if (result.characteristic)
+        out << "\\subsection*{Characteristic polynomial}\n"
+            << latex_display("", print_terms(result.characteristic->polynomial, s, omega_order(result)), " = 0");
+    std::string w2 = print_name(result.characteristic ? result.characteristic->omega.get_name() : "omega", s) + "^{2}";
+    auto index = [](std::size_t k) { return "_{" + std::to_string(k + 1) + "}"; };
+    if (result.modes && result.modes->closed_form) {
+        const modes_result& m = *result.modes;
+        out << "\\subsection*{Normal modes}\n";
+        for (std::size_t k = 0; k < m.frequencies.size(); ++k) {
+            out << latex_display(w2 + index(k), print_terms(m.frequencies[k], s), "");
+            if (k < m.modes.size())
+                out << latex_display("a" + index(k), {vector_text(m.modes[k], s)}, "");
+        }
+        for (std::size_t k = 0; k < m.normal_coordinates.size(); ++k)
+            out << latex_display("\\zeta" + index(k), print_terms(m.normal_coordinates[k], s), "");
+        if (scene.ratio && !m.frequencies_in_ratio.empty()) {
+            out << "With $" << print_name(scene.ratio->name, s) << " = " << print(scene.ratio->definition, s) << "$:\n";
+            for (std::size_t k = 0; k < m.frequencies_in_ratio.size(); ++k)
+                out << latex_display(w2 + index(k), print_terms(m.frequencies_in_ratio[k], s), "");
+        }
+    }
+    if (result.asymptotic) {
+        const asymptotic_result& a = *result.asymptotic;
+        out << "\\subsection*{Asymptotic behaviour}\n";
+        for (std::size_t k = 0; k < a.frequencies.size(); ++k)
+            out << latex_display(w2 + index(k), print_terms(a.frequencies[k], s), "", "\\to");
+    }
+    if (result.numeric) {
+        out << "\\subsection*{Numeric modes}\n";
+        for (const numeric_modes& n : *result.numeric) {
+            out << "\\noindent At $";
+            for (std::size_t i = 0; i < n.values.size(); ++i)
+                out << (i ? ",\\ " : "") << print_name(n.values[i].first, s) << " = "
+                    << print(GiNaC::numeric(n.values[i].second), s);
+            out << "$:\n\\begin{align*}\n";
+            for (std::size_t k = 0; k < n.omega.size(); ++k)
+                out << "\\omega_{" << k + 1 << "} &= " << print(GiNaC::numeric(n.omega[k]), s)
+                    << " & \\text{(relative error} &\\le " << print(GiNaC::numeric(n.error[k]), s) << ")"
+                    << (k + 1 < n.omega.size() ? "\\\\\n" : "\n");
+            out << "\\end{align*}\n";
+        }
+    }
+    for (const std::string& note : result.notes)
+        out << "\\paragraph{Note.} " << latex_escape(note) << "\n";
+}
+
+} // namespace
+
 void write_latex(std::ostream& out, const analysis& result, const document_options& options)
 {
     const model& scene = *result.scene;
     out << "\\documentclass[11pt]{article}\n"
            "\\usepackage[utf8]{inputenc}\n"
            "\\usepackage{amsmath}\n"
+           "\\usepackage{graphicx}\n"
            "\\usepackage[margin=2cm]{geometry}\n"
            "\\begin{document}\n";
     out << "\\section*{" << latex_escape(scene.title.empty() ? "Scene" : scene.title) << "}\n";
@@ -171,24 +407,21 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
     out << "Parameters: $" << join_names(parameter_names(scene), syntax::latex, ",\\ ") << "$.\n";
     if (result.lagrangian) {
         const lagrangian_result& l = *result.lagrangian;
-        out << "\\subsection*{Lagrangian}\n\\begin{align*}\n";
+        out << "\\subsection*{Lagrangian}\n";
         if (l.split) {
-            out << latex_rows("T", print_terms(l.kinetic, syntax::latex, velocity_order(scene)), "") << "\\\\\n";
+            out << latex_display("T", print_terms(l.kinetic, syntax::latex, velocity_order(scene)), "");
             if (!l.gyroscopic.is_zero())
-                out << latex_rows("L_1", print_terms(l.gyroscopic, syntax::latex, velocity_order(scene)), "")
-                    << "\\\\\n";
-            out << latex_rows("V", print_terms(l.potential, syntax::latex), "") << "\\\\\n";
+                out << latex_display("L_1", print_terms(l.gyroscopic, syntax::latex, velocity_order(scene)), "");
+            out << latex_display("V", print_terms(l.potential, syntax::latex), "");
         }
-        out << latex_rows("L", print_terms(l.lagrangian, syntax::latex, velocity_order(scene)), "")
-            << "\n\\end{align*}\n";
+        out << latex_display("L", print_terms(l.lagrangian, syntax::latex, velocity_order(scene)), "");
     }
     if (result.equations) {
-        out << "\\subsection*{Equations of motion}\n\\begin{align*}\n";
+        out << "\\subsection*{Equations of motion}\n";
         for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
-            out << latex_rows("", print_terms((*result.equations)[i], syntax::latex, equation_order(scene)), " = 0")
-                << (i + 1 < scene.coordinates.size() ? "\\\\\n" : "\n");
-        out << "\\end{align*}\n";
+            out << latex_display("", print_terms((*result.equations)[i], syntax::latex, equation_order(scene)), " = 0");
     }
+    write_oscillations_latex(out, result);
     if (options.timings) {
         out << "\\subsection*{Stages}\n\\begin{tabular}{lr}\n";
         for (const stage_time& s : result.stages)
@@ -197,6 +430,104 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
     }
     out << "\\end{document}\n";
 }
+
+namespace {
+
+nlohmann::ordered_json matrix_json(const GiNaC::matrix& m)
+{
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (unsigned i = 0; i < m.rows(); ++i) {
+        nlohmann::ordered_json row = nlohmann::ordered_json::array();
+        for (unsigned j = 0; j < m.cols(); ++j)
+            row.push_back(print(m(i, j), syntax::plain));
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+nlohmann::ordered_json strings_json(const std::vector<GiNaC::ex>& v)
+{
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const GiNaC::ex& e : v)
+        list.push_back(print(e, syntax::plain));
+    return list;
+}
+
+nlohmann::ordered_json vectors_json(const std::vector<std::vector<GiNaC::ex>>& vectors)
+{
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const auto& v : vectors)
+        list.push_back(strings_json(v));
+    return list;
+}
+
+void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result)
+{
+    const model& scene = *result.scene;
+    if (result.equilibria) {
+        const equilibria_result& e = *result.equilibria;
+        auto position_json = [&](const equilibrium_point& p) {
+            nlohmann::ordered_json position = nlohmann::ordered_json::object();
+            for (std::size_t i = 0; i < p.position.size(); ++i)
+                position[scene.coordinates[i].name] = print(p.position[i], syntax::plain);
+            return position;
+        };
+        const equilibrium_point& chosen = e.points.at(e.chosen);
+        doc["equilibrium"] = position_json(chosen);
+        doc["stability"] = to_string(chosen.kind);
+        nlohmann::ordered_json all = nlohmann::ordered_json::array();
+        for (const equilibrium_point& p : e.points)
+            all.push_back({{"position", position_json(p)}, {"stability", to_string(p.kind)}});
+        doc["equilibria"] = all;
+    }
+    if (result.linearization) {
+        doc["T"] = matrix_json(result.linearization->kinetic);
+        doc["V"] = matrix_json(result.linearization->potential);
+    }
+    if (result.characteristic)
+        doc["characteristic"] = {{"variable", result.characteristic->omega.get_name()},
+                                 {"polynomial", print(result.characteristic->polynomial, syntax::plain,
+                                                      omega_order(result))}};
+    if (result.modes && result.modes->closed_form) {
+        const modes_result& m = *result.modes;
+        const std::set<product>& w = result.wanted;
+        if (w.count(product::frequencies) || w.count(product::asymptotic))
+            doc["frequencies"] = strings_json(m.frequencies);
+        if (w.count(product::modes))
+            doc["modes"] = vectors_json(m.modes);
+        if (w.count(product::normal_coordinates))
+            doc["normal_coordinates"] = strings_json(m.normal_coordinates);
+        if (scene.ratio && !m.frequencies_in_ratio.empty())
+            doc["ratio"] = {{"name", scene.ratio->name},
+                            {"definition", print(scene.ratio->definition, syntax::plain)},
+                            {"frequencies", strings_json(m.frequencies_in_ratio)},
+                            {"modes", vectors_json(m.modes_in_ratio)}};
+    }
+    if (result.asymptotic)
+        doc["asymptotic"] = {{result.asymptotic->label,
+                              {{"frequencies", strings_json(result.asymptotic->frequencies)},
+                               {"modes", vectors_json(result.asymptotic->modes)}}}};
+    if (result.numeric) {
+        nlohmann::ordered_json points = nlohmann::ordered_json::array();
+        for (const numeric_modes& n : *result.numeric) {
+            nlohmann::ordered_json values = nlohmann::ordered_json::object();
+            for (const auto& [name, value] : n.values)
+                values[name] = value;
+            nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+            for (Eigen::Index k = 0; k < n.modes.cols(); ++k) {
+                nlohmann::ordered_json column = nlohmann::ordered_json::array();
+                for (Eigen::Index i = 0; i < n.modes.rows(); ++i)
+                    column.push_back(n.modes(i, k));
+                modes.push_back(column);
+            }
+            points.push_back({{"values", values}, {"omega", n.omega}, {"modes", modes},
+                              {"error", n.error}, {"method", n.method}});
+        }
+        doc["numeric"] = points;
+    }
+}
+
+} // namespace
 
 void write_json(std::ostream& out, const analysis& result, const document_options& options)
 {
@@ -227,6 +558,9 @@ void write_json(std::ostream& out, const analysis& result, const document_option
         for (const GiNaC::ex& e : *result.equations)
             doc["equations"].push_back(print(e, syntax::plain, equation_order(scene)));
     }
+    write_oscillations_json(doc, result);
+    if (!result.notes.empty())
+        doc["notes"] = result.notes;
     out << doc.dump(2) << '\n';
 }
 

@@ -1,0 +1,317 @@
+/** @file expression_program.cpp
+ *  Compiling GiNaC expressions to a postfix instruction list and running it.
+ *  Written by hand: GiNaC's own evaluation (subs + evalf) walks the tree with
+ *  arbitrary-precision numbers (about 250 µs per call), and the JIT libraries that
+ *  compile expressions need a compiler or LLVM at run time; a few dozen
+ *  instructions run in a switch loop take nanoseconds. */
+#include "numeric/expression_program.h"
+
+#include <cln/cln.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace lagrange {
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+/// Builds the instruction list, one slot per distinct subexpression.
+class compiler {
+public:
+    compiler(const std::vector<GiNaC::ex>& symbols, std::vector<instruction>& code, bool& algebraic)
+        : symbols_(symbols), code_(code), algebraic_(algebraic) {}
+
+    int slot(const GiNaC::ex& e)
+    {
+        auto found = memo_.find(e);
+        if (found != memo_.end())
+            return found->second;
+        int result = build(e);
+        memo_.emplace(e, result);
+        return result;
+    }
+
+private:
+    int emit(instruction i)
+    {
+        code_.push_back(i);
+        return static_cast<int>(code_.size()) - 1;
+    }
+
+    int constant(const GiNaC::numeric& n)
+    {
+        if (!n.is_real())
+            throw std::invalid_argument("the complex number " + to_text(n) + " cannot be evaluated as a real");
+        cln::cl_RA exact = cln::rational(cln::realpart(n.to_cl_N()));
+        instruction i;
+        i.op = instruction::code::constant;
+        i.value = cln::double_approx(exact);
+        cln::cl_RA rest = exact - cln::rational(cln::cl_DF(i.value));
+        i.value_low = cln::double_approx(rest);
+        i.value_error = std::abs(i.value_low) * (1 + 4 * unit_roundoff);
+        return emit(i);
+    }
+
+    int unary(instruction::code op, int operand, int second = 0, double value = 0)
+    {
+        instruction i;
+        i.op = op;
+        i.first = operand;
+        i.second = second;
+        i.value = value;
+        return emit(i);
+    }
+
+    int binary(instruction::code op, int a, int b)
+    {
+        instruction i;
+        i.op = op;
+        i.first = a;
+        i.second = b;
+        return emit(i);
+    }
+
+    int build(const GiNaC::ex& e)
+    {
+        using code = instruction::code;
+        if (GiNaC::is_a<GiNaC::numeric>(e))
+            return constant(GiNaC::ex_to<GiNaC::numeric>(e));
+        if (GiNaC::is_a<GiNaC::constant>(e)) {
+            int saved = GiNaC::Digits;
+            GiNaC::Digits = 40;
+            GiNaC::ex value = e.evalf();
+            GiNaC::Digits = saved;
+            return constant(GiNaC::ex_to<GiNaC::numeric>(value));
+        }
+        if (GiNaC::is_a<GiNaC::symbol>(e)) {
+            for (std::size_t k = 0; k < symbols_.size(); ++k)
+                if (e.is_equal(symbols_[k])) {
+                    instruction i;
+                    i.op = code::symbol;
+                    i.first = static_cast<int>(k);
+                    return emit(i);
+                }
+            throw std::invalid_argument("the symbol `" + to_text(e) + "` is not a parameter");
+        }
+        if (GiNaC::is_a<GiNaC::add>(e)) {
+            int sum = slot(e.op(0));
+            for (std::size_t k = 1; k < e.nops(); ++k)
+                sum = binary(code::add, sum, slot(e.op(k)));
+            return sum;
+        }
+        if (GiNaC::is_a<GiNaC::mul>(e)) {
+            bool negate = false;
+            int product = -1;
+            for (std::size_t k = 0; k < e.nops(); ++k) {
+                GiNaC::ex factor = e.op(k);
+                if (GiNaC::is_a<GiNaC::numeric>(factor) && factor.is_equal(-1)) {
+                    negate = !negate;
+                    continue;
+                }
+                int s = slot(factor);
+                product = product < 0 ? s : binary(code::mul, product, s);
+            }
+            if (product < 0)
+                product = constant(GiNaC::numeric(1));
+            return negate ? unary(code::neg, product) : product;
+        }
+        if (GiNaC::is_a<GiNaC::power>(e)) {
+            GiNaC::ex exponent = e.op(1);
+            int base = slot(e.op(0));
+            if (GiNaC::is_a<GiNaC::numeric>(exponent)) {
+                GiNaC::numeric p = GiNaC::ex_to<GiNaC::numeric>(exponent);
+                GiNaC::numeric twice = p * 2;
+                if (twice.is_integer()) {
+                    long whole = twice.to_long();
+                    bool inverse = whole < 0;
+                    whole = std::abs(whole);
+                    if (whole % 2 == 1)
+                        base = unary(code::square_root, base);
+                    else
+                        whole /= 2;
+                    int result = whole == 1 ? base : unary(code::integer_power, base, static_cast<int>(whole));
+                    return inverse ? unary(code::recip, result) : result;
+                }
+                if (p.is_real()) {
+                    algebraic_ = false;
+                    return unary(code::real_power, base, 0, p.to_double());
+                }
+            }
+            throw std::invalid_argument("the power " + to_text(e) + " has no real numeric exponent");
+        }
+        if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 1) {
+            int argument = slot(e.op(0));
+            algebraic_ = false;
+            if (is_ex_the_function(e, GiNaC::sin))
+                return unary(code::sine, argument);
+            if (is_ex_the_function(e, GiNaC::cos))
+                return unary(code::cosine, argument);
+            if (is_ex_the_function(e, GiNaC::exp))
+                return unary(code::exponential, argument);
+            if (is_ex_the_function(e, GiNaC::log))
+                return unary(code::logarithm, argument);
+        }
+        throw std::invalid_argument("cannot evaluate " + to_text(e) + " numerically");
+    }
+
+    static std::string to_text(const GiNaC::ex& e)
+    {
+        std::ostringstream out;
+        out << e;
+        return out.str();
+    }
+
+    const std::vector<GiNaC::ex>& symbols_;
+    std::vector<instruction>& code_;
+    bool& algebraic_;
+    std::map<GiNaC::ex, int, GiNaC::ex_is_less> memo_;
+};
+
+// ---- the three arithmetics, as overloads the interpreter picks from ----
+
+double make_constant(const instruction& i, double*) { return i.value; }
+bounded_double make_constant(const instruction& i, bounded_double*) { return {i.value, i.value_error}; }
+double_double make_constant(const instruction& i, double_double*) { return {i.value, i.value_low}; }
+
+double add(double a, double b) { return a + b; }
+double mul(double a, double b) { return a * b; }
+double neg(double a) { return -a; }
+double recip(double a) { return 1 / a; }
+double square_root(double a) { return std::sqrt(a); }
+double real_power(double a, double p) { return std::pow(a, p); }
+double sine(double a) { return std::sin(a); }
+double cosine(double a) { return std::cos(a); }
+double exponential(double a) { return std::exp(a); }
+double logarithm(double a) { return std::log(a); }
+
+bounded_double add(bounded_double a, bounded_double b) { return running::add(a, b); }
+bounded_double mul(bounded_double a, bounded_double b) { return running::mul(a, b); }
+bounded_double neg(bounded_double a) { return running::neg(a); }
+bounded_double recip(bounded_double a) { return running::recip(a); }
+bounded_double square_root(bounded_double a) { return running::sqrt(a); }
+bounded_double real_power(bounded_double a, double p)
+{
+    double v = std::pow(a.value, p), m = std::abs(a.value);
+    double e = a.error < m ? std::abs(v) * std::abs(p) * a.error / (m - a.error) * 2 : infinity;
+    return {v, e + 2 * unit_roundoff * std::abs(v)};
+}
+bounded_double sine(bounded_double a) { return {std::sin(a.value), a.error + 2 * unit_roundoff}; }
+bounded_double cosine(bounded_double a) { return {std::cos(a.value), a.error + 2 * unit_roundoff}; }
+bounded_double exponential(bounded_double a)
+{
+    double v = std::exp(a.value);
+    return {v, v * std::expm1(a.error) * 1.01 + 2 * unit_roundoff * v};
+}
+bounded_double logarithm(bounded_double a)
+{
+    double v = std::log(a.value), m = std::abs(a.value);
+    double e = a.error < m ? -std::log1p(-a.error / m) * 1.01 : infinity;
+    return {v, e + 2 * unit_roundoff * std::abs(v) + unit_roundoff};
+}
+
+double_double add(double_double a, double_double b) { return dd::add(a, b); }
+double_double mul(double_double a, double_double b) { return dd::mul(a, b); }
+double_double neg(double_double a) { return dd::neg(a); }
+double_double recip(double_double a) { return dd::div({1, 0}, a); }
+double_double square_root(double_double a) { return dd::sqrt(a); }
+// Transcendental steps keep only double accuracy (the program is then not algebraic()).
+double_double real_power(double_double a, double p)
+{
+    double v = std::pow(a.hi, p);
+    return dd::two_sum(v, v * p * a.lo / a.hi);
+}
+double_double sine(double_double a) { return dd::two_sum(std::sin(a.hi), std::cos(a.hi) * a.lo); }
+double_double cosine(double_double a) { return dd::two_sum(std::cos(a.hi), -std::sin(a.hi) * a.lo); }
+double_double exponential(double_double a)
+{
+    double v = std::exp(a.hi);
+    return dd::two_sum(v, v * a.lo);
+}
+double_double logarithm(double_double a) { return dd::two_sum(std::log(a.hi), a.lo / a.hi); }
+
+template <class number>
+number integer_power(number base, int exponent)
+{
+    number result{};
+    bool first = true;
+    while (exponent > 0) {
+        if (exponent & 1) {
+            result = first ? base : mul(result, base);
+            first = false;
+        }
+        exponent >>= 1;
+        if (exponent > 0)
+            base = mul(base, base);
+    }
+    return result;
+}
+
+template <class number>
+number from_symbol(double v);
+template <>
+double from_symbol<double>(double v) { return v; }
+template <>
+bounded_double from_symbol<bounded_double>(double v) { return {v, 0}; }
+template <>
+double_double from_symbol<double_double>(double v) { return {v, 0}; }
+
+template <class number>
+void interpret(const std::vector<instruction>& code, const std::vector<int>& outputs, const double* symbols,
+               std::vector<number>& slots, number* out)
+{
+    using op = instruction::code;
+    slots.resize(code.size());
+    number* s = slots.data();
+    for (std::size_t k = 0; k < code.size(); ++k) {
+        const instruction& i = code[k];
+        switch (i.op) {
+        case op::constant: s[k] = make_constant(i, static_cast<number*>(nullptr)); break;
+        case op::symbol: s[k] = from_symbol<number>(symbols[i.first]); break;
+        case op::add: s[k] = add(s[i.first], s[i.second]); break;
+        case op::mul: s[k] = mul(s[i.first], s[i.second]); break;
+        case op::neg: s[k] = neg(s[i.first]); break;
+        case op::recip: s[k] = recip(s[i.first]); break;
+        case op::square_root: s[k] = square_root(s[i.first]); break;
+        case op::integer_power: s[k] = integer_power(s[i.first], i.second); break;
+        case op::real_power: s[k] = real_power(s[i.first], i.value); break;
+        case op::sine: s[k] = sine(s[i.first]); break;
+        case op::cosine: s[k] = cosine(s[i.first]); break;
+        case op::exponential: s[k] = exponential(s[i.first]); break;
+        case op::logarithm: s[k] = logarithm(s[i.first]); break;
+        }
+    }
+    for (std::size_t k = 0; k < outputs.size(); ++k)
+        out[k] = s[outputs[k]];
+}
+
+} // namespace
+
+expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols)
+{
+    compiler build(symbols, code_, algebraic_);
+    for (const GiNaC::ex& e : outputs)
+        outputs_.push_back(build.slot(e));
+}
+
+void expression_program::run(const double* symbols, std::vector<double>& scratch, double* out) const
+{
+    interpret(code_, outputs_, symbols, scratch, out);
+}
+
+void expression_program::run(const double* symbols, std::vector<bounded_double>& scratch, bounded_double* out) const
+{
+    interpret(code_, outputs_, symbols, scratch, out);
+}
+
+void expression_program::run(const double* symbols, std::vector<double_double>& scratch, double_double* out) const
+{
+    interpret(code_, outputs_, symbols, scratch, out);
+}
+
+} // namespace lagrange

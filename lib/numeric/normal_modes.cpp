@@ -1,0 +1,633 @@
+/** @file normal_modes.cpp
+ *  Numeric normal modes: T and V simplified and compiled once, then per point the
+ *  closed form (two coordinates), the symbolically mass-normalized symmetric problem,
+ *  or Eigen's generalized solver, each with a running error bound, and a CLN route
+ *  at high precision when that bound is above the tolerance.
+ *  The Jacobi iteration in cln::cl_F is written by hand: Eigen's solvers need a
+ *  scalar type with numeric_limits and math functions that cl_F does not provide,
+ *  and no multiprecision eigensolver is among the project's dependencies. */
+#include "numeric/normal_modes.h"
+
+#include "scene/source.h"
+
+#include <cln/cln.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+namespace lagrange {
+
+namespace {
+
+/// Bound scale from a double running bound to the same formulas in double-double:
+/// each double-double step errs by at most ~8·2⁻¹⁰⁶ where double errs by 2⁻⁵³.
+constexpr double double_double_scale = 0x1p-46;
+
+/// Node count of an expression tree, to give up on symbolic routes that blow up.
+std::size_t tree_size(const GiNaC::ex& e)
+{
+    std::size_t n = 1;
+    for (std::size_t k = 0; k < e.nops(); ++k)
+        n += tree_size(e.op(k));
+    return n;
+}
+
+/// Normal form with numerator and denominator factored where GiNaC can.
+GiNaC::ex tidy(const GiNaC::ex& e)
+{
+    GiNaC::ex n = GiNaC::normal(e);
+    try {
+        GiNaC::ex nd = n.numer_denom();
+        return GiNaC::factor(nd.op(0)) / GiNaC::factor(nd.op(1));
+    } catch (const std::exception&) {
+        return n;
+    }
+}
+
+/// Relative error of √m given an absolute error `dw` of m > dw.
+double root_relative_error(double dw, double m)
+{
+    double x = dw / m;
+    return x / (1 + std::sqrt(std::max(0.0, 1 - x)));
+}
+
+/// Fills ω², ω and the error of one mode from ω² = w (rounded to double) with absolute
+/// error bound dw; `extra` is added to a relative error (rounding of the root).
+void set_frequency(double w, double dw, double extra, double& w2, double& omega, double& error)
+{
+    double m = std::abs(w);
+    if (m <= dw || m == 0) {
+        w2 = 0;
+        omega = 0;
+        error = std::sqrt(dw);
+        return;
+    }
+    w2 = w;
+    omega = std::copysign(std::sqrt(m), w);
+    error = (root_relative_error(dw, m) + extra) * (1 + 1e-6);
+}
+
+cln::cl_F to_cl(const GiNaC::ex& e, const cln::float_format_t& format)
+{
+    if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_real())
+        throw computation_error("cannot evaluate " + [&] { std::ostringstream o; o << e; return o.str(); }()
+                                + " to a real number");
+    return cln::cl_float(cln::realpart(GiNaC::ex_to<GiNaC::numeric>(e).to_cl_N()), format);
+}
+
+/// Index of T's upper triangle entry (i ≤ j) in row-major order.
+std::size_t upper_index(std::size_t i, std::size_t j, std::size_t n) { return i * n - i * (i + 1) / 2 + j; }
+
+} // namespace
+
+std::string to_string(modes_method m)
+{
+    switch (m) {
+    case modes_method::automatic: return "automatic";
+    case modes_method::closed_form: return "closed form (double-double)";
+    case modes_method::symbolic_normalized: return "symbolic normalization";
+    case modes_method::eigen_generalized: return "Eigen generalized solver";
+    case modes_method::high_precision: return "high precision (CLN)";
+    }
+    return "?";
+}
+
+compiled_modes::compiled_modes(const std::vector<parameter>& parameters, const linearization_result& linear,
+                               compiled_modes_options options, std::vector<std::string> coordinate_names)
+    : size_(linear.kinetic.rows()), options_(options), parameters_(parameters),
+      coordinate_names_(std::move(coordinate_names)), kinetic_(linear.kinetic), potential_(linear.potential)
+{
+    const std::size_t n = size_;
+    if (linear.kinetic.cols() != n || linear.potential.rows() != n || linear.potential.cols() != n)
+        throw computation_error("the kinetic and potential matrices are not square of the same size");
+    std::vector<GiNaC::ex> symbols;
+    for (const parameter& p : parameters_) {
+        symbols.push_back(p.symbol);
+        used_.push_back(kinetic_.has(p.symbol) || potential_.has(p.symbol));
+    }
+    auto T = [&](std::size_t i, std::size_t j) { return GiNaC::normal(kinetic_(i, j)); };
+    auto V = [&](std::size_t i, std::size_t j) { return GiNaC::normal(potential_(i, j)); };
+    try {
+        std::vector<GiNaC::ex> entries;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i; j < n; ++j)
+                entries.push_back(T(i, j));
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i; j < n; ++j)
+                entries.push_back(V(i, j));
+        entries_ = expression_program(entries, symbols);
+
+        if (n == 1) {
+            closed_ = expression_program({T(0, 0), V(0, 0)}, symbols);
+            has_closed_ = true;
+        } else if (n == 2) {
+            GiNaC::ex a = tidy(T(0, 0) * T(1, 1) - T(0, 1) * T(0, 1));
+            GiNaC::ex b = tidy(T(0, 0) * V(1, 1) + T(1, 1) * V(0, 0) - 2 * T(0, 1) * V(0, 1));
+            GiNaC::ex c = tidy(V(0, 0) * V(1, 1) - V(0, 1) * V(0, 1));
+            GiNaC::ex disc = tidy(GiNaC::expand(b * b - 4 * a * c));
+            closed_ = expression_program({a, b, c, disc, T(0, 0), T(0, 1), T(1, 1), V(0, 0), V(0, 1), V(1, 1)},
+                                         symbols);
+            has_closed_ = true;
+        }
+
+        // T = L Lᵀ symbolically, where that stays small (diagonal T, or few coordinates).
+        bool diagonal = true;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j)
+                if (i != j && !kinetic_(i, j).is_zero())
+                    diagonal = false;
+        if (diagonal || n <= 3) try {
+            std::vector<std::vector<GiNaC::ex>> L(n, std::vector<GiNaC::ex>(n, 0)), inverse = L;
+            std::vector<GiNaC::ex> pivots(n);
+            std::size_t total = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                GiNaC::ex d = T(i, i);
+                for (std::size_t k = 0; k < i; ++k)
+                    d -= L[i][k] * L[i][k];
+                pivots[i] = tidy(d);
+                if (pivots[i].is_zero()) {
+                    singular_coordinate_ = i;
+                    break;
+                }
+                L[i][i] = GiNaC::sqrt(pivots[i]);
+                for (std::size_t j = i + 1; j < n; ++j) {
+                    GiNaC::ex s = T(j, i);
+                    for (std::size_t k = 0; k < i; ++k)
+                        s -= L[j][k] * L[i][k];
+                    L[j][i] = GiNaC::normal(s / L[i][i]);
+                }
+            }
+            for (std::size_t j = 0; j < n; ++j) {
+                inverse[j][j] = 1 / L[j][j];
+                for (std::size_t i = j + 1; i < n; ++i) {
+                    GiNaC::ex s = 0;
+                    for (std::size_t k = j; k < i; ++k)
+                        s += L[i][k] * inverse[k][j];
+                    inverse[i][j] = GiNaC::normal(-s / L[i][i]);
+                }
+            }
+            if (singular_coordinate_ < n)
+                return;
+            std::vector<GiNaC::ex> outputs = pivots;
+            for (std::size_t i = 0; i < n; ++i)
+                for (std::size_t j = i; j < n; ++j) {
+                    GiNaC::ex s = 0;
+                    for (std::size_t k = 0; k <= i; ++k)
+                        for (std::size_t l = 0; l <= j; ++l)
+                            if (!inverse[i][k].is_zero() && !inverse[j][l].is_zero())
+                                s += inverse[i][k] * potential_(k, l) * inverse[j][l];
+                    outputs.push_back(GiNaC::normal(s));
+                    total += tree_size(outputs.back());
+                }
+            for (std::size_t i = 0; i < n; ++i)
+                for (std::size_t j = 0; j <= i; ++j)
+                    outputs.push_back(inverse[i][j]);
+            if (total < 20000) {
+                normalized_ = expression_program(outputs, symbols);
+                has_normalized_ = true;
+            }
+        } catch (const GiNaC::pole_error&) {
+            has_normalized_ = false;
+        }
+    } catch (const std::invalid_argument& e) {
+        throw computation_error(std::string("numeric modes: ") + e.what());
+    }
+}
+
+void compiled_modes::not_positive_definite(std::size_t coordinate) const
+{
+    if (coordinate < size_) {
+        std::string name = coordinate < coordinate_names_.size() ? coordinate_names_[coordinate]
+                                                                 : "#" + std::to_string(coordinate + 1);
+        throw computation_error("the kinetic matrix is not positive definite at these values: coordinate `" + name
+                                + "` has no kinetic energy independent of the coordinates before it");
+    }
+    throw computation_error("the kinetic matrix is singular or indefinite at these values");
+}
+
+bool compiled_modes::acceptable(const double* error, const double* w2) const
+{
+    double largest = 0;
+    for (std::size_t k = 0; k < size_; ++k)
+        largest = std::max(largest, std::abs(w2[k]));
+    for (std::size_t k = 0; k < size_; ++k) {
+        if (!std::isfinite(error[k]))
+            return false;
+        if (w2[k] == 0 ? error[k] * error[k] > options_.tolerance * largest : error[k] > options_.tolerance)
+            return false;
+    }
+    return true;
+}
+
+modes_method compiled_modes::evaluate(const double* p, double* w2, double* w, double* error, double* modes)
+{
+    switch (options_.method) {
+    case modes_method::closed_form:
+        if (!has_closed_)
+            throw std::invalid_argument("the closed form needs one or two coordinates");
+        return closed_form(p, w2, w, error, modes);
+    case modes_method::symbolic_normalized:
+        if (singular_coordinate_ < size_)
+            not_positive_definite(singular_coordinate_);
+        if (!has_normalized_)
+            throw std::invalid_argument("no symbolic normalization of this kinetic matrix");
+        return normalized(p, w2, w, error, modes);
+    case modes_method::eigen_generalized: return generalized(p, w2, w, error, modes);
+    case modes_method::high_precision: return high_precision(p, w2, w, error, modes, options_.digits);
+    case modes_method::automatic: break;
+    }
+    modes_method used;
+    if (has_closed_ && closed_.algebraic())
+        used = closed_form(p, w2, w, error, modes);
+    else if (has_normalized_)
+        used = normalized(p, w2, w, error, modes);
+    else
+        used = generalized(p, w2, w, error, modes);
+    for (int digits = options_.digits; !acceptable(error, w2) && digits <= 4 * options_.digits; digits *= 2)
+        used = high_precision(p, w2, w, error, modes, digits);
+    return used;
+}
+
+numeric_modes compiled_modes::evaluate(const double* p)
+{
+    numeric_modes result;
+    std::size_t n = size_;
+    result.omega_squared.resize(n);
+    result.omega.resize(n);
+    result.error.resize(n);
+    result.modes.resize(n, n);
+    modes_method used = evaluate(p, result.omega_squared.data(), result.omega.data(), result.error.data(),
+                                 result.modes.data());
+    result.method = to_string(used);
+    for (std::size_t k = 0; k < parameters_.size(); ++k)
+        if (used_[k])
+            result.values.emplace_back(parameters_[k].name, p[k]);
+    return result;
+}
+
+modes_method compiled_modes::closed_form(const double* p, double* w2, double* w, double* error, double* modes)
+{
+    using namespace dd;
+    const std::size_t n = size_;
+    std::size_t outputs = closed_.output_count();
+    out_bounded_.resize(outputs);
+    out_dd_.resize(outputs);
+    closed_.run(p, scratch_bounded_, out_bounded_.data());
+    closed_.run(p, scratch_dd_, out_dd_.data());
+    const double scale = closed_.algebraic() ? double_double_scale : 1.0;
+    const bounded_double* b = out_bounded_.data();
+    const double_double* x = out_dd_.data();
+    auto positive = [&](std::size_t k) { return x[k].hi > b[k].error * scale; };
+
+    if (n == 1) {
+        if (!positive(0))
+            not_positive_definite(0);
+        double_double W = dd::div(x[1], x[0]);
+        bounded_double Wb = running::mul(b[1], running::recip(b[0]));
+        double dw = Wb.error * scale;
+        double_double omega = dd::sqrt(W.hi < 0 ? dd::neg(W) : W);
+        double extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
+        set_frequency(W.hi, dw, extra, w2[0], w[0], error[0]);
+        if (w[0] != 0)
+            w[0] = std::copysign(omega.hi, W.hi);
+        if (modes)
+            modes[0] = 1 / dd::sqrt(x[0]).hi;
+        return modes_method::closed_form;
+    }
+
+    // T = [[x4, x5], [x5, x6]], V = [[x7, x8], [x8, x9]], det T = x0 > 0 iff positive definite.
+    if (!positive(4))
+        not_positive_definite(0);
+    if (!positive(6))
+        not_positive_definite(1);
+    if (!positive(0))
+        not_positive_definite(1);
+
+    // a W² − b W + c = 0: the root of larger magnitude without cancellation, the other by Vieta.
+    bool negative_b = x[1].hi < 0;
+    double_double root = dd::sqrt(x[3].hi > 0 ? x[3] : double_double{});
+    double_double q = negative_b ? dd::sub(x[1], root) : dd::add(x[1], root);
+    bounded_double root_b = running::sqrt(b[3].value > 0 ? b[3] : bounded_double{0, b[3].error});
+    bounded_double q_b = running::add(b[1], negative_b ? running::neg(root_b) : root_b);
+    double_double big = dd::div(q, dd::add(x[0], x[0]));
+    bounded_double big_b = running::mul(q_b, running::recip(running::add(b[0], b[0])));
+    double_double small{};
+    bounded_double small_b{0, 0};
+    if (q.hi != 0) {
+        small = dd::div(dd::add(x[2], x[2]), q);
+        small_b = running::mul(running::add(b[2], b[2]), running::recip(q_b));
+    } else {
+        small_b.error = big_b.error;
+    }
+    double_double roots[2] = {small, big};
+    bounded_double roots_b[2] = {small_b, big_b};
+    if (big.hi < small.hi) {
+        std::swap(roots[0], roots[1]);
+        std::swap(roots_b[0], roots_b[1]);
+    }
+    for (int k = 0; k < 2; ++k) {
+        double dw = roots_b[k].error * scale;
+        double_double magnitude = roots[k].hi < 0 ? dd::neg(roots[k]) : roots[k];
+        double_double omega = dd::sqrt(magnitude);
+        double extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
+        set_frequency(roots[k].hi, dw, extra, w2[k], w[k], error[k]);
+        if (w[k] != 0)
+            w[k] = std::copysign(omega.hi, roots[k].hi);
+    }
+    if (!modes)
+        return modes_method::closed_form;
+
+    // Mode k is orthogonal to the larger row of V − W T, then scaled so that aᵀ T a = 1.
+    for (int k = 0; k < 2; ++k) {
+        double_double W = roots[k];
+        auto entry = [&](std::size_t v, std::size_t t) { return dd::sub(x[v], dd::mul(W, x[t])); };
+        double_double r11 = entry(7, 4), r12 = entry(8, 5), r22 = entry(9, 6);
+        double n1 = std::max(std::abs(r11.hi), std::abs(r12.hi)), n2 = std::max(std::abs(r12.hi), std::abs(r22.hi));
+        double_double a0, a1;
+        if (std::max(n1, n2) == 0 || (k == 1 && w2[0] == w2[1])) {
+            // V = W T: any T-orthonormal pair.
+            a0 = k == 0 ? dd::from(1) : dd::neg(dd::div(x[5], x[4]));
+            a1 = k == 0 ? dd::from(0) : dd::from(1);
+        } else if (n1 >= n2) {
+            a0 = dd::neg(r12);
+            a1 = r11;
+        } else {
+            a0 = dd::neg(r22);
+            a1 = r12;
+        }
+        double_double norm = dd::add(dd::add(dd::mul(dd::mul(a0, a0), x[4]), dd::mul(dd::mul(a1, a1), x[6])),
+                                     dd::mul(dd::mul(dd::add(a0, a0), a1), x[5]));
+        double_double scale_by = dd::div(dd::from(1), dd::sqrt(norm));
+        modes[2 * k] = dd::mul(a0, scale_by).hi;
+        modes[2 * k + 1] = dd::mul(a1, scale_by).hi;
+    }
+    return modes_method::closed_form;
+}
+
+modes_method compiled_modes::normalized(const double* p, double* w2, double* w, double* error, double* modes)
+{
+    const std::size_t n = size_, triangle = n * (n + 1) / 2;
+    out_bounded_.resize(normalized_.output_count());
+    normalized_.run(p, scratch_bounded_, out_bounded_.data());
+    const bounded_double* pivots = out_bounded_.data();
+    const bounded_double* K = pivots + n;
+    const bounded_double* inverse = K + triangle;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(pivots[i].value > pivots[i].error))
+            not_positive_definite(i);
+    work_.resize(n, n);
+    double perturbation = 0, norm = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i; j < n; ++j) {
+            const bounded_double& k = K[upper_index(i, j, n)];
+            work_(i, j) = work_(j, i) = k.value;
+            double weight = i == j ? 1 : 2;
+            perturbation += weight * k.error * k.error;
+            norm += weight * k.value * k.value;
+        }
+    symmetric_solver_.compute(work_, Eigen::ComputeEigenvectors);
+    if (symmetric_solver_.info() != Eigen::Success)
+        throw computation_error("the symmetric eigenvalue iteration did not converge");
+    // Per mode: |W − λ| ≤ ‖K y − W y‖ for unit y (K symmetric), plus the rounding in that
+    // residual and the error of K's entries (Weyl).
+    const Eigen::MatrixXd& vectors = symmetric_solver_.eigenvectors();
+    for (std::size_t k = 0; k < n; ++k) {
+        double W = symmetric_solver_.eigenvalues()[k];
+        Eigen::VectorXd y = vectors.col(k);
+        double residual = (work_ * y - W * y).norm() / y.norm();
+        double rounding = (n + 3) * unit_roundoff * ((work_.cwiseAbs() * y.cwiseAbs()).norm() + std::abs(W) * y.norm()) / y.norm();
+        double orthogonality = std::abs(y.squaredNorm() - 1);
+        double dw = std::sqrt(perturbation) + residual + rounding + orthogonality * std::sqrt(norm);
+        set_frequency(W, dw * (1 + 1e-3), unit_roundoff, w2[k], w[k], error[k]);
+    }
+    if (modes) {
+        // A = L⁻ᵀ Y, L⁻¹ stored by rows (lower triangle).
+        const Eigen::MatrixXd& Y = symmetric_solver_.eigenvectors();
+        for (std::size_t c = 0; c < n; ++c)
+            for (std::size_t i = 0; i < n; ++i) {
+                double s = 0;
+                for (std::size_t k = i; k < n; ++k)
+                    s += inverse[k * (k + 1) / 2 + i].value * Y(k, c);
+                modes[c * n + i] = s;
+            }
+    }
+    return modes_method::symbolic_normalized;
+}
+
+modes_method compiled_modes::generalized(const double* p, double* w2, double* w, double* error, double* modes)
+{
+    const std::size_t n = size_, triangle = n * (n + 1) / 2;
+    out_bounded_.resize(entries_.output_count());
+    entries_.run(p, scratch_bounded_, out_bounded_.data());
+    Eigen::MatrixXd T(n, n), V(n, n);
+    double dT = 0, dV = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i; j < n; ++j) {
+            const bounded_double& t = out_bounded_[upper_index(i, j, n)];
+            const bounded_double& v = out_bounded_[triangle + upper_index(i, j, n)];
+            T(i, j) = T(j, i) = t.value;
+            V(i, j) = V(j, i) = v.value;
+            double weight = i == j ? 1 : 2;
+            dT += weight * t.error * t.error;
+            dV += weight * v.error * v.error;
+        }
+    dT = std::sqrt(dT) + 8.0 * n * unit_roundoff * T.norm();
+    dV = std::sqrt(dV) + 8.0 * n * unit_roundoff * V.norm();
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(T(i, i) > 0))
+            not_positive_definite(i);
+    double smallest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(T, Eigen::EigenvaluesOnly).eigenvalues()[0];
+    if (!(smallest > dT))
+        not_positive_definite(n);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
+        V, T, modes ? Eigen::ComputeEigenvectors | Eigen::Ax_lBx : Eigen::EigenvaluesOnly | Eigen::Ax_lBx);
+    if (solver.info() != Eigen::Success)
+        not_positive_definite(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        double W = solver.eigenvalues()[k];
+        double dw = (dV + std::abs(W) * dT) / (smallest - dT);
+        set_frequency(W, dw, unit_roundoff, w2[k], w[k], error[k]);
+    }
+    if (modes)
+        Eigen::Map<Eigen::MatrixXd>(modes, n, n) = solver.eigenvectors();
+    return modes_method::eigen_generalized;
+}
+
+modes_method compiled_modes::high_precision(const double* p, double* w2, double* w, double* error, double* modes,
+                                            int digits)
+{
+    using cln::cl_F;
+    const std::size_t n = size_;
+    const cln::float_format_t format = cln::float_format(digits);
+    GiNaC::exmap point;
+    for (std::size_t k = 0; k < parameters_.size(); ++k)
+        if (used_[k])
+            point[parameters_[k].symbol] = GiNaC::numeric(cln::rational(cln::cl_DF(p[k])));
+    int saved = GiNaC::Digits;
+    GiNaC::Digits = digits + 10;
+    std::vector<std::vector<cl_F>> T(n, std::vector<cl_F>(n)), V = T, L = T, K = T, Y = T;
+    try {
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) {
+                T[i][j] = to_cl(kinetic_(i, j).subs(point).evalf(), format);
+                V[i][j] = to_cl(potential_(i, j).subs(point).evalf(), format);
+            }
+    } catch (...) {
+        GiNaC::Digits = saved;
+        throw;
+    }
+    GiNaC::Digits = saved;
+    const cl_F zero = cln::cl_float(0, format), one = cln::cl_float(1, format);
+    const cl_F epsilon = cln::float_epsilon(format);
+
+    // T = L Lᵀ; a pivot at the level of rounding means T is singular.
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            L[i][j] = zero;
+    for (std::size_t i = 0; i < n; ++i) {
+        cl_F d = T[i][i];
+        for (std::size_t k = 0; k < i; ++k)
+            d = d - L[i][k] * L[i][k];
+        if (!(d > cln::abs(T[i][i]) * epsilon * 64 * n))
+            not_positive_definite(i);
+        L[i][i] = cln::sqrt(d);
+        for (std::size_t j = i + 1; j < n; ++j) {
+            cl_F s = T[j][i];
+            for (std::size_t k = 0; k < i; ++k)
+                s = s - L[j][k] * L[i][k];
+            L[j][i] = s / L[i][i];
+        }
+    }
+    // K = L⁻¹ V L⁻ᵀ by two forward substitutions (V symmetric).
+    auto forward = [&](const std::vector<std::vector<cl_F>>& B) {
+        std::vector<std::vector<cl_F>> X = B;
+        for (std::size_t c = 0; c < n; ++c)
+            for (std::size_t i = 0; i < n; ++i) {
+                cl_F s = B[i][c];
+                for (std::size_t k = 0; k < i; ++k)
+                    s = s - L[i][k] * X[k][c];
+                X[i][c] = s / L[i][i];
+            }
+        return X;
+    };
+    std::vector<std::vector<cl_F>> X = forward(V), Xt = X;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            Xt[i][j] = X[j][i];
+    K = forward(Xt);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            Y[i][j] = i == j ? one : zero;
+
+    // Cyclic Jacobi rotations until the off-diagonal part is below rounding.
+    cl_F frobenius = zero;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            frobenius = frobenius + K[i][j] * K[i][j];
+    frobenius = cln::sqrt(frobenius);
+    for (int sweep = 0; sweep < 100; ++sweep) {
+        cl_F off = zero;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j)
+                off = off + K[i][j] * K[i][j];
+        if (cln::sqrt(off) <= frobenius * epsilon)
+            break;
+        for (std::size_t a = 0; a < n; ++a)
+            for (std::size_t b = a + 1; b < n; ++b) {
+                if (cln::zerop(K[a][b]))
+                    continue;
+                cl_F tau = (K[b][b] - K[a][a]) / (2 * K[a][b]);
+                cl_F t = one / (cln::abs(tau) + cln::sqrt(one + tau * tau));
+                if (cln::minusp(tau))
+                    t = -t;
+                cl_F c = one / cln::sqrt(one + t * t), s = t * c;
+                for (std::size_t k = 0; k < n; ++k) {
+                    cl_F ka = K[k][a], kb = K[k][b];
+                    K[k][a] = c * ka - s * kb;
+                    K[k][b] = s * ka + c * kb;
+                }
+                for (std::size_t k = 0; k < n; ++k) {
+                    cl_F ak = K[a][k], bk = K[b][k];
+                    K[a][k] = c * ak - s * bk;
+                    K[b][k] = s * ak + c * bk;
+                    cl_F ya = Y[k][a], yb = Y[k][b];
+                    Y[k][a] = c * ya - s * yb;
+                    Y[k][b] = s * ya + c * yb;
+                }
+            }
+    }
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return K[i][i] < K[j][j]; });
+
+    // Error: rounding at this precision, amplified by the conditioning of T.
+    cl_F smallest = L[0][0], largest = L[0][0];
+    for (std::size_t i = 1; i < n; ++i) {
+        smallest = cln::min(smallest, L[i][i]);
+        largest = cln::max(largest, L[i][i]);
+    }
+    double conditioning = cln::double_approx(largest / smallest);
+    double eps = cln::double_approx(epsilon);
+    double dw_relative = 64.0 * n * eps * conditioning * conditioning;
+    for (std::size_t k = 0; k < n; ++k) {
+        const cl_F& W = K[order[k]][order[k]];
+        double dw = dw_relative * cln::double_approx(frobenius);
+        cl_F root = cln::sqrt(cln::abs(W));
+        double rounded = cln::double_approx(root);
+        double extra = rounded != 0 ? cln::double_approx(cln::abs(root - cln::cl_float(rounded, format))) / rounded : 0;
+        set_frequency(cln::double_approx(W), dw, extra, w2[k], w[k], error[k]);
+        if (w[k] != 0)
+            w[k] = std::copysign(rounded, w[k]);
+        if (modes) {
+            // a = L⁻ᵀ y by back substitution.
+            std::vector<cl_F> a(n, zero);
+            for (std::size_t i = n; i-- > 0;) {
+                cl_F s = Y[i][order[k]];
+                for (std::size_t j = i + 1; j < n; ++j)
+                    s = s - L[j][i] * a[j];
+                a[i] = s / L[i][i];
+            }
+            for (std::size_t i = 0; i < n; ++i)
+                modes[k * n + i] = cln::double_approx(a[i]);
+        }
+    }
+    return modes_method::high_precision;
+}
+
+std::vector<numeric_modes> numeric_normal_modes(const model& scene, const linearization_result& linear)
+{
+    std::vector<std::string> names;
+    for (const coordinate& c : scene.coordinates)
+        names.push_back(c.name);
+    compiled_modes compiled(scene.parameters, linear, {}, names);
+    std::vector<numeric_modes> results;
+    for (const value_point& point : scene.values) {
+        std::vector<double> values(scene.parameters.size(), std::nan(""));
+        std::vector<bool> given(scene.parameters.size(), false);
+        for (const auto& [name, value] : point.values)
+            for (std::size_t k = 0; k < scene.parameters.size(); ++k)
+                if (scene.parameters[k].name == name) {
+                    GiNaC::ex number = value.evalf();
+                    if (!GiNaC::is_a<GiNaC::numeric>(number) || !GiNaC::ex_to<GiNaC::numeric>(number).is_real())
+                        throw computation_error("the value of parameter `" + name + "` is not a real number");
+                    values[k] = GiNaC::ex_to<GiNaC::numeric>(number).to_double();
+                    given[k] = true;
+                }
+        for (std::size_t k = 0; k < scene.parameters.size(); ++k)
+            if (compiled.uses(k) && !given[k])
+                throw computation_error("no value for parameter `" + scene.parameters[k].name + "` at the values on line "
+                                        + std::to_string(point.where.line));
+        numeric_modes modes = compiled.evaluate(values.data());
+        for (std::size_t k = 0; k < modes.omega.size(); ++k)
+            if (!std::isfinite(modes.omega[k]) || !std::isfinite(modes.error[k]))
+                throw computation_error("the frequencies are not finite at the values on line "
+                                        + std::to_string(point.where.line));
+        results.push_back(std::move(modes));
+    }
+    return results;
+}
+
+} // namespace lagrange
