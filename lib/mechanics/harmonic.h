@@ -68,6 +68,7 @@ struct harmonic_term {
     const std::int32_t* exponents; ///< one entry per symbol of the space (when the polynomial was made)
 };
 
+/// A harmonic polynomial over a space: its terms in a flat table with a hash index.
 class harmonic_polynomial {
 public:
     /// The zero polynomial over `space`, which must outlive it.

@@ -19,6 +19,47 @@ namespace lagrange {
 
 namespace {
 
+/// A key for an expression that does not depend on GiNaC's internal operand order
+/// (which follows hash values and changes from run to run): the operands of sums
+/// and products are keyed and sorted.
+std::string stable_key(const GiNaC::ex& e)
+{
+    if (GiNaC::is_a<GiNaC::symbol>(e))
+        return "s" + GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+    if (GiNaC::is_a<GiNaC::numeric>(e)) {
+        std::ostringstream text;
+        text << e;
+        return "n" + text.str();
+    }
+    std::vector<std::string> keys;
+    for (const GiNaC::ex& operand : e)
+        keys.push_back(stable_key(operand));
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e))
+        std::sort(keys.begin(), keys.end());
+    std::string head = GiNaC::is_a<GiNaC::function>(e) ? GiNaC::ex_to<GiNaC::function>(e).get_name()
+                                                       : GiNaC::ex_to<GiNaC::basic>(e).class_name();
+    std::string key = head + "(";
+    for (const std::string& k : keys)
+        key += k + ",";
+    return key + ")";
+}
+
+/// The operands of a sum or product in an order that is the same in every run,
+/// so that the compiled program, and its rounding, is too.
+GiNaC::exvector in_stable_order(const GiNaC::ex& e)
+{
+    std::vector<std::pair<std::string, GiNaC::ex>> keyed;
+    for (const GiNaC::ex& operand : e)
+        keyed.emplace_back(stable_key(operand), operand);
+    std::stable_sort(keyed.begin(), keyed.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    GiNaC::exvector operands;
+    for (const auto& [key, operand] : keyed)
+        operands.push_back(operand);
+    return operands;
+}
+
+
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 /// Builds the instruction list, one slot per distinct subexpression.
@@ -100,16 +141,16 @@ private:
             throw std::invalid_argument("the symbol `" + to_text(e) + "` is not a parameter");
         }
         if (GiNaC::is_a<GiNaC::add>(e)) {
-            int sum = slot(e.op(0));
-            for (std::size_t k = 1; k < e.nops(); ++k)
-                sum = binary(code::add, sum, slot(e.op(k)));
+            GiNaC::exvector terms = in_stable_order(e);
+            int sum = slot(terms[0]);
+            for (std::size_t k = 1; k < terms.size(); ++k)
+                sum = binary(code::add, sum, slot(terms[k]));
             return sum;
         }
         if (GiNaC::is_a<GiNaC::mul>(e)) {
             bool negate = false;
             int product = -1;
-            for (std::size_t k = 0; k < e.nops(); ++k) {
-                GiNaC::ex factor = e.op(k);
+            for (const GiNaC::ex& factor : in_stable_order(e)) {
                 if (GiNaC::is_a<GiNaC::numeric>(factor) && factor.is_equal(-1)) {
                     negate = !negate;
                     continue;
