@@ -11,8 +11,9 @@ limit=${2:-120}
 peers=${LAGRANGE_PEERS:-../shared/peers}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-[ -x build/bench/chain_equations ] || scripts/setup.sh
-build/bench/chain_equations "$max_n" 7 >"$work/ours.txt"
+build=${LAGRANGE_BUILD:-build}
+[ -x "$build/bench/chain_equations" ] || scripts/setup.sh
+"$build/bench/chain_equations" "$max_n" 7 >"$work/ours.txt"
 cp "$peers"/common.py "$peers"/chain_scaling_sympy.py "$work/"
 python3 - "$work" "$max_n" "$limit" <<'PY'
 import json, os, subprocess, sys
