@@ -3,10 +3,12 @@
  *  errors to exit codes (0 success, 1 computation not possible, 2 bad input or usage). */
 #include "engine/analysis.h"
 #include "output/document.h"
+#include "output/report.h"
 #include "scene/lower.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -112,6 +114,46 @@ int check_scene(const std::string& path)
     return exit_ok;
 }
 
+/// `lagrange report SCENE -o FILE.tex|FILE.pdf`: the derivation as a LaTeX
+/// document; its figures are written beside FILE.tex, or compiled into FILE.pdf.
+int report_scene(const run_options& options)
+{
+    const std::string& path = options.output;
+    auto ends_with = [&](const std::string& suffix) {
+        return path.size() > suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    bool pdf = ends_with(".pdf");
+    if (!path.empty() && path != "-" && !pdf && !ends_with(".tex"))
+        throw usage_error("`report -o` takes a file ending in .tex or .pdf, not `" + path + "`");
+    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::model scene = lagrange::load_model(source);
+    for (const std::string& v : options.values)
+        lagrange::add_values(scene, v);
+    std::set<lagrange::product> wanted;
+    if (!options.want.empty())
+        wanted = lagrange::parse_want_list(options.want);
+    lagrange::analysis result = lagrange::analyze(scene, wanted);
+    lagrange::report_options report;
+    // Figures go beside the .tex file, named after it (letters, digits and `-` only).
+    std::size_t slash = path.rfind('/');
+    std::string folder = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    std::string stem = path.substr(folder.size(), path.size() - folder.size() - (pdf || ends_with(".tex") ? 4 : 0));
+    for (char& c : stem)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-')
+            c = '-';
+    report.figure_prefix = stem.empty() || path == "-" ? "report-" : stem + "-";
+    report.plots = !path.empty() && path != "-"; // on standard output there is nowhere to put figures
+    lagrange::report_document document = lagrange::build_report(result, source, report);
+    if (pdf) {
+        write_output(path, lagrange::compile_report(document));
+        return exit_ok;
+    }
+    for (const lagrange::report_file& figure : document.figures)
+        write_output(folder + figure.name, figure.bytes);
+    write_output(path, document.latex);
+    return exit_ok;
+}
+
 int run(int argc, char** argv)
 {
     CLI::App app{"lagrange: equations of motion, equilibria, normal modes and rigid bodies from a scene file"};
@@ -130,10 +172,17 @@ int run(int argc, char** argv)
     CLI::App* check = app.add_subcommand("check", "parse and validate a scene only");
     check->add_option("SCENE", check_path, "the scene file")->required();
 
+    run_options report_options;
+    CLI::App* report = app.add_subcommand("report", "the whole derivation as a LaTeX document (-o FILE.tex or FILE.pdf)");
+    report->add_option("SCENE", report_options.scene_path, "the scene file (`-` for standard input)")->required();
+    report->add_option("-o,--output", report_options.output, "FILE.tex (figures beside it) or FILE.pdf (needs pdflatex)");
+    report->add_option("--want", report_options.want, "products to derive, comma-separated (default: the scene's `want`)");
+    report->add_option("--values", report_options.values, "a parameter point such as a=1,b=2.5 (repeatable)");
+
     std::string later_path;
     std::vector<std::string> later_rest;
     std::vector<CLI::App*> later;
-    for (const char* name : {"report", "simulate", "workprecision"}) {
+    for (const char* name : {"simulate", "workprecision"}) {
         CLI::App* sub = app.add_subcommand(name, std::string("`") + name + "` (not in this version yet)");
         sub->add_option("SCENE", later_path, "the scene file");
         sub->allow_extras();
@@ -149,6 +198,8 @@ int run(int argc, char** argv)
 
     if (check->parsed())
         return check_scene(check_path);
+    if (report->parsed())
+        return report_scene(report_options);
     for (CLI::App* sub : later)
         if (sub->parsed()) {
             std::cerr << "lagrange: `" << sub->get_name() << "` is not available in this version yet\n";

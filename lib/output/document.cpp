@@ -2,6 +2,7 @@
  *  Text, LaTeX and JSON documents of an analysis. */
 #include "output/document.h"
 
+#include "output/latex_blocks.h"
 #include "output/print.h"
 
 #include <nlohmann/json.hpp>
@@ -563,5 +564,15 @@ void write_json(std::ostream& out, const analysis& result, const document_option
         doc["notes"] = result.notes;
     out << doc.dump(2) << '\n';
 }
+
+// The building blocks above, shared with the report (lib/output/report.cpp).
+std::string latex_text(const std::string& text) { return latex_escape(text); }
+std::size_t latex_math_width(const std::string& latex) { return latex_width(latex); }
+std::string latex_equation(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs,
+                           const std::string& relation)
+{
+    return latex_display(lhs, terms, rhs, relation);
+}
+std::string latex_matrix(const GiNaC::matrix& m) { return matrix_latex(m); }
 
 } // namespace lagrange

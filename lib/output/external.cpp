@@ -1,0 +1,149 @@
+/** @file external.cpp
+ *  Private folders and fork/execvp for gnuplot and pdflatex. */
+#include "output/external.h"
+
+#include "scene/source.h"
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <signal.h>
+#include <sstream>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace lagrange {
+
+private_directory::private_directory()
+{
+    const char* base = std::getenv("TMPDIR");
+    std::string pattern = std::string(base && *base ? base : "/tmp") + "/lagrange-XXXXXX";
+    std::vector<char> buffer(pattern.begin(), pattern.end());
+    buffer.push_back('\0');
+    if (!mkdtemp(buffer.data()))
+        throw computation_error("cannot create a temporary folder (" + std::string(std::strerror(errno)) + ")");
+    path_ = buffer.data();
+}
+
+private_directory::~private_directory()
+{
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+}
+
+void private_directory::write(const std::string& name, const std::string& bytes) const
+{
+    std::ofstream out(path_ + "/" + name, std::ios::binary);
+    out << bytes;
+    if (!out)
+        throw computation_error("cannot write the temporary file `" + name + "`");
+}
+
+std::string private_directory::read(const std::string& name) const
+{
+    std::ifstream in(path_ + "/" + name, std::ios::binary);
+    if (!in)
+        throw computation_error("cannot read the temporary file `" + name + "`");
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+bool program_available(const std::string& program)
+{
+    const char* path = std::getenv("PATH");
+    std::string folders = path ? path : "/usr/bin:/bin";
+    std::size_t start = 0;
+    while (start <= folders.size()) {
+        std::size_t end = folders.find(':', start);
+        if (end == std::string::npos)
+            end = folders.size();
+        std::string folder = folders.substr(start, end - start);
+        std::string candidate = (folder.empty() ? "." : folder) + "/" + program;
+        struct stat info {};
+        if (stat(candidate.c_str(), &info) == 0 && S_ISREG(info.st_mode) && access(candidate.c_str(), X_OK) == 0)
+            return true;
+        start = end + 1;
+    }
+    return false;
+}
+
+program_result run_program(const std::vector<std::string>& arguments, const std::string& directory,
+                           const std::string& log_name, const std::vector<std::string>& environment,
+                           int timeout_seconds)
+{
+    program_result result;
+    if (arguments.empty())
+        return result;
+    // Everything the child needs is prepared before fork: after it, only
+    // async-signal-safe calls.
+    std::vector<char*> argv;
+    for (const std::string& a : arguments)
+        argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    std::vector<std::string> variables;
+    for (char** e = environ; e && *e; ++e) {
+        std::string entry = *e;
+        bool replaced = false;
+        for (const std::string& added : environment)
+            if (entry.compare(0, added.find('=') + 1, added, 0, added.find('=') + 1) == 0)
+                replaced = true;
+        if (!replaced)
+            variables.push_back(entry);
+    }
+    variables.insert(variables.end(), environment.begin(), environment.end());
+    std::vector<char*> envp;
+    for (const std::string& v : variables)
+        envp.push_back(const_cast<char*>(v.c_str()));
+    envp.push_back(nullptr);
+    std::string log_path = directory + "/" + log_name;
+
+    pid_t child = fork();
+    if (child < 0)
+        return result;
+    if (child == 0) {
+        if (chdir(directory.c_str()) != 0)
+            _exit(127);
+        int input = open("/dev/null", O_RDONLY);
+        int output = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        if (input < 0 || output < 0)
+            _exit(127);
+        dup2(input, 0);
+        dup2(output, 1);
+        dup2(output, 2);
+        close(input);
+        close(output);
+        environ = envp.data();
+        execvp(argv[0], argv.data());
+        _exit(127);
+    }
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout_seconds);
+    int status = 0;
+    for (;;) {
+        pid_t done = waitpid(child, &status, WNOHANG);
+        if (done == child)
+            break;
+        if (done < 0 && errno != EINTR)
+            return result;
+        if (std::chrono::steady_clock::now() > deadline) {
+            kill(child, SIGKILL);
+            waitpid(child, &status, 0);
+            result.timed_out = true;
+            return result;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    if (WIFEXITED(status))
+        result.exit_code = WEXITSTATUS(status);
+    return result;
+}
+
+} // namespace lagrange

@@ -1,0 +1,46 @@
+/** @file external.h
+ *  Running the external programs of the report (gnuplot, pdflatex): a private
+ *  temporary folder, and fork/execvp without a shell, so no scene text ever
+ *  reaches a command line. */
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+/// A folder only this process can use (mkdtemp, mode 0700), removed with all its
+/// content when the object goes away.
+class private_directory {
+public:
+    private_directory();
+    ~private_directory();
+    private_directory(const private_directory&) = delete;
+    private_directory& operator=(const private_directory&) = delete;
+    const std::string& path() const { return path_; }
+    /// Writes `bytes` to `name` inside the folder; throws computation_error on failure.
+    void write(const std::string& name, const std::string& bytes) const;
+    /// The content of `name` inside the folder; throws computation_error if it cannot be read.
+    std::string read(const std::string& name) const;
+
+private:
+    std::string path_;
+};
+
+/// Whether `program` is an executable file in one of the folders of $PATH.
+bool program_available(const std::string& program);
+
+struct program_result {
+    int exit_code = -1;  ///< -1 if it could not be started, was killed, or timed out
+    bool timed_out = false;
+};
+
+/// Runs `arguments` (arguments[0] found through $PATH, no shell) in `directory`,
+/// with standard input from /dev/null and its output into `log_name` in that
+/// folder, `environment` entries (NAME=value) added to ours. Killed after
+/// `timeout_seconds`.
+program_result run_program(const std::vector<std::string>& arguments, const std::string& directory,
+                           const std::string& log_name, const std::vector<std::string>& environment = {},
+                           int timeout_seconds = 120);
+
+} // namespace lagrange

@@ -1,0 +1,26 @@
+/** @file latex_blocks.h
+ *  The LaTeX building blocks of document.cpp, shared with the report. */
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+/// Free text with LaTeX's special characters escaped (a few Unicode symbols become math).
+std::string latex_text(const std::string& text);
+
+/// A rough width of LaTeX math in characters (for line breaking).
+std::size_t latex_math_width(const std::string& latex);
+
+/// A display `lhs relation terms rhs`: align* broken across lines, or scaled to the
+/// page width when a single term is wider than the page.
+std::string latex_equation(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs,
+                           const std::string& relation = "=");
+
+/// A pmatrix of the entries, printed deterministically.
+std::string latex_matrix(const GiNaC::matrix& m);
+
+} // namespace lagrange

@@ -1,0 +1,992 @@
+/** @file report.cpp
+ *  The derivation report: the framework (report_writer, figures through
+ *  gnuplot, pdflatex) and the sections of the equations and small oscillations.
+ *  Every equation printed here is a result of the stages; the only arithmetic
+ *  done here is for presentation (picking the coefficients of q̈ out of an
+ *  equation, evaluating positions to draw them). */
+#include "output/report.h"
+
+#include "mechanics/lagrangian.h"
+#include "output/external.h"
+#include "output/latex_blocks.h"
+#include "output/print.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+namespace lagrange {
+
+namespace {
+
+term_order velocity_order(const model& scene)
+{
+    term_order order;
+    order.groups.emplace_back();
+    for (const coordinate& c : scene.coordinates)
+        order.groups.back().push_back(c.velocity);
+    return order;
+}
+
+term_order equation_order(const model& scene)
+{
+    term_order order;
+    order.groups.emplace_back();
+    for (const coordinate& c : scene.coordinates)
+        order.groups.back().push_back(c.acceleration);
+    order.groups.push_back(velocity_order(scene).groups[0]);
+    return order;
+}
+
+term_order omega_order(const analysis& result)
+{
+    term_order order;
+    if (result.characteristic)
+        order.groups.push_back({result.characteristic->omega});
+    return order;
+}
+
+bool wants(const analysis& result, product p) { return result.wanted.count(p) > 0; }
+
+std::string index(std::size_t k) { return "_{" + std::to_string(k + 1) + "}"; }
+
+/// "θ, φ and ψ" in LaTeX math.
+std::string name_list(const std::vector<std::string>& names)
+{
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0)
+            out += i + 1 == names.size() ? " and " : ", ";
+        out += "$" + report_writer::name(names[i]) + "$";
+    }
+    return out;
+}
+
+std::vector<std::string> coordinate_names(const model& scene)
+{
+    std::vector<std::string> names;
+    for (const coordinate& c : scene.coordinates)
+        names.push_back(c.name);
+    return names;
+}
+
+std::string column_latex(const std::vector<std::string>& entries)
+{
+    std::string out = "\\begin{pmatrix}";
+    for (std::size_t i = 0; i < entries.size(); ++i)
+        out += (i ? " \\\\ " : "") + entries[i];
+    return out + "\\end{pmatrix}";
+}
+
+std::string column_latex(const std::vector<GiNaC::ex>& entries)
+{
+    std::vector<std::string> printed;
+    for (const GiNaC::ex& e : entries)
+        printed.push_back(report_writer::math(e));
+    return column_latex(printed);
+}
+
+/// Blanks the creation and modification dates cairo writes into a PDF (same
+/// length, so the cross-reference offsets stay valid): the figures, and so the
+/// report, depend on nothing but the scene.
+std::string strip_pdf_dates(std::string pdf)
+{
+    for (const char* key : {"/CreationDate", "/ModDate"}) {
+        std::size_t at = 0;
+        while ((at = pdf.find(key, at)) != std::string::npos) {
+            std::size_t open = pdf.find('(', at);
+            std::size_t close = open == std::string::npos ? open : pdf.find(')', open);
+            if (close == std::string::npos || close - at > 64)
+                break;
+            std::fill(pdf.begin() + static_cast<std::ptrdiff_t>(at), pdf.begin() + static_cast<std::ptrdiff_t>(close) + 1,
+                      ' ');
+            at = close;
+        }
+    }
+    return pdf;
+}
+
+/// The first LaTeX error of a pdflatex log (the line starting with `!` and the next two).
+std::string first_latex_error(const std::string& log)
+{
+    std::size_t at = log.find("\n!");
+    if (at == std::string::npos)
+        return "see its log";
+    std::size_t end = at + 1;
+    for (int lines = 0; lines < 3 && end != std::string::npos; ++lines)
+        end = log.find('\n', end + 1);
+    return log.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1);
+}
+
+// ---------------------------------------------------------------------------
+// The sections
+
+void write_title(report_writer& w)
+{
+    const model& scene = w.scene();
+    w.latex("\\title{" + latex_text(scene.title.empty() ? "Derivation" : scene.title) + "}\n")
+        .latex("\\author{\\texttt{lagrange} derivation report}\n\\date{}\n\\maketitle\n");
+    w.latex("\\section{The scene}\n")
+        .text("The system is given by the scene file below. Everything that follows is derived from it by the "
+              "engine: each equation is printed from the engine's results.")
+        .latex("\n\\begin{quote}\\small\\ttfamily\\raggedright\\noindent\n");
+    // Verbatim, line by line, escaped; long lines wrap at the margin (\raggedright).
+    const std::string& text = w.source().text();
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        std::string line = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+        if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+        std::string escaped;
+        for (char c : latex_text(line)) {
+            // spaces kept (`\ ` does not collapse, and may break); breaks allowed after operators
+            if (c == ' ' || c == '\t')
+                escaped += "\\ ";
+            else
+                escaped += c;
+            if (c == ',' || c == '+' || c == '*' || c == '/' || c == '=' || c == '(')
+                escaped += "\\allowbreak{}";
+        }
+        w.latex(escaped.empty() ? "\\mbox{}\\\\\n" : escaped + "\\\\\n");
+        if (end == std::string::npos)
+            break;
+        start = end + 1;
+    }
+    w.latex("\\end{quote}\n");
+}
+
+void write_coordinates(report_writer& w)
+{
+    const model& scene = w.scene();
+    w.latex("\\section{Coordinates and parameters}\n");
+    std::size_t n = scene.coordinates.size();
+    w.text("The configuration is described by " + std::string(n == 1 ? "the generalized coordinate " :
+                                                             "the " + std::to_string(n) + " generalized coordinates "))
+        .latex(name_list(coordinate_names(scene)));
+    std::vector<std::string> parameters;
+    for (const parameter& p : scene.parameters)
+        parameters.push_back(p.name);
+    if (!parameters.empty())
+        w.text("; the parameters ").latex(name_list(parameters)).text(parameters.size() == 1 ? " is a positive constant" :
+                                                                      " are positive constants");
+    w.text(". A dot denotes the derivative with respect to time $t$.");
+    w.latex("\n\n");
+    if (scene.ratio)
+        w.text("Results are also written in the ratio ")
+            .latex("$" + report_writer::name(scene.ratio->name) + " = " + report_writer::math(scene.ratio->definition) + "$.\n\n");
+}
+
+std::string point_name(const std::string& name) { return "\\mathbf{r}_{\\text{" + latex_text(name) + "}}"; }
+
+void write_lagrangian(report_writer& w)
+{
+    const model& scene = w.scene();
+    const lagrangian_result& l = *w.result().lagrangian;
+    const term_order velocities = velocity_order(scene);
+    w.latex("\\section{Kinetic and potential energy}\n");
+    if (!scene.points.empty()) {
+        w.text("The point masses are at");
+        w.latex("\n");
+        for (const point_mass& p : scene.points) {
+            std::vector<std::string> components;
+            for (const GiNaC::ex& x : p.position)
+                components.push_back(report_writer::math(x));
+            std::string row = "\\left(";
+            for (std::size_t i = 0; i < components.size(); ++i)
+                row += (i ? ",\\ " : "") + components[i];
+            row += "\\right)";
+            w.display_terms(point_name(p.name), {row}, "");
+        }
+        w.text("with masses ");
+        for (std::size_t i = 0; i < scene.points.size(); ++i)
+            w.latex((i ? (i + 1 == scene.points.size() ? " and " : ", ") : "") + std::string("$") +
+                    report_writer::math(scene.points[i].mass) + "$");
+        w.text(". Each contributes ").latex("$\\frac{1}{2} m |\\dot{\\mathbf{r}}|^{2}$").text(" to T");
+        if (scene.gravity)
+            w.text(" and, in the uniform gravity of strength ")
+                .latex("$" + report_writer::math(scene.gravity->strength) + "$")
+                .text(", ")
+                .latex("$-m\\,\\mathbf{g}\\cdot\\mathbf{r}$")
+                .text(" to V");
+        w.text(".");
+        w.latex("\n");
+    }
+    if (!scene.springs.empty())
+        w.text(" Each spring of stiffness k and rest length a between the points ")
+            .latex("$\\mathbf{r}_A$, $\\mathbf{r}_B$")
+            .text(" adds ")
+            .latex("$\\frac{1}{2} k \\left(|\\mathbf{r}_A - \\mathbf{r}_B| - a\\right)^{2}$")
+            .text(" to V.")
+            .latex("\n");
+    if (!l.split) {
+        w.text("The Lagrangian is not a polynomial of degree two in the velocities, so it is kept whole:");
+        w.display("L", l.lagrangian);
+        return;
+    }
+    if (!scene.points.empty() || !scene.springs.empty() || scene.gravity) {
+        w.text("As built from these contributions (and any energy written in the scene), before simplification:");
+        w.display_terms("T", print_terms(l.kinetic_built, syntax::latex, velocities));
+        w.display_terms("V", print_terms(l.potential_built, syntax::latex));
+        w.text("Simplified (the trigonometric terms in their canonical form, then grouped):");
+    } else {
+        w.text("The energies, simplified (the trigonometric terms in their canonical form, then grouped), are");
+    }
+    w.display_terms("T", print_terms(l.kinetic, syntax::latex, velocities));
+    if (!l.gyroscopic.is_zero()) {
+        w.text("The Lagrangian also has a part linear in the velocities:");
+        w.display_terms("L_{1}", print_terms(l.gyroscopic, syntax::latex, velocities));
+    }
+    w.display_terms("V", print_terms(l.potential, syntax::latex));
+    w.text("and the Lagrangian is ").latex(l.gyroscopic.is_zero() ? "$L = T - V$:" : "$L = T + L_{1} - V$:");
+    w.display_terms("L", print_terms(l.lagrangian, syntax::latex, velocities));
+}
+
+void write_equations(report_writer& w)
+{
+    const model& scene = w.scene();
+    const std::vector<GiNaC::ex>& equations = *w.result().equations;
+    const std::size_t n = scene.coordinates.size();
+    w.latex("\\section{Equations of motion}\n");
+    w.text("The Euler--Lagrange equations");
+    w.latex("\n\\[\\frac{d}{dt}\\frac{\\partial L}{\\partial \\dot{q}_{i}} - \\frac{\\partial L}{\\partial q_{i}} = 0\\]\n");
+    w.text("give, one for each coordinate, after simplification:");
+    w.latex("\n");
+    for (std::size_t i = 0; i < n; ++i) {
+        w.latex("\\noindent For $" + report_writer::name(scene.coordinates[i].name) + "$:");
+        w.display_terms("", print_terms(equations[i], syntax::latex, equation_order(scene)), " = 0");
+    }
+    // The grouping M(q) q̈ + f(q, q̇) = 0: the coefficient of each acceleration
+    // (linear in them) and the rest.
+    GiNaC::exmap no_acceleration;
+    for (const coordinate& c : scene.coordinates)
+        no_acceleration[c.acceleration] = 0;
+    GiNaC::matrix mass(static_cast<unsigned>(n), static_cast<unsigned>(n));
+    std::vector<GiNaC::ex> rest;
+    bool linear = true;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < n; ++j) {
+            GiNaC::ex coefficient = equations[i].diff(scene.coordinates[j].acceleration);
+            for (const coordinate& c : scene.coordinates)
+                if (coefficient.has(c.acceleration))
+                    linear = false;
+            mass(static_cast<unsigned>(i), static_cast<unsigned>(j)) = coefficient;
+        }
+        rest.push_back(equations[i].subs(no_acceleration));
+    }
+    if (!linear)
+        return;
+    std::vector<std::string> accelerations;
+    for (const coordinate& c : scene.coordinates)
+        accelerations.push_back(report_writer::name(c.acceleration.get_name()));
+    w.text("Grouped by the accelerations, they read");
+    w.latex("\n\\[\\mathcal{M}(q)\\," + column_latex(accelerations) + " + \\mathbf{f}(q, \\dot{q}) = 0\\]\n");
+    w.text("with the mass matrix");
+    w.display_matrix("\\mathcal{M}(q)", mass);
+    w.text("and the remaining terms (velocity-dependent forces and the forces of the potential)");
+    for (std::size_t i = 0; i < n; ++i)
+        w.display_terms("f" + index(i), print_terms(rest[i], syntax::latex, velocity_order(scene)));
+}
+
+void write_equilibria(report_writer& w)
+{
+    const model& scene = w.scene();
+    const analysis& result = w.result();
+    const equilibria_result& e = *result.equilibria;
+    w.latex("\\section{Equilibria and their stability}\n");
+    if (e.given) {
+        w.text("The scene names an equilibrium; the engine checked that the generalized forces vanish there, ");
+    } else {
+        w.text("An equilibrium is a point where the generalized forces vanish, ");
+    }
+    w.latex("$\\partial V / \\partial q_{i} = 0$");
+    if (result.lagrangian && result.lagrangian->split) {
+        w.text(":");
+        for (const coordinate& c : scene.coordinates)
+            w.display_terms("\\frac{\\partial V}{\\partial " + report_writer::name(c.name) + "}",
+                            print_terms(differentiate(result.lagrangian->potential, c.position), syntax::latex), " = 0");
+    } else {
+        w.text(".");
+    }
+    w.text(e.points.size() == 1 ? "The equilibrium " : "The equilibria ");
+    w.text(e.given ? "is" : (e.points.size() == 1 ? "found is" : "found are"));
+    w.text(" (stability from the Hessian of V: positive definite means stable):");
+    w.latex("\n\\begin{itemize}\n");
+    for (std::size_t k = 0; k < e.points.size(); ++k) {
+        const equilibrium_point& p = e.points[k];
+        std::string position;
+        for (std::size_t i = 0; i < p.position.size(); ++i)
+            position += (i ? ",\\ " : "") + report_writer::name(scene.coordinates[i].name) + " = " +
+                        report_writer::math(p.position[i]);
+        w.latex("\\item $" + position + "$: " + to_string(p.kind) +
+                (k == e.chosen && result.linearization ? " (the small oscillations below are about this one)" : "") +
+                "\n");
+    }
+    w.latex("\\end{itemize}\n");
+}
+
+void write_linearization(report_writer& w)
+{
+    const linearization_result& l = *w.result().linearization;
+    w.latex("\\section{Small oscillations: the matrices T and V}\n");
+    w.text("Near the equilibrium, with small displacements ")
+        .latex("$\\eta = q - q_{0}$")
+        .text(", the Lagrangian is to second order ")
+        .latex("$L_{2} = \\frac{1}{2}\\dot{\\eta}^{\\mathsf{T}}\\mathbf{T}\\dot{\\eta} - "
+               "\\frac{1}{2}\\eta^{\\mathsf{T}}\\mathbf{V}\\eta$")
+        .text(" with")
+        .latex("\n\\[\\mathbf{T}_{ij} = \\left.\\frac{\\partial^{2} T}{\\partial \\dot{q}_{i}\\partial "
+               "\\dot{q}_{j}}\\right|_{0},\\qquad \\mathbf{V}_{ij} = \\left.\\frac{\\partial^{2} V}{\\partial q_{i}\\partial "
+               "q_{j}}\\right|_{0}:\\]\n");
+    w.display_matrix("\\mathbf{T}", l.kinetic);
+    w.display_matrix("\\mathbf{V}", l.potential);
+}
+
+void write_characteristic(report_writer& w)
+{
+    const analysis& result = w.result();
+    const linearization_result& l = *result.linearization;
+    const characteristic_result& c = *result.characteristic;
+    const std::string omega = report_writer::name(c.omega.get_name());
+    w.latex("\\section{The characteristic equation}\n");
+    w.text("Solutions ")
+        .latex("$\\eta = a\\, e^{-i" + omega + " t}$")
+        .text(" exist when ")
+        .latex("$(\\mathbf{V} - " + omega + "^{2}\\mathbf{T})\\,a = 0$")
+        .text(" has a nonzero solution a, that is when");
+    GiNaC::matrix shifted(l.kinetic.rows(), l.kinetic.cols());
+    for (unsigned i = 0; i < l.kinetic.rows(); ++i)
+        for (unsigned j = 0; j < l.kinetic.cols(); ++j)
+            shifted(i, j) = l.potential(i, j) - GiNaC::pow(c.omega, 2) * l.kinetic(i, j);
+    std::string matrix = latex_matrix(shifted);
+    matrix.replace(0, std::string("\\begin{pmatrix}").size(), "\\begin{vmatrix}");
+    matrix.replace(matrix.size() - std::string("\\end{pmatrix}").size(), std::string::npos, "\\end{vmatrix}");
+    w.display_terms("\\det(\\mathbf{V} - " + omega + "^{2}\\mathbf{T})", {matrix}, " = 0");
+    w.text("Expanding the determinant (fraction-free elimination) and dividing out the factors common to all "
+           "coefficients, with the leading coefficient positive, gives the characteristic polynomial in ")
+        .latex("$" + omega + "^{2}$:");
+    w.display_terms("", print_terms(c.polynomial, syntax::latex, omega_order(result)), " = 0");
+}
+
+void write_modes(report_writer& w)
+{
+    const analysis& result = w.result();
+    const model& scene = w.scene();
+    const modes_result& m = *result.modes;
+    const std::string omega = report_writer::name(result.characteristic->omega.get_name());
+    const std::string w2 = omega + "^{2}";
+    w.latex("\\section{Frequencies and normal modes}\n");
+    if (!m.closed_form) {
+        w.text("The characteristic polynomial has no closed-form roots the engine finds; the numeric modes are in "
+               "the section on numeric values.");
+        w.latex("\n");
+        return;
+    }
+    if (wants(result, product::frequencies) || wants(result, product::modes) || wants(result, product::asymptotic)) {
+        w.text("The roots of the characteristic polynomial, in ascending order, are");
+        for (std::size_t k = 0; k < m.frequencies.size(); ++k)
+            w.display(w2 + index(k), m.frequencies[k]);
+        if (scene.ratio && !m.frequencies_in_ratio.empty()) {
+            w.text("With ").latex("$" + report_writer::name(scene.ratio->name) + " = " +
+                                  report_writer::math(scene.ratio->definition) + "$").text(" they read");
+            for (std::size_t k = 0; k < m.frequencies_in_ratio.size(); ++k)
+                w.display(w2 + index(k), m.frequencies_in_ratio[k]);
+        }
+    }
+    if (wants(result, product::modes) && !m.modes.empty()) {
+        w.text("For each root, the mode vector ")
+            .latex("$a_{k}$")
+            .text(" solves ")
+            .latex("$(\\mathbf{V} - " + w2 + "_{k}\\mathbf{T})\\,a_{k} = 0$")
+            .text("; it is scaled so that its last component is 1. In the order of ")
+            .latex("$(" + [&] {
+                std::string names;
+                for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
+                    names += (i ? ", " : "") + report_writer::name(scene.coordinates[i].name);
+                return names;
+            }() + ")$:");
+        for (std::size_t k = 0; k < m.modes.size(); ++k)
+            w.display_terms("a" + index(k), {column_latex(m.modes[k])});
+        if (scene.ratio && m.modes_in_ratio.size() == m.modes.size()) {
+            w.text("In ").latex("$" + report_writer::name(scene.ratio->name) + "$:");
+            for (std::size_t k = 0; k < m.modes_in_ratio.size(); ++k)
+                w.display_terms("a" + index(k), {column_latex(m.modes_in_ratio[k])});
+        }
+    }
+    if (wants(result, product::normal_coordinates) && !m.normal_coordinates.empty()) {
+        w.text("With the modes as the columns of A, normalized so that ")
+            .latex("$A^{\\mathsf{T}}\\mathbf{T}A = I$")
+            .text(", the normal coordinates ")
+            .latex("$\\zeta = A^{\\mathsf{T}}\\mathbf{T}\\,\\eta$")
+            .text(" each oscillate at one frequency, ")
+            .latex("$\\ddot{\\zeta}_{k} + " + w2 + "_{k}\\zeta_{k} = 0$")
+            .text(":");
+        const std::vector<GiNaC::ex>& zeta =
+            scene.ratio && m.normal_coordinates_in_ratio.size() == m.normal_coordinates.size()
+                ? m.normal_coordinates_in_ratio
+                : m.normal_coordinates;
+        if (&zeta == &m.normal_coordinates_in_ratio)
+            w.text(" (written in ").latex("$" + report_writer::name(scene.ratio->name) + "$").text(")");
+        for (std::size_t k = 0; k < zeta.size(); ++k)
+            w.display("\\zeta" + index(k), zeta[k]);
+    }
+}
+
+void write_asymptotic(report_writer& w)
+{
+    const analysis& result = w.result();
+    const asymptotic_result& a = *result.asymptotic;
+    const model& scene = w.scene();
+    const std::string omega = report_writer::name(result.characteristic->omega.get_name());
+    w.latex("\\section{Asymptotic limit}\n");
+    std::string variable = scene.limit ? report_writer::name(scene.limit->variable) : "";
+    std::string to = scene.limit && scene.limit->to_infinity ? "\\infty" : "0";
+    w.text("To leading order as ").latex("$" + variable + " \\to " + to + "$").text(", the frequencies behave as");
+    for (std::size_t k = 0; k < a.frequencies.size(); ++k)
+        w.display(omega + "^{2}" + index(k), a.frequencies[k], "", "\\to");
+    if (!a.modes.empty()) {
+        w.text("and the mode vectors as");
+        for (std::size_t k = 0; k < a.modes.size(); ++k)
+            w.display_terms("a" + index(k), {column_latex(a.modes[k])}, "", "\\to");
+    }
+    if (a.frequencies.size() == 2)
+        w.text("The two frequencies differ by a term that vanishes in the limit: their squares approach each other, "
+               "so a motion that starts in one coordinate slowly passes its energy to the other and back (beats).");
+    w.latex("\n");
+}
+
+/// The modes at the first `values` point, numerically: from the analysis, or
+/// computed for the figures when the scene did not ask for the numeric table.
+std::optional<numeric_modes> figure_modes(const analysis& result)
+{
+    if (result.numeric && !result.numeric->empty())
+        return result.numeric->front();
+    if (!result.linearization || result.scene->values.empty())
+        return std::nullopt;
+    try {
+        std::vector<numeric_modes> all = numeric_normal_modes(*result.scene, *result.linearization);
+        if (!all.empty())
+            return all.front();
+    } catch (const computation_error&) {
+    }
+    return std::nullopt;
+}
+
+/// A coordinate value at the values point, or nothing when it is not a real number there.
+std::optional<double> evaluate(const GiNaC::ex& e, const GiNaC::exmap& at)
+{
+    try {
+        GiNaC::ex value = e.subs(at).evalf();
+        if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real())
+            return std::nullopt;
+        double x = GiNaC::ex_to<GiNaC::numeric>(value).to_double();
+        return std::isfinite(x) ? std::optional<double>(x) : std::nullopt;
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
+std::string gnuplot_number(double x)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", std::abs(x) < 1e-12 ? 0.0 : x);
+    return buffer;
+}
+
+/// The drawing of point-mass scenes in the plane: rods (constant distance from
+/// the origin or from another point), springs, masses, each mode at ± amplitude.
+/// Returns the gnuplot script, or nothing when the scene cannot be drawn so.
+std::optional<std::string> pendulum_script(const analysis& result, const numeric_modes& numbers,
+                                           std::size_t& panels)
+{
+    const model& scene = *result.scene;
+    const std::size_t n = scene.coordinates.size();
+    if (scene.points.empty() || !result.linearization)
+        return std::nullopt;
+    for (const point_mass& p : scene.points)
+        if (p.position.size() != 2)
+            return std::nullopt;
+    GiNaC::exmap parameters;
+    for (const auto& [name, value] : numbers.values)
+        for (const parameter& p : scene.parameters)
+            if (p.name == name)
+                parameters[p.symbol] = GiNaC::numeric(value);
+    std::vector<double> rest(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        std::optional<double> q0 = evaluate(result.linearization->at[i], parameters);
+        if (!q0)
+            return std::nullopt;
+        rest[i] = *q0;
+    }
+    using point2 = std::array<double, 2>;
+    // Positions of every point at the coordinates q; nothing if one is not a number.
+    auto positions = [&](const std::vector<double>& q) -> std::optional<std::vector<point2>> {
+        GiNaC::exmap at = parameters;
+        for (std::size_t i = 0; i < n; ++i)
+            at[scene.coordinates[i].position] = GiNaC::numeric(q[i]);
+        std::vector<point2> out;
+        for (const point_mass& p : scene.points) {
+            std::optional<double> x = evaluate(p.position[0], at), y = evaluate(p.position[1], at);
+            if (!x || !y)
+                return std::nullopt;
+            out.push_back({*x, *y});
+        }
+        return out;
+    };
+    auto shifted = [&](const std::vector<double>& direction, double s) {
+        std::vector<double> q = rest;
+        for (std::size_t i = 0; i < n; ++i)
+            q[i] += s * direction[i];
+        return q;
+    };
+    std::optional<std::vector<point2>> base = positions(rest);
+    if (!base)
+        return std::nullopt;
+    // Rods: a point at a constant distance (tried at a few configurations) from the
+    // nearest earlier point, else from the origin.
+    auto distance = [](const point2& a, const point2& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); };
+    std::vector<std::vector<point2>> probes;
+    for (double t : {0.3, -0.7, 1.1}) {
+        std::vector<double> q(n);
+        for (std::size_t i = 0; i < n; ++i)
+            q[i] = rest[i] + t * (0.5 + 0.37 * static_cast<double>(i));
+        std::optional<std::vector<point2>> at = positions(q);
+        if (!at)
+            return std::nullopt;
+        probes.push_back(*at);
+    }
+    const point2 origin{0.0, 0.0};
+    std::vector<int> parent(scene.points.size(), -2); // -1 origin, -2 none
+    for (std::size_t i = 0; i < scene.points.size(); ++i) {
+        auto constant = [&](auto&& other) {
+            double d0 = distance(probes[0][i], other(0));
+            if (d0 < 1e-9)
+                return false;
+            for (std::size_t k = 1; k < probes.size(); ++k)
+                if (std::abs(distance(probes[k][i], other(k)) - d0) > 1e-9 * (1 + d0))
+                    return false;
+            return true;
+        };
+        for (int j = static_cast<int>(i) - 1; j >= 0 && parent[i] == -2; --j)
+            if (constant([&](std::size_t k) { return probes[k][static_cast<std::size_t>(j)]; }))
+                parent[i] = j;
+        if (parent[i] == -2 && constant([&](std::size_t) { return origin; }))
+            parent[i] = -1;
+    }
+    // Spring ends: a point of the scene (matched by position) or a fixed place.
+    auto spring_end = [&](const std::vector<GiNaC::ex>& end, const GiNaC::exmap& at) -> std::optional<point2> {
+        if (end.size() != 2)
+            return std::nullopt;
+        std::optional<double> x = evaluate(end[0], at), y = evaluate(end[1], at);
+        if (!x || !y)
+            return std::nullopt;
+        return point2{*x, *y};
+    };
+    // The amplitude: the largest displacement of a point is 15% of the drawing's size.
+    double size = 0;
+    for (const point2& p : *base) {
+        size = std::max(size, distance(p, origin));
+        for (const point2& r : *base)
+            size = std::max(size, distance(p, r));
+    }
+    if (!(size > 0))
+        return std::nullopt;
+    std::ostringstream data, plots;
+    double xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+    auto extend = [&](const point2& p) {
+        xmin = std::min(xmin, p[0]);
+        xmax = std::max(xmax, p[0]);
+        ymin = std::min(ymin, p[1]);
+        ymax = std::max(ymax, p[1]);
+    };
+    panels = n;
+    for (std::size_t k = 0; k < n; ++k) {
+        std::vector<double> direction(n);
+        for (std::size_t i = 0; i < n; ++i)
+            direction[i] = numbers.modes(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
+        const double h = 1e-6;
+        std::optional<std::vector<point2>> nudged = positions(shifted(direction, h));
+        if (!nudged)
+            return std::nullopt;
+        double speed = 0;
+        for (std::size_t p = 0; p < base->size(); ++p)
+            speed = std::max(speed, distance((*nudged)[p], (*base)[p]) / h);
+        if (!(speed > 0))
+            return std::nullopt;
+        double amplitude = 0.15 * size / speed;
+        const char* names[] = {"rest", "plus", "minus"};
+        for (int c = 0; c < 3; ++c) {
+            double s = c == 0 ? 0.0 : c == 1 ? amplitude : -amplitude;
+            std::vector<double> q = shifted(direction, s);
+            std::optional<std::vector<point2>> at = positions(q);
+            if (!at)
+                return std::nullopt;
+            GiNaC::exmap subs = parameters;
+            for (std::size_t i = 0; i < n; ++i)
+                subs[scene.coordinates[i].position] = GiNaC::numeric(q[i]);
+            data << "$" << names[c] << "_lines_" << k << " << EOD\n";
+            for (std::size_t p = 0; p < at->size(); ++p) {
+                if (parent[p] == -2)
+                    continue;
+                const point2& from = parent[p] == -1 ? origin : (*at)[static_cast<std::size_t>(parent[p])];
+                data << gnuplot_number(from[0]) << ' ' << gnuplot_number(from[1]) << '\n'
+                     << gnuplot_number((*at)[p][0]) << ' ' << gnuplot_number((*at)[p][1]) << "\n\n";
+                extend(from);
+            }
+            for (const spring& sp : scene.springs) {
+                std::optional<point2> a = spring_end(sp.end_a, subs), b = spring_end(sp.end_b, subs);
+                if (!a || !b)
+                    continue;
+                // a zigzag of 8 teeth between the ends
+                double dx = (*b)[0] - (*a)[0], dy = (*b)[1] - (*a)[1];
+                double length = std::hypot(dx, dy);
+                if (length < 1e-12)
+                    continue;
+                double nx = -dy / length * 0.04 * size, ny = dx / length * 0.04 * size;
+                for (int t = 0; t <= 18; ++t) {
+                    double side = (t == 0 || t == 18 || t == 1 || t == 17) ? 0.0 : (t % 2 ? 1.0 : -1.0);
+                    double sf = t <= 1 ? 0.1 * t : t >= 17 ? 1.0 - 0.1 * (18 - t) : 0.1 + 0.8 * (t - 1) / 16.0;
+                    data << gnuplot_number((*a)[0] + sf * dx + side * nx) << ' '
+                         << gnuplot_number((*a)[1] + sf * dy + side * ny) << '\n';
+                }
+                data << "\n";
+                extend(*a);
+                extend(*b);
+            }
+            data << "0 0\nEOD\n";
+            data << "$" << names[c] << "_masses_" << k << " << EOD\n";
+            for (const point2& p : *at) {
+                data << gnuplot_number(p[0]) << ' ' << gnuplot_number(p[1]) << '\n';
+                extend(p);
+            }
+            data << "EOD\n";
+        }
+        char title[96];
+        std::snprintf(title, sizeof title, "mode %zu:  ω = %.4g", k + 1, numbers.omega[k]);
+        plots << "set title \"" << title << "\"\n"
+              << "plot $rest_lines_" << k << " with lines lc rgb '#b8b8b8' lw 3, "
+              << "$rest_masses_" << k << " with points pt 7 ps 0.9 lc rgb '#b8b8b8', "
+              << "$minus_lines_" << k << " with lines lc rgb '#c0392b' lw 2 dt 2, "
+              << "$minus_masses_" << k << " with points pt 7 ps 1.1 lc rgb '#c0392b', "
+              << "$plus_lines_" << k << " with lines lc rgb '#1f4e9c' lw 2, "
+              << "$plus_masses_" << k << " with points pt 7 ps 1.1 lc rgb '#1f4e9c', "
+              << "'-' with points pt 5 ps 0.7 lc rgb 'black'\n0 0\ne\n";
+    }
+    double pad = 0.08 * size;
+    std::ostringstream script;
+    script << data.str() << "set size ratio -1\nunset border\nunset xtics\nunset ytics\nunset key\n"
+           << "set xrange [" << gnuplot_number(xmin - pad) << ":" << gnuplot_number(xmax + pad) << "]\n"
+           << "set yrange [" << gnuplot_number(ymin - pad) << ":" << gnuplot_number(ymax + pad) << "]\n"
+           << "set multiplot layout 1," << n << "\n"
+           << plots.str() << "unset multiplot\n";
+    return script.str();
+}
+
+/// Bar charts of the mode vector components (largest component 1 in size, last nonzero positive).
+std::string bar_script(const model& scene, const numeric_modes& numbers)
+{
+    const std::size_t n = scene.coordinates.size();
+    std::ostringstream script;
+    for (std::size_t k = 0; k < n; ++k) {
+        double largest = 0, sign = 1;
+        for (std::size_t i = 0; i < n; ++i) {
+            double a = numbers.modes(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
+            largest = std::max(largest, std::abs(a));
+            if (std::abs(a) > 1e-12)
+                sign = a < 0 ? -1 : 1;
+        }
+        script << "$mode_" << k << " << EOD\n";
+        for (std::size_t i = 0; i < n; ++i) {
+            double a = numbers.modes(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
+            script << i + 1 << ' ' << gnuplot_number(largest > 0 ? sign * a / largest : 0.0) << " \""
+                   << print_name(scene.coordinates[i].name, syntax::text) << "\"\n";
+        }
+        script << "EOD\n";
+    }
+    script << "set style fill solid 0.7 noborder\nset boxwidth 0.6\nunset key\nset yrange [-1.15:1.15]\n"
+           << "set xrange [0.4:" << n << ".6]\nset xzeroaxis lt -1\nset ytics 0.5\nset grid ytics lc rgb '#dddddd'\n"
+           << "set multiplot layout 1," << n << "\n";
+    for (std::size_t k = 0; k < n; ++k) {
+        char title[96];
+        std::snprintf(title, sizeof title, "mode %zu:  ω = %.4g", k + 1, numbers.omega[k]);
+        script << "set title \"" << title << "\"\n"
+               << "plot $mode_" << k << " using 1:2:xtic(3) with boxes lc rgb '#1f4e9c'\n";
+    }
+    script << "unset multiplot\n";
+    return script.str();
+}
+
+void write_mode_figures(report_writer& w)
+{
+    const analysis& result = w.result();
+    const model& scene = w.scene();
+    std::optional<numeric_modes> numbers = figure_modes(result);
+    w.latex("\\subsection*{Mode shapes}\n");
+    if (!numbers) {
+        w.text("The mode shapes are drawn at the parameter values of a `values' line; this scene has none.");
+        w.latex("\n");
+        return;
+    }
+    std::string at;
+    for (std::size_t i = 0; i < numbers->values.size(); ++i)
+        at += (i ? ",\\ " : "") + report_writer::name(numbers->values[i].first) + " = " +
+              report_writer::number(numbers->values[i].second);
+    const std::size_t n = scene.coordinates.size();
+    // In phase / antiphase, for two coordinates.
+    if (n == 2) {
+        for (std::size_t k = 0; k < 2; ++k) {
+            double product = numbers->modes(0, static_cast<Eigen::Index>(k)) * numbers->modes(1, static_cast<Eigen::Index>(k));
+            w.text("In mode " + std::to_string(k + 1) + " (").latex("$" + report_writer::name("omega") + index(k) +
+                                                                    " = " + report_writer::number(numbers->omega[k], 6) + "$")
+                .text(std::string(") the coordinates move ") + (product > 0 ? "in phase" : product < 0 ? "in antiphase" : "one at a time") +
+                      (k == 0 ? "; " : "."));
+        }
+        if (numbers->modes(0, 0) * numbers->modes(1, 0) > 0 && numbers->modes(0, 1) * numbers->modes(1, 1) < 0)
+            w.text(" The antiphase mode is the faster one.");
+        w.latex("\n");
+    }
+    std::size_t panels = n;
+    std::optional<std::string> drawing = pendulum_script(result, *numbers, panels);
+    double width = std::min(17.0, 5.5 * static_cast<double>(std::max<std::size_t>(panels, 1)));
+    if (drawing) {
+        w.figure("modes", *drawing, width, 6.5,
+                 "The normal modes at $" + at + "$: the equilibrium (grey) and the system displaced along each "
+                 "mode, one way (solid, blue) and the other (dashed, red). The displacement is exaggerated.");
+    } else if (n >= 2) {
+        w.figure("modes", bar_script(scene, *numbers), width, 5.5,
+                 "The components of each mode vector at $" + at +
+                     "$, scaled so that the largest is 1 in size.");
+    }
+}
+
+void write_numeric(report_writer& w)
+{
+    const analysis& result = w.result();
+    const model& scene = w.scene();
+    w.latex("\\section{Numeric values}\n");
+    w.text("At each parameter point the engine evaluates T and V and solves the generalized eigenproblem; each "
+           "frequency comes with a bound on its relative error. The columns of A are the mode vectors with ")
+        .latex("$A^{\\mathsf{T}}\\mathbf{T}A = I$")
+        .text(". (A negative ")
+        .latex("$\\omega$")
+        .text(" is the growth rate of an unstable mode.)");
+    w.latex("\n");
+    for (const numeric_modes& nm : *result.numeric) {
+        std::string at;
+        for (std::size_t i = 0; i < nm.values.size(); ++i)
+            at += (i ? ",\\ " : "") + report_writer::name(nm.values[i].first) + " = " +
+                  report_writer::number(nm.values[i].second);
+        w.latex("\\subsection*{At $" + at + "$}\n");
+        w.latex("\\begin{center}\n\\begin{tabular}{rll}\n\\hline\n$k$ & $\\omega_{k}$ & relative error bound\\\\\n"
+                "\\hline\n");
+        for (std::size_t k = 0; k < nm.omega.size(); ++k)
+            w.latex(std::to_string(k + 1) + " & $" + report_writer::number(nm.omega[k]) + "$ & $\\le " +
+                    report_writer::number(nm.error[k], 2) + "$\\\\\n");
+        w.latex("\\hline\n\\end{tabular}\n\\end{center}\n");
+        w.text("Method: " + nm.method + ". The mode matrix:");
+        GiNaC::matrix modes(static_cast<unsigned>(nm.modes.rows()), static_cast<unsigned>(nm.modes.cols()));
+        std::string rows = "\\begin{pmatrix}";
+        for (Eigen::Index i = 0; i < nm.modes.rows(); ++i) {
+            for (Eigen::Index j = 0; j < nm.modes.cols(); ++j)
+                rows += (j ? " & " : "") + report_writer::number(nm.modes(i, j), 6);
+            rows += i + 1 < nm.modes.rows() ? " \\\\ " : "";
+        }
+        rows += "\\end{pmatrix}";
+        (void)scene;
+        w.display_terms("A", {rows});
+    }
+}
+
+void write_notes(report_writer& w)
+{
+    w.latex("\\section*{Notes}\n");
+    for (const std::string& note : w.result().notes)
+        w.latex("\\paragraph{Note.} " + latex_text(note) + "\n");
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------
+// report_writer
+
+report_writer::report_writer(const analysis& result, const source_text& source, const report_options& options)
+    : result_(result), source_(source), options_(options)
+{
+}
+
+report_writer& report_writer::text(const std::string& prose)
+{
+    out_ << latex_text(prose);
+    return *this;
+}
+
+report_writer& report_writer::latex(const std::string& code)
+{
+    out_ << code;
+    return *this;
+}
+
+void report_writer::display(const std::string& lhs, const GiNaC::ex& e, const std::string& rhs,
+                            const std::string& relation)
+{
+    display_terms(lhs, print_terms(e, syntax::latex), rhs, relation);
+}
+
+void report_writer::display_terms(const std::string& lhs, const std::vector<std::string>& terms,
+                                  const std::string& rhs, const std::string& relation)
+{
+    out_ << "\n" << latex_equation(lhs, terms, rhs, relation);
+}
+
+void report_writer::display_matrix(const std::string& lhs, const GiNaC::matrix& m)
+{
+    out_ << "\n" << latex_equation(lhs, {latex_matrix(m)}, "");
+}
+
+std::string report_writer::name(const std::string& symbol_name) { return print_name(symbol_name, syntax::latex); }
+
+std::string report_writer::math(const GiNaC::ex& e) { return print(e, syntax::latex); }
+
+std::string report_writer::number(double x, int digits)
+{
+    if (!std::isfinite(x))
+        return std::isnan(x) ? "\\mathrm{NaN}" : x > 0 ? "\\infty" : "-\\infty";
+    std::string plain;
+    if (digits <= 0) {
+        char buffer[64];
+        auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+        plain = error == std::errc() ? std::string(buffer, end) : "?";
+    } else {
+        char buffer[64];
+        std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+        plain = buffer;
+    }
+    std::size_t e = plain.find('e');
+    if (e == std::string::npos)
+        return plain;
+    std::string exponent = plain.substr(e + 1);
+    if (!exponent.empty() && exponent[0] == '+')
+        exponent.erase(0, 1);
+    while (exponent.size() > 1 && (exponent[0] == '0' || (exponent[0] == '-' && exponent[1] == '0')))
+        exponent.erase(exponent[0] == '-' ? 1 : 0, 1);
+    return plain.substr(0, e) + "\\times10^{" + exponent + "}";
+}
+
+bool report_writer::figure(const std::string& name, const std::string& script, double width_cm, double height_cm,
+                           const std::string& caption)
+{
+    if (!options_.plots)
+        return false;
+    if (gnuplot_state_ == 0)
+        gnuplot_state_ = program_available("gnuplot") ? 1 : -1;
+    if (gnuplot_state_ < 0) {
+        text("(gnuplot was not found, so this figure is left out.)");
+        out_ << "\n";
+        return false;
+    }
+    private_directory folder;
+    char size[96];
+    std::snprintf(size, sizeof size, "%.2fcm,%.2fcm", width_cm, height_cm);
+    folder.write("figure.gp", "set encoding utf8\nset terminal pdfcairo noenhanced color font 'Sans,9' size " +
+                                  std::string(size) + "\nset output 'figure.pdf'\n" + script + "unset output\n");
+    program_result run = run_program({"gnuplot", "figure.gp"}, folder.path(), "gnuplot.log", {"SOURCE_DATE_EPOCH=0"});
+    if (run.exit_code != 0) {
+        std::string log;
+        try {
+            log = folder.read("gnuplot.log");
+        } catch (const computation_error&) {
+        }
+        throw computation_error("gnuplot could not draw the figure `" + name + "`" +
+                                (run.timed_out ? std::string(" (timed out)") : "") + ": " + log.substr(0, 400));
+    }
+    std::string file = options_.figure_prefix + name;
+    figures_.push_back({file + ".pdf", strip_pdf_dates(folder.read("figure.pdf"))});
+    out_ << "\\begin{figure}[htbp]\n\\centering\n\\includegraphics[width=" << (width_cm >= 16.5 ? "\\linewidth" : "")
+         << (width_cm >= 16.5 ? "" : std::to_string(static_cast<int>(width_cm * 10)) + "mm") << "]{" << file
+         << "}\n\\caption{" << caption << "}\n\\end{figure}\n";
+    return true;
+}
+
+report_document report_writer::finish() { return {out_.str(), std::move(figures_)}; }
+
+// ---------------------------------------------------------------------------
+
+const std::vector<report_section>& report_sections()
+{
+    static const std::vector<report_section> sections = {
+        {"title", [](const analysis&) { return true; }, write_title},
+        {"coordinates", [](const analysis&) { return true; }, write_coordinates},
+        {"lagrangian", [](const analysis& r) { return r.lagrangian.has_value(); }, write_lagrangian},
+        {"equations", [](const analysis& r) { return r.equations.has_value(); }, write_equations},
+        {"equilibrium", [](const analysis& r) { return r.equilibria.has_value(); }, write_equilibria},
+        {"linearization",
+         [](const analysis& r) {
+             return r.linearization.has_value() &&
+                    (wants(r, product::linearization) || r.characteristic.has_value());
+         },
+         write_linearization},
+        {"characteristic", [](const analysis& r) { return r.characteristic.has_value(); }, write_characteristic},
+        {"modes", [](const analysis& r) { return r.modes.has_value(); }, write_modes},
+        {"mode shapes",
+         [](const analysis& r) { return r.modes.has_value() && wants(r, product::modes); },
+         write_mode_figures},
+        {"asymptotic", [](const analysis& r) { return r.asymptotic.has_value(); }, write_asymptotic},
+        {"numeric", [](const analysis& r) { return r.numeric.has_value(); }, write_numeric},
+        // Rigid bodies (inertia integrals, Euler's equations) and the simulation
+        // (beats, polhode, work-precision) add their section writers here.
+        {"notes", [](const analysis& r) { return !r.notes.empty(); }, write_notes},
+    };
+    return sections;
+}
+
+report_document build_report(const analysis& result, const source_text& source, const report_options& options)
+{
+    report_writer w(result, source, options);
+    w.latex("\\documentclass[11pt]{article}\n"
+            "\\usepackage[utf8]{inputenc}\n"
+            "\\usepackage{amsmath}\n"
+            "\\usepackage{amssymb}\n"
+            "\\usepackage{graphicx}\n"
+            "\\usepackage[margin=2cm]{geometry}\n"
+            "\\ifdefined\\pdftrailerid \\pdftrailerid{}\\fi\n"
+            "\\ifdefined\\pdfinfoomitdate \\pdfinfoomitdate=1\\fi\n"
+            "\\allowdisplaybreaks\n"
+            "\\begin{document}\n");
+    for (const report_section& section : report_sections())
+        if (section.applies(result))
+            section.write(w);
+    w.latex("\\end{document}\n");
+    return w.finish();
+}
+
+std::string compile_report(const report_document& document)
+{
+    if (!program_available("pdflatex"))
+        throw computation_error("pdflatex is not installed, so the report cannot be written as PDF "
+                                "(install texlive-latex-base, or write FILE.tex)");
+    private_directory folder;
+    folder.write("report.tex", document.latex);
+    for (const report_file& f : document.figures)
+        folder.write(f.name, f.bytes);
+    // Twice, so that references settle; the dates come from SOURCE_DATE_EPOCH.
+    for (int pass = 0; pass < 2; ++pass) {
+        program_result run = run_program({"pdflatex", "-interaction=nonstopmode", "-halt-on-error", "report.tex"},
+                                         folder.path(), "pdflatex.out",
+                                         {"SOURCE_DATE_EPOCH=0", "FORCE_SOURCE_DATE=1"});
+        if (run.exit_code != 0) {
+            std::string log;
+            try {
+                log = folder.read("report.log");
+            } catch (const computation_error&) {
+            }
+            throw computation_error("pdflatex could not compile the report" +
+                                    (run.timed_out ? std::string(" (timed out)") : "") + ": " + first_latex_error(log));
+        }
+    }
+    return folder.read("report.pdf");
+}
+
+} // namespace lagrange
