@@ -141,7 +141,8 @@ int report_scene(const run_options& options)
     for (char& c : stem)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-')
             c = '-';
-    report.figure_prefix = stem.empty() || path == "-" ? "report-" : stem + "-";
+    // Inside a PDF the figures' names do not depend on the output's name.
+    report.figure_prefix = pdf || stem.empty() || path == "-" ? "report-" : stem + "-";
     report.plots = !path.empty() && path != "-"; // on standard output there is nowhere to put figures
     lagrange::report_document document = lagrange::build_report(result, source, report);
     if (pdf) {

@@ -173,7 +173,7 @@ void write_coordinates(report_writer& w)
     if (!parameters.empty())
         w.text("; the parameters ").latex(name_list(parameters)).text(parameters.size() == 1 ? " is a positive constant" :
                                                                       " are positive constants");
-    w.text(". A dot denotes the derivative with respect to time $t$.");
+    w.text(". A dot denotes the derivative with respect to time ").latex("$t$.");
     w.latex("\n\n");
     if (scene.ratio)
         w.text("Results are also written in the ratio ")
@@ -191,6 +191,7 @@ void write_lagrangian(report_writer& w)
     if (!scene.points.empty()) {
         w.text("The point masses are at");
         w.latex("\n");
+        std::vector<report_writer::row> rows;
         for (const point_mass& p : scene.points) {
             std::vector<std::string> components;
             for (const GiNaC::ex& x : p.position)
@@ -199,8 +200,9 @@ void write_lagrangian(report_writer& w)
             for (std::size_t i = 0; i < components.size(); ++i)
                 row += (i ? ",\\ " : "") + components[i];
             row += "\\right)";
-            w.display_terms(point_name(p.name), {row}, "");
+            rows.push_back({point_name(p.name), {row}, ""});
         }
+        w.display_rows(rows);
         w.text("with masses ");
         for (std::size_t i = 0; i < scene.points.size(); ++i)
             w.latex((i ? (i + 1 == scene.points.size() ? " and " : ", ") : "") + std::string("$") +
@@ -229,8 +231,8 @@ void write_lagrangian(report_writer& w)
     }
     if (!scene.points.empty() || !scene.springs.empty() || scene.gravity) {
         w.text("As built from these contributions (and any energy written in the scene), before simplification:");
-        w.display_terms("T", print_terms(l.kinetic_built, syntax::latex, velocities));
-        w.display_terms("V", print_terms(l.potential_built, syntax::latex));
+        w.display_rows({{"T", print_terms(l.kinetic_built, syntax::latex, velocities)},
+                        {"V", print_terms(l.potential_built, syntax::latex)}});
         w.text("Simplified (the trigonometric terms in their canonical form, then grouped):");
     } else {
         w.text("The energies, simplified (the trigonometric terms in their canonical form, then grouped), are");
@@ -287,8 +289,10 @@ void write_equations(report_writer& w)
     w.text("with the mass matrix");
     w.display_matrix("\\mathcal{M}(q)", mass);
     w.text("and the remaining terms (velocity-dependent forces and the forces of the potential)");
+    std::vector<report_writer::row> rows;
     for (std::size_t i = 0; i < n; ++i)
-        w.display_terms("f" + index(i), print_terms(rest[i], syntax::latex, velocity_order(scene)));
+        rows.push_back({"f" + index(i), print_terms(rest[i], syntax::latex, velocity_order(scene))});
+    w.display_rows(rows);
 }
 
 void write_equilibria(report_writer& w)
@@ -305,9 +309,11 @@ void write_equilibria(report_writer& w)
     w.latex("$\\partial V / \\partial q_{i} = 0$");
     if (result.lagrangian && result.lagrangian->split) {
         w.text(":");
+        std::vector<report_writer::row> rows;
         for (const coordinate& c : scene.coordinates)
-            w.display_terms("\\frac{\\partial V}{\\partial " + report_writer::name(c.name) + "}",
-                            print_terms(differentiate(result.lagrangian->potential, c.position), syntax::latex), " = 0");
+            rows.push_back({"\\frac{\\partial V}{\\partial " + report_writer::name(c.name) + "}",
+                            print_terms(differentiate(result.lagrangian->potential, c.position), syntax::latex), " = 0"});
+        w.display_rows(rows);
     } else {
         w.text(".");
     }
@@ -341,8 +347,7 @@ void write_linearization(report_writer& w)
         .latex("\n\\[\\mathbf{T}_{ij} = \\left.\\frac{\\partial^{2} T}{\\partial \\dot{q}_{i}\\partial "
                "\\dot{q}_{j}}\\right|_{0},\\qquad \\mathbf{V}_{ij} = \\left.\\frac{\\partial^{2} V}{\\partial q_{i}\\partial "
                "q_{j}}\\right|_{0}:\\]\n");
-    w.display_matrix("\\mathbf{T}", l.kinetic);
-    w.display_matrix("\\mathbf{V}", l.potential);
+    w.display_rows({{"\\mathbf{T}", {latex_matrix(l.kinetic)}}, {"\\mathbf{V}", {latex_matrix(l.potential)}}});
 }
 
 void write_characteristic(report_writer& w)
@@ -387,13 +392,17 @@ void write_modes(report_writer& w)
     }
     if (wants(result, product::frequencies) || wants(result, product::modes) || wants(result, product::asymptotic)) {
         w.text("The roots of the characteristic polynomial, in ascending order, are");
+        std::vector<report_writer::row> rows;
         for (std::size_t k = 0; k < m.frequencies.size(); ++k)
-            w.display(w2 + index(k), m.frequencies[k]);
+            rows.push_back({w2 + index(k), print_terms(m.frequencies[k], syntax::latex)});
+        w.display_rows(rows);
         if (scene.ratio && !m.frequencies_in_ratio.empty()) {
             w.text("With ").latex("$" + report_writer::name(scene.ratio->name) + " = " +
                                   report_writer::math(scene.ratio->definition) + "$").text(" they read");
+            std::vector<report_writer::row> in_ratio;
             for (std::size_t k = 0; k < m.frequencies_in_ratio.size(); ++k)
-                w.display(w2 + index(k), m.frequencies_in_ratio[k]);
+                in_ratio.push_back({w2 + index(k), print_terms(m.frequencies_in_ratio[k], syntax::latex)});
+            w.display_rows(in_ratio);
         }
     }
     if (wants(result, product::modes) && !m.modes.empty()) {
@@ -408,12 +417,16 @@ void write_modes(report_writer& w)
                     names += (i ? ", " : "") + report_writer::name(scene.coordinates[i].name);
                 return names;
             }() + ")$:");
+        std::vector<report_writer::row> rows;
         for (std::size_t k = 0; k < m.modes.size(); ++k)
-            w.display_terms("a" + index(k), {column_latex(m.modes[k])});
+            rows.push_back({"a" + index(k), {column_latex(m.modes[k])}});
+        w.display_rows(rows);
         if (scene.ratio && m.modes_in_ratio.size() == m.modes.size()) {
             w.text("In ").latex("$" + report_writer::name(scene.ratio->name) + "$:");
+            std::vector<report_writer::row> in_ratio;
             for (std::size_t k = 0; k < m.modes_in_ratio.size(); ++k)
-                w.display_terms("a" + index(k), {column_latex(m.modes_in_ratio[k])});
+                in_ratio.push_back({"a" + index(k), {column_latex(m.modes_in_ratio[k])}});
+            w.display_rows(in_ratio);
         }
     }
     if (wants(result, product::normal_coordinates) && !m.normal_coordinates.empty()) {
@@ -430,8 +443,10 @@ void write_modes(report_writer& w)
                 : m.normal_coordinates;
         if (&zeta == &m.normal_coordinates_in_ratio)
             w.text(" (written in ").latex("$" + report_writer::name(scene.ratio->name) + "$").text(")");
+        std::vector<report_writer::row> rows;
         for (std::size_t k = 0; k < zeta.size(); ++k)
-            w.display("\\zeta" + index(k), zeta[k]);
+            rows.push_back({"\\zeta" + index(k), print_terms(zeta[k], syntax::latex)});
+        w.display_rows(rows);
     }
 }
 
@@ -445,12 +460,16 @@ void write_asymptotic(report_writer& w)
     std::string variable = scene.limit ? report_writer::name(scene.limit->variable) : "";
     std::string to = scene.limit && scene.limit->to_infinity ? "\\infty" : "0";
     w.text("To leading order as ").latex("$" + variable + " \\to " + to + "$").text(", the frequencies behave as");
+    std::vector<report_writer::row> rows;
     for (std::size_t k = 0; k < a.frequencies.size(); ++k)
-        w.display(omega + "^{2}" + index(k), a.frequencies[k], "", "\\to");
+        rows.push_back({omega + "^{2}" + index(k), print_terms(a.frequencies[k], syntax::latex), "", "\\to"});
+    w.display_rows(rows);
     if (!a.modes.empty()) {
         w.text("and the mode vectors as");
+        std::vector<report_writer::row> modes;
         for (std::size_t k = 0; k < a.modes.size(); ++k)
-            w.display_terms("a" + index(k), {column_latex(a.modes[k])}, "", "\\to");
+            modes.push_back({"a" + index(k), {column_latex(a.modes[k])}, "", "\\to"});
+        w.display_rows(modes);
     }
     if (a.frequencies.size() == 2)
         w.text("The two frequencies differ by a term that vanishes in the limit: their squares approach each other, "
@@ -507,9 +526,16 @@ std::optional<std::string> pendulum_script(const analysis& result, const numeric
     if (scene.points.empty() || !result.linearization)
         return std::nullopt;
     for (const point_mass& p : scene.points)
-        if (p.position.size() != 2)
+        if (p.position.size() < 2 || p.position.size() > 3 ||
+            (p.position.size() == 3 && !p.position[2].is_zero()))
             return std::nullopt;
     GiNaC::exmap parameters;
+    // All the values of the point (the numeric modes list only those T and V use).
+    if (!scene.values.empty())
+        for (const auto& [name, value] : scene.values.front().values)
+            for (const parameter& p : scene.parameters)
+                if (p.name == name)
+                    parameters[p.symbol] = value;
     for (const auto& [name, value] : numbers.values)
         for (const parameter& p : scene.parameters)
             if (p.name == name)
@@ -578,7 +604,7 @@ std::optional<std::string> pendulum_script(const analysis& result, const numeric
     }
     // Spring ends: a point of the scene (matched by position) or a fixed place.
     auto spring_end = [&](const std::vector<GiNaC::ex>& end, const GiNaC::exmap& at) -> std::optional<point2> {
-        if (end.size() != 2)
+        if (end.size() < 2 || end.size() > 3 || (end.size() == 3 && !end[2].is_zero()))
             return std::nullopt;
         std::optional<double> x = evaluate(end[0], at), y = evaluate(end[1], at);
         if (!x || !y)
@@ -675,6 +701,10 @@ std::optional<std::string> pendulum_script(const analysis& result, const numeric
               << "$plus_masses_" << k << " with points pt 7 ps 1.1 lc rgb '#1f4e9c', "
               << "'-' with points pt 5 ps 0.7 lc rgb 'black'\n0 0\ne\n";
     }
+    // Everything on one line (a chain moving along it): the drawing would overlap
+    // itself; the bar chart shows such modes better.
+    if (xmax - xmin < 1e-6 * size || ymax - ymin < 1e-6 * size)
+        return std::nullopt;
     double pad = 0.08 * size;
     std::ostringstream script;
     script << data.str() << "set size ratio -1\nunset border\nunset xtics\nunset ytics\nunset key\n"
@@ -739,10 +769,10 @@ void write_mode_figures(report_writer& w)
     if (n == 2) {
         for (std::size_t k = 0; k < 2; ++k) {
             double product = numbers->modes(0, static_cast<Eigen::Index>(k)) * numbers->modes(1, static_cast<Eigen::Index>(k));
-            w.text("In mode " + std::to_string(k + 1) + " (").latex("$" + report_writer::name("omega") + index(k) +
+            w.text((k == 0 ? "In mode " : "mode ") + std::to_string(k + 1) + " (").latex("$" + report_writer::name("omega") + index(k) +
                                                                     " = " + report_writer::number(numbers->omega[k], 6) + "$")
                 .text(std::string(") the coordinates move ") + (product > 0 ? "in phase" : product < 0 ? "in antiphase" : "one at a time") +
-                      (k == 0 ? "; " : "."));
+                      (k == 0 ? "; in " : "."));
         }
         if (numbers->modes(0, 0) * numbers->modes(1, 0) > 0 && numbers->modes(0, 1) * numbers->modes(1, 1) < 0)
             w.text(" The antiphase mode is the faster one.");
@@ -835,15 +865,55 @@ void report_writer::display(const std::string& lhs, const GiNaC::ex& e, const st
     display_terms(lhs, print_terms(e, syntax::latex), rhs, relation);
 }
 
+namespace {
+
+const std::string align_open = "\\begin{align*}\n", align_close = "\n\\end{align*}\n";
+const std::string scaled_open = "\\[\\resizebox{\\linewidth}{!}{$\\displaystyle ", scaled_close = "$}\\]\n";
+
+/// A display from latex_equation, with a scaled one only ever scaled down
+/// (\fitdisplay of the preamble), never blown up to the page width.
+std::string fitted(const std::string& display)
+{
+    if (display.compare(0, scaled_open.size(), scaled_open) == 0 && display.size() >= scaled_open.size() + scaled_close.size())
+        return "\\[\\fitdisplay{" +
+               display.substr(scaled_open.size(), display.size() - scaled_open.size() - scaled_close.size()) + "}\\]\n";
+    return display;
+}
+
+} // namespace
+
 void report_writer::display_terms(const std::string& lhs, const std::vector<std::string>& terms,
                                   const std::string& rhs, const std::string& relation)
 {
-    out_ << "\n" << latex_equation(lhs, terms, rhs, relation);
+    display_rows({{lhs, terms, rhs, relation}});
+}
+
+void report_writer::display_rows(const std::vector<row>& rows)
+{
+    // Consecutive aligned rows share one align*; a scaled row stands alone.
+    std::string block;
+    auto flush = [&] {
+        if (!block.empty())
+            out_ << "\n" << align_open << block << align_close;
+        block.clear();
+    };
+    for (const row& r : rows) {
+        std::string display = latex_equation(r.lhs, r.terms, r.rhs, r.relation);
+        if (display.compare(0, align_open.size(), align_open) == 0 &&
+            display.size() >= align_open.size() + align_close.size()) {
+            block += (block.empty() ? "" : "\\\\[4pt]\n") +
+                     display.substr(align_open.size(), display.size() - align_open.size() - align_close.size());
+        } else {
+            flush();
+            out_ << "\n" << fitted(display);
+        }
+    }
+    flush();
 }
 
 void report_writer::display_matrix(const std::string& lhs, const GiNaC::matrix& m)
 {
-    out_ << "\n" << latex_equation(lhs, {latex_matrix(m)}, "");
+    display_terms(lhs, {latex_matrix(m)});
 }
 
 std::string report_writer::name(const std::string& symbol_name) { return print_name(symbol_name, syntax::latex); }
@@ -954,6 +1024,10 @@ report_document build_report(const analysis& result, const source_text& source, 
             "\\ifdefined\\pdftrailerid \\pdftrailerid{}\\fi\n"
             "\\ifdefined\\pdfinfoomitdate \\pdfinfoomitdate=1\\fi\n"
             "\\allowdisplaybreaks\n"
+            "\\newsavebox{\\fitbox}\n"
+            "\\newcommand{\\fitdisplay}[1]{\\sbox{\\fitbox}{$\\displaystyle #1$}"
+            "\\ifdim\\wd\\fitbox>\\linewidth\\resizebox{\\linewidth}{!}{\\usebox{\\fitbox}}"
+            "\\else\\usebox{\\fitbox}\\fi}\n"
             "\\begin{document}\n");
     for (const report_section& section : report_sections())
         if (section.applies(result))

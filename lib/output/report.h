@@ -64,6 +64,15 @@ public:
     /// A display of already printed LaTeX terms.
     void display_terms(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs = "",
                        const std::string& relation = "=");
+    /// One row of a group of displays.
+    struct row {
+        std::string lhs;
+        std::vector<std::string> terms;
+        std::string rhs;
+        std::string relation = "=";
+    };
+    /// Several displays in one aligned block (rows wider than the page on their own, scaled down).
+    void display_rows(const std::vector<row>& rows);
     /// `lhs = (matrix)`, scaled to the page width when wider.
     void display_matrix(const std::string& lhs, const GiNaC::matrix& m);
 
