@@ -258,7 +258,7 @@ void write_equations(report_writer& w)
     w.text("give, one for each coordinate, after simplification:");
     w.latex("\n");
     for (std::size_t i = 0; i < n; ++i) {
-        w.latex("\\noindent For $" + report_writer::name(scene.coordinates[i].name) + "$:");
+        w.latex("\n\\noindent For $" + report_writer::name(scene.coordinates[i].name) + "$:");
         w.display_terms("", print_terms(equations[i], syntax::latex, equation_order(scene)), " = 0");
     }
     // The grouping M(q) q̈ + f(q, q̇) = 0: the coefficient of each acceleration
@@ -435,14 +435,14 @@ void write_modes(report_writer& w)
             .text(", the normal coordinates ")
             .latex("$\\zeta = A^{\\mathsf{T}}\\mathbf{T}\\,\\eta$")
             .text(" each oscillate at one frequency, ")
-            .latex("$\\ddot{\\zeta}_{k} + " + w2 + "_{k}\\zeta_{k} = 0$")
-            .text(":");
+            .latex("$\\ddot{\\zeta}_{k} + " + w2 + "_{k}\\zeta_{k} = 0$");
         const std::vector<GiNaC::ex>& zeta =
             scene.ratio && m.normal_coordinates_in_ratio.size() == m.normal_coordinates.size()
                 ? m.normal_coordinates_in_ratio
                 : m.normal_coordinates;
         if (&zeta == &m.normal_coordinates_in_ratio)
             w.text(" (written in ").latex("$" + report_writer::name(scene.ratio->name) + "$").text(")");
+        w.text(":");
         std::vector<report_writer::row> rows;
         for (std::size_t k = 0; k < zeta.size(); ++k)
             rows.push_back({"\\zeta" + index(k), print_terms(zeta[k], syntax::latex)});
@@ -810,7 +810,7 @@ void write_numeric(report_writer& w)
             at += (i ? ",\\ " : "") + report_writer::name(nm.values[i].first) + " = " +
                   report_writer::number(nm.values[i].second);
         w.latex("\\subsection*{At $" + at + "$}\n");
-        w.latex("\\begin{center}\n\\begin{tabular}{rll}\n\\hline\n$k$ & $\\omega_{k}$ & relative error bound\\\\\n"
+        w.latex("\\begin{center}\n\\renewcommand{\\arraystretch}{1.3}\n\\begin{tabular}{rll}\n\\hline\n$k$ & $\\omega_{k}$ & relative error bound\\\\\n"
                 "\\hline\n");
         for (std::size_t k = 0; k < nm.omega.size(); ++k)
             w.latex(std::to_string(k + 1) + " & $" + report_writer::number(nm.omega[k]) + "$ & $\\le " +
