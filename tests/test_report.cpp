@@ -249,3 +249,28 @@ TEST_CASE("report: errors", "[report]")
     CHECK_THROWS_AS(lagrange::compile_report(built->document), lagrange::computation_error);
     setenv("PATH", saved.c_str(), 1);
 }
+
+TEST_CASE("report: a scene with LaTeX's special characters, Unicode and long lines compiles", "[report][latex]")
+{
+    if (!have("pdflatex"))
+        FAIL("pdflatex is not installed (the test command installs texlive-latex-base)");
+    std::string long_word(150, 'x');
+    std::string scene = temporary_file(
+        "special.lag", "# \\end{quote} $x$ 100% {braces} ^~ & #hash_ and Unicode: θ, ü, ∂, 漢\n# " + long_word +
+                           "\nscene \"Specials & 100% $money$ \\input{x} {}\"\nparameters m_1 k\ncoordinates x_a\n"
+                           "T = 1/2*m_1*x_a'^2\nV = 1/2*k*x_a^2 + 1/2*k*x_a^2*0 + 1/2*k*x_a^2*0 + 1/2*k*x_a^2*0 + "
+                           "1/2*k*x_a^2*0 + 1/2*k*x_a^2*0\nvalues m_1 = 1.5e-20, k = 2\n");
+    std::string tex = temporary_file("special_report.tex", "");
+    cli_result r = run_cli("report " + scene + " -o " + tex, "", 60);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    std::string latex = read_file(tex);
+    CHECK(contains(latex, "Specials \\& 100\\% \\$money\\$ \\textbackslash{}input\\{x\\} \\{\\}"));
+    CHECK(contains(latex, "1.5\\times10^{-20}"));
+    CHECK(!contains(latex.substr(latex.find("\\end{quote}")), "e-20")); // only the scene as written has it
+    int status = 0;
+    std::string log = compile_latex(tex, status);
+    INFO(log.substr(log.size() > 3000 ? log.size() - 3000 : 0));
+    CHECK(status == 0);
+    CHECK(widest_overfull_box(log) <= 10.0);
+}

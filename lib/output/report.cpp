@@ -141,15 +141,29 @@ void write_title(report_writer& w)
         std::string line = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
         if (!line.empty() && line.back() == '\r')
             line.pop_back();
+        // One character (UTF-8 code point) at a time: spaces kept (`\ ` does not
+        // collapse, and may break), a break allowed after operators and inside
+        // any run of 40 characters without one, so no line runs past the margin.
         std::string escaped;
-        for (char c : latex_text(line)) {
-            // spaces kept (`\ ` does not collapse, and may break); breaks allowed after operators
-            if (c == ' ' || c == '\t')
+        std::size_t run = 0;
+        for (std::size_t i = 0; i < line.size();) {
+            std::size_t length = 1;
+            while (i + length < line.size() && (static_cast<unsigned char>(line[i + length]) & 0xC0) == 0x80)
+                ++length;
+            std::string character = line.substr(i, length);
+            i += length;
+            if (character == " " || character == "\t") {
                 escaped += "\\ ";
-            else
-                escaped += c;
-            if (c == ',' || c == '+' || c == '*' || c == '/' || c == '=' || c == '(')
+                run = 0;
+                continue;
+            }
+            char c = character[0];
+            bool control = length == 1 && (static_cast<unsigned char>(c) < 0x20 || c == 0x7F);
+            escaped += control ? std::string("?") : latex_text(character);
+            if (c == ',' || c == '+' || c == '*' || c == '/' || c == '=' || c == '(' || ++run >= 40) {
                 escaped += "\\allowbreak{}";
+                run = 0;
+            }
         }
         w.latex(escaped.empty() ? "\\mbox{}\\\\\n" : escaped + "\\\\\n");
         if (end == std::string::npos)
@@ -237,12 +251,13 @@ void write_lagrangian(report_writer& w)
     } else {
         w.text("The energies, simplified (the trigonometric terms in their canonical form, then grouped), are");
     }
-    w.display_terms("T", print_terms(l.kinetic, syntax::latex, velocities));
-    if (!l.gyroscopic.is_zero()) {
-        w.text("The Lagrangian also has a part linear in the velocities:");
-        w.display_terms("L_{1}", print_terms(l.gyroscopic, syntax::latex, velocities));
-    }
-    w.display_terms("V", print_terms(l.potential, syntax::latex));
+    std::vector<report_writer::row> energies{{"T", print_terms(l.kinetic, syntax::latex, velocities)}};
+    if (!l.gyroscopic.is_zero())
+        energies.push_back({"L_{1}", print_terms(l.gyroscopic, syntax::latex, velocities)});
+    energies.push_back({"V", print_terms(l.potential, syntax::latex)});
+    w.display_rows(energies);
+    if (!l.gyroscopic.is_zero())
+        w.text("(").latex("$L_{1}$").text(" is the part of the Lagrangian linear in the velocities.) ");
     w.text("and the Lagrangian is ").latex(l.gyroscopic.is_zero() ? "$L = T - V$:" : "$L = T + L_{1} - V$:");
     w.display_terms("L", print_terms(l.lagrangian, syntax::latex, velocities));
 }
