@@ -205,11 +205,15 @@ void write_lagrangian(report_writer& w)
     if (!scene.points.empty()) {
         w.text("The point masses are at");
         w.latex("\n");
+        // A planar scene (every z zero) is shown in the plane.
+        bool planar = std::all_of(scene.points.begin(), scene.points.end(), [](const point_mass& p) {
+            return p.position.size() < 3 || p.position[2].is_zero();
+        });
         std::vector<report_writer::row> rows;
         for (const point_mass& p : scene.points) {
             std::vector<std::string> components;
-            for (const GiNaC::ex& x : p.position)
-                components.push_back(report_writer::math(x));
+            for (std::size_t i = 0; i < p.position.size() && (i < 2 || !planar); ++i)
+                components.push_back(report_writer::math(p.position[i]));
             std::string row = "\\left(";
             for (std::size_t i = 0; i < components.size(); ++i)
                 row += (i ? ",\\ " : "") + components[i];
@@ -1016,7 +1020,9 @@ const std::vector<report_section>& report_sections()
         {"characteristic", [](const analysis& r) { return r.characteristic.has_value(); }, write_characteristic},
         {"modes", [](const analysis& r) { return r.modes.has_value(); }, write_modes},
         {"mode shapes",
-         [](const analysis& r) { return r.modes.has_value() && wants(r, product::modes); },
+         [](const analysis& r) {
+             return r.modes.has_value() && wants(r, product::modes) && r.scene->coordinates.size() >= 2;
+         },
          write_mode_figures},
         {"asymptotic", [](const analysis& r) { return r.asymptotic.has_value(); }, write_asymptotic},
         {"numeric", [](const analysis& r) { return r.numeric.has_value(); }, write_numeric},
