@@ -195,6 +195,35 @@ TEST_CASE("report: the double pendulum's report holds the homework's results", "
     CHECK(contains(latex, "point\\ upper\\ mass\\ M\\ at"));
     CHECK(contains(latex, "As built from these contributions"));
     CHECK(contains(latex, "\\mathcal{M}(q) &= \\begin{pmatrix}"));
+
+    // The mass matrix printed is ∂²T/∂q̇i∂q̇j of the homework's T (eq. 54), entry by entry.
+    ex theta = scene.coordinates[0].position, phi = scene.coordinates[1].position;
+    ex theta_dot = scene.coordinates[0].velocity, phi_dot = scene.coordinates[1].velocity;
+    ex kinetic = M * pow(l, 2) * pow(theta_dot, 2) / 2 +
+                 m * pow(l, 2) * (pow(theta_dot, 2) + pow(phi_dot, 2) + 2 * theta_dot * phi_dot * cos(theta - phi)) / 2;
+    std::optional<lagrange::acceleration_form> grouped = lagrange::group_by_accelerations(scene, *result.equations);
+    REQUIRE(grouped);
+    const ex velocities[] = {theta_dot, phi_dot};
+    for (unsigned i = 0; i < 2; ++i)
+        for (unsigned j = 0; j < 2; ++j) {
+            ex hessian = kinetic.diff(GiNaC::ex_to<GiNaC::symbol>(velocities[i]))
+                             .diff(GiNaC::ex_to<GiNaC::symbol>(velocities[j]));
+            CHECK((grouped->mass(i, j) - hessian).expand().is_zero());
+        }
+    // and f is the rest: 𝓜 q̈ + f gives back each equation
+    for (unsigned i = 0; i < 2; ++i) {
+        ex rebuilt = grouped->rest[i];
+        for (unsigned j = 0; j < 2; ++j)
+            rebuilt += grouped->mass(i, j) * scene.coordinates[j].acceleration;
+        CHECK((rebuilt - (*result.equations)[i]).expand().is_zero());
+    }
+    std::string matrix = "\\begin{pmatrix}";
+    for (unsigned i = 0; i < 2; ++i)
+        for (unsigned j = 0; j < 2; ++j)
+            matrix += (j ? " & " : "") + lagrange::print(grouped->mass(i, j), lagrange::syntax::latex) +
+                      (j == 1 && i == 0 ? " \\\\ " : "");
+    matrix += "\\end{pmatrix}";
+    CHECK(contains(latex, "\\mathcal{M}(q) &= " + matrix));
 }
 
 TEST_CASE("report: only the sections the scene wants", "[report]")

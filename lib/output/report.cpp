@@ -280,26 +280,11 @@ void write_equations(report_writer& w)
         w.latex("\n\\noindent For $" + report_writer::name(scene.coordinates[i].name) + "$:");
         w.display_terms("", print_terms(equations[i], syntax::latex, equation_order(scene)), " = 0");
     }
-    // The grouping M(q) q̈ + f(q, q̇) = 0: the coefficient of each acceleration
-    // (linear in them) and the rest.
-    GiNaC::exmap no_acceleration;
-    for (const coordinate& c : scene.coordinates)
-        no_acceleration[c.acceleration] = 0;
-    GiNaC::matrix mass(static_cast<unsigned>(n), static_cast<unsigned>(n));
-    std::vector<GiNaC::ex> rest;
-    bool linear = true;
-    for (std::size_t i = 0; i < n; ++i) {
-        for (std::size_t j = 0; j < n; ++j) {
-            GiNaC::ex coefficient = equations[i].diff(scene.coordinates[j].acceleration);
-            for (const coordinate& c : scene.coordinates)
-                if (coefficient.has(c.acceleration))
-                    linear = false;
-            mass(static_cast<unsigned>(i), static_cast<unsigned>(j)) = coefficient;
-        }
-        rest.push_back(equations[i].subs(no_acceleration));
-    }
-    if (!linear)
+    std::optional<acceleration_form> grouped = group_by_accelerations(scene, equations);
+    if (!grouped)
         return;
+    const GiNaC::matrix& mass = grouped->mass;
+    const std::vector<GiNaC::ex>& rest = grouped->rest;
     std::vector<std::string> accelerations;
     for (const coordinate& c : scene.coordinates)
         accelerations.push_back(report_writer::name(c.acceleration.get_name()));
@@ -857,6 +842,26 @@ void write_notes(report_writer& w)
 }
 
 } // namespace
+
+std::optional<acceleration_form> group_by_accelerations(const model& scene, const std::vector<GiNaC::ex>& equations)
+{
+    const std::size_t n = scene.coordinates.size();
+    GiNaC::exmap no_acceleration;
+    for (const coordinate& c : scene.coordinates)
+        no_acceleration[c.acceleration] = 0;
+    acceleration_form form{GiNaC::matrix(static_cast<unsigned>(n), static_cast<unsigned>(n)), {}};
+    for (std::size_t i = 0; i < n && i < equations.size(); ++i) {
+        for (std::size_t j = 0; j < n; ++j) {
+            GiNaC::ex coefficient = equations[i].diff(scene.coordinates[j].acceleration);
+            for (const coordinate& c : scene.coordinates)
+                if (coefficient.has(c.acceleration))
+                    return std::nullopt;
+            form.mass(static_cast<unsigned>(i), static_cast<unsigned>(j)) = coefficient;
+        }
+        form.rest.push_back(equations[i].subs(no_acceleration));
+    }
+    return form;
+}
 
 // ---------------------------------------------------------------------------
 // report_writer
