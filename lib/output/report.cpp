@@ -921,8 +921,19 @@ void report_writer::display_rows(const std::vector<row>& rows)
             out_ << "\n" << align_open << block << align_close;
         block.clear();
     };
+    // A closed form of thousands of characters (a cubic's roots in many parameters)
+    // helps no reader and can exceed what TeX reads in one line: it is named, not printed.
+    constexpr std::size_t longest_printed = 3000;
     for (const row& r : rows) {
-        std::string display = latex_equation(r.lhs, r.terms, r.rhs, r.relation);
+        std::size_t length = 0;
+        for (const std::string& term : r.terms)
+            length += term.size();
+        std::string display =
+            length <= longest_printed
+                ? latex_equation(r.lhs, r.terms, r.rhs, r.relation)
+                : latex_equation(r.lhs, {"\\text{(a closed form of " + std::to_string(length) +
+                                         " characters of \\LaTeX, too long to print)}"},
+                                 "", r.relation);
         if (display.compare(0, align_open.size(), align_open) == 0 &&
             display.size() >= align_open.size() + align_close.size()) {
             block += (block.empty() ? "" : "\\\\[4pt]\n") +
