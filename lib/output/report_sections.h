@@ -1,0 +1,14 @@
+/** @file report_sections.h
+ *  Section writers of the report that live in their own files. Each is listed
+ *  in report_sections() (report.cpp); the rigid-body and simulation sections
+ *  are declared here the same way. */
+#pragma once
+
+#include "output/report.h"
+
+namespace lagrange {
+
+/// The figure of the mode shapes, with a sentence on which mode is in phase.
+void write_mode_figures(report_writer& w);
+
+} // namespace lagrange
