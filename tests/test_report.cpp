@@ -190,6 +190,8 @@ TEST_CASE("report: the double pendulum's report holds the homework's results", "
         CHECK(built->document.figures[0].bytes.compare(0, 5, "%PDF-") == 0);
         CHECK(!contains(built->document.figures[0].bytes, "/CreationDate"));
         CHECK(contains(latex, "\\includegraphics[width=110mm]{dp-modes}"));
+        // drawn as pendulums (rods from the pivot), not as a bar chart
+        CHECK(contains(latex, "displaced along each mode"));
     }
     // The scene as written, and the energies before simplification.
     CHECK(contains(latex, "point\\ upper\\ mass\\ M\\ at"));
@@ -320,4 +322,24 @@ TEST_CASE("report: a closed form too long to read is named, not printed", "[repo
     CHECK(contains(latex, "\\omega^{2}_{1} &= a"));
     CHECK(contains(latex, "\\omega^{2}_{2} &= \\text{(a closed form of 5200 characters of \\LaTeX, too long to print)}"));
     CHECK(!contains(latex, "\\frac{a}{b}"));
+}
+
+TEST_CASE("report: a scene without points in a plane gets bar charts of its modes", "[report]")
+{
+    lagrange::source_text source(std::string(LAGRANGE_SOURCE_DIR) + "/examples/linear_molecule.lag",
+                                 read_file(std::string(LAGRANGE_SOURCE_DIR) + "/examples/linear_molecule.lag"));
+    lagrange::model scene = lagrange::load_model(source);
+    lagrange::analysis result = lagrange::analyze(scene);
+    lagrange::report_options options;
+    options.figure_prefix = "lm-";
+    lagrange::report_document document = lagrange::build_report(result, source, options);
+    if (!have("gnuplot"))
+        FAIL("gnuplot is not installed (the test command installs gnuplot-nox)");
+    REQUIRE(document.figures.size() == 1);
+    CHECK(document.figures[0].name == "lm-modes.pdf");
+    CHECK(contains(document.latex, "The components of each mode vector"));
+    options.plots = false;
+    lagrange::report_document without = lagrange::build_report(result, source, options);
+    CHECK(without.figures.empty());
+    CHECK(!contains(without.latex, "includegraphics"));
 }
