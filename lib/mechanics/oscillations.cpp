@@ -805,6 +805,80 @@ std::vector<ex> scaled_mode(std::vector<ex> a, const surd& root)
     return a;
 }
 
+/// The sign of c0 + c1·s (s = √radicand > 0) for every positive value of the
+/// parameters, if it can be decided: from the signs of c0 and c1, and where they
+/// differ, from the sign of c0² − c1²·radicand.
+std::optional<int> sign_with(const ex& e, const surd& r)
+{
+    if (!e.has(r.symbol))
+        return sign_of(e);
+    ex expanded = simplify_with(e, r).expand();
+    if (expanded.degree(r.symbol) > 1 || expanded.ldegree(r.symbol) < 0)
+        return std::nullopt;
+    ex c0 = expanded.coeff(r.symbol, 0), c1 = expanded.coeff(r.symbol, 1);
+    std::optional<int> s0 = sign_of(c0), s1 = sign_of(c1);
+    if (!s0 || !s1)
+        return std::nullopt;
+    if (*s0 == 0 || *s1 == 0 || *s0 == *s1)
+        return *s0 != 0 ? *s0 : *s1;
+    std::optional<int> larger = sign_of(c0 * c0 - c1 * c1 * r.radicand);
+    if (!larger || *larger == 0)
+        return std::nullopt;
+    return *larger > 0 ? *s0 : *s1;
+}
+
+/// The length of e as GiNaC prints it (the same for equal expressions whatever
+/// the term order, so a deterministic measure of size).
+std::size_t printed_length(const ex& e) { return print(e).size(); }
+
+/// A coefficient c0 + c1·s in its shortest exact form: c1·√r as ±√(c1² r) when
+/// c0 = 0 and that is shorter (√(m (M+m))/(M+m) becomes √m/√(M+m)).
+ex fold_surd(const ex& e, const surd& r)
+{
+    ex restored = r.restore(e);
+    ex expanded = e.expand();
+    if (!e.has(r.symbol) || expanded.degree(r.symbol) != 1 || !expanded.coeff(r.symbol, 0).is_zero())
+        return restored;
+    ex c1 = expanded.coeff(r.symbol, 1);
+    std::optional<int> sign = sign_of(c1);
+    if (!sign || *sign == 0)
+        return restored;
+    ex folded = *sign * GiNaC::sqrt(tidy(c1 * c1 * r.radicand));
+    return printed_length(folded) < printed_length(restored) ? folded : restored;
+}
+
+/// ζ = (Σ_j w_j q_j)/√norm² with w = T a, written as ±√(w_p²/norm²)·(q_p + Σ_j (w_j/w_p) q_j)
+/// for the first coordinate p with w_p ≠ 0, each part reduced to c0 + c1·s and
+/// rationalized. Nothing if the sign of w_p cannot be decided.
+std::optional<ex> clean_normal_coordinate(const model& scene, const std::vector<ex>& weights,
+                                          const ex& norm_squared, const surd& r)
+{
+    try {
+        std::size_t pivot = weights.size();
+        for (std::size_t j = 0; j < weights.size() && pivot == weights.size(); ++j)
+            if (!vanishes(r.restore(weights[j])))
+                pivot = j;
+        if (pivot == weights.size())
+            return std::nullopt;
+        std::optional<int> sign = sign_with(weights[pivot], r);
+        if (!sign || *sign == 0)
+            return std::nullopt;
+        ex scale_squared = simplify_with(weights[pivot] * weights[pivot] / norm_squared, r);
+        // the squares come out of the root; the numeric denominator stays in it
+        ex fraction = tidy(scale_squared).numer_denom();
+        auto [numerator_out, numerator_in] = square_root_parts_of_product(GiNaC::factor(fraction.op(0)));
+        auto [denominator_out, denominator_in] = square_root_parts_of_product(GiNaC::factor(fraction.op(1)));
+        ex scale = numerator_out / denominator_out * GiNaC::sqrt(r.restore(numerator_in)) /
+                   GiNaC::sqrt(r.restore(denominator_in));
+        ex combination = 0;
+        for (std::size_t j = 0; j < weights.size(); ++j)
+            combination += fold_surd(simplify_with(weights[j] / weights[pivot], r), r) * scene.coordinates[j].position;
+        return *sign * r.restore(scale) * combination;
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
 /// Frequencies, modes and normal coordinates from T, V and the primitive
 /// characteristic coefficients.
 struct closed_modes {
@@ -862,11 +936,17 @@ closed_modes solve_modes(const model& scene, const GiNaC::matrix& kinetic, const
         const std::vector<ex>& a = modes[k];
         ex norm_squared = simplify_with(kinetic_product(kinetic, a, a), surds[k]);
         ex coordinate_sum = 0;
+        std::vector<ex> weights;
         for (std::size_t j = 0; j < n; ++j) {
             ex weight = 0;
             for (std::size_t i = 0; i < n; ++i)
                 weight += a[i] * kinetic(i, j);
-            coordinate_sum += simplify_with(weight, surds[k]) * scene.coordinates[j].position;
+            weights.push_back(simplify_with(weight, surds[k]));
+            coordinate_sum += weights.back() * scene.coordinates[j].position;
+        }
+        if (std::optional<ex> clean = clean_normal_coordinate(scene, weights, norm_squared, surds[k])) {
+            result.normal_coordinates.push_back(*clean);
+            continue;
         }
         ex norm = norm_squared.has(surds[k].symbol) ? GiNaC::sqrt(norm_squared) : square_root(norm_squared);
         result.normal_coordinates.push_back(surds[k].restore(coordinate_sum / norm));
@@ -1143,8 +1223,35 @@ asymptotic_result asymptotic_limit(const model& scene, const modes_result& modes
             if (!changed)
                 break;
         }
+        for (std::size_t i = 0; i < terms.size(); ++i) {
+            // c0·εᵏ⁰ (1 + (c1/c0) εᵏ¹⁻ᵏ⁰ + …): the leading term outside, corrections in order
+            ex correction = 1;
+            for (std::size_t t = 1; t < kept[i] && t < terms[i].size(); ++t)
+                correction += tidy(terms[i][t].second / terms[i][0].second) *
+                              GiNaC::pow(back, terms[i][t].first - terms[i][0].first);
+            result.frequencies.push_back(terms[i][0].second * GiNaC::pow(back, terms[i][0].first) * correction);
+            std::vector<ex> series{terms[i][0].second * GiNaC::pow(back, terms[i][0].first), 1};
+            for (std::size_t t = 1; t < kept[i] && t < terms[i].size(); ++t)
+                series.push_back(tidy(terms[i][t].second / terms[i][0].second) *
+                                 GiNaC::pow(back, terms[i][t].first - terms[i][0].first));
+            result.frequency_series.push_back(series);
+        }
+        // Frequencies equal to leading order beat: ω_j − ω_i and the period 2π/(ω_j − ω_i).
         for (std::size_t i = 0; i < terms.size(); ++i)
-            result.frequencies.push_back(sum_of(terms[i], kept[i]));
+            for (std::size_t j = i + 1; j < terms.size(); ++j) {
+                if (terms[i].empty() || terms[j].empty() || terms[i][0].first != terms[j][0].first ||
+                    !vanishes(terms[i][0].second - terms[j][0].second))
+                    continue;
+                try {
+                    ex difference = leading_in_eps(in_eps(GiNaC::sqrt((*frequencies)[j]) -
+                                                          GiNaC::sqrt((*frequencies)[i])));
+                    if (difference.is_zero())
+                        continue;
+                    difference = tidy(difference.subs(eps == back));
+                    result.beats.push_back({i, j, difference, tidy(2 * GiNaC::Pi / difference)});
+                } catch (const std::exception&) {
+                }
+            }
     } else {
         result.frequencies = *frequencies;
     }
@@ -1163,11 +1270,18 @@ asymptotic_result asymptotic_limit(const model& scene, const modes_result& modes
                 has_coordinate = has_coordinate || factor.has(c.position);
             (has_coordinate ? combination : scale) = has_coordinate ? combination + factor : scale * factor;
         }
+        // written as prefactor·(q_p + Σ r_j q_j) with p the first coordinate present
         ex leading_scale = leading(scale);
-        ex sum = 0;
+        std::vector<ex> coefficients;
         for (const coordinate& c : scene.coordinates)
-            sum += tidy(leading(combination.expand().coeff(c.position, 1)) * leading_scale) * c.position;
-        result.normal_coordinates.push_back(sum);
+            coefficients.push_back(leading(combination.expand().coeff(c.position, 1)));
+        std::size_t pivot = 0;
+        while (pivot + 1 < coefficients.size() && vanishes(coefficients[pivot]))
+            ++pivot;
+        ex sum = 0;
+        for (std::size_t j = 0; j < coefficients.size(); ++j)
+            sum += tidy(coefficients[j] / coefficients[pivot]) * scene.coordinates[j].position;
+        result.normal_coordinates.push_back(tidy(coefficients[pivot] * leading_scale) * sum);
     }
     return result;
 }
