@@ -49,6 +49,36 @@ std::string print(const ex& e)
     return out.str();
 }
 
+/// e as text for messages, the same whatever GiNaC's internal term order: the
+/// operands of sums and products are printed recursively and sorted (the full
+/// printer lives in lib/output, which this layer may not use).
+std::string message_text(const ex& e)
+{
+    auto wrapped = [](const ex& x) {
+        std::string text = message_text(x);
+        return is_a<GiNaC::add>(x) || is_a<GiNaC::mul>(x) ? "(" + text + ")" : text;
+    };
+    if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
+        std::vector<std::string> parts;
+        for (const ex& operand : e)
+            parts.push_back(is_a<GiNaC::add>(e) ? message_text(operand) : wrapped(operand));
+        std::sort(parts.begin(), parts.end());
+        std::string out;
+        for (const std::string& part : parts)
+            out += (out.empty() ? "" : (is_a<GiNaC::add>(e) ? (part.rfind('-', 0) == 0 ? "" : "+") : "*")) + part;
+        return out;
+    }
+    if (is_a<GiNaC::power>(e))
+        return wrapped(e.op(0)) + "^" + wrapped(e.op(1));
+    if (is_a<GiNaC::function>(e)) {
+        std::string out = ex_to<GiNaC::function>(e).get_name() + "(";
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            out += (i ? "," : "") + message_text(e.op(i));
+        return out + ")";
+    }
+    return print(e);
+}
+
 /// True if e is zero as a rational function of its symbols and atoms.
 bool vanishes(const ex& e)
 {
@@ -303,9 +333,59 @@ ex simplify_with(const ex& e, const surd& r)
     }
 }
 
+/// sin and cos of integer combinations of the coordinates (plus a constant) written
+/// through sin q and cos q of each coordinate: cos(n q + c) = Re((cos q + i sin q)ⁿ e^{ic}).
+/// Then a value such as q = acos(x) substitutes to exact roots (sin(2 acos x) would not).
+ex expand_multiple_angles(const ex& e, const model& scene)
+{
+    if (e.nops() == 0)
+        return e;
+    map_each recurse([&](const ex& x) { return expand_multiple_angles(x, scene); });
+    ex mapped = e.map(recurse);
+    bool is_sin = GiNaC::is_the_function<GiNaC::sin_SERIAL>(mapped),
+         is_cos = GiNaC::is_the_function<GiNaC::cos_SERIAL>(mapped);
+    if (!is_sin && !is_cos)
+        return mapped;
+    ex argument = mapped.op(0).expand();
+    GiNaC::symbol i("i");
+    ex z = 1, rest = argument;
+    for (const coordinate& c : scene.coordinates) {
+        ex n = argument.coeff(c.position, 1);
+        if (argument.degree(c.position) > 1 || !n.info(GiNaC::info_flags::integer))
+            return mapped;
+        long k = ex_to<GiNaC::numeric>(n).to_long();
+        if (k == 0)
+            continue;
+        if (std::labs(k) > 20)
+            return mapped;
+        z *= GiNaC::pow(GiNaC::cos(c.position) + (k > 0 ? 1 : -1) * i * GiNaC::sin(c.position), std::labs(k));
+        rest -= n * c.position;
+    }
+    if (z.is_equal(1))
+        return mapped;
+    z = (z * (GiNaC::cos(rest) + i * GiNaC::sin(rest))).expand();
+    ex real = 0, imaginary = 0;
+    for (int k = 0; k <= z.degree(i); ++k) {
+        ex term = z.coeff(i, k) * (k % 4 < 2 ? 1 : -1);
+        (k % 2 == 0 ? real : imaginary) += term;
+    }
+    return is_cos ? real : imaginary;
+}
+
 /// e with the coordinates at `at` and the velocities at zero.
 ex evaluate_at(const ex& e, const model& scene, const std::vector<ex>& at)
 {
+    bool special = false; // a value other than a rational multiple of π
+    for (const ex& value : at)
+        special = special || !(value / GiNaC::Pi).info(GiNaC::info_flags::rational);
+    if (special) {
+        GiNaC::exmap values;
+        for (std::size_t i = 0; i < scene.coordinates.size(); ++i) {
+            values[scene.coordinates[i].position] = at[i];
+            values[scene.coordinates[i].velocity] = 0;
+        }
+        return expand_multiple_angles(e, scene).subs(values);
+    }
     GiNaC::exmap values;
     for (std::size_t i = 0; i < scene.coordinates.size(); ++i) {
         values[scene.coordinates[i].position] = at[i];
@@ -1023,7 +1103,7 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
             ex slope = evaluate_at(gradient[i], scene, at);
             if (!vanishes(simplify.canonical(slope)))
                 throw computation_error("the equilibrium given is not one: ∂V/∂" + scene.coordinates[i].name + " = " +
-                                        print(tidy(slope)) + " there, not 0");
+                                        message_text(slope.expand()) + " there, not 0");
         }
         result.given = true;
         result.points.push_back({at, stability::unknown});
@@ -1086,7 +1166,7 @@ linearization_result linearize(const model& scene, const lagrangian_result& lagr
         if (sign && *sign <= 0)
             throw computation_error("the kinetic matrix is not positive definite at the equilibrium: the kinetic energy "
                                     "of " + scene.coordinates[0].name + " … " + scene.coordinates[k].name +
-                                    " can vanish (leading minor " + print(tidy(minors[k])) + ")");
+                                    " can vanish (leading minor " + message_text(minors[k].expand()) + ")");
     }
     return result;
 }
