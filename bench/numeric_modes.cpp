@@ -130,14 +130,30 @@ int main(int argc, char** argv)
 
     std::printf("throughput (median of %d runs, %zu random points)\n", runs, count);
     std::printf("%-24s %-30s %12s %14s\n", "system", "route", "ns/point", "points/s");
-    // numeric_modes N RUNS pendulum|chain: that system's throughput only (for profiling)
-    std::string only = argc > 3 ? argv[3] : "";
+    // numeric_modes N RUNS pendulum|chain: that system's throughput only (for profiling);
+    // numeric_modes N RUNS all DIR: everything, and the points written to DIR (one point
+    // per line) for bench/modes.sh to run scipy on the same matrices.
+    std::string only = argc > 3 && std::string(argv[3]) != "all" ? argv[3] : "";
+    std::string dump = argc > 4 ? argv[4] : "";
+    auto write_points = [&](const std::string& name, const std::vector<double>& points, std::size_t width,
+                            std::size_t limit) {
+        if (dump.empty())
+            return;
+        std::FILE* out = std::fopen((dump + "/" + name).c_str(), "w");
+        if (!out)
+            return;
+        for (std::size_t p = 0; p < points.size() / width && p < limit; ++p)
+            for (std::size_t k = 0; k < width; ++k)
+                std::fprintf(out, "%.17g%c", points[p * width + k], k + 1 < width ? ' ' : '\n');
+        std::fclose(out);
+    };
     for (bool chain : {false, true}) {
         if ((only == "pendulum" && chain) || (only == "chain" && !chain))
             continue;
         system_under_test s = chain ? spring_chain(6) : double_pendulum();
         lagrange::compiled_modes modes(s.parameters, s.linear);
         std::vector<double> points = random_points(s.parameters.size(), count, 7);
+        write_points(chain ? "chain6.txt" : "pendulum.txt", points, s.parameters.size(), 20000);
         std::vector<double> w2(modes.size()), w(modes.size()), error(modes.size());
         std::string route = lagrange::to_string(modes.evaluate(points.data(), w2.data(), w.data(), error.data(), nullptr));
         for (bool batch : {false, true})
@@ -161,6 +177,7 @@ int main(int argc, char** argv)
         sweep.insert(sweep.end(), {M, rho * M, l, 9.81});
     }
     std::size_t points = sweep.size() / 4;
+    write_points("sweep.txt", sweep, 4, points);
     cln::float_format_t f = cln::float_format(60);
     std::vector<cln::cl_F> reference;
     for (std::size_t p = 0; p < points; ++p) {

@@ -436,12 +436,18 @@ modes_method compiled_modes::normalized(const double* p, double* w2, double* w, 
         throw computation_error("the symmetric eigenvalue iteration did not converge");
     // Per mode: |W − λ| ≤ ‖K y − W y‖ for unit y (K symmetric), plus the rounding in that
     // residual and the error of K's entries (Weyl).
+    // (into preallocated vectors: no allocation per point)
     const Eigen::MatrixXd& vectors = symmetric_solver_.eigenvectors();
+    work_abs_ = work_.cwiseAbs();
     for (std::size_t k = 0; k < n; ++k) {
         double W = symmetric_solver_.eigenvalues()[k];
-        Eigen::VectorXd y = vectors.col(k);
-        double residual = (work_ * y - W * y).norm() / y.norm();
-        double rounding = (n + 3) * unit_roundoff * ((work_.cwiseAbs() * y.cwiseAbs()).norm() + std::abs(W) * y.norm()) / y.norm();
+        const Eigen::VectorXd& y = (vector_ = vectors.col(static_cast<Eigen::Index>(k)));
+        residual_.noalias() = work_ * y;
+        residual_ -= W * y;
+        double residual = residual_.norm() / y.norm();
+        vector_abs_ = y.cwiseAbs();
+        residual_.noalias() = work_abs_ * vector_abs_;
+        double rounding = (n + 3) * unit_roundoff * (residual_.norm() + std::abs(W) * y.norm()) / y.norm();
         double orthogonality = std::abs(y.squaredNorm() - 1);
         double dw = std::sqrt(perturbation) + residual + rounding + orthogonality * std::sqrt(norm);
         set_frequency(W, dw * (1 + 1e-3), unit_roundoff, w2[k], w[k], error[k]);

@@ -99,7 +99,8 @@ private:
     std::vector<double_double> scratch_dd_, out_dd_;
     std::vector<double_double> batch_dd_scratch_, batch_dd_out_;
     std::vector<bounded_double> batch_bounded_scratch_, batch_bounded_out_;
-    Eigen::MatrixXd work_;
+    Eigen::MatrixXd work_, work_abs_;
+    Eigen::VectorXd vector_, vector_abs_, residual_;
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> symmetric_solver_;
 };
 
