@@ -941,8 +941,11 @@ std::optional<ex> clean_normal_coordinate(const model& scene, const std::vector<
         if (pivot == weights.size())
             return std::nullopt;
         std::optional<int> sign = sign_with(weights[pivot], r);
+        ex combination = 0;
+        for (std::size_t j = 0; j < weights.size(); ++j)
+            combination += fold_surd(simplify_with(weights[j] / weights[pivot], r), r) * scene.coordinates[j].position;
         if (!sign || *sign == 0)
-            return std::nullopt;
+            return std::nullopt; // (w_p/√norm² written out is longer than the plain sum)
         ex scale_squared = simplify_with(weights[pivot] * weights[pivot] / norm_squared, r);
         // the squares come out of the root; the numeric denominator stays in it
         ex fraction = tidy(scale_squared).numer_denom();
@@ -950,9 +953,6 @@ std::optional<ex> clean_normal_coordinate(const model& scene, const std::vector<
         auto [denominator_out, denominator_in] = square_root_parts_of_product(GiNaC::factor(fraction.op(1)));
         ex scale = numerator_out / denominator_out * GiNaC::sqrt(r.restore(numerator_in)) /
                    GiNaC::sqrt(r.restore(denominator_in));
-        ex combination = 0;
-        for (std::size_t j = 0; j < weights.size(); ++j)
-            combination += fold_surd(simplify_with(weights[j] / weights[pivot], r), r) * scene.coordinates[j].position;
         return *sign * r.restore(scale) * combination;
     } catch (const std::exception&) {
         return std::nullopt;
