@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -19,7 +20,18 @@
 
 namespace {
 
-using clock_type = std::chrono::steady_clock;
+/// This thread's CPU time: the machine is shared, and wall time would count other
+/// processes' turns on the core.
+struct clock_type {
+    using duration = std::chrono::nanoseconds;
+    using time_point = std::chrono::time_point<clock_type, duration>;
+    static time_point now()
+    {
+        timespec t{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+        return time_point(duration(static_cast<long long>(t.tv_sec) * 1000000000LL + t.tv_nsec));
+    }
+};
 
 struct system_under_test {
     std::vector<lagrange::parameter> parameters;
@@ -69,17 +81,27 @@ double median(std::vector<double> v)
 
 /// Median nanoseconds per point of evaluating `points` (row-major, one row per point).
 double time_per_point(lagrange::compiled_modes& modes, const std::vector<double>& points, std::size_t width,
-                      int runs, bool with_modes)
+                      int runs, bool with_modes, bool batch)
 {
     std::size_t n = modes.size(), count = points.size() / width;
-    std::vector<double> w2(n), w(n), error(n), shapes(n * n);
+    constexpr std::size_t block = 1024;
+    std::vector<double> w2(n * block), w(n * block), error(n * block), shapes(n * n * block);
     std::vector<double> times;
     double sink = 0;
     for (int r = 0; r < runs; ++r) {
         auto start = clock_type::now();
-        for (std::size_t p = 0; p < count; ++p) {
-            modes.evaluate(&points[p * width], w2.data(), w.data(), error.data(), with_modes ? shapes.data() : nullptr);
-            sink += w[0];
+        if (batch) {
+            for (std::size_t p = 0; p < count; p += block) {
+                modes.evaluate_batch(std::min(block, count - p), &points[p * width], width, w2.data(), w.data(),
+                                     error.data(), with_modes ? shapes.data() : nullptr);
+                sink += w[0];
+            }
+        } else {
+            for (std::size_t p = 0; p < count; ++p) {
+                modes.evaluate(&points[p * width], w2.data(), w.data(), error.data(),
+                               with_modes ? shapes.data() : nullptr);
+                sink += w[0];
+            }
         }
         std::chrono::duration<double, std::nano> elapsed = clock_type::now() - start;
         times.push_back(elapsed.count() / count);
@@ -107,20 +129,44 @@ int main(int argc, char** argv)
     int runs = argc > 2 ? std::atoi(argv[2]) : 5;
 
     std::printf("throughput (median of %d runs, %zu random points)\n", runs, count);
-    std::printf("%-34s %-30s %12s %14s\n", "system", "route", "ns/point", "points/s");
+    std::printf("%-24s %-30s %12s %14s\n", "system", "route", "ns/point", "points/s");
+    // numeric_modes N RUNS pendulum|chain: that system's throughput only (for profiling);
+    // numeric_modes N RUNS all DIR: everything, and the points written to DIR (one point
+    // per line) for bench/modes.sh to run scipy on the same matrices.
+    std::string only = argc > 3 && std::string(argv[3]) != "all" ? argv[3] : "";
+    std::string dump = argc > 4 ? argv[4] : "";
+    auto write_points = [&](const std::string& name, const std::vector<double>& points, std::size_t width,
+                            std::size_t limit) {
+        if (dump.empty())
+            return;
+        std::FILE* out = std::fopen((dump + "/" + name).c_str(), "w");
+        if (!out)
+            return;
+        for (std::size_t p = 0; p < points.size() / width && p < limit; ++p)
+            for (std::size_t k = 0; k < width; ++k)
+                std::fprintf(out, "%.17g%c", points[p * width + k], k + 1 < width ? ' ' : '\n');
+        std::fclose(out);
+    };
     for (bool chain : {false, true}) {
+        if ((only == "pendulum" && chain) || (only == "chain" && !chain))
+            continue;
         system_under_test s = chain ? spring_chain(6) : double_pendulum();
         lagrange::compiled_modes modes(s.parameters, s.linear);
         std::vector<double> points = random_points(s.parameters.size(), count, 7);
+        write_points(chain ? "chain6.txt" : "pendulum.txt", points, s.parameters.size(), 20000);
         std::vector<double> w2(modes.size()), w(modes.size()), error(modes.size());
         std::string route = lagrange::to_string(modes.evaluate(points.data(), w2.data(), w.data(), error.data(), nullptr));
-        for (bool with_modes : {false, true}) {
-            double ns = time_per_point(modes, points, s.parameters.size(), runs, with_modes);
-            std::string name = std::string(chain ? "chain, 6 masses 7 springs" : "double pendulum")
-                               + (with_modes ? " (+modes)" : " (omega only)");
-            std::printf("%-34s %-30s %12.1f %14.3g\n", name.c_str(), route.c_str(), ns, 1e9 / ns);
-        }
+        for (bool batch : {false, true})
+            for (bool with_modes : {false, true}) {
+                double ns = time_per_point(modes, points, s.parameters.size(), runs, with_modes, batch);
+                std::string name = std::string(chain ? "chain6" : "pendulum") + (with_modes ? "+modes" : "") +
+                                   (batch ? "/batch" : "/single");
+                std::printf("%-24s %-30s %12.1f %14.3g\n", name.c_str(), route.c_str(), ns, 1e9 / ns);
+            }
     }
+
+    if (!only.empty())
+        return 0;
 
     // The ρ sweep: M and l random in [0.5, 2], g = 9.81, m = ρM.
     std::vector<double> sweep;
@@ -131,6 +177,7 @@ int main(int argc, char** argv)
         sweep.insert(sweep.end(), {M, rho * M, l, 9.81});
     }
     std::size_t points = sweep.size() / 4;
+    write_points("sweep.txt", sweep, 4, points);
     cln::float_format_t f = cln::float_format(60);
     std::vector<cln::cl_F> reference;
     for (std::size_t p = 0; p < points; ++p) {

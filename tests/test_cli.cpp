@@ -48,6 +48,26 @@ TEST_CASE("cli: a product not computed by this version exits with 1 and says why
     CHECK(r.err.find("`inertia` is not computed by this version") != std::string::npos);
 }
 
+TEST_CASE("cli: small-oscillation errors exit with 1 and say why, the same every run", "[cli]")
+{
+    std::string not_equilibrium = temporary_file(
+        "not_equilibrium.lag", "parameters m l g\ncoordinates theta\npoint bob mass m at (l*sin(theta), -l*cos(theta))\n"
+                               "gravity g along (0, -1)\nequilibrium theta = 1\n");
+    cli_result first = run_cli("--want modes " + not_equilibrium);
+    CHECK(first.exit_code == 1);
+    CHECK(first.err.find("the equilibrium given is not one") != std::string::npos);
+    for (int run = 0; run < 4; ++run)
+        CHECK(run_cli("--want modes " + not_equilibrium).err == first.err);
+    cli_result by_default = run_cli(not_equilibrium);
+    CHECK(by_default.exit_code == 0); // without `want`: a note, the equations still printed
+    CHECK(by_default.out.find("note: small oscillations not computed") != std::string::npos);
+    std::string no_kinetic = temporary_file(
+        "no_kinetic.lag", "parameters m k\ncoordinates x phi\nT = 1/2*m*x'^2\nV = 1/2*k*x^2 + 1/2*k*phi^2\n");
+    cli_result r = run_cli("--want frequencies " + no_kinetic);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("coordinate `phi` has no kinetic energy at the equilibrium") != std::string::npos);
+}
+
 TEST_CASE("cli: check", "[cli]")
 {
     cli_result ok = run_cli("check " + double_pendulum);

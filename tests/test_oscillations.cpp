@@ -384,3 +384,128 @@ V = 1/2*k*x^2 + 1/2*k*phi^2
                                    "coordinate `phi` has no kinetic energy at the equilibrium"));
     }
 }
+
+TEST_CASE("oscillations: homework double pendulum, normal coordinates in closed form", "[oscillations]")
+{
+    // By hand (independent of the engine): with s = √(m(M+m)), w = T a for a∓ = (±s/(M+m), 1)
+    // gives ζ∓ = ±l √((M + m ± s)/2) (θ ± √(m/(M+m)) φ); in ρ: l √(M/2) √(1 + ρ ± √(ρ(1+ρ))) (…).
+    analysed a = analyse(homework_double_pendulum);
+    GiNaC::ex M = symbol_of(a.scene, "M"), m = symbol_of(a.scene, "m"), l = symbol_of(a.scene, "l"),
+              g = symbol_of(a.scene, "g"), rho = symbol_of(a.scene, "rho"), theta = symbol_of(a.scene, "theta"),
+              phi = symbol_of(a.scene, "phi");
+    REQUIRE(a.modes.normal_coordinates.size() == 2);
+    REQUIRE(a.modes.normal_coordinates_in_ratio.size() == 2);
+    GiNaC::ex s = sqrt(m * (M + m)), r = sqrt(m / (M + m));
+    GiNaC::ex slow = l * sqrt((M + m + s) / 2) * (theta + r * phi);
+    GiNaC::ex fast = -l * sqrt((M + m - s) / 2) * (theta - r * phi);
+    GiNaC::ex sr = sqrt(rho * (1 + rho)), rr = sqrt(rho / (1 + rho));
+    GiNaC::ex slow_ratio = l * sqrt(M / 2) * sqrt(1 + rho + sr) * (theta + rr * phi);
+    GiNaC::ex fast_ratio = -l * sqrt(M / 2) * sqrt(1 + rho - sr) * (theta - rr * phi);
+    for (double ratio : {1e-6, 0.01, 1.0, 37.0, 1e6}) {
+        GiNaC::exmap point{{M, GiNaC::numeric(3, 2)}, {m, GiNaC::numeric(ratio) * GiNaC::numeric(3, 2)},
+                           {l, GiNaC::numeric(7, 10)}, {g, GiNaC::numeric(981, 100)}, {rho, GiNaC::numeric(ratio)}};
+        for (const GiNaC::ex& q : {theta, phi}) {
+            auto coefficient = [&](const GiNaC::ex& zeta) { return value_at(zeta.expand().coeff(q, 1), point); };
+            INFO("rho = " << ratio << ", coefficient of " << q);
+            CHECK_THAT(coefficient(a.modes.normal_coordinates[0]), WithinRel(coefficient(slow), 1e-12));
+            CHECK_THAT(coefficient(a.modes.normal_coordinates[1]), WithinRel(coefficient(fast), 1e-12));
+            CHECK_THAT(coefficient(a.modes.normal_coordinates_in_ratio[0]), WithinRel(coefficient(slow_ratio), 1e-12));
+            CHECK_THAT(coefficient(a.modes.normal_coordinates_in_ratio[1]), WithinRel(coefficient(fast_ratio), 1e-12));
+        }
+        check_modes_numerically(a, point);
+    }
+    // the clean form: a coordinate-free factor times (θ ± r φ), the θ coefficient exactly ±1
+    for (const GiNaC::ex& zeta : a.modes.normal_coordinates) {
+        REQUIRE(GiNaC::is_a<GiNaC::mul>(zeta));
+        GiNaC::ex combination = 1, scale = 1;
+        for (const GiNaC::ex& factor : zeta)
+            (factor.has(theta) || factor.has(phi) ? combination : scale) *= factor;
+        CHECK(same(GiNaC::abs(combination.expand().coeff(theta, 1)), 1));
+        CHECK_FALSE(scale.has(theta));
+    }
+}
+
+TEST_CASE("oscillations: homework double pendulum, the beats as rho -> 0", "[oscillations]")
+{
+    // ω± = √(g/l) √(1 + ρ ± √(ρ(1+ρ))) = √(g/l) (1 ± √ρ/2 + O(ρ)): ω+ − ω− → √ρ √(g/l)
+    analysed a = analyse(homework_double_pendulum);
+    GiNaC::ex l = symbol_of(a.scene, "l"), g = symbol_of(a.scene, "g"), rho = symbol_of(a.scene, "rho");
+    REQUIRE(a.asymptotic.beats.size() == 1);
+    const beat& b = a.asymptotic.beats[0];
+    CHECK(b.lower == 0);
+    CHECK(b.upper == 1);
+    INFO(b.difference << "   " << b.period);
+    GiNaC::exmap point{{l, GiNaC::numeric(3, 2)}, {g, GiNaC::numeric(981, 100)}, {rho, GiNaC::numeric(1, 10000)}};
+    double expected = std::sqrt(1e-4 * 9.81 / 1.5);
+    CHECK_THAT(value_at(b.difference, point), WithinRel(expected, 1e-12));
+    CHECK_THAT(value_at(b.period, point), WithinRel(2 * std::acos(-1.0) / expected, 1e-12));
+    // against the exact frequencies: the relative error of the leading term is O(√ρ)
+    for (double r : {1e-4, 1e-6, 1e-8}) {
+        double plus = std::sqrt(9.81 / 1.5 * (1 + r + std::sqrt(r * (1 + r))));
+        double minus = std::sqrt(9.81 / 1.5 * (1 + r - std::sqrt(r * (1 + r))));
+        GiNaC::exmap at{{l, GiNaC::numeric(3, 2)}, {g, GiNaC::numeric(981, 100)}, {rho, GiNaC::numeric(r)}};
+        CHECK_THAT(value_at(b.difference, at), WithinRel(plus - minus, 2 * std::sqrt(r)));
+    }
+    // the ω² keep the leading term outside: (1 ∓ √ρ)·g/l
+    REQUIRE(a.asymptotic.frequency_series.size() == 2);
+    CHECK(a.asymptotic.frequency_series[0].size() == 3);
+    CHECK(same(a.asymptotic.frequency_series[0][0], g / l));
+    CHECK(same(a.asymptotic.frequency_series[0][1], 1));
+    CHECK(same(a.asymptotic.frequency_series[0][2], -sqrt(rho)));
+    CHECK(same(a.asymptotic.frequency_series[1][2], sqrt(rho)));
+}
+
+TEST_CASE("oscillations: homework double pendulum, the limit rho -> oo", "[oscillations]")
+{
+    // ω∓² = [(1+ρ) ∓ √(ρ(1+ρ))] g/l with √(ρ(1+ρ)) = ρ + 1/2 − 1/(8ρ) + …: ω−² → g/(2l),
+    // ω+² → 2ρ g/l; a∓ = (±√(ρ/(1+ρ)), 1) → (±1, 1); ζ− → l √M √ρ (θ + φ), ζ+ → −l √M (θ − φ)/2.
+    std::string scene = homework_double_pendulum;
+    scene.replace(scene.find("limit rho -> 0"), 14, "limit rho -> oo");
+    analysed a = analyse(scene);
+    GiNaC::ex M = symbol_of(a.scene, "M"), l = symbol_of(a.scene, "l"), g = symbol_of(a.scene, "g"),
+              rho = symbol_of(a.scene, "rho"), theta = symbol_of(a.scene, "theta"), phi = symbol_of(a.scene, "phi");
+    CHECK(a.asymptotic.label == "rho -> oo");
+    REQUIRE(a.asymptotic.frequencies.size() == 2);
+    INFO(a.asymptotic.frequencies[0] << "  " << a.asymptotic.frequencies[1]);
+    CHECK(same(a.asymptotic.frequencies[0], g / (2 * l)));
+    CHECK(same(a.asymptotic.frequencies[1], 2 * rho * g / l));
+    REQUIRE(a.asymptotic.modes.size() == 2);
+    CHECK(same(a.asymptotic.modes[0][0], 1));
+    CHECK(same(a.asymptotic.modes[1][0], -1));
+    REQUIRE(a.asymptotic.normal_coordinates.size() == 2);
+    INFO(a.asymptotic.normal_coordinates[0] << "  " << a.asymptotic.normal_coordinates[1]);
+    CHECK(same(a.asymptotic.normal_coordinates[0], l * sqrt(M) * sqrt(rho) * (theta + phi)));
+    CHECK(same(a.asymptotic.normal_coordinates[1], -l * sqrt(M) * (theta - phi) / 2));
+    CHECK(a.asymptotic.beats.empty()); // frequencies of different order: no beats
+}
+
+TEST_CASE("oscillations: rotating hoop, the bottom turns unstable and the side equilibrium takes over",
+          "[oscillations]")
+{
+    const char* hoop = R"(parameters m g R w
+coordinates q
+T = 1/2*m*R^2*q'^2
+V = m*g*R*(1 - cos(q)) - 1/2*m*R^2*w^2*sin(q)^2
+)";
+    analysed a = analyse(hoop);
+    GiNaC::ex m = symbol_of(a.scene, "m"), g = symbol_of(a.scene, "g"), R = symbol_of(a.scene, "R"),
+              w = symbol_of(a.scene, "w");
+    // at the bottom ω² = g/R − w²: positive below w² = g/R, negative (a growth rate) above
+    REQUIRE(a.modes.frequencies.size() == 1);
+    CHECK(value_at(a.modes.frequencies[0], {{g, 9.81}, {R, 1}, {w, 2}}) > 0);
+    CHECK(value_at(a.modes.frequencies[0], {{g, 9.81}, {R, 1}, {w, 4}}) < 0);
+    // about the side equilibrium cos q0 = g/(R w²): V'' = m R² w² sin² q0, so ω² = w² − g²/(R² w²)
+    simplifier simplify = make_simplifier(a.scene);
+    const equilibrium_point* side = nullptr;
+    for (const equilibrium_point& p : a.equilibria.points)
+        if (!same(p.position[0], 0) && !same(p.position[0], GiNaC::Pi))
+            side = &p;
+    REQUIRE(side != nullptr);
+    linearization_result linear = linearize(a.scene, a.lagrangian, side->position, simplify);
+    characteristic_result characteristic = characteristic_polynomial(a.scene, linear);
+    modes_result modes = symbolic_modes(a.scene, linear, characteristic);
+    REQUIRE(modes.frequencies.size() == 1);
+    INFO(modes.frequencies[0]);
+    CHECK(same(modes.frequencies[0], w * w - g * g / (R * R * w * w)));
+    CHECK(value_at(modes.frequencies[0], {{g, 9.81}, {R, 1}, {w, 4}, {m, 1}}) > 0);
+}

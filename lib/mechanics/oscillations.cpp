@@ -49,6 +49,36 @@ std::string print(const ex& e)
     return out.str();
 }
 
+/// e as text for messages, the same whatever GiNaC's internal term order: the
+/// operands of sums and products are printed recursively and sorted (the full
+/// printer lives in lib/output, which this layer may not use).
+std::string message_text(const ex& e)
+{
+    auto wrapped = [](const ex& x) {
+        std::string text = message_text(x);
+        return is_a<GiNaC::add>(x) || is_a<GiNaC::mul>(x) ? "(" + text + ")" : text;
+    };
+    if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
+        std::vector<std::string> parts;
+        for (const ex& operand : e)
+            parts.push_back(is_a<GiNaC::add>(e) ? message_text(operand) : wrapped(operand));
+        std::sort(parts.begin(), parts.end());
+        std::string out;
+        for (const std::string& part : parts)
+            out += (out.empty() ? "" : (is_a<GiNaC::add>(e) ? (part.rfind('-', 0) == 0 ? "" : "+") : "*")) + part;
+        return out;
+    }
+    if (is_a<GiNaC::power>(e))
+        return wrapped(e.op(0)) + "^" + wrapped(e.op(1));
+    if (is_a<GiNaC::function>(e)) {
+        std::string out = ex_to<GiNaC::function>(e).get_name() + "(";
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            out += (i ? "," : "") + message_text(e.op(i));
+        return out + ")";
+    }
+    return print(e);
+}
+
 /// True if e is zero as a rational function of its symbols and atoms.
 bool vanishes(const ex& e)
 {
@@ -303,9 +333,59 @@ ex simplify_with(const ex& e, const surd& r)
     }
 }
 
+/// sin and cos of integer combinations of the coordinates (plus a constant) written
+/// through sin q and cos q of each coordinate: cos(n q + c) = Re((cos q + i sin q)ⁿ e^{ic}).
+/// Then a value such as q = acos(x) substitutes to exact roots (sin(2 acos x) would not).
+ex expand_multiple_angles(const ex& e, const model& scene)
+{
+    if (e.nops() == 0)
+        return e;
+    map_each recurse([&](const ex& x) { return expand_multiple_angles(x, scene); });
+    ex mapped = e.map(recurse);
+    bool is_sin = GiNaC::is_the_function<GiNaC::sin_SERIAL>(mapped),
+         is_cos = GiNaC::is_the_function<GiNaC::cos_SERIAL>(mapped);
+    if (!is_sin && !is_cos)
+        return mapped;
+    ex argument = mapped.op(0).expand();
+    GiNaC::symbol i("i");
+    ex z = 1, rest = argument;
+    for (const coordinate& c : scene.coordinates) {
+        ex n = argument.coeff(c.position, 1);
+        if (argument.degree(c.position) > 1 || !n.info(GiNaC::info_flags::integer))
+            return mapped;
+        long k = ex_to<GiNaC::numeric>(n).to_long();
+        if (k == 0)
+            continue;
+        if (std::labs(k) > 20)
+            return mapped;
+        z *= GiNaC::pow(GiNaC::cos(c.position) + (k > 0 ? 1 : -1) * i * GiNaC::sin(c.position), std::labs(k));
+        rest -= n * c.position;
+    }
+    if (z.is_equal(1))
+        return mapped;
+    z = (z * (GiNaC::cos(rest) + i * GiNaC::sin(rest))).expand();
+    ex real = 0, imaginary = 0;
+    for (int k = 0; k <= z.degree(i); ++k) {
+        ex term = z.coeff(i, k) * (k % 4 < 2 ? 1 : -1);
+        (k % 2 == 0 ? real : imaginary) += term;
+    }
+    return is_cos ? real : imaginary;
+}
+
 /// e with the coordinates at `at` and the velocities at zero.
 ex evaluate_at(const ex& e, const model& scene, const std::vector<ex>& at)
 {
+    bool special = false; // a value other than a rational multiple of π
+    for (const ex& value : at)
+        special = special || !(value / GiNaC::Pi).info(GiNaC::info_flags::rational);
+    if (special) {
+        GiNaC::exmap values;
+        for (std::size_t i = 0; i < scene.coordinates.size(); ++i) {
+            values[scene.coordinates[i].position] = at[i];
+            values[scene.coordinates[i].velocity] = 0;
+        }
+        return expand_multiple_angles(e, scene).subs(values);
+    }
     GiNaC::exmap values;
     for (std::size_t i = 0; i < scene.coordinates.size(); ++i) {
         values[scene.coordinates[i].position] = at[i];
@@ -805,6 +885,80 @@ std::vector<ex> scaled_mode(std::vector<ex> a, const surd& root)
     return a;
 }
 
+/// The sign of c0 + c1·s (s = √radicand > 0) for every positive value of the
+/// parameters, if it can be decided: from the signs of c0 and c1, and where they
+/// differ, from the sign of c0² − c1²·radicand.
+std::optional<int> sign_with(const ex& e, const surd& r)
+{
+    if (!e.has(r.symbol))
+        return sign_of(e);
+    ex expanded = simplify_with(e, r).expand();
+    if (expanded.degree(r.symbol) > 1 || expanded.ldegree(r.symbol) < 0)
+        return std::nullopt;
+    ex c0 = expanded.coeff(r.symbol, 0), c1 = expanded.coeff(r.symbol, 1);
+    std::optional<int> s0 = sign_of(c0), s1 = sign_of(c1);
+    if (!s0 || !s1)
+        return std::nullopt;
+    if (*s0 == 0 || *s1 == 0 || *s0 == *s1)
+        return *s0 != 0 ? *s0 : *s1;
+    std::optional<int> larger = sign_of(c0 * c0 - c1 * c1 * r.radicand);
+    if (!larger || *larger == 0)
+        return std::nullopt;
+    return *larger > 0 ? *s0 : *s1;
+}
+
+/// The length of e as GiNaC prints it (the same for equal expressions whatever
+/// the term order, so a deterministic measure of size).
+std::size_t printed_length(const ex& e) { return print(e).size(); }
+
+/// A coefficient c0 + c1·s in its shortest exact form: c1·√r as ±√(c1² r) when
+/// c0 = 0 and that is shorter (√(m (M+m))/(M+m) becomes √m/√(M+m)).
+ex fold_surd(const ex& e, const surd& r)
+{
+    ex restored = r.restore(e);
+    ex expanded = e.expand();
+    if (!e.has(r.symbol) || expanded.degree(r.symbol) != 1 || !expanded.coeff(r.symbol, 0).is_zero())
+        return restored;
+    ex c1 = expanded.coeff(r.symbol, 1);
+    std::optional<int> sign = sign_of(c1);
+    if (!sign || *sign == 0)
+        return restored;
+    ex folded = *sign * GiNaC::sqrt(tidy(c1 * c1 * r.radicand));
+    return printed_length(folded) < printed_length(restored) ? folded : restored;
+}
+
+/// ζ = (Σ_j w_j q_j)/√norm² with w = T a, written as ±√(w_p²/norm²)·(q_p + Σ_j (w_j/w_p) q_j)
+/// for the first coordinate p with w_p ≠ 0, each part reduced to c0 + c1·s and
+/// rationalized. Nothing if the sign of w_p cannot be decided.
+std::optional<ex> clean_normal_coordinate(const model& scene, const std::vector<ex>& weights,
+                                          const ex& norm_squared, const surd& r)
+{
+    try {
+        std::size_t pivot = weights.size();
+        for (std::size_t j = 0; j < weights.size() && pivot == weights.size(); ++j)
+            if (!vanishes(r.restore(weights[j])))
+                pivot = j;
+        if (pivot == weights.size())
+            return std::nullopt;
+        std::optional<int> sign = sign_with(weights[pivot], r);
+        ex combination = 0;
+        for (std::size_t j = 0; j < weights.size(); ++j)
+            combination += fold_surd(simplify_with(weights[j] / weights[pivot], r), r) * scene.coordinates[j].position;
+        if (!sign || *sign == 0)
+            return std::nullopt; // (w_p/√norm² written out is longer than the plain sum)
+        ex scale_squared = simplify_with(weights[pivot] * weights[pivot] / norm_squared, r);
+        // the squares come out of the root; the numeric denominator stays in it
+        ex fraction = tidy(scale_squared).numer_denom();
+        auto [numerator_out, numerator_in] = square_root_parts_of_product(GiNaC::factor(fraction.op(0)));
+        auto [denominator_out, denominator_in] = square_root_parts_of_product(GiNaC::factor(fraction.op(1)));
+        ex scale = numerator_out / denominator_out * GiNaC::sqrt(r.restore(numerator_in)) /
+                   GiNaC::sqrt(r.restore(denominator_in));
+        return *sign * r.restore(scale) * combination;
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
 /// Frequencies, modes and normal coordinates from T, V and the primitive
 /// characteristic coefficients.
 struct closed_modes {
@@ -862,11 +1016,17 @@ closed_modes solve_modes(const model& scene, const GiNaC::matrix& kinetic, const
         const std::vector<ex>& a = modes[k];
         ex norm_squared = simplify_with(kinetic_product(kinetic, a, a), surds[k]);
         ex coordinate_sum = 0;
+        std::vector<ex> weights;
         for (std::size_t j = 0; j < n; ++j) {
             ex weight = 0;
             for (std::size_t i = 0; i < n; ++i)
                 weight += a[i] * kinetic(i, j);
-            coordinate_sum += simplify_with(weight, surds[k]) * scene.coordinates[j].position;
+            weights.push_back(simplify_with(weight, surds[k]));
+            coordinate_sum += weights.back() * scene.coordinates[j].position;
+        }
+        if (std::optional<ex> clean = clean_normal_coordinate(scene, weights, norm_squared, surds[k])) {
+            result.normal_coordinates.push_back(*clean);
+            continue;
         }
         ex norm = norm_squared.has(surds[k].symbol) ? GiNaC::sqrt(norm_squared) : square_root(norm_squared);
         result.normal_coordinates.push_back(surds[k].restore(coordinate_sum / norm));
@@ -943,7 +1103,7 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
             ex slope = evaluate_at(gradient[i], scene, at);
             if (!vanishes(simplify.canonical(slope)))
                 throw computation_error("the equilibrium given is not one: ∂V/∂" + scene.coordinates[i].name + " = " +
-                                        print(tidy(slope)) + " there, not 0");
+                                        message_text(slope.expand()) + " there, not 0");
         }
         result.given = true;
         result.points.push_back({at, stability::unknown});
@@ -1006,7 +1166,7 @@ linearization_result linearize(const model& scene, const lagrangian_result& lagr
         if (sign && *sign <= 0)
             throw computation_error("the kinetic matrix is not positive definite at the equilibrium: the kinetic energy "
                                     "of " + scene.coordinates[0].name + " … " + scene.coordinates[k].name +
-                                    " can vanish (leading minor " + print(tidy(minors[k])) + ")");
+                                    " can vanish (leading minor " + message_text(minors[k].expand()) + ")");
     }
     return result;
 }
@@ -1143,8 +1303,35 @@ asymptotic_result asymptotic_limit(const model& scene, const modes_result& modes
             if (!changed)
                 break;
         }
+        for (std::size_t i = 0; i < terms.size(); ++i) {
+            // c0·εᵏ⁰ (1 + (c1/c0) εᵏ¹⁻ᵏ⁰ + …): the leading term outside, corrections in order
+            ex correction = 1;
+            for (std::size_t t = 1; t < kept[i] && t < terms[i].size(); ++t)
+                correction += tidy(terms[i][t].second / terms[i][0].second) *
+                              GiNaC::pow(back, terms[i][t].first - terms[i][0].first);
+            result.frequencies.push_back(terms[i][0].second * GiNaC::pow(back, terms[i][0].first) * correction);
+            std::vector<ex> series{terms[i][0].second * GiNaC::pow(back, terms[i][0].first), 1};
+            for (std::size_t t = 1; t < kept[i] && t < terms[i].size(); ++t)
+                series.push_back(tidy(terms[i][t].second / terms[i][0].second) *
+                                 GiNaC::pow(back, terms[i][t].first - terms[i][0].first));
+            result.frequency_series.push_back(series);
+        }
+        // Frequencies equal to leading order beat: ω_j − ω_i and the period 2π/(ω_j − ω_i).
         for (std::size_t i = 0; i < terms.size(); ++i)
-            result.frequencies.push_back(sum_of(terms[i], kept[i]));
+            for (std::size_t j = i + 1; j < terms.size(); ++j) {
+                if (terms[i].empty() || terms[j].empty() || terms[i][0].first != terms[j][0].first ||
+                    !vanishes(terms[i][0].second - terms[j][0].second))
+                    continue;
+                try {
+                    ex difference = leading_in_eps(in_eps(GiNaC::sqrt((*frequencies)[j]) -
+                                                          GiNaC::sqrt((*frequencies)[i])));
+                    if (difference.is_zero())
+                        continue;
+                    difference = tidy(difference.subs(eps == back));
+                    result.beats.push_back({i, j, difference, tidy(2 * GiNaC::Pi / difference)});
+                } catch (const std::exception&) {
+                }
+            }
     } else {
         result.frequencies = *frequencies;
     }
@@ -1163,11 +1350,18 @@ asymptotic_result asymptotic_limit(const model& scene, const modes_result& modes
                 has_coordinate = has_coordinate || factor.has(c.position);
             (has_coordinate ? combination : scale) = has_coordinate ? combination + factor : scale * factor;
         }
+        // written as prefactor·(q_p + Σ r_j q_j) with p the first coordinate present
         ex leading_scale = leading(scale);
-        ex sum = 0;
+        std::vector<ex> coefficients;
         for (const coordinate& c : scene.coordinates)
-            sum += tidy(leading(combination.expand().coeff(c.position, 1)) * leading_scale) * c.position;
-        result.normal_coordinates.push_back(sum);
+            coefficients.push_back(leading(combination.expand().coeff(c.position, 1)));
+        std::size_t pivot = 0;
+        while (pivot + 1 < coefficients.size() && vanishes(coefficients[pivot]))
+            ++pivot;
+        ex sum = 0;
+        for (std::size_t j = 0; j < coefficients.size(); ++j)
+            sum += tidy(coefficients[j] / coefficients[pivot]) * scene.coordinates[j].position;
+        result.normal_coordinates.push_back(tidy(coefficients[pivot] * leading_scale) * sum);
     }
     return result;
 }

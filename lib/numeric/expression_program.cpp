@@ -331,7 +331,72 @@ void interpret(const std::vector<instruction>& code, const std::vector<int>& out
         out[k] = s[outputs[k]];
 }
 
+/// One instruction over a batch of points (slots laid out [slot][point]).
+template <class number>
+void step_batch(const instruction& i, std::size_t k, const double* symbols, std::size_t stride, std::size_t count,
+                number* s)
+{
+    using op = instruction::code;
+    constexpr std::size_t B = expression_program::batch_size;
+    number* to = s + k * B;
+    const number* a = s + static_cast<std::size_t>(i.first) * B;
+    const number* b = s + static_cast<std::size_t>(i.second) * B;
+    switch (i.op) {
+    case op::constant: {
+        number c = make_constant(i, static_cast<number*>(nullptr));
+        for (std::size_t j = 0; j < count; ++j)
+            to[j] = c;
+        break;
+    }
+    case op::symbol:
+        for (std::size_t j = 0; j < count; ++j)
+            to[j] = from_symbol<number>(symbols[j * stride + static_cast<std::size_t>(i.first)]);
+        break;
+    case op::add: for (std::size_t j = 0; j < count; ++j) to[j] = add(a[j], b[j]); break;
+    case op::mul: for (std::size_t j = 0; j < count; ++j) to[j] = mul(a[j], b[j]); break;
+    case op::neg: for (std::size_t j = 0; j < count; ++j) to[j] = neg(a[j]); break;
+    case op::recip: for (std::size_t j = 0; j < count; ++j) to[j] = recip(a[j]); break;
+    case op::square_root: for (std::size_t j = 0; j < count; ++j) to[j] = square_root(a[j]); break;
+    case op::integer_power:
+        if (i.second == 2)
+            for (std::size_t j = 0; j < count; ++j) to[j] = mul(a[j], a[j]);
+        else if (i.second == 3)
+            for (std::size_t j = 0; j < count; ++j) to[j] = mul(a[j], mul(a[j], a[j])); // as integer_power
+        else if (i.second == 4)
+            for (std::size_t j = 0; j < count; ++j) { number square = mul(a[j], a[j]); to[j] = mul(square, square); }
+        else
+            for (std::size_t j = 0; j < count; ++j) to[j] = integer_power(a[j], i.second);
+        break;
+    case op::real_power: for (std::size_t j = 0; j < count; ++j) to[j] = real_power(a[j], i.value); break;
+    case op::sine: for (std::size_t j = 0; j < count; ++j) to[j] = sine(a[j]); break;
+    case op::cosine: for (std::size_t j = 0; j < count; ++j) to[j] = cosine(a[j]); break;
+    case op::exponential: for (std::size_t j = 0; j < count; ++j) to[j] = exponential(a[j]); break;
+    case op::logarithm: for (std::size_t j = 0; j < count; ++j) to[j] = logarithm(a[j]); break;
+    }
+}
+
 } // namespace
+
+void expression_program::run_batch(const double* symbols, std::size_t stride, std::size_t count,
+                                   std::vector<double_double>& dd_scratch, std::vector<bounded_double>& bounded_scratch,
+                                   double_double* dd_out, bounded_double* bounded_out) const
+{
+    constexpr std::size_t B = batch_size;
+    count = std::min(count, B);
+    dd_scratch.resize(code_.size() * B);
+    bounded_scratch.resize(code_.size() * B);
+    double_double* x = dd_scratch.data();
+    bounded_double* y = bounded_scratch.data();
+    for (std::size_t k = 0; k < code_.size(); ++k) {
+        step_batch(code_[k], k, symbols, stride, count, x);
+        step_batch(code_[k], k, symbols, stride, count, y);
+    }
+    for (std::size_t k = 0; k < outputs_.size(); ++k) {
+        std::size_t from = static_cast<std::size_t>(outputs_[k]) * B;
+        std::copy(x + from, x + from + count, dd_out + k * B);
+        std::copy(y + from, y + from + count, bounded_out + k * B);
+    }
+}
 
 expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols)
 {

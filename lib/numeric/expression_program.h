@@ -60,6 +60,16 @@ public:
     void run(const double* symbols, std::vector<bounded_double>& scratch, bounded_double* out) const;
     void run(const double* symbols, std::vector<double_double>& scratch, double_double* out) const;
 
+    /// Runs the program on `count` points at once (at most batch_size), in double-double
+    /// and with running error bounds together: point j's symbols start at
+    /// symbols + j·stride; output k of point j goes to dd_out[k·batch_size + j] and
+    /// bounded_out[k·batch_size + j]. One dispatch per instruction for the whole
+    /// batch instead of one per point (the loops over points vectorize).
+    static constexpr std::size_t batch_size = 32;
+    void run_batch(const double* symbols, std::size_t stride, std::size_t count, std::vector<double_double>& dd_scratch,
+                   std::vector<bounded_double>& bounded_scratch, double_double* dd_out,
+                   bounded_double* bounded_out) const;
+
 private:
     std::vector<instruction> code_;
     std::vector<int> outputs_; ///< slot of each output

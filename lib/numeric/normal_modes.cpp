@@ -270,16 +270,59 @@ numeric_modes compiled_modes::evaluate(const double* p)
 
 modes_method compiled_modes::closed_form(const double* p, double* w2, double* w, double* error, double* modes)
 {
-    using namespace dd;
-    const std::size_t n = size_;
     std::size_t outputs = closed_.output_count();
     out_bounded_.resize(outputs);
     out_dd_.resize(outputs);
     closed_.run(p, scratch_bounded_, out_bounded_.data());
     closed_.run(p, scratch_dd_, out_dd_.data());
+    return closed_form_from(out_dd_.data(), out_bounded_.data(), w2, w, error, modes);
+}
+
+void compiled_modes::evaluate_batch(std::size_t count, const double* p, std::size_t stride, double* w2, double* w,
+                                    double* error, double* modes, modes_method* used)
+{
+    const std::size_t n = size_;
+    if (options_.method != modes_method::automatic || !has_closed_ || !closed_.algebraic()) {
+        for (std::size_t j = 0; j < count; ++j) {
+            modes_method route = evaluate(p + j * stride, w2 + j * n, w + j * n, error + j * n, modes ? modes + j * n * n : nullptr);
+            if (used)
+                used[j] = route;
+        }
+        return;
+    }
+    constexpr std::size_t B = expression_program::batch_size;
+    const std::size_t outputs = closed_.output_count();
+    batch_dd_out_.resize(outputs * B);
+    batch_bounded_out_.resize(outputs * B);
+    double_double x[16];
+    bounded_double b[16];
+    for (std::size_t start = 0; start < count; start += B) {
+        std::size_t block = std::min(B, count - start);
+        closed_.run_batch(p + start * stride, stride, block, batch_dd_scratch_, batch_bounded_scratch_,
+                          batch_dd_out_.data(), batch_bounded_out_.data());
+        for (std::size_t j = 0; j < block; ++j) {
+            std::size_t point = start + j;
+            for (std::size_t k = 0; k < outputs; ++k) {
+                x[k] = batch_dd_out_[k * B + j];
+                b[k] = batch_bounded_out_[k * B + j];
+            }
+            double *w2_j = w2 + point * n, *w_j = w + point * n, *error_j = error + point * n;
+            double* modes_j = modes ? modes + point * n * n : nullptr;
+            modes_method route = closed_form_from(x, b, w2_j, w_j, error_j, modes_j);
+            for (int digits = options_.digits; !acceptable(error_j, w2_j) && digits <= 4 * options_.digits; digits *= 2)
+                route = high_precision(p + point * stride, w2_j, w_j, error_j, modes_j, digits);
+            if (used)
+                used[point] = route;
+        }
+    }
+}
+
+modes_method compiled_modes::closed_form_from(const double_double* x, const bounded_double* b, double* w2, double* w,
+                                              double* error, double* modes) const
+{
+    using namespace dd;
+    const std::size_t n = size_;
     const double scale = closed_.algebraic() ? double_double_scale : 1.0;
-    const bounded_double* b = out_bounded_.data();
-    const double_double* x = out_dd_.data();
     auto positive = [&](std::size_t k) { return x[k].hi > b[k].error * scale; };
 
     if (n == 1) {
@@ -393,12 +436,18 @@ modes_method compiled_modes::normalized(const double* p, double* w2, double* w, 
         throw computation_error("the symmetric eigenvalue iteration did not converge");
     // Per mode: |W − λ| ≤ ‖K y − W y‖ for unit y (K symmetric), plus the rounding in that
     // residual and the error of K's entries (Weyl).
+    // (into preallocated vectors: no allocation per point)
     const Eigen::MatrixXd& vectors = symmetric_solver_.eigenvectors();
+    work_abs_ = work_.cwiseAbs();
     for (std::size_t k = 0; k < n; ++k) {
         double W = symmetric_solver_.eigenvalues()[k];
-        Eigen::VectorXd y = vectors.col(k);
-        double residual = (work_ * y - W * y).norm() / y.norm();
-        double rounding = (n + 3) * unit_roundoff * ((work_.cwiseAbs() * y.cwiseAbs()).norm() + std::abs(W) * y.norm()) / y.norm();
+        const Eigen::VectorXd& y = (vector_ = vectors.col(static_cast<Eigen::Index>(k)));
+        residual_.noalias() = work_ * y;
+        residual_ -= W * y;
+        double residual = residual_.norm() / y.norm();
+        vector_abs_ = y.cwiseAbs();
+        residual_.noalias() = work_abs_ * vector_abs_;
+        double rounding = (n + 3) * unit_roundoff * (residual_.norm() + std::abs(W) * y.norm()) / y.norm();
         double orthogonality = std::abs(y.squaredNorm() - 1);
         double dw = std::sqrt(perturbation) + residual + rounding + orthogonality * std::sqrt(norm);
         set_frequency(W, dw * (1 + 1e-3), unit_roundoff, w2[k], w[k], error[k]);

@@ -64,9 +64,19 @@ public:
     modes_method evaluate(const double* parameter_values, double* omega_squared, double* omega, double* error,
                           double* modes);
     numeric_modes evaluate(const double* parameter_values);
+    /// Modes at `count` points: point j's values start at parameter_values + j·stride, its
+    /// results at omega_squared + j·size(), omega + j·size(), error + j·size() and
+    /// modes + j·size()² (may be null); `used` (may be null) gets each point's route.
+    /// The same numbers as evaluate() point by point; the automatic route's closed form
+    /// runs its compiled program on a block of points at a time.
+    void evaluate_batch(std::size_t count, const double* parameter_values, std::size_t stride, double* omega_squared,
+                        double* omega, double* error, double* modes, modes_method* used = nullptr);
 
 private:
     modes_method closed_form(const double* p, double* w2, double* w, double* error, double* modes);
+    /// The closed form from the program's outputs (x in double-double, b with error bounds).
+    modes_method closed_form_from(const double_double* x, const bounded_double* b, double* w2, double* w,
+                                  double* error, double* modes) const;
     modes_method normalized(const double* p, double* w2, double* w, double* error, double* modes);
     modes_method generalized(const double* p, double* w2, double* w, double* error, double* modes);
     modes_method high_precision(const double* p, double* w2, double* w, double* error, double* modes, int digits);
@@ -87,7 +97,10 @@ private:
     std::vector<double> scratch_double_;
     std::vector<bounded_double> scratch_bounded_, out_bounded_;
     std::vector<double_double> scratch_dd_, out_dd_;
-    Eigen::MatrixXd work_;
+    std::vector<double_double> batch_dd_scratch_, batch_dd_out_;
+    std::vector<bounded_double> batch_bounded_scratch_, batch_bounded_out_;
+    Eigen::MatrixXd work_, work_abs_;
+    Eigen::VectorXd vector_, vector_abs_, residual_;
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> symmetric_solver_;
 };
 

@@ -192,6 +192,66 @@ std::string vector_text(const std::vector<GiNaC::ex>& v, syntax s)
     return out + ")";
 }
 
+/// An asymptotic ω² in series order: "(1 - √ρ)·g/l" from {g/l, 1, -√ρ}; the leading
+/// term alone when there are no corrections.
+std::string series_text(const std::vector<GiNaC::ex>& series, syntax s)
+{
+    if (series.size() <= 2)
+        return print(series.at(0), s);
+    std::string inner;
+    for (std::size_t t = 1; t < series.size(); ++t) {
+        std::string term = print(series[t], s);
+        if (t == 1)
+            inner = term;
+        else if (term.rfind('-', 0) == 0)
+            inner += " - " + term.substr(1);
+        else
+            inner += " + " + term;
+    }
+    if (series[0].is_equal(1))
+        return inner;
+    std::string times = s == syntax::text ? "·" : s == syntax::latex ? " " : "*";
+    return "(" + inner + ")" + times + print(series[0], s);
+}
+
+/// A normal coordinate ζ = scale·(q1 + c2·q2 + …) as "scale·(q1 + c2·q2 + …)": the
+/// factor without coordinates first, the combination in coordinate order with its
+/// first coefficient positive (a sign goes to the front).
+std::string normal_coordinate_text(const GiNaC::ex& zeta, const model& scene, syntax s)
+{
+    term_order order;
+    for (const coordinate& c : scene.coordinates)
+        order.groups.push_back({c.position});
+    auto has_coordinate = [&](const GiNaC::ex& e) {
+        for (const coordinate& c : scene.coordinates)
+            if (e.has(c.position))
+                return true;
+        return false;
+    };
+    if (!GiNaC::is_a<GiNaC::mul>(zeta))
+        return print(zeta, s, order);
+    GiNaC::ex scale = 1, combination = 1;
+    for (const GiNaC::ex& factor : zeta)
+        (has_coordinate(factor) ? combination : scale) *= factor;
+    if (!GiNaC::is_a<GiNaC::add>(combination) || scale.is_equal(1))
+        return print(zeta, s, order);
+    // The sign: the one of ±combination that prints without a leading minus (the
+    // shorter, then the smaller, if both or neither do). GiNaC may hold the sign
+    // inside or outside the sum from run to run; this choice does not depend on it.
+    std::string plus = print(combination, s, order), minus = print(-combination, s, order);
+    bool plus_negative = plus.rfind('-', 0) == 0, minus_negative = minus.rfind('-', 0) == 0;
+    bool flip = plus_negative != minus_negative
+                    ? plus_negative
+                    : (minus.size() != plus.size() ? minus.size() < plus.size() : minus < plus);
+    if (flip)
+        scale = -scale;
+    std::string times = s == syntax::text ? "·" : s == syntax::latex ? " " : "*";
+    std::string inner = "(" + (flip ? minus : plus) + ")";
+    if (scale.is_equal(-1))
+        return "-" + inner;
+    return print(scale, s) + times + inner;
+}
+
 std::string matrix_latex(const GiNaC::matrix& m)
 {
     std::string out = "\\begin{pmatrix}";
@@ -256,13 +316,19 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
                 if (k < m.modes.size())
                     out << "    mode " << vector_text(m.modes[k], s) << '\n';
                 if (k < m.normal_coordinates.size())
-                    out << "    ζ = " << print(m.normal_coordinates[k], s) << '\n';
+                    out << "    ζ = " << normal_coordinate_text(m.normal_coordinates[k], scene, s) << '\n';
             }
             if (scene.ratio && !m.frequencies_in_ratio.empty()) {
                 out << "  with " << print_name(scene.ratio->name, s) << " = " << print(scene.ratio->definition, s)
                     << ":\n";
-                for (std::size_t k = 0; k < m.frequencies_in_ratio.size(); ++k)
+                for (std::size_t k = 0; k < m.frequencies_in_ratio.size(); ++k) {
                     out << "    " << w2 << " = " << print(m.frequencies_in_ratio[k], s) << '\n';
+                    if (k < m.modes_in_ratio.size())
+                        out << "      mode " << vector_text(m.modes_in_ratio[k], s) << '\n';
+                    if (k < m.normal_coordinates_in_ratio.size())
+                        out << "      ζ = " << normal_coordinate_text(m.normal_coordinates_in_ratio[k], scene, s)
+                            << '\n';
+                }
             }
         }
     }
@@ -271,11 +337,17 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
         out << "\nAsymptotic (" << a.label << ")\n";
         for (std::size_t k = 0; k < a.frequencies.size(); ++k) {
             out << "  " << print_name(result.characteristic->omega.get_name(), s) << "² → "
-                << print(a.frequencies[k], s);
+                << (k < a.frequency_series.size() ? series_text(a.frequency_series[k], s) : print(a.frequencies[k], s));
             if (k < a.modes.size())
                 out << ",  mode " << vector_text(a.modes[k], s);
             out << '\n';
+            if (k < a.normal_coordinates.size())
+                out << "    ζ → " << normal_coordinate_text(a.normal_coordinates[k], scene, s) << '\n';
         }
+        for (const beat& b : a.beats)
+            out << "  beats of modes " << b.lower + 1 << " and " << b.upper + 1 << ": ω" << b.upper + 1 << " - ω"
+                << b.lower + 1 << " → " << print(b.difference, s) << ",  period 2π/(ω" << b.upper + 1 << " - ω"
+                << b.lower + 1 << ") → " << print(b.period, s) << '\n';
     }
     if (result.numeric) {
         out << "\nNumeric modes\n";
@@ -360,7 +432,7 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
                 out << latex_display("a" + index(k), {vector_text(m.modes[k], s)}, "");
         }
         for (std::size_t k = 0; k < m.normal_coordinates.size(); ++k)
-            out << latex_display("\\zeta" + index(k), print_terms(m.normal_coordinates[k], s), "");
+            out << latex_display("\\zeta" + index(k), {normal_coordinate_text(m.normal_coordinates[k], scene, s)}, "");
         if (scene.ratio && !m.frequencies_in_ratio.empty()) {
             out << "With $" << print_name(scene.ratio->name, s) << " = " << print(scene.ratio->definition, s) << "$:\n";
             for (std::size_t k = 0; k < m.frequencies_in_ratio.size(); ++k)
@@ -371,7 +443,18 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
         const asymptotic_result& a = *result.asymptotic;
         out << "\\subsection*{Asymptotic behaviour}\n";
         for (std::size_t k = 0; k < a.frequencies.size(); ++k)
-            out << latex_display(w2 + index(k), print_terms(a.frequencies[k], s), "", "\\to");
+            out << latex_display(w2 + index(k),
+                                 k < a.frequency_series.size() ? std::vector<std::string>{series_text(a.frequency_series[k], s)}
+                                                               : print_terms(a.frequencies[k], s),
+                                 "", "\\to");
+        for (std::size_t k = 0; k < a.normal_coordinates.size(); ++k)
+            out << latex_display("\\zeta" + index(k), {normal_coordinate_text(a.normal_coordinates[k], scene, s)}, "",
+                                 "\\to");
+        for (const beat& b : a.beats) {
+            std::string pair = "\\omega" + index(b.upper) + " - \\omega" + index(b.lower);
+            out << latex_display(pair, {print(b.difference, s)}, "", "\\to")
+                << latex_display("\\frac{2\\pi}{" + pair + "}", {print(b.period, s)}, "", "\\to");
+        }
     }
     if (result.numeric) {
         out << "\\subsection*{Numeric modes}\n";
@@ -508,6 +591,16 @@ void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result
         doc["asymptotic"] = {{result.asymptotic->label,
                               {{"frequencies", strings_json(result.asymptotic->frequencies)},
                                {"modes", vectors_json(result.asymptotic->modes)}}}};
+    if (result.asymptotic) {
+        nlohmann::ordered_json& limit = doc["asymptotic"][result.asymptotic->label];
+        limit["normal_coordinates"] = strings_json(result.asymptotic->normal_coordinates);
+        nlohmann::ordered_json beats = nlohmann::ordered_json::array();
+        for (const beat& b : result.asymptotic->beats)
+            beats.push_back({{"modes", {b.lower + 1, b.upper + 1}},
+                             {"difference", print(b.difference, syntax::plain)},
+                             {"period", print(b.period, syntax::plain)}});
+        limit["beats"] = beats;
+    }
     if (result.numeric) {
         nlohmann::ordered_json points = nlohmann::ordered_json::array();
         for (const numeric_modes& n : *result.numeric) {
