@@ -24,10 +24,19 @@ bool is_function_of(const GiNaC::ex& e, const char* name, const GiNaC::ex& varia
            e.op(0).is_equal(variable);
 }
 
-/// B(p, q) = Γ(p) Γ(q) / Γ(p + q) at halves of integers: exact (GiNaC evaluates Γ there).
+/// Γ(x) for x a positive integer or half-integer, exactly: (n − 1)! or (2n)! √π / (4ⁿ n!).
+GiNaC::ex gamma_of_half_integer(const GiNaC::numeric& x)
+{
+    if (x.is_integer())
+        return GiNaC::factorial(x - 1);
+    const GiNaC::numeric n = x - GiNaC::numeric(1, 2);
+    return GiNaC::factorial(2 * n) / (GiNaC::pow(GiNaC::numeric(4), n) * GiNaC::factorial(n)) * GiNaC::sqrt(GiNaC::Pi);
+}
+
+/// B(p, q) = Γ(p) Γ(q) / Γ(p + q) at halves of integers, exactly.
 GiNaC::ex beta_function(const GiNaC::numeric& p, const GiNaC::numeric& q)
 {
-    return GiNaC::tgamma(p) * GiNaC::tgamma(q) / GiNaC::tgamma(p + q);
+    return gamma_of_half_integer(p) * gamma_of_half_integer(q) / gamma_of_half_integer(p + q);
 }
 
 /// One term c · v^n · sin(v)^a · cos(v)^b, integrated.
