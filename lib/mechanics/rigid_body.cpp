@@ -115,10 +115,10 @@ region_map region_of(const std::string& shape, const std::vector<GiNaC::ex>& d)
     const GiNaC::realsymbol xn = m.delta_symbols[0], yn = m.delta_symbols[1], zn = m.delta_symbols[2];
     if (shape == "stick" || shape == "segment") {
         m.coordinates = "cartesian";
-        m.limits = {{z, -half * d[0], half * d[0]}};
+        m.limits = {{s, -half * d[0], half * d[0]}};
         m.jacobian = 1;
-        m.natural = {0, 0, z};
-        m.radius = GiNaC::sqrt(z * z);
+        m.natural = {0, 0, s};
+        m.radius = GiNaC::sqrt(s * s);
         m.natural_deltas = {xn, yn};
     } else if (shape == "ring" || shape == "circle") {
         m.coordinates = "cylindrical";

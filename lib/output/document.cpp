@@ -2,6 +2,7 @@
  *  Text, LaTeX and JSON documents of an analysis. */
 #include "output/document.h"
 
+#include "output/bodies.h"
 #include "output/print.h"
 
 #include <nlohmann/json.hpp>
@@ -321,6 +322,7 @@ void write_text(std::ostream& out, const analysis& result, const document_option
                 << print((*result.equations)[i], syntax::text, equation_order(scene)) << " = 0\n";
     }
     write_oscillations_text(out, result);
+    write_bodies_text(out, result);
     for (const std::string& note : result.notes)
         out << "\nnote: " << note << '\n';
     if (options.timings) {
@@ -422,6 +424,7 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
             out << latex_display("", print_terms((*result.equations)[i], syntax::latex, equation_order(scene)), " = 0");
     }
     write_oscillations_latex(out, result);
+    write_bodies_latex(out, result);
     if (options.timings) {
         out << "\\subsection*{Stages}\n\\begin{tabular}{lr}\n";
         for (const stage_time& s : result.stages)
@@ -559,6 +562,7 @@ void write_json(std::ostream& out, const analysis& result, const document_option
             doc["equations"].push_back(print(e, syntax::plain, equation_order(scene)));
     }
     write_oscillations_json(doc, result);
+    write_bodies_json(doc, result);
     if (!result.notes.empty())
         doc["notes"] = result.notes;
     out << doc.dump(2) << '\n';

@@ -669,10 +669,7 @@ private:
 
     void finish()
     {
-        bool free_body = false;
-        for (const rigid_body& b : scene_.bodies)
-            free_body = free_body || b.omega.has_value();
-        if (scene_.coordinates.empty() && !free_body)
+        if (scene_.coordinates.empty() && scene_.bodies.empty())
             throw scene_error({source_.file(), 1, 1}, "the scene declares no coordinates (`coordinates q1 q2 ...`)");
         if (scene_.limit && scene_.ratio && scene_.limit->variable != scene_.ratio->name &&
             names_.at(scene_.limit->variable).name_kind != name_entry::kind::parameter)
