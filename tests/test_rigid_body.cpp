@@ -451,3 +451,109 @@ TEST_CASE("euler: the elliptic solution matches a numeric integration, T and |L|
         CHECK(e.stability == std::vector<std::string>{"stable", "unstable", "stable"});
     }
 }
+
+TEST_CASE("bodies: input errors at their position", "[rigid_body][lower]")
+{
+    const std::string h = "parameters m g l\ncoordinates q\n";
+    require_error(h + "body B cube(l) mass m\n", 3, 8, "unknown shape `cube`");
+    require_error(h + "body B region cone(l, l) density 1\n", 3, 15, "unknown region `cone`");
+    require_error(h + "body B disk(l) mass m axis w\n", 3, 28, "the axis is `x`, `y` or `z`");
+    require_error(h + "body B box(l, l) mass m\n", 3, 8, "takes 3 dimensions");
+    require_error(h + "body B disk(-1) mass m\n", 3, 13, "must be positive");
+    require_error(h + "body B disk(q) mass m\n", 3, 13, "coordinate `q` cannot appear");
+    require_error(h + "body B region ball(l) density q\n", 3, 31, "coordinate `q` cannot appear in a density");
+    require_error(h + "omega B (w1, w2, w3)\n", 3, 7, "unknown body `B`");
+    require_error(h + "body B disk(l) mass m\nbody B ball(l) mass m\n", 4, 6, "already declared");
+    require_error(h + "body B disk(l) mass m orientation zxz(q, 0, 0)\nomega B (w1, w2, w3)\n", 4, 1,
+                  "derived from them");
+    require_error(h + "body B disk(l) mass m\ntorque B (1, 0, 0)\n", 4, 1, "name its angular velocity first");
+    require_error(h + "body B disk(l) mass m\nomega B (w1, w2, 2*w3)\n", 4, 18, "a new name");
+    require_error(h + "body B disk(l) mass m orientation xyz(q, 0, 0)\n", 3, 35, "zxz(phi, theta, psi)");
+    require_error(h + "body B disk(l) mass m\nomega B (w1, w2, w3)\nT = w1^2\n", 5, 5, "only in a `torque`");
+}
+
+TEST_CASE("bodies: a free body's scene needs no coordinates, and w1 takes an initial value", "[rigid_body][lower]")
+{
+    model scene = load("parameters M R\nbody D disk(R) mass M\nomega D (w1, w2, w3)\ntorque D (0, 0, -w3)\n"
+                       "initial w1 = 1, w3 = 2\n");
+    REQUIRE(scene.coordinates.empty());
+    REQUIRE(scene.bodies.size() == 1);
+    CHECK(scene.initial->others.at("w1") == 1);
+    CHECK(same(scene.bodies[0].torque[2], -(*scene.bodies[0].omega)[2]));
+    // The torque enters Euler's equations: I3 ω̇3 = −ω3.
+    inertia_result inertia = derive_inertia(scene.bodies[0]);
+    euler_result e = derive_euler(scene.bodies[0], inertia, scene.initial, {});
+    CHECK_FALSE(e.torque_free);
+    CHECK(same(e.equations[2], inertia.tensor(2, 2) * e.rates[2] + e.omega[2]));
+}
+
+TEST_CASE("bodies in a Lagrangian: physical pendulum, ω² = 3g/(2l)", "[rigid_body][lagrangian]")
+{
+    model scene = load("parameters M l g\ncoordinates theta\n"
+                       "body rod stick(l) mass M at (0, l/2*sin(theta), -l/2*cos(theta)) orientation zxz(0, theta, 0)\n"
+                       "gravity g along (0, 0, -1)\n");
+    simplifier simplify = make_simplifier(scene);
+    lagrangian_result l = derive_lagrangian(scene, simplify);
+    GiNaC::ex m = scene.parameters[0].symbol, len = scene.parameters[1].symbol, g = scene.parameters[2].symbol;
+    const coordinate& theta = scene.coordinates[0];
+    // T = ½ (M l²/4 + M l²/12) θ̇² = M l² θ̇²/6, V = −M g l/2 cos θ.
+    CHECK(same(l.kinetic, m * len * len * GiNaC::pow(theta.velocity, 2) / 6));
+    CHECK(same(l.potential, -m * g * len * GiNaC::cos(theta.position) / 2));
+    // ω² = V''/T'' at θ = 0.
+    GiNaC::ex stiffness = l.potential.diff(theta.position, 2).subs(theta.position == 0);
+    GiNaC::ex inertia = l.kinetic.diff(theta.velocity, 2);
+    CHECK(same(stiffness / inertia, 3 * g / (2 * len)));
+}
+
+TEST_CASE("bodies in a Lagrangian: the ω of z-x-z Euler angles is derived", "[rigid_body][lagrangian]")
+{
+    model scene = load("coordinates phi theta psi\n");
+    std::vector<GiNaC::ex> w = body_angular_velocity(
+        euler_rotation(scene.coordinates[0].position, scene.coordinates[1].position, scene.coordinates[2].position),
+        scene);
+    simplifier simplify = make_simplifier(scene);
+    const GiNaC::ex ph = scene.coordinates[0].velocity, th = scene.coordinates[1].velocity,
+                    ps = scene.coordinates[2].velocity;
+    const GiNaC::ex theta = scene.coordinates[1].position, psi = scene.coordinates[2].position;
+    // Goldstein (4.87): ω = (φ̇ sinθ sinψ + θ̇ cosψ, φ̇ sinθ cosψ − θ̇ sinψ, φ̇ cosθ + ψ̇).
+    CHECK(simplify.canonical(w[0] - (ph * sin(theta) * sin(psi) + th * cos(psi))).is_zero());
+    CHECK(simplify.canonical(w[1] - (ph * sin(theta) * cos(psi) - th * sin(psi))).is_zero());
+    CHECK(simplify.canonical(w[2] - (ph * cos(theta) + ps)).is_zero());
+}
+
+TEST_CASE("bodies in a Lagrangian: the heavy symmetric top", "[rigid_body][lagrangian][top]")
+{
+    model scene = load("parameters M g l A C\ncoordinates phi theta psi\n"
+                       "body top inertia (A, A, C) mass M at (l*sin(phi)*sin(theta), -l*cos(phi)*sin(theta), "
+                       "l*cos(theta)) orientation zxz(phi, theta, psi)\ngravity g along (0, 0, -1)\n");
+    simplifier simplify = make_simplifier(scene);
+    lagrangian_result l = derive_lagrangian(scene, simplify);
+    std::vector<GiNaC::ex> equations = derive_equations(scene, l, simplify);
+    const GiNaC::ex m = scene.parameters[0].symbol, g = scene.parameters[1].symbol, len = scene.parameters[2].symbol,
+                    a = scene.parameters[3].symbol, c = scene.parameters[4].symbol;
+    const coordinate &phi = scene.coordinates[0], &theta = scene.coordinates[1], &psi = scene.coordinates[2];
+    const GiNaC::ex pivot = a + m * len * len; // I1 about the pivot (parallel axes)
+    // φ and ψ are cyclic; p_ψ = C ω3 with ω3 = φ̇ cos θ + ψ̇.
+    CHECK_FALSE(l.lagrangian.has(phi.position));
+    CHECK_FALSE(l.lagrangian.has(psi.position));
+    const GiNaC::ex omega3 = phi.velocity * cos(theta.position) + psi.velocity;
+    CHECK(simplify.canonical(l.lagrangian.diff(psi.velocity) - c * omega3).is_zero());
+    // The nutation equation at θ̈ = θ̇ = 0 is sinθ (C ω3 φ̇ − I1 cosθ φ̇² − M g l) = 0: steady precession.
+    GiNaC::ex steady = equations[1].subs(GiNaC::lst{theta.acceleration == 0, theta.velocity == 0});
+    GiNaC::ex expected = sin(theta.position) * (c * omega3 * phi.velocity -
+                                                pivot * cos(theta.position) * pow(phi.velocity, 2) - m * g * len);
+    CHECK((simplify.canonical(steady + expected).is_zero() || simplify.canonical(steady - expected).is_zero()));
+    // Routh: with the cyclic momenta fixed, V_eff(θ) = V + ½ pᵀ K⁻¹ p, K the (φ̇, ψ̇) block of T.
+    GiNaC::matrix k(2, 2);
+    const GiNaC::ex cyclic[] = {phi.velocity, psi.velocity};
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+            k(i, j) = l.kinetic.diff(GiNaC::ex_to<GiNaC::symbol>(cyclic[i])).diff(GiNaC::ex_to<GiNaC::symbol>(cyclic[j]));
+    GiNaC::realsymbol w3("w3");
+    // Sleeping top: at θ = 0 the φ and ψ axes coincide, so p_φ = p_ψ = C ω3.
+    GiNaC::matrix p{{c * w3}, {c * w3}};
+    GiNaC::ex effective = l.potential + GiNaC::numeric(1, 2) * p.transpose().mul(k.inverse()).mul(p)(0, 0);
+    GiNaC::ex curvature = GiNaC::series_to_poly(effective.series(theta.position == 0, 3)).coeff(theta.position, 2);
+    // V_eff ≈ const + θ² (C²ω3²/(8 I1) − M g l/2): stable exactly when C² ω3² > 4 I1 M g l.
+    CHECK(same(curvature, (c * c * w3 * w3 - 4 * pivot * m * g * len) / (8 * pivot)));
+}

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <charconv>
+#include <cmath>
 
 namespace lagrange {
 
@@ -189,7 +190,8 @@ void write_bodies_text(std::ostream& out, const analysis& result)
                     while (s.roles[role] != k)
                         ++role;
                     out << "    " << omega_name(e.omega[k], syntax::text) << "(t) = " << decimal(s.amplitudes[role]) << "·"
-                        << functions[role] << "(" << decimal(s.rate) << "·t + " << decimal(s.phase) << ", k)\n";
+                        << functions[role] << "(" << decimal(s.rate) << "·t " << (s.phase < 0 ? "- " : "+ ")
+                        << decimal(std::abs(s.phase)) << ", k)\n";
                 }
                 out << "    T = " << decimal(s.energy) << ", |L|² = " << decimal(s.momentum_squared) << '\n';
             }
@@ -278,8 +280,8 @@ void write_bodies_latex(std::ostream& out, const analysis& result)
                     while (s.roles[role] != k)
                         ++role;
                     rows.push_back(print(e.omega[k], syntax::latex) + "(t) &= " + decimal(s.amplitudes[role]) +
-                                   "\\,\\mathrm{" + functions[role] + "}(" + decimal(s.rate) + "\\,t + " +
-                                   decimal(s.phase) + ", k)");
+                                   "\\,\\mathrm{" + functions[role] + "}(" + decimal(s.rate) + "\\,t " +
+                                   (s.phase < 0 ? "- " : "+ ") + decimal(std::abs(s.phase)) + ", k)");
                 }
                 out << "Jacobi elliptic solution, $k = " << decimal(s.modulus) << "$, period $" << decimal(s.period)
                     << "$:\n\\begin{align*}\n" << join(rows, " \\\\\n") << "\n\\end{align*}\n";
@@ -376,7 +378,7 @@ void write_bodies_json(nlohmann::ordered_json& doc, const analysis& result)
                     while (s.roles[role] != k)
                         ++role;
                     omega.push_back(decimal(s.amplitudes[role]) + "*" + functions[role] + "(" + decimal(s.rate) +
-                                    "*t+" + decimal(s.phase) + ", k)");
+                                    "*t" + (s.phase < 0 ? "-" : "+") + decimal(std::abs(s.phase)) + ", k)");
                 }
                 body["solution"] = {{"kind", "elliptic"},     {"omega", omega},
                                     {"modulus", s.modulus},   {"rate", s.rate},
