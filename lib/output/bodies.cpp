@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -105,6 +106,35 @@ std::string integral_text(const body_integral& i, syntax s)
 }
 
 std::string omega_name(const GiNaC::ex& w, syntax s) { return print(w, s); }
+
+/// A rough width of LaTeX math in characters (as document.cpp measures it): a command
+/// counts as one, braces and sub/superscript marks as none.
+std::size_t latex_width(const std::string& latex)
+{
+    std::size_t width = 0;
+    for (std::size_t i = 0; i < latex.size(); ++i) {
+        const char c = latex[i];
+        if (c == '\\') {
+            std::size_t j = i + 1;
+            while (j < latex.size() && std::isalpha(static_cast<unsigned char>(latex[j])))
+                ++j;
+            ++width;
+            i = j > i + 1 ? j - 1 : j;
+        } else if (c != '{' && c != '}' && c != '^' && c != '_' && c != ' ' && c != '&') {
+            ++width;
+        }
+    }
+    return width;
+}
+
+/// A displayed line of math; one wider than the page is scaled down to the page width.
+std::string latex_line(const std::string& math)
+{
+    constexpr std::size_t line_width = 75;
+    if (latex_width(math) <= line_width)
+        return "\\[" + math + "\\]\n";
+    return "\\[\\resizebox{\\linewidth}{!}{$\\displaystyle " + math + "$}\\]\n";
+}
 
 } // namespace
 
@@ -220,7 +250,7 @@ void write_bodies_latex(std::ostream& out, const analysis& result)
         return text + "\\end{pmatrix}";
     };
     auto display = [&](const std::string& math) {
-        out << "\\[" << math << "\\]\n";
+        out << latex_line(math);
     };
     if (result.inertia) {
         out << "\\subsection*{Inertia}\n";
@@ -234,13 +264,10 @@ void write_bodies_latex(std::ostream& out, const analysis& result)
                 bool shifted = false;
                 for (const GiNaC::ex& c : in.centre_of_mass)
                     shifted = shifted || !c.is_zero();
-                out << "\\begin{align*}\n";
-                std::vector<std::string> rows;
                 for (const body_integral& i : in.integrals)
                     if (i.quantity.size() != 1 || shifted)
-                        rows.push_back(quantity_name(i.quantity, syntax::latex) + " &= " + integral_text(i, syntax::latex) +
-                                       " = " + print(i.value, syntax::latex));
-                out << join(rows, " \\\\\n") << "\n\\end{align*}\n";
+                        out << latex_line(quantity_name(i.quantity, syntax::latex) + " = " + integral_text(i, syntax::latex) +
+                                          " = " + print(i.value, syntax::latex));
             }
             display("I = " + matrix(in.tensor));
             if (in.about_origin)
@@ -255,11 +282,14 @@ void write_bodies_latex(std::ostream& out, const analysis& result)
         out << "\\subsection*{Euler's equations}\n";
         for (const euler_result& e : *result.euler) {
             const term_order order = euler_order(e);
-            out << "Body $" << print_name(e.body, syntax::latex) << "$:\n\\begin{align*}\n"
-                << join(printed(e.equations, syntax::latex, order), " &= 0 \\\\\n") << " &= 0\n\\end{align*}\n";
-            if (!e.principal_equations.empty())
-                out << "In principal axes:\n\\begin{align*}\n"
-                    << join(printed(e.principal_equations, syntax::latex, order), " &= 0 \\\\\n") << " &= 0\n\\end{align*}\n";
+            out << "Body $" << print_name(e.body, syntax::latex) << "$:\n";
+            for (const std::string& equation : printed(e.equations, syntax::latex, order))
+                out << latex_line(equation + " = 0");
+            if (!e.principal_equations.empty()) {
+                out << "In principal axes:\n";
+                for (const std::string& equation : printed(e.principal_equations, syntax::latex, order))
+                    out << latex_line(equation + " = 0");
+            }
             if (e.torque_free && !e.moments.empty())
                 display("T = " + print(e.kinetic_energy, syntax::latex, order) +
                         ",\\quad |L|^{2} = " + print(e.angular_momentum_squared, syntax::latex, order));
@@ -288,7 +318,7 @@ void write_bodies_latex(std::ostream& out, const analysis& result)
             }
             if (e.poinsot)
                 out << "Poinsot: the ellipsoid $\\omega^{T} I \\omega = 2T$ has semi-axes $"
-                    << decimal(e.poinsot->ellipsoid_axes[0]) << ", " << decimal(e.poinsot->ellipsoid_axes[1]) << ", "
+                    << decimal(e.poinsot->ellipsoid_axes[0]) << "$, $" << decimal(e.poinsot->ellipsoid_axes[1]) << "$, $"
                     << decimal(e.poinsot->ellipsoid_axes[2]) << "$; the invariable plane is at distance $2T/|L| = "
                     << decimal(e.poinsot->plane_distance) << "$.\n\n";
             if (!e.stability.empty())

@@ -405,7 +405,8 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
            "\\usepackage[margin=2cm]{geometry}\n"
            "\\begin{document}\n";
     out << "\\section*{" << latex_escape(scene.title.empty() ? "Scene" : scene.title) << "}\n";
-    out << "Coordinates: $" << join_names(coordinate_names(scene), syntax::latex, ",\\ ") << "$.\\\\\n";
+    if (!scene.coordinates.empty()) // a free body's scene has none
+        out << "Coordinates: $" << join_names(coordinate_names(scene), syntax::latex, ",\\ ") << "$.\\\\\n";
     out << "Parameters: $" << join_names(parameter_names(scene), syntax::latex, ",\\ ") << "$.\n";
     if (result.lagrangian) {
         const lagrangian_result& l = *result.lagrangian;
