@@ -556,4 +556,11 @@ TEST_CASE("bodies in a Lagrangian: the heavy symmetric top", "[rigid_body][lagra
     GiNaC::ex curvature = GiNaC::series_to_poly(effective.series(theta.position == 0, 3)).coeff(theta.position, 2);
     // V_eff ≈ const + θ² (C²ω3²/(8 I1) − M g l/2): stable exactly when C² ω3² > 4 I1 M g l.
     CHECK(same(curvature, (c * c * w3 * w3 - 4 * pivot * m * g * len) / (8 * pivot)));
+
+    // The engine's own top stage derives the same condition: I3² ω3² − 4 I1 M g l > 0.
+    std::vector<top_result> tops = analyze_tops(scene, l, simplify);
+    REQUIRE(tops.size() == 1);
+    CHECK(same(tops[0].pivot_moment, pivot));
+    CHECK(same(tops[0].spin_moment, c));
+    CHECK(same(tops[0].condition, c * c * pow(tops[0].spin, 2) - 4 * pivot * m * g * len));
 }

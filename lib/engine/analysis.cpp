@@ -140,6 +140,11 @@ analysis analyze(const model& scene, const std::set<product>& wanted)
     if (need_equations)
         run_stage(result, "equations",
                   [&] { result.equations = derive_equations(scene, *result.lagrangian, simplify); });
+    bool has_top = false;
+    for (const rigid_body& b : scene.bodies)
+        has_top = has_top || b.orientation.has_value();
+    if (has_top && (need_equations || w.count(product::inertia)))
+        run_stage(result, "top", [&] { result.tops = analyze_tops(scene, *result.lagrangian, simplify); });
     if (!need_equilibria)
         return result;
 

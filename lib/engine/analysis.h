@@ -37,6 +37,7 @@ struct analysis {
     std::optional<std::vector<numeric_modes>> numeric;
     std::optional<std::vector<inertia_result>> inertia; ///< one per body, in scene order
     std::optional<std::vector<euler_result>> euler;     ///< one per free body (with `omega`)
+    std::optional<std::vector<top_result>> tops;        ///< bodies turned by three coordinates (heavy tops)
 };
 
 /// The products this version computes.

@@ -138,8 +138,13 @@ std::string latex_line(const std::string& math)
 
 } // namespace
 
+namespace {
+void write_tops_text(std::ostream& out, const analysis& result);
+} // namespace
+
 void write_bodies_text(std::ostream& out, const analysis& result)
 {
+    write_tops_text(out, result);
     const model& scene = *result.scene;
     if (result.inertia) {
         out << "\nInertia (about the centre of mass, body axes)\n";
@@ -239,8 +244,45 @@ void write_bodies_text(std::ostream& out, const analysis& result)
     }
 }
 
+namespace {
+
+void write_tops_text(std::ostream& out, const analysis& result)
+{
+    if (!result.tops)
+        return;
+    for (const top_result& top : *result.tops) {
+        const term_order order{{{top.spin}}};
+        out << "\nTop " << top.body << " (Routh, p_φ = p_ψ = I3·" << print(top.spin, syntax::text) << ")\n";
+        out << "  I1 about the pivot = " << print(top.pivot_moment, syntax::text)
+            << ", I3 = " << print(top.spin_moment, syntax::text) << '\n';
+        out << "  V_eff = " << print(top.effective_potential, syntax::text, order) << '\n';
+        out << "  V_eff ≈ const + (" << print(top.curvature, syntax::text, order) << ")·"
+            << print(top.nutation, syntax::text) << "²\n";
+        out << "  the sleeping top is stable when " << print(top.condition, syntax::text, order) << " > 0\n";
+    }
+}
+
+void write_tops_latex(std::ostream& out, const analysis& result)
+{
+    if (!result.tops)
+        return;
+    for (const top_result& top : *result.tops) {
+        const term_order order{{{top.spin}}};
+        out << "\\subsection*{Top $" << print_name(top.body, syntax::latex) << "$}\n"
+            << "With the cyclic momenta at their sleeping values $p_\\phi = p_\\psi = I_3 "
+            << print(top.spin, syntax::latex) << "$, $I_1 = " << print(top.pivot_moment, syntax::latex)
+            << "$ about the pivot and $I_3 = " << print(top.spin_moment, syntax::latex) << "$:\n"
+            << latex_line("V_{\\mathrm{eff}} = " + print(top.effective_potential, syntax::latex, order))
+            << "about $" << print(top.nutation, syntax::latex) << " = 0$ its curvature gives the sleeping-top condition\n"
+            << latex_line(print(top.condition, syntax::latex, order) + " > 0.");
+    }
+}
+
+} // namespace
+
 void write_bodies_latex(std::ostream& out, const analysis& result)
 {
+    write_tops_latex(out, result);
     const model& scene = *result.scene;
     auto matrix = [](const GiNaC::matrix& m) {
         std::string text = "\\begin{pmatrix}";
@@ -317,10 +359,10 @@ void write_bodies_latex(std::ostream& out, const analysis& result)
                     << "$:\n\\begin{align*}\n" << join(rows, " \\\\\n") << "\n\\end{align*}\n";
             }
             if (e.poinsot)
-                out << "Poinsot: the ellipsoid $\\omega^{T} I \\omega = 2T$ has semi-axes $"
-                    << decimal(e.poinsot->ellipsoid_axes[0]) << "$, $" << decimal(e.poinsot->ellipsoid_axes[1]) << "$, $"
-                    << decimal(e.poinsot->ellipsoid_axes[2]) << "$; the invariable plane is at distance $2T/|L| = "
-                    << decimal(e.poinsot->plane_distance) << "$.\n\n";
+                out << "Poinsot: the ellipsoid $\\omega^{T} I \\omega = 2T$ has the semi-axes\n\\[" << decimal(e.poinsot->ellipsoid_axes[0])
+                    << ",\\quad " << decimal(e.poinsot->ellipsoid_axes[1]) << ",\\quad "
+                    << decimal(e.poinsot->ellipsoid_axes[2]) << "\\]\nand the invariable plane is at the distance\n\\[2T/|L| = "
+                    << decimal(e.poinsot->plane_distance) << "\\]\nfrom the centre.\n\n";
             if (!e.stability.empty())
                 out << "Rotation about axes 1, 2, 3: " << join(e.stability, ", ") << ".\n\n";
         }
@@ -381,6 +423,18 @@ void write_bodies_json(nlohmann::ordered_json& doc, const analysis& result)
             all[in.body] = body;
         }
         doc["inertia"] = all;
+    }
+    if (result.tops && !result.tops->empty()) {
+        nlohmann::ordered_json all = nlohmann::ordered_json::object();
+        for (const top_result& top : *result.tops) {
+            const term_order order{{{top.spin}}};
+            all[top.body] = {{"pivot_moment", print(top.pivot_moment, syntax::plain)},
+                             {"spin_moment", print(top.spin_moment, syntax::plain)},
+                             {"effective_potential", print(top.effective_potential, syntax::plain, order)},
+                             {"curvature", print(top.curvature, syntax::plain, order)},
+                             {"sleeping_condition", print(top.condition, syntax::plain, order) + " > 0"}};
+        }
+        doc["top"] = all;
     }
     if (result.euler) {
         nlohmann::ordered_json all = nlohmann::ordered_json::object();
