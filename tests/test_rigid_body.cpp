@@ -564,3 +564,25 @@ TEST_CASE("bodies in a Lagrangian: the heavy symmetric top", "[rigid_body][lagra
     CHECK(same(tops[0].spin_moment, c));
     CHECK(same(tops[0].condition, c * c * pow(tops[0].spin, 2) - 4 * pivot * m * g * len));
 }
+
+TEST_CASE("bodies in a Lagrangian: a disk swinging from a point of its rim", "[rigid_body][lagrangian]")
+{
+    // In its own plane (rotation about the disk's axis, here body x): I = MR²/2 + MR², ω² = 2g/(3R).
+    // Across its plane (about a diameter): I = MR²/4 + MR², ω² = 4g/(5R).
+    struct swinging {
+        const char* axis;
+        GiNaC::numeric frequency_squared; ///< in g/R
+    };
+    for (const swinging& s : {swinging{"x", GiNaC::numeric(2, 3)}, swinging{"z", GiNaC::numeric(4, 5)}}) {
+        INFO("disk axis " << s.axis);
+        model scene = load(std::string("parameters M R g\ncoordinates theta\nbody D disk(R) mass M axis ") + s.axis +
+                           " at (0, R*sin(theta), -R*cos(theta)) orientation zxz(0, theta, 0)\n"
+                           "gravity g along (0, 0, -1)\n");
+        simplifier simplify = make_simplifier(scene);
+        lagrangian_result l = derive_lagrangian(scene, simplify);
+        const coordinate& theta = scene.coordinates[0];
+        GiNaC::ex stiffness = l.potential.diff(theta.position, 2).subs(theta.position == 0);
+        GiNaC::ex inertia = l.kinetic.diff(theta.velocity, 2);
+        CHECK(same(stiffness / inertia, s.frequency_squared * scene.parameters[2].symbol / scene.parameters[1].symbol));
+    }
+}
