@@ -463,6 +463,7 @@ TEST_CASE("bodies: input errors at their position", "[rigid_body][lower]")
     require_error(h + "body B disk(q) mass m\n", 3, 13, "coordinate `q` cannot appear");
     require_error(h + "body B region ball(l) density q\n", 3, 31, "coordinate `q` cannot appear in a density");
     require_error(h + "omega B (w1, w2, w3)\n", 3, 7, "unknown body `B`");
+    require_error(h + "body B region ball(l) density (1 + x + y + z)^1000\n", 3, 46, "degree");
     require_error(h + "body B disk(l) mass m\nbody B ball(l) mass m\n", 4, 6, "already declared");
     require_error(h + "body B disk(l) mass m orientation zxz(q, 0, 0)\nomega B (w1, w2, w3)\n", 4, 1,
                   "derived from them");
@@ -585,4 +586,14 @@ TEST_CASE("bodies in a Lagrangian: a disk swinging from a point of its rim", "[r
         GiNaC::ex inertia = l.kinetic.diff(theta.velocity, 2);
         CHECK(same(stiffness / inertia, s.frequency_squared * scene.parameters[2].symbol / scene.parameters[1].symbol));
     }
+}
+
+TEST_CASE("inertia: regression, a mass that is a sum with π (GiNaC's gcd refuses π)", "[rigid_body][inertia]")
+{
+    // ∫(1 + x)² over the ball = 4πR³/3 + 4πR⁵/15; before π went through as a symbol this threw.
+    loaded_body b = body_of("body B region ball(R) density (1 + x)^2");
+    GiNaC::ex r = symbol_of(b.scene, "R");
+    CHECK(same(b.inertia.mass, 4 * GiNaC::Pi * pow(r, 3) / 3 + 4 * GiNaC::Pi * pow(r, 5) / 15));
+    // The first moment ∫2x² shifts the centre along x: x_cm = (8πR⁵/15) / M.
+    CHECK(same(b.inertia.centre_of_mass[0] * b.inertia.mass, 8 * GiNaC::Pi * pow(r, 5) / 15));
 }

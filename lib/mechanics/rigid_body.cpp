@@ -190,11 +190,22 @@ std::array<GiNaC::ex, 3> permuted(const std::array<GiNaC::ex, 3>& n, char axis)
     return n;
 }
 
+/// normal() or factor() of an expression with π: GiNaC's gcd wants polynomials over the
+/// rationals, so π goes through as a positive symbol.
+GiNaC::ex with_pi_as_symbol(const GiNaC::ex& e, GiNaC::ex (*f)(const GiNaC::ex&))
+{
+    static const GiNaC::possymbol pi("Pi");
+    return f(e.subs(GiNaC::Pi == pi)).subs(pi == GiNaC::Pi);
+}
+
+GiNaC::ex normal_of(const GiNaC::ex& e) { return e.normal(); }
+GiNaC::ex factor_of(const GiNaC::ex& e) { return GiNaC::factor(e.normal()); }
+
 GiNaC::ex integrate_over(GiNaC::ex f, const std::vector<integration_limit>& limits)
 {
     for (const integration_limit& l : limits)
         f = integrate_exactly(f.expand(), l.variable, l.lower, l.upper);
-    return f.expand().normal();
+    return with_pi_as_symbol(f.expand(), normal_of);
 }
 
 GiNaC::matrix diagonal_matrix(const std::vector<GiNaC::ex>& d)
@@ -218,7 +229,7 @@ bool is_constant(const GiNaC::ex& e)
 std::vector<GiNaC::ex> principal_moments(const GiNaC::matrix& tensor)
 {
     GiNaC::realsymbol lambda("lambda");
-    GiNaC::ex p = GiNaC::factor(tensor.charpoly(lambda).expand());
+    GiNaC::ex p = with_pi_as_symbol(tensor.charpoly(lambda).expand(), factor_of);
     GiNaC::exvector factors;
     if (GiNaC::is_a<GiNaC::mul>(p))
         factors.assign(p.begin(), p.end());
@@ -237,12 +248,12 @@ std::vector<GiNaC::ex> principal_moments(const GiNaC::matrix& tensor)
         int degree = base.degree(lambda);
         std::vector<GiNaC::ex> found;
         if (degree == 1) {
-            found.push_back((-base.coeff(lambda, 0) / base.coeff(lambda, 1)).normal());
+            found.push_back(with_pi_as_symbol(-base.coeff(lambda, 0) / base.coeff(lambda, 1), normal_of));
         } else if (degree == 2) {
             GiNaC::ex a = base.coeff(lambda, 2), b = base.coeff(lambda, 1), c = base.coeff(lambda, 0);
             GiNaC::ex root = GiNaC::sqrt((b * b - 4 * a * c).expand());
-            found.push_back(((-b - root) / (2 * a)).normal());
-            found.push_back(((-b + root) / (2 * a)).normal());
+            found.push_back(with_pi_as_symbol((-b - root) / (2 * a), normal_of));
+            found.push_back(with_pi_as_symbol((-b + root) / (2 * a), normal_of));
         } else {
             return {};
         }
@@ -263,7 +274,7 @@ std::optional<double> number_of(const GiNaC::ex& e, const GiNaC::exmap& values)
 /// The sign of e: +1, −1, 0, or nothing if it cannot be told (also at `values`).
 std::optional<int> sign_of(const GiNaC::ex& e, const GiNaC::exmap& values)
 {
-    GiNaC::ex n = GiNaC::factor(e.normal());
+    GiNaC::ex n = with_pi_as_symbol(e, factor_of);
     if (n.is_zero())
         return 0;
     if (n.info(GiNaC::info_flags::positive))
@@ -299,7 +310,7 @@ GiNaC::matrix shifted_tensor(const GiNaC::matrix& tensor, const GiNaC::ex& mass,
     GiNaC::ex a2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
     for (unsigned i = 0; i < 3; ++i)
         for (unsigned j = 0; j < 3; ++j)
-            result(i, j) = (tensor(i, j) + mass * ((i == j ? a2 : GiNaC::ex(0)) - a[i] * a[j])).expand().normal();
+            result(i, j) = with_pi_as_symbol((tensor(i, j) + mass * ((i == j ? a2 : GiNaC::ex(0)) - a[i] * a[j])).expand(), normal_of);
     return result;
 }
 
@@ -376,7 +387,7 @@ inertia_result derive_inertia(const rigid_body& body)
         if (body.body_kind == rigid_body::kind::shape) {
             GiNaC::ex measure = integral("measure", 1, 1, at_point);
             result.mass = body.mass;
-            density = (body.mass / measure).normal();
+            density = with_pi_as_symbol(body.mass / measure, normal_of);
         } else {
             density = body.density;
             result.mass = integral("mass", density, 1, at_point);
@@ -388,7 +399,7 @@ inertia_result derive_inertia(const rigid_body& body)
         const std::array<GiNaC::ex, 3> body_xyz = {body.x, body.y, body.z};
         const char* names[] = {"x", "y", "z"};
         for (std::size_t k = 0; k < 3; ++k)
-            result.centre_of_mass[k] = (integral(names[k], density, body_xyz[k], at_point) / result.mass).normal();
+            result.centre_of_mass[k] = with_pi_as_symbol(integral(names[k], density, body_xyz[k], at_point) / result.mass, normal_of);
         GiNaC::exmap about_centre = at_point;
         for (std::size_t k = 0; k < 3; ++k)
             about_centre[body_xyz[k]] = placed[k] - result.centre_of_mass[k];
@@ -552,8 +563,8 @@ std::vector<top_result> analyze_tops(const model& scene, const lagrangian_result
             top.effective_potential = lagrangian.potential + GiNaC::numeric(1, 2) * routh;
             GiNaC::ex expansion =
                 GiNaC::series_to_poly(top.effective_potential.series(theta->position == 0, 3));
-            top.curvature = expansion.expand().coeff(theta->position, 2).normal();
-            top.condition = (8 * top.pivot_moment * top.curvature).expand().normal();
+            top.curvature = with_pi_as_symbol(expansion.expand().coeff(theta->position, 2), normal_of);
+            top.condition = with_pi_as_symbol((8 * top.pivot_moment * top.curvature).expand(), normal_of);
             tops.push_back(top);
         } catch (const computation_error&) {
             throw;
@@ -640,14 +651,14 @@ euler_result derive_euler(const rigid_body& body, const inertia_result& inertia,
     // Symmetric body: two equal moments.
     std::optional<std::size_t> axis;
     for (std::size_t a = 0; a < 3 && !axis; ++a)
-        if ((I[(a + 1) % 3] - I[(a + 2) % 3]).normal().is_zero())
+        if (with_pi_as_symbol(I[(a + 1) % 3] - I[(a + 2) % 3], normal_of).is_zero())
             axis = a;
     if (axis) {
         euler_result::symmetric_solution s;
         const std::size_t a = *axis, b = (a + 1) % 3, c = (a + 2) % 3;
         s.axis = a;
         const GiNaC::ex transverse = I[b];
-        s.precession = ((I[a] - transverse) * start[a] / transverse).normal();
+        s.precession = with_pi_as_symbol((I[a] - transverse) * start[a] / transverse, normal_of);
         s.constants = start;
         GiNaC::realsymbol t("t");
         s.time = t;

@@ -455,11 +455,41 @@ private:
         try {
             GiNaC::ex value = lower(node, expr_context{"a density", false, false, true, false});
             names_ = std::move(saved);
+            // Integration expands the density: keep its degree in x, y, z, r small enough to expand.
+            constexpr long max_density_degree = 8;
+            if (degree_bound(value, {body.x, body.y, body.z, body.r}) > max_density_degree)
+                throw scene_error(node.where, "the density's degree in x, y, z, r is above " +
+                                                  std::to_string(max_density_degree));
             return value;
         } catch (...) {
             names_ = std::move(saved);
             throw;
         }
+    }
+
+    /// An upper bound of the polynomial degree of `e` in `variables` (without expanding).
+    static long degree_bound(const GiNaC::ex& e, const std::vector<GiNaC::ex>& variables)
+    {
+        for (const GiNaC::ex& v : variables)
+            if (e.is_equal(v))
+                return 1;
+        if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+            long total = 0;
+            for (const GiNaC::ex& operand : e) {
+                long d = degree_bound(operand, variables);
+                total = GiNaC::is_a<GiNaC::add>(e) ? std::max(total, d) : total + d;
+            }
+            return total;
+        }
+        if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1))) {
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e.op(1));
+            long base = degree_bound(e.op(0), variables);
+            return n.is_integer() ? base * std::abs(n.to_long()) : base;
+        }
+        long inner = 0;
+        for (const GiNaC::ex& operand : e)
+            inner = std::max(inner, degree_bound(operand, variables));
+        return inner;
     }
 
     void lower_omega(const statement& s)
