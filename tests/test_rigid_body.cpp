@@ -328,6 +328,34 @@ TEST_CASE("inertia: parallel axes, rotation, L = Iω and T = ½ωᵀIω", "[rigi
     CHECK_FALSE(tilted(0, 1).expand().normal().is_zero());
 }
 
+TEST_CASE("inertia: principal moments and axes of a non-diagonal tensor", "[rigid_body][inertia]")
+{
+    // Density 1 + x y over a box: I_xy ≠ 0, so the body axes are not principal. Each
+    // principal moment λ is a root of det(I − λ) and its axis v satisfies I v = λ v.
+    for (const char* density : {"1 + x*y", "1 + x*y/(a*b)"}) {
+        INFO(density);
+        loaded_body b = body_of(std::string("body X region box(a, b, c) density ") + density);
+        const inertia_result& in = b.inertia;
+        CHECK_FALSE(in.diagonal);
+        REQUIRE(in.principal.size() == 3);
+        REQUIRE(in.principal_axes);
+        GiNaC::exmap values = {{symbol_of(b.scene, "a"), 1}, {symbol_of(b.scene, "b"), 2}, {symbol_of(b.scene, "c"), 3}};
+        for (unsigned k = 0; k < 3; ++k) {
+            double length = 0;
+            for (unsigned i = 0; i < 3; ++i)
+                length += std::pow(number((*in.principal_axes)(i, k), values), 2);
+            CHECK(length > 1e-12);
+            for (unsigned i = 0; i < 3; ++i) {
+                GiNaC::ex row = 0;
+                for (unsigned j = 0; j < 3; ++j)
+                    row += in.tensor(i, j) * (*in.principal_axes)(j, k);
+                CHECK_THAT(number(row - in.principal[k] * (*in.principal_axes)(i, k), values),
+                           WithinAbs(0, 1e-12 * (1 + std::sqrt(length))));
+            }
+        }
+    }
+}
+
 TEST_CASE("euler: equations derived for a free body, principal and general", "[rigid_body][euler]")
 {
     model scene = load("parameters I1 I2 I3\nbody B inertia (I1, I2, I3) mass 1\nomega B (w1, w2, w3)\n"

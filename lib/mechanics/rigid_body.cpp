@@ -263,6 +263,43 @@ std::vector<GiNaC::ex> principal_moments(const GiNaC::matrix& tensor)
     return roots.size() == 3 ? roots : std::vector<GiNaC::ex>{};
 }
 
+/// The principal axes as columns (directions, not normalized) for distinct principal
+/// moments: each is the cross product of two independent rows of I − λ·1.
+std::optional<GiNaC::matrix> principal_directions(const GiNaC::matrix& tensor, const std::vector<GiNaC::ex>& moments)
+{
+    if (moments.size() != 3)
+        return std::nullopt;
+    GiNaC::matrix axes(3, 3);
+    for (unsigned k = 0; k < 3; ++k) {
+        for (unsigned other = 0; other < 3; ++other)
+            if (other != k && with_pi_as_symbol(moments[k] - moments[other], normal_of).is_zero())
+                return std::nullopt; // a repeated moment: any axis of its plane is principal
+        GiNaC::matrix shifted = tensor.sub(GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3)).mul_scalar(moments[k]));
+        bool found = false;
+        const unsigned pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+        for (const auto& pair : pairs) {
+            const unsigned a = pair[0], b = pair[1];
+            std::array<GiNaC::ex, 3> v = {
+                shifted(a, 1) * shifted(b, 2) - shifted(a, 2) * shifted(b, 1),
+                shifted(a, 2) * shifted(b, 0) - shifted(a, 0) * shifted(b, 2),
+                shifted(a, 0) * shifted(b, 1) - shifted(a, 1) * shifted(b, 0)};
+            for (GiNaC::ex& c : v)
+                c = with_pi_as_symbol(c.expand(), normal_of);
+            if (v[0].is_zero() && v[1].is_zero() && v[2].is_zero())
+                continue;
+            // Scaled so that the last nonzero component is 1, as the mode vectors are.
+            GiNaC::ex scale = !v[2].is_zero() ? v[2] : !v[1].is_zero() ? v[1] : v[0];
+            for (unsigned i = 0; i < 3; ++i)
+                axes(i, k) = with_pi_as_symbol(v[i] / scale, normal_of);
+            found = true;
+            break;
+        }
+        if (!found)
+            return std::nullopt;
+    }
+    return axes;
+}
+
 std::optional<double> number_of(const GiNaC::ex& e, const GiNaC::exmap& values)
 {
     GiNaC::ex n = e.subs(values).evalf();
@@ -420,6 +457,8 @@ inertia_result derive_inertia(const rigid_body& body)
         result.principal_axes = GiNaC::matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     } else {
         result.principal = principal_moments(result.tensor);
+        if (std::optional<GiNaC::matrix> axes = principal_directions(result.tensor, result.principal))
+            result.principal_axes = axes;
     }
     if (body.position) {
         bool constant = true;

@@ -176,6 +176,12 @@ void write_bodies_text(std::ostream& out, const analysis& result)
             if (!in.principal.empty())
                 out << "    principal moments: " << join(printed(in.principal, syntax::text), ", ")
                     << (in.diagonal ? "  (the body axes are principal axes)" : "") << '\n';
+            if (!in.diagonal && in.principal_axes)
+                for (unsigned k = 0; k < 3; ++k)
+                    out << "      axis of " << print(in.principal[k], syntax::text) << ": ("
+                        << print((*in.principal_axes)(0, k), syntax::text) << ", "
+                        << print((*in.principal_axes)(1, k), syntax::text) << ", "
+                        << print((*in.principal_axes)(2, k), syntax::text) << ")\n";
             if (in.about_origin) {
                 std::vector<std::string> rows;
                 for (unsigned r = 0; r < 3; ++r) {
@@ -393,6 +399,14 @@ void write_bodies_json(nlohmann::ordered_json& doc, const analysis& result)
             nlohmann::ordered_json body;
             body["tensor"] = matrix(in.tensor);
             body["principal"] = strings(in.principal);
+            if (in.principal_axes) {
+                nlohmann::ordered_json axes = nlohmann::ordered_json::array();
+                for (unsigned k = 0; k < 3; ++k)
+                    axes.push_back({print((*in.principal_axes)(0, k), syntax::plain),
+                                    print((*in.principal_axes)(1, k), syntax::plain),
+                                    print((*in.principal_axes)(2, k), syntax::plain)});
+                body["principal_axes"] = axes;
+            }
             body["mass"] = print(in.mass, syntax::plain);
             body["coordinates"] = in.coordinates;
             if (!in.integrals.empty()) {
