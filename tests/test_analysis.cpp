@@ -49,11 +49,11 @@ TEST_CASE("analysis: without --want, the scene's want line decides, else what th
     CHECK(analyze(asking).wanted == std::set<product>{product::equations});
 }
 
-TEST_CASE("analysis: a product this version does not compute is a computation error", "[analysis]")
+TEST_CASE("analysis: inertia and euler without a rigid body are computation errors", "[analysis]")
 {
     model scene = load(oscillator + "want inertia\n");
     REQUIRE_THROWS_MATCHES(analyze(scene), computation_error,
-                           Catch::Matchers::Message("`inertia` is not computed by this version of lagrange yet"));
+                           Catch::Matchers::Message("`inertia` and `euler` need a rigid body (`body B disk(R) mass M`)"));
     CHECK_THROWS_AS(analyze(load(oscillator), {product::euler}), computation_error);
 }
 

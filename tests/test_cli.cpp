@@ -41,11 +41,11 @@ TEST_CASE("cli: usage errors exit with 2", "[cli]")
     CHECK(want.err.rfind("--want:1:1: error: unknown product", 0) == 0);
 }
 
-TEST_CASE("cli: a product not computed by this version exits with 1 and says why", "[cli]")
+TEST_CASE("cli: a product the scene cannot give exits with 1 and says why", "[cli]")
 {
     cli_result r = run_cli("--want inertia " + double_pendulum);
     CHECK(r.exit_code == 1);
-    CHECK(r.err.find("`inertia` is not computed by this version") != std::string::npos);
+    CHECK(r.err.find("need a rigid body") != std::string::npos);
 }
 
 TEST_CASE("cli: small-oscillation errors exit with 1 and say why, the same every run", "[cli]")

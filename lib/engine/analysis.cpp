@@ -12,7 +12,7 @@ const std::set<product>& available_products()
     static const std::set<product> products = {
         product::equations,       product::equilibrium, product::linearization,      product::characteristic,
         product::frequencies,     product::modes,       product::normal_coordinates, product::asymptotic,
-        product::numeric,
+        product::numeric,         product::inertia,     product::euler,
     };
     return products;
 }
@@ -59,9 +59,18 @@ bool wants_any(const std::set<product>& wanted, std::initializer_list<product> p
 /// The products a scene supports when it has no `want` line.
 std::set<product> default_products(const model& scene)
 {
-    std::set<product> products = {product::equations};
-    products.insert({product::equilibrium, product::linearization, product::characteristic,
-                     product::frequencies, product::modes, product::normal_coordinates});
+    std::set<product> products;
+    if (!scene.coordinates.empty()) {
+        products.insert({product::equations, product::equilibrium, product::linearization, product::characteristic,
+                         product::frequencies, product::modes, product::normal_coordinates});
+    }
+    if (!scene.bodies.empty())
+        products.insert(product::inertia);
+    for (const rigid_body& b : scene.bodies)
+        if (b.omega)
+            products.insert(product::euler);
+    if (scene.coordinates.empty())
+        return products;
     if (scene.limit)
         products.insert(product::asymptotic);
     if (!scene.values.empty())
@@ -91,11 +100,51 @@ analysis analyze(const model& scene, const std::set<product>& wanted)
     bool need_equilibria = need_linearization || w.count(product::equilibrium) > 0;
     bool need_equations = w.count(product::equations) > 0;
 
+    // Rigid bodies: inertia by integration, then Euler's equations of the free ones.
+    bool need_euler = w.count(product::euler) > 0;
+    if (need_euler || w.count(product::inertia)) {
+        if (scene.bodies.empty())
+            throw computation_error("`inertia` and `euler` need a rigid body (`body B disk(R) mass M`)");
+        run_stage(result, "inertia", [&] {
+            result.inertia.emplace();
+            for (const rigid_body& b : scene.bodies)
+                result.inertia->push_back(derive_inertia(b));
+        });
+    }
+    if (need_euler) {
+        bool free_body = false;
+        for (const rigid_body& b : scene.bodies)
+            free_body = free_body || b.omega.has_value();
+        if (!free_body)
+            throw computation_error("`euler` needs a free body: name its angular velocity with "
+                                    "`omega B (w1, w2, w3)`");
+        GiNaC::exmap values = scene.values.empty() ? GiNaC::exmap{} : value_map(scene, scene.values.front());
+        run_stage(result, "euler", [&] {
+            result.euler.emplace();
+            for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+                if (scene.bodies[i].omega)
+                    result.euler->push_back(derive_euler(scene.bodies[i], result.inertia->at(i), scene.initial, values));
+        });
+    }
+    if (scene.coordinates.empty()) {
+        if (wants_any(w, {product::equations, product::equilibrium, product::linearization, product::characteristic,
+                          product::frequencies, product::modes, product::normal_coordinates, product::asymptotic,
+                          product::numeric}))
+            throw computation_error("the scene has no coordinates, so it has no equations of motion "
+                                    "(only `inertia` and `euler`)");
+        return result;
+    }
+
     simplifier simplify = make_simplifier(scene);
     run_stage(result, "lagrangian", [&] { result.lagrangian = derive_lagrangian(scene, simplify); });
     if (need_equations)
         run_stage(result, "equations",
                   [&] { result.equations = derive_equations(scene, *result.lagrangian, simplify); });
+    bool has_top = false;
+    for (const rigid_body& b : scene.bodies)
+        has_top = has_top || b.orientation.has_value();
+    if (has_top && (need_equations || w.count(product::inertia)))
+        run_stage(result, "top", [&] { result.tops = analyze_tops(scene, *result.lagrangian, simplify); });
     if (!need_equilibria)
         return result;
 

@@ -5,6 +5,7 @@
 
 #include "mechanics/lagrangian.h"
 #include "mechanics/oscillations.h"
+#include "mechanics/rigid_body.h"
 #include "numeric/normal_modes.h"
 #include "scene/model.h"
 
@@ -34,6 +35,9 @@ struct analysis {
     std::optional<modes_result> modes;
     std::optional<asymptotic_result> asymptotic;
     std::optional<std::vector<numeric_modes>> numeric;
+    std::optional<std::vector<inertia_result>> inertia; ///< one per body, in scene order
+    std::optional<std::vector<euler_result>> euler;     ///< one per free body (with `omega`)
+    std::optional<std::vector<top_result>> tops;        ///< bodies turned by three coordinates (heavy tops)
 };
 
 /// The products this version computes.

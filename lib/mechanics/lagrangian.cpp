@@ -3,6 +3,7 @@
 #include "mechanics/lagrangian.h"
 
 #include "mechanics/harmonic.h"
+#include "mechanics/rigid_body.h"
 #include "scene/lower.h"
 
 #include <map>
@@ -268,6 +269,35 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
             for (std::size_t k = 0; k < 3; ++k)
                 height_along += scene.gravity->direction[k] * p.position[k];
             potential -= p.mass * scene.gravity->strength * height_along;
+        }
+    }
+    // Rigid bodies placed in the coordinates: ½ M v² of the centre of mass, ½ ωᵀ I ω with
+    // ω from the Euler-angle rates (mechanics/rigid_body.cpp), and gravity on the centre.
+    for (const rigid_body& b : scene.bodies) {
+        if (b.omega || (!b.position && !b.orientation))
+            continue;
+        const inertia_result inertia = derive_inertia(b);
+        if (b.position) {
+            std::vector<GiNaC::ex> velocity;
+            for (const GiNaC::ex& x : *b.position)
+                velocity.push_back(time_derivative(x, scene));
+            kinetic += GiNaC::numeric(1, 2) * inertia.mass * squared_length(velocity);
+            if (scene.gravity) {
+                GiNaC::ex height_along = 0;
+                for (std::size_t k = 0; k < 3; ++k)
+                    height_along += scene.gravity->direction[k] * (*b.position)[k];
+                potential -= inertia.mass * scene.gravity->strength * height_along;
+            }
+        }
+        if (b.orientation) {
+            const std::vector<GiNaC::ex>& angles = *b.orientation;
+            std::vector<GiNaC::ex> omega =
+                body_angular_velocity(euler_rotation(angles[0], angles[1], angles[2]), scene);
+            for (GiNaC::ex& w : omega)
+                w = simplify.canonical(w);
+            for (unsigned i = 0; i < 3; ++i)
+                for (unsigned j = 0; j < 3; ++j)
+                    kinetic += GiNaC::numeric(1, 2) * omega[i] * inertia.tensor(i, j) * omega[j];
         }
     }
     for (const spring& s : scene.springs) {

@@ -3,6 +3,7 @@
 #include "output/document.h"
 
 #include "output/latex_blocks.h"
+#include "output/bodies.h"
 #include "output/print.h"
 
 #include <nlohmann/json.hpp>
@@ -394,6 +395,7 @@ void write_text(std::ostream& out, const analysis& result, const document_option
                 << print((*result.equations)[i], syntax::text, equation_order(scene)) << " = 0\n";
     }
     write_oscillations_text(out, result);
+    write_bodies_text(out, result);
     for (const std::string& note : result.notes)
         out << "\nnote: " << note << '\n';
     if (options.timings) {
@@ -487,7 +489,8 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
            "\\usepackage[margin=2cm]{geometry}\n"
            "\\begin{document}\n";
     out << "\\section*{" << latex_escape(scene.title.empty() ? "Scene" : scene.title) << "}\n";
-    out << "Coordinates: $" << join_names(coordinate_names(scene), syntax::latex, ",\\ ") << "$.\\\\\n";
+    if (!scene.coordinates.empty()) // a free body's scene has none
+        out << "Coordinates: $" << join_names(coordinate_names(scene), syntax::latex, ",\\ ") << "$.\\\\\n";
     out << "Parameters: $" << join_names(parameter_names(scene), syntax::latex, ",\\ ") << "$.\n";
     if (result.lagrangian) {
         const lagrangian_result& l = *result.lagrangian;
@@ -506,6 +509,7 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
             out << latex_display("", print_terms((*result.equations)[i], syntax::latex, equation_order(scene)), " = 0");
     }
     write_oscillations_latex(out, result);
+    write_bodies_latex(out, result);
     if (options.timings) {
         out << "\\subsection*{Stages}\n\\begin{tabular}{lr}\n";
         for (const stage_time& s : result.stages)
@@ -653,6 +657,7 @@ void write_json(std::ostream& out, const analysis& result, const document_option
             doc["equations"].push_back(print(e, syntax::plain, equation_order(scene)));
     }
     write_oscillations_json(doc, result);
+    write_bodies_json(doc, result);
     if (!result.notes.empty())
         doc["notes"] = result.notes;
     out << doc.dump(2) << '\n';

@@ -53,6 +53,27 @@ struct spring {
     GiNaC::ex rest_length; ///< 0 if omitted
 };
 
+/// A rigid body (§2 of the spec). Its inertia is derived later (mechanics/rigid_body.h);
+/// the model keeps what the scene said.
+struct rigid_body {
+    enum class kind { shape, region, inertia };
+    std::string name;
+    kind body_kind = kind::shape;
+    std::string shape;                     ///< `disk`, `ball`, ... (shape or region name)
+    std::vector<GiNaC::ex> dimensions;     ///< the shape's arguments (R, h, ...)
+    GiNaC::ex mass;                        ///< shape and inertia bodies (region bodies: derived)
+    GiNaC::ex density;                     ///< region bodies, in the body coordinates below
+    std::vector<GiNaC::ex> moments;        ///< inertia bodies: (I1, I2, I3)
+    char axis = 'z';                       ///< the body axis that is the shape's symmetry axis
+    std::optional<std::vector<GiNaC::ex>> position;    ///< `at`: the centre of mass (3 components)
+    std::optional<std::vector<GiNaC::ex>> orientation; ///< `orientation zxz(φ, θ, ψ)`
+    std::optional<std::vector<GiNaC::realsymbol>> omega; ///< `omega B (w1, w2, w3)`, free bodies
+    std::vector<GiNaC::realsymbol> omega_rates;         ///< w1_dot, w2_dot, w3_dot
+    std::vector<GiNaC::ex> torque{0, 0, 0};            ///< `torque B (N1, N2, N3)`, body frame
+    GiNaC::realsymbol x{"x"}, y{"y"}, z{"z"}, r{"r"}; ///< body coordinates of `density`
+    source_location where;
+};
+
 /// `ratio rho = m/M`: results are also written with `numerator` replaced by rho·denominator.
 struct ratio_request {
     std::string name;
@@ -122,6 +143,7 @@ struct model {
     std::vector<point_mass> points;
     std::optional<gravity_field> gravity;
     std::vector<spring> springs;
+    std::vector<rigid_body> bodies;
 
     std::optional<std::vector<GiNaC::ex>> equilibrium; ///< one value per coordinate
     std::optional<ratio_request> ratio;

@@ -1,0 +1,163 @@
+/** @file rigid_body.h
+ *  Rigid bodies: inertia tensors derived by integrating the density over the body
+ *  (I_ij = ∫ρ (r² δ_ij − x_i x_j) dV about the centre of mass), principal moments,
+ *  L = I ω and T = ½ ωᵀ I ω, Euler's equations, torque-free motion in closed form
+ *  (symmetric bodies symbolically, asymmetric ones with Jacobi elliptic functions),
+ *  Poinsot's construction, and the angular velocity from z-x-z Euler angles. */
+#pragma once
+
+#include "scene/model.h"
+
+#include <ginac/ginac.h>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+/// One variable of integration with its limits (which may depend on outer variables).
+struct integration_limit {
+    GiNaC::realsymbol variable;
+    GiNaC::ex lower;
+    GiNaC::ex upper;
+};
+
+/// One integral over a body, kept so that a report can show where a result comes
+/// from (the homework's eqs. 16–35): ∫ρ·weight dV written in the body coordinates,
+/// and the same integral in the coordinates of the region, deltas carried out.
+struct body_integral {
+    std::string quantity;              ///< "measure", "mass", "x", "y", "z" (first moments), "xx", "xy", ...
+    GiNaC::ex density;                 ///< ρ in the body coordinates x, y, z (without the deltas)
+    std::vector<GiNaC::ex> deltas;     ///< thin bodies: ρ carries δ(e) for each e here (e.g. x, y; r − R)
+    GiNaC::ex weight;                  ///< 1, x_i, or r² δ_ij − x_i x_j, in x, y, z
+    GiNaC::ex integrand;               ///< ρ·weight·Jacobian in the region's coordinates
+    std::vector<integration_limit> limits; ///< innermost first
+    GiNaC::ex value;
+};
+
+/// The inertia of one body about its centre of mass, in body axes.
+struct inertia_result {
+    std::string body;
+    std::string coordinates;           ///< "cartesian", "cylindrical", "spherical", "ellipsoidal", "given"
+    GiNaC::ex mass;
+    GiNaC::ex density;                 ///< ρ in x, y, z (uniform bodies: M / measure), 0 if given by moments
+    std::vector<GiNaC::ex> centre_of_mass; ///< in the frame the region was integrated in (0 if centred)
+    GiNaC::matrix tensor{3, 3};        ///< about the centre of mass
+    bool diagonal = true;              ///< body axes are principal axes
+    std::vector<GiNaC::ex> principal;  ///< principal moments (body order if diagonal)
+    std::optional<GiNaC::matrix> principal_axes; ///< columns; when known
+    std::vector<body_integral> integrals;
+    std::optional<GiNaC::matrix> about_origin; ///< parallel-axis shift to the origin, for a constant `at`
+    std::vector<GiNaC::ex> omega;      ///< the ω components used below (the `omega` names, else ω1 ω2 ω3)
+    std::vector<GiNaC::ex> angular_momentum; ///< L = I ω, body frame
+    GiNaC::ex kinetic_energy;          ///< ½ ωᵀ I ω
+};
+
+/// Derives the inertia of `body` by integration (or takes the given principal moments).
+/// Throws computation_error when the density cannot be integrated exactly.
+inertia_result derive_inertia(const rigid_body& body);
+
+/// ∫_lower^upper f d(variable), exactly: polynomials in the variable, and products of
+/// sin^a cos^b over a full period [0, 2π] or over [0, π] (closed-form moments via the
+/// Beta function). Throws computation_error otherwise.
+GiNaC::ex integrate_exactly(const GiNaC::ex& f, const GiNaC::realsymbol& variable, const GiNaC::ex& lower,
+                            const GiNaC::ex& upper);
+
+/// The inertia tensor about a point at `offset` from the centre of mass (parallel axes):
+/// I + M (|a|² 1 − a aᵀ).
+GiNaC::matrix shifted_tensor(const GiNaC::matrix& tensor, const GiNaC::ex& mass, const std::vector<GiNaC::ex>& offset);
+
+/// R I Rᵀ: the tensor in a frame where the body axes are the columns of R.
+GiNaC::matrix rotated_tensor(const GiNaC::matrix& tensor, const GiNaC::matrix& rotation);
+
+/// R = Rz(φ) Rx(θ) Rz(ψ) (z-x-z Euler angles): body components to space components.
+GiNaC::matrix euler_rotation(const GiNaC::ex& phi, const GiNaC::ex& theta, const GiNaC::ex& psi);
+
+/// ω in the body frame from the entries of Rᵀ Ṙ (its skew part), derived with the total
+/// time derivative of the scene; entries returned unsimplified.
+std::vector<GiNaC::ex> body_angular_velocity(const GiNaC::matrix& rotation, const model& scene);
+
+/// Euler's equations of a free body and their torque-free solutions.
+struct euler_result {
+    std::string body;
+    std::vector<GiNaC::ex> omega, rates; ///< w1 w2 w3 and w1_dot ...
+    std::vector<GiNaC::ex> moments;      ///< principal moments used (I1, I2, I3)
+    std::vector<GiNaC::ex> equations;    ///< I ω̇ + ω × I ω − N, each = 0 (general form if not principal)
+    std::vector<GiNaC::ex> principal_equations; ///< in principal axes (set only if the tensor is not diagonal)
+    GiNaC::ex kinetic_energy;            ///< ½ Σ I_i ω_i²
+    GiNaC::ex angular_momentum_squared;  ///< Σ I_i² ω_i²
+    bool torque_free = true;
+
+    /// Symmetric body: ω_a constant, the others rotating at Ω.
+    struct symmetric_solution {
+        std::size_t axis = 2;            ///< index of the symmetry axis
+        GiNaC::ex precession;            ///< Ω = (I_a − I_t) ω_a / I_t
+        std::vector<GiNaC::ex> omega;    ///< ω(t)
+        std::vector<GiNaC::ex> constants; ///< the symbols or numbers ω(0)
+        GiNaC::ex time;                  ///< the symbol t in ω(t)
+    };
+    std::optional<symmetric_solution> symmetric;
+
+    /// Asymmetric body at numbers: the Jacobi elliptic solution.
+    struct elliptic_solution {
+        std::array<double, 3> moments{};   ///< I1 I2 I3 (body order)
+        std::array<double, 3> initial{};   ///< ω(0)
+        std::array<std::size_t, 3> roles{}; ///< body axes carrying cn, sn, dn
+        std::array<double, 3> amplitudes{}; ///< of cn, sn, dn (signed)
+        double rate = 0;                   ///< λ: the argument is λ t + u0
+        double phase = 0;                  ///< u0
+        double modulus = 0;                ///< k
+        double period = 0;                 ///< 4K(k)/λ
+        double energy = 0;                 ///< T
+        double momentum_squared = 0;       ///< |L|²
+        std::array<double, 3> evaluate(double t) const; ///< ω(t)
+    };
+    std::optional<elliptic_solution> elliptic;
+
+    /// Poinsot's construction at numbers.
+    struct poinsot_construction {
+        std::array<double, 3> ellipsoid_axes{}; ///< semi-axes of ωᵀ I ω = 2T: √(2T/I_i)
+        double plane_distance = 0;              ///< 2T/|L|: the invariable plane's distance from the centre
+        std::vector<std::array<double, 3>> polhode; ///< ω(t) over one period
+    };
+    std::optional<poinsot_construction> poinsot;
+
+    /// Rotation about each principal axis: "stable", "unstable" (intermediate), "marginal" or "unknown".
+    std::vector<std::string> stability;
+};
+
+/// Euler's equations of `body` (which must have `omega`), derived from
+/// dL/dt|space = dL/dt|body + ω × L = N, and the torque-free solution where one
+/// exists. `values`: a parameter point for the numeric elliptic solution (needs the
+/// scene's initial ω as well).
+euler_result derive_euler(const rigid_body& body, const inertia_result& inertia,
+                          const std::optional<initial_state>& initial, const GiNaC::exmap& values);
+
+struct lagrangian_result;
+struct simplifier;
+
+/// A top: a body turned by z-x-z Euler angles that are three coordinates (φ, θ, ψ), with
+/// φ and ψ cyclic. Routh's procedure with the cyclic momenta fixed at their sleeping
+/// values p_φ = p_ψ = I3 ω3 gives V_eff(θ); its curvature at θ = 0 decides whether the
+/// sleeping (vertical) top is stable.
+struct top_result {
+    std::string body;
+    GiNaC::ex nutation;            ///< θ, the angle from the vertical
+    GiNaC::ex pivot_moment;        ///< I1 about the fixed point: ∂²T/∂θ̇²
+    GiNaC::ex spin_moment;         ///< I3: ∂²T/∂ψ̇²
+    GiNaC::ex spin;                ///< the symbol ω3 = φ̇ cos θ + ψ̇ (conserved)
+    GiNaC::ex effective_potential; ///< V_eff(θ) at p_φ = p_ψ = I3 ω3
+    GiNaC::ex curvature;           ///< the coefficient of θ² in V_eff about θ = 0
+    GiNaC::ex condition;           ///< 8 I1 × curvature: the sleeping top is stable when it is > 0
+};
+
+/// The top analysis for every body that qualifies (none: empty).
+std::vector<top_result> analyze_tops(const model& scene, const lagrangian_result& lagrangian,
+                                     const simplifier& simplify);
+
+/// The values of a `values` line as a substitution.
+GiNaC::exmap value_map(const model& scene, const value_point& point);
+
+} // namespace lagrange
