@@ -179,6 +179,9 @@ void write_coordinates(report_writer& w)
     const model& scene = w.scene();
     w.latex("\\section{Coordinates and parameters}\n");
     std::size_t n = scene.coordinates.size();
+    if (n == 0) // a scene of rigid bodies only (their inertia, Euler's equations in ω)
+        w.text("The scene has no generalized coordinates");
+    else
     w.text("The configuration is described by " + std::string(n == 1 ? "the generalized coordinate " :
                                                              "the " + std::to_string(n) + " generalized coordinates "))
         .latex(name_list(coordinate_names(scene)));
@@ -730,6 +733,9 @@ const std::vector<report_section>& report_sections()
         {"numeric", [](const analysis& r) { return r.numeric.has_value(); }, write_numeric},
         // Rigid bodies (inertia integrals, Euler's equations) and the simulation
         // (beats, polhode, work-precision) add their section writers here.
+        {"bodies",
+         [](const analysis& r) { return r.inertia.has_value() || r.euler.has_value() || (r.tops && !r.tops->empty()); },
+         write_body_sections},
         {"notes", [](const analysis& r) { return !r.notes.empty(); }, write_notes},
     };
     return sections;

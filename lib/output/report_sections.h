@@ -11,4 +11,9 @@ namespace lagrange {
 /// The figure of the mode shapes, with a sentence on which mode is in phase.
 void write_mode_figures(report_writer& w);
 
+/// The rigid-body sections (report_bodies.cpp): each inertia component as the
+/// integral it comes from, the tensor, L and T; the heavy top; Euler's
+/// equations, the torque-free solution, conserved quantities, stability, polhode.
+void write_body_sections(report_writer& w);
+
 } // namespace lagrange
