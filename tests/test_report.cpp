@@ -6,6 +6,7 @@
 #include "cli_runner.h"
 
 #include "engine/analysis.h"
+#include "output/latex_blocks.h"
 #include "output/print.h"
 #include "output/report.h"
 #include "scene/lower.h"
@@ -13,6 +14,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
@@ -342,4 +346,217 @@ TEST_CASE("report: a scene without points in a plane gets bar charts of its mode
     lagrange::report_document without = lagrange::build_report(result, source, options);
     CHECK(without.figures.empty());
     CHECK(!contains(without.latex, "includegraphics"));
+}
+
+// ---------------------------------------------------------------------------
+// Rigid bodies in the report
+
+namespace {
+
+/// ∫ f over the box of limits (constant limits, innermost first) by nested
+/// 16-point Gauss–Legendre quadrature, at the numeric point `at`: an evaluation
+/// independent of the engine's exact integration.
+double quadrature(const GiNaC::ex& f, const std::vector<lagrange::integration_limit>& limits, const GiNaC::exmap& at,
+                  std::size_t level)
+{
+    static const double nodes[8] = {0.0950125098376374, 0.2816035507792589, 0.4580167776572274, 0.6178762444026438,
+                                    0.7554044083550030, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499};
+    static const double weights[8] = {0.1894506104550685, 0.1826034150449236, 0.1691565193950025, 0.1495959888165767,
+                                      0.1246289712555339, 0.0951585116824928, 0.0622535239386479, 0.0271524594117541};
+    if (level == 0)
+        return GiNaC::ex_to<GiNaC::numeric>(f.subs(at).evalf()).to_double();
+    const lagrange::integration_limit& l = limits[level - 1];
+    double a = GiNaC::ex_to<GiNaC::numeric>(l.lower.subs(at).evalf()).to_double();
+    double b = GiNaC::ex_to<GiNaC::numeric>(l.upper.subs(at).evalf()).to_double();
+    double sum = 0;
+    for (int k = 0; k < 8; ++k)
+        for (double sign : {-1.0, 1.0}) {
+            GiNaC::exmap inner = at;
+            inner[l.variable] = (a + b) / 2 + sign * nodes[k] * (b - a) / 2;
+            sum += weights[k] * quadrature(f.subs(inner), limits, inner, level - 1);
+        }
+    return sum * (b - a) / 2;
+}
+
+/// The part of the report from `start` to the next \subsection or \section.
+std::string section_of(const std::string& latex, const std::string& start)
+{
+    std::size_t from = latex.find(start);
+    if (from == std::string::npos)
+        return "";
+    std::size_t to = std::min(latex.find("\\subsection", from + start.size()), latex.find("\\section", from + start.size()));
+    return latex.substr(from, to == std::string::npos ? std::string::npos : to - from);
+}
+
+} // namespace
+
+TEST_CASE("report: the four homework bodies, each tensor with the integrals it came from", "[report][bodies]")
+{
+    auto built = report_of("homework_bodies.lag");
+    const lagrange::analysis& result = built->result;
+    const lagrange::model& scene = built->scene;
+    const std::string& latex = built->document.latex;
+    using GiNaC::ex;
+    ex M = parameter_named(scene, "M").symbol, l = parameter_named(scene, "l").symbol,
+       R = parameter_named(scene, "R").symbol;
+    REQUIRE(result.inertia);
+    REQUIRE(result.inertia->size() == 4);
+    // The homework's eqs. 20, 25, 30 and 35 (the stick along y).
+    const std::map<std::string, std::array<ex, 3>> homework = {
+        {"S", {M * l * l / 12, 0, M * l * l / 12}},
+        {"D", {M * R * R / 4, M * R * R / 4, M * R * R / 2}},
+        {"B", {2 * M * R * R / 5, 2 * M * R * R / 5, 2 * M * R * R / 5}},
+        {"H", {2 * M * R * R / 3, 2 * M * R * R / 3, 2 * M * R * R / 3}},
+    };
+    const GiNaC::exmap point{{M, GiNaC::numeric(13, 10)}, {l, GiNaC::numeric(7, 10)}, {R, GiNaC::numeric(11, 10)}};
+    const char* axes = "xyz";
+    CHECK(contains(latex, "\\section{Inertia tensors}"));
+    for (const lagrange::inertia_result& in : *result.inertia) {
+        INFO("body " << in.body);
+        REQUIRE(homework.count(in.body));
+        const std::string body = section_of(latex, "\\subsection{Body $" + in.body + "$}");
+        REQUIRE(!body.empty());
+        for (unsigned i = 0; i < 3; ++i)
+            for (unsigned j = 0; j < 3; ++j)
+                CHECK((in.tensor(i, j) - (i == j ? homework.at(in.body)[i] : ex(0))).expand().is_zero());
+        CHECK(contains(body, "\\mathbf{I} &= " + lagrange::latex_matrix(in.tensor)));
+        // Every component, as its integral: shown, and the integrand over the limits
+        // printed gives the value printed (by quadrature), which is the tensor's entry.
+        int components = 0;
+        for (const lagrange::body_integral& integral : in.integrals) {
+            if (integral.quantity.size() != 2)
+                continue;
+            INFO("I_" << integral.quantity);
+            ++components;
+            unsigned i = static_cast<unsigned>(std::string(axes).find(integral.quantity[0]));
+            unsigned j = static_cast<unsigned>(std::string(axes).find(integral.quantity[1]));
+            CHECK((integral.value - in.tensor(i, j)).expand().is_zero());
+            double exact = GiNaC::ex_to<GiNaC::numeric>(integral.value.subs(point).evalf()).to_double();
+            double numeric = quadrature(integral.integrand, integral.limits, point, integral.limits.size());
+            CHECK(std::abs(numeric - exact) <= 1e-10 * (1 + std::abs(exact)));
+            CHECK(contains(body, "I_{" + integral.quantity + "} &= \\int_{V} "));
+            for (const lagrange::integration_limit& limit : integral.limits)
+                CHECK(contains(body, "\\int_{" + lagrange::print(limit.lower, lagrange::syntax::latex) + "}^{" +
+                                         lagrange::print(limit.upper, lagrange::syntax::latex) + "}"));
+            CHECK(contains(body, "= " + lagrange::print(integral.value, lagrange::syntax::latex)));
+        }
+        CHECK(components == 6);
+        // The density, with the deltas of the thin bodies.
+        CHECK(contains(body, "\\varrho(\\mathbf{r}) &= "));
+        CHECK(contains(body, "\\delta(") == (in.body != "B"));
+        // L = I ω and T = ½ ωᵀ I ω in components.
+        CHECK(contains(body, "\\mathbf{L} &= \\begin{pmatrix}"));
+        CHECK(contains(body, "T &= "));
+    }
+    CHECK(contains(latex, "\\delta(r - R)"));
+}
+
+TEST_CASE("report: Euler's equations, conserved quantities and the symmetric solution of the disk", "[report][bodies]")
+{
+    auto built = report_of("disk.lag");
+    const lagrange::analysis& result = built->result;
+    const std::string& latex = built->document.latex;
+    REQUIRE(result.euler);
+    REQUIRE(result.euler->size() == 1);
+    const lagrange::euler_result& e = result.euler->front();
+    const lagrange::rigid_body& disk = built->scene.bodies.front();
+    REQUIRE(disk.omega);
+    // |L|² is Σ I_k² ω_k² with the disk's moments MR²/4, MR²/4, MR²/2.
+    using GiNaC::ex;
+    ex M = parameter_named(built->scene, "M").symbol, R = parameter_named(built->scene, "R").symbol;
+    const ex moments[] = {M * R * R / 4, M * R * R / 4, M * R * R / 2};
+    ex L2 = 0, T = 0;
+    for (int k = 0; k < 3; ++k) {
+        L2 += pow(moments[k], 2) * pow((*disk.omega)[static_cast<std::size_t>(k)], 2);
+        T += moments[k] * pow((*disk.omega)[static_cast<std::size_t>(k)], 2) / 2;
+    }
+    CHECK((e.angular_momentum_squared - L2).expand().is_zero());
+    CHECK((e.kinetic_energy - T).expand().is_zero());
+    CHECK(contains(latex, "|\\mathbf{L}|^{2} &= I_{1}^{2}"));
+    // A thin disk precesses at Ω = (I3 − I1) ω3 / I1 = ω3.
+    REQUIRE(e.symmetric);
+    CHECK((e.symmetric->precession - e.symmetric->constants[2]).expand().is_zero());
+    CHECK(contains(latex, "\\Omega &= " + lagrange::print(e.symmetric->precession, lagrange::syntax::latex)));
+    CHECK(contains(latex, "\\section{Euler's equations}"));
+    CHECK(contains(latex, " = 0"));
+    CHECK(contains(latex, "marginal"));
+}
+
+TEST_CASE("report: the free asymmetric top's elliptic solution, stability and polhode", "[report][bodies]")
+{
+    auto built = report_of("free_asymmetric_top.lag");
+    const lagrange::analysis& result = built->result;
+    const std::string& latex = built->document.latex;
+    REQUIRE(result.euler);
+    const lagrange::euler_result& e = result.euler->front();
+    REQUIRE(e.elliptic);
+    REQUIRE(e.poinsot);
+    // The period printed is that of the closed form; check it against Euler's
+    // equations integrated numerically (RK4) over one period: ω returns to ω(0).
+    const auto& s = *e.elliptic;
+    std::array<double, 3> w = s.evaluate(0);
+    auto rate = [&](const std::array<double, 3>& v) {
+        const auto& I = s.moments;
+        return std::array<double, 3>{(I[1] - I[2]) * v[1] * v[2] / I[0], (I[2] - I[0]) * v[2] * v[0] / I[1],
+                                     (I[0] - I[1]) * v[0] * v[1] / I[2]};
+    };
+    const int steps = 20000;
+    const double h = s.period / steps;
+    for (int n = 0; n < steps; ++n) {
+        auto add = [](std::array<double, 3> a, const std::array<double, 3>& b, double f) {
+            for (int k = 0; k < 3; ++k)
+                a[static_cast<std::size_t>(k)] += f * b[static_cast<std::size_t>(k)];
+            return a;
+        };
+        auto k1 = rate(w), k2 = rate(add(w, k1, h / 2)), k3 = rate(add(w, k2, h / 2)), k4 = rate(add(w, k3, h));
+        for (std::size_t k = 0; k < 3; ++k)
+            w[k] += h / 6 * (k1[k] + 2 * k2[k] + 2 * k3[k] + k4[k]);
+    }
+    std::array<double, 3> start = s.evaluate(0);
+    for (std::size_t k = 0; k < 3; ++k)
+        CHECK(std::abs(w[k] - start[k]) < 1e-8);
+    CHECK(contains(latex, "4K(k)/\\lambda = " + lagrange::report_writer::number(s.period, 10)));
+    // The intermediate axis (2: moments 5/6·M·… of the box 1 × 2 × 3) is the unstable one.
+    REQUIRE(e.stability.size() == 3);
+    CHECK(e.stability[1] == "unstable");
+    CHECK(contains(latex, "2 & $"));
+    CHECK(contains(latex, "$ & unstable\\\\"));
+    if (!have("gnuplot"))
+        FAIL("gnuplot is not installed (the test command installs gnuplot-nox)");
+    std::vector<std::string> names;
+    for (const lagrange::report_file& f : built->document.figures)
+        names.push_back(f.name);
+    CHECK(std::count(names.begin(), names.end(), "dp-body-X-polhode.pdf") == 1);
+    CHECK(std::count(names.begin(), names.end(), "dp-body-X-omega.pdf") == 1);
+    CHECK(contains(latex, "{dp-body-X-polhode}"));
+    // byte-identical from run to run, figures included
+    auto again = report_of("free_asymmetric_top.lag");
+    CHECK(again->document.latex == latex);
+    REQUIRE(again->document.figures.size() == built->document.figures.size());
+    for (std::size_t k = 0; k < built->document.figures.size(); ++k)
+        CHECK(again->document.figures[k].bytes == built->document.figures[k].bytes);
+}
+
+TEST_CASE("report: the heavy top's sleeping-top condition", "[report][bodies]")
+{
+    auto built = report_of("heavy_top.lag");
+    const lagrange::analysis& result = built->result;
+    const std::string& latex = built->document.latex;
+    REQUIRE(result.tops);
+    REQUIRE(result.tops->size() == 1);
+    const lagrange::top_result& top = result.tops->front();
+    using GiNaC::ex;
+    const lagrange::model& scene = built->scene;
+    ex M = parameter_named(scene, "M").symbol, g = parameter_named(scene, "g").symbol,
+       l = parameter_named(scene, "l").symbol, A = parameter_named(scene, "A").symbol,
+       C = parameter_named(scene, "C").symbol;
+    // Textbook (Goldstein §5.7): stable when I3² ω3² > 4 I1 M g l, I1 = A + M l² about the pivot.
+    CHECK((top.condition - (C * C * pow(top.spin, 2) - 4 * (A + M * l * l) * M * g * l)).expand().is_zero());
+    CHECK(contains(latex, "\\section{The heavy top}"));
+    std::string printed;
+    lagrange::term_order order{{{top.spin}}};
+    for (const std::string& term : lagrange::print_terms(top.condition, lagrange::syntax::latex, order))
+        printed += (printed.empty() ? "" : " ") + term;
+    CHECK(contains(latex, printed + " > 0."));
+    CHECK(contains(latex, "V_{\\mathrm{eff}}(\\theta)"));
 }

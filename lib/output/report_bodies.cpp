@@ -235,8 +235,10 @@ void write_body_inertia(report_writer& w, const inertia_result& in, const rigid_
 void write_inertia(report_writer& w)
 {
     w.latex("\\section{Inertia tensors}\n");
-    w.text("Each tensor is derived by integrating the density over the body, about its centre of mass and in "
-           "body axes (x, y, z).\n");
+    const auto& all = *w.result().inertia;
+    if (std::any_of(all.begin(), all.end(), [](const inertia_result& in) { return !in.integrals.empty(); }))
+        w.text("Each tensor is derived by integrating the density over the body, about its centre of mass and in "
+               "body axes (x, y, z).\n");
     for (const inertia_result& in : *w.result().inertia)
         if (const rigid_body* b = body_named(w.scene(), in.body))
             write_body_inertia(w, in, *b);
@@ -250,7 +252,7 @@ void polhode_figure(report_writer& w, const euler_result& e, const std::string& 
         return;
     std::string script = "set parametric\nset view equal xyz\nset view 62, 32\nset ticslevel 0\n"
                          "set urange [0:2*pi]\nset vrange [-pi/2:pi/2]\nset isosamples 25, 13\n"
-                         "set key top left\n";
+                         "set key at screen 0.98, 0.97 right top\nset xtics 0.5\nset ytics 0.5\nset ztics 0.5\n";
     script += "set xlabel '" + plain_name(e.omega[0]) + "'\nset ylabel '" + plain_name(e.omega[1]) + "'\nset zlabel '" +
               plain_name(e.omega[2]) + "'\n";
     script += "$polhode << EOD\n";
@@ -262,7 +264,7 @@ void polhode_figure(report_writer& w, const euler_result& e, const std::string& 
               "*sin(u)*cos(v), " + gnuplot_number(p.ellipsoid_axes[2]) +
               "*sin(v) with lines lc rgb '#c8c8c8' title 'inertia ellipsoid', "
               "$polhode using 1:2:3 with lines lw 2.5 lc rgb '#c00000' title 'polhode'\n";
-    w.figure(tag + "polhode", script, 11, 9,
+    w.figure(tag + "polhode", script, 12, 10,
              "The polhode of body " + body_title(e.body) +
                  ": the tip of $\\boldsymbol{\\omega}$ over one period, on the inertia ellipsoid "
                  "$\\boldsymbol{\\omega}^{T}\\mathbf{I}\\boldsymbol{\\omega} = 2T$.");
@@ -273,7 +275,7 @@ void omega_figure(report_writer& w, const euler_result& e, const std::string& ta
 {
     const auto& s = *e.elliptic;
     constexpr int samples = 240;
-    std::string script = "set key outside right\nset xlabel 't'\nset ylabel 'ω'\nset grid\n$omega << EOD\n";
+    std::string script = "set key outside right\nset xlabel 't'\nset ylabel 'body components of ω'\nset grid\n$omega << EOD\n";
     for (int n = 0; n <= samples; ++n) {
         double t = s.period * n / samples;
         std::array<double, 3> v = s.evaluate(t);
@@ -327,10 +329,15 @@ void write_body_euler(report_writer& w, const euler_result& e)
                                                                                           "kinetic energy and the "
                                                                                           "magnitude of the angular "
                                                                                           "momentum are conserved:");
+        auto equal = [](std::vector<std::string> terms) {
+            if (!terms.empty())
+                terms.front() = "= " + terms.front();
+            return terms;
+        };
         w.display_rows({{"T", {energy}},
-                        {"", print_terms(e.kinetic_energy, syntax::latex, order)},
+                        {"", equal(print_terms(e.kinetic_energy, syntax::latex, order))},
                         {"|\\mathbf{L}|^{2}", {momentum}},
-                        {"", print_terms(e.angular_momentum_squared, syntax::latex, order)}});
+                        {"", equal(print_terms(e.angular_momentum_squared, syntax::latex, order))}});
     }
     if (e.symmetric) {
         const auto& s = *e.symmetric;
@@ -354,8 +361,9 @@ void write_body_euler(report_writer& w, const euler_result& e)
         const char* functions[] = {"cn", "sn", "dn"};
         w.text("The body is asymmetric. At the values of the scene and from its initial ")
             .latex("$\\boldsymbol{\\omega}(0)$")
-            .text(", Euler's equations are solved by Jacobi's elliptic functions (Landau and Lifshitz, \\S37)")
-            .latex("");
+            .text(", Euler's equations are solved by Jacobi's elliptic functions (Landau and Lifshitz, ")
+            .latex("\\S")
+            .text("37)");
         w.text(", with the modulus ").latex("$k = " + report_writer::number(s.modulus, 10) + "$").text(":");
         rows.clear();
         for (std::size_t k = 0; k < 3; ++k) {
@@ -369,7 +377,7 @@ void write_body_euler(report_writer& w, const euler_result& e)
         }
         w.display_rows(rows);
         w.text("Its period is ").latex("$4K(k)/\\lambda = " + report_writer::number(s.period, 10) + "$")
-            .text(" (λ the rate of the argument above), and along it ")
+            .text(" (").latex("$\\lambda$").text(" the rate of the argument above), and along it ")
             .latex("$T = " + report_writer::number(s.energy, 10) + "$")
             .text(" and ")
             .latex("$|\\mathbf{L}|^{2} = " + report_writer::number(s.momentum_squared, 10) + "$")
@@ -418,7 +426,7 @@ void write_tops(report_writer& w)
         const std::string theta = report_writer::math(top.nutation);
         if (w.result().tops->size() > 1)
             w.latex("\\subsection{Body " + body_title(top.body) + "}\n");
-        w.text("The top ").latex(body_title(top.body)).text(" has the moment ")
+        w.text("The body ").latex(body_title(top.body)).text(" has the moment ")
             .latex("$I_{1} = " + report_writer::math(top.pivot_moment) + "$")
             .text(" about the pivot (perpendicular to its axis) and ")
             .latex("$I_{3} = " + report_writer::math(top.spin_moment) + "$")
