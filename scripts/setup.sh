@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev)
+packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libboost-dev libsundials-dev gnuplot-nox)
 if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then
   packages+=(texlive-latex-base)
 fi
