@@ -6,6 +6,7 @@
 #include "mechanics/lagrangian.h"
 #include "mechanics/oscillations.h"
 #include "numeric/normal_modes.h"
+#include "numeric/simulation.h"
 #include "scene/model.h"
 
 #include <optional>
@@ -34,6 +35,8 @@ struct analysis {
     std::optional<modes_result> modes;
     std::optional<asymptotic_result> asymptotic;
     std::optional<std::vector<numeric_modes>> numeric;
+    std::optional<simulation_result> simulation;
+    std::optional<workprecision_result> workprecision;
 };
 
 /// The products this version computes.
@@ -44,6 +47,8 @@ const std::set<product>& available_products();
 /// product that cannot be computed is left out with a note instead of failing).
 /// Throws computation_error for a product this version does not compute, or when
 /// a stage of an explicitly wanted product cannot be done.
-analysis analyze(const model& scene, const std::set<product>& wanted = {});
+/// `simulation` overrides the scene's `simulate` line (end time, method, tolerance).
+analysis analyze(const model& scene, const std::set<product>& wanted = {},
+                 const simulation_settings& simulation = {});
 
 } // namespace lagrange

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <memory>
 #include <cstdio>
 
 namespace lagrange {
@@ -161,6 +162,57 @@ beat_measurement measure_beats(const std::vector<double>& times, const std::vect
     return result;
 }
 
+namespace {
+
+/// The scene's motion at its parameter point, ready to integrate.
+struct prepared_motion {
+    std::map<std::string, GiNaC::ex> values;
+    std::unique_ptr<compiled_motion> motion;
+    std::vector<double> x0;
+    double until = 0;
+    double tolerance = 1e-9;
+    std::vector<double> frequencies;
+    double stiffness = 1;
+    ode_system system;
+};
+
+prepared_motion prepare(const model& scene, const lagrangian_result& lagrangian,
+                        const std::optional<std::vector<GiNaC::ex>>& equilibrium, const simulation_settings& settings)
+{
+    prepared_motion p;
+    p.values = merged_values(scene);
+    p.motion = std::make_unique<compiled_motion>(scene, lagrangian, p.values);
+    p.x0 = initial_state_vector(scene, p.values);
+    const std::size_t n = p.motion->coordinates();
+    p.until = settings.until ? *settings.until : scene.simulation ? to_double(scene.simulation->until) : 0;
+    if (!(p.until > 0) || !std::isfinite(p.until))
+        throw computation_error("the simulation needs an end time: a `simulate until T` line or --until");
+    p.tolerance = settings.tolerance ? *settings.tolerance
+                  : scene.simulation && scene.simulation->tolerance ? to_double(*scene.simulation->tolerance)
+                                                                    : 1e-9;
+    if (!(p.tolerance >= 1e-14 && p.tolerance < 1))
+        throw computation_error("the tolerance " + number(p.tolerance) + " is outside 1e-14 … 1");
+
+    // The linearization about the equilibrium (or the initial position) for the choice of method.
+    std::vector<double> reference_state(2 * n, 0.0);
+    if (equilibrium && equilibrium->size() == n) {
+        for (std::size_t i = 0; i < n; ++i)
+            reference_state[i] = to_double(substitute((*equilibrium)[i], scene, p.values));
+    } else {
+        std::copy(p.x0.begin(), p.x0.begin() + static_cast<std::ptrdiff_t>(n), reference_state.begin());
+    }
+    double energy_scale = 0;
+    if (p.motion->conservative() && equilibrium)
+        energy_scale = std::abs(p.motion->energy(p.x0.data()) - p.motion->energy(reference_state.data()));
+    p.system = p.motion->system(energy_scale);
+    p.frequencies = linearized_frequencies(p.system, reference_state);
+    if (p.frequencies.size() >= 2)
+        p.stiffness = p.frequencies.back() / p.frequencies.front();
+    return p;
+}
+
+} // namespace
+
 simulation_result simulate(const model& scene, const lagrangian_result& lagrangian,
                            const std::optional<std::vector<GiNaC::ex>>& equilibrium,
                            const simulation_settings& settings)
@@ -168,35 +220,15 @@ simulation_result simulate(const model& scene, const lagrangian_result& lagrangi
     simulation_result result;
     for (const coordinate& c : scene.coordinates)
         result.coordinates.push_back(c.name);
-    result.values = merged_values(scene);
-    compiled_motion motion(scene, lagrangian, result.values);
-    std::vector<double> x0 = initial_state_vector(scene, result.values);
-    const std::size_t n = motion.coordinates();
-
-    double until = settings.until ? *settings.until : scene.simulation ? to_double(scene.simulation->until) : 0;
-    if (!(until > 0) || !std::isfinite(until))
-        throw computation_error("the simulation needs an end time: a `simulate until T` line or --until");
-    result.tolerance = settings.tolerance ? *settings.tolerance
-                       : scene.simulation && scene.simulation->tolerance ? to_double(*scene.simulation->tolerance)
-                                                                         : 1e-9;
-    if (!(result.tolerance >= 1e-14 && result.tolerance < 1))
-        throw computation_error("the tolerance " + number(result.tolerance) + " is outside 1e-14 … 1");
-
-    // The linearization about the equilibrium (or the initial position) for the choice of method.
-    std::vector<double> reference_state(2 * n, 0.0);
-    if (equilibrium && equilibrium->size() == n) {
-        for (std::size_t i = 0; i < n; ++i)
-            reference_state[i] = to_double(substitute((*equilibrium)[i], scene, result.values));
-    } else {
-        std::copy(x0.begin(), x0.begin() + static_cast<std::ptrdiff_t>(n), reference_state.begin());
-    }
-    double energy_scale = 0;
-    if (motion.conservative() && equilibrium)
-        energy_scale = std::abs(motion.energy(x0.data()) - motion.energy(reference_state.data()));
-    ode_system system = motion.system(energy_scale);
-    result.frequencies = linearized_frequencies(system, reference_state);
-    if (result.frequencies.size() >= 2)
-        result.stiffness = result.frequencies.back() / result.frequencies.front();
+    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, settings);
+    result.values = prepared.values;
+    const std::size_t n = prepared.motion->coordinates();
+    const std::vector<double>& x0 = prepared.x0;
+    const double until = prepared.until;
+    result.tolerance = prepared.tolerance;
+    result.frequencies = prepared.frequencies;
+    result.stiffness = prepared.stiffness;
+    ode_system& system = prepared.system;
 
     std::string method_name = settings.method ? *settings.method : scene.simulation ? scene.simulation->method : "auto";
     ode_method method;
@@ -276,6 +308,15 @@ simulation_result simulate(const model& scene, const lagrangian_result& lagrangi
     return result;
 }
 
+workprecision_result scene_work_precision(const model& scene, const lagrangian_result& lagrangian,
+                                          const std::optional<std::vector<GiNaC::ex>>& equilibrium,
+                                          const simulation_settings& settings)
+{
+    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, settings);
+    return work_precision(prepared.system, prepared.x0, prepared.until, prepared.motion->coordinates(),
+                          prepared.frequencies, {}, settings.max_seconds / 6);
+}
+
 workprecision_result work_precision(const ode_system& system, const std::vector<double>& x0, double until,
                                     std::size_t coordinates, const std::vector<double>& frequencies,
                                     const std::vector<double>& tolerances, double max_seconds)
@@ -308,11 +349,17 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
         for (int k = 3; k <= 12; ++k)
             ladder.push_back(std::pow(10.0, -k));
     for (ode_method method : all_ode_methods()) {
+        std::string skip;
         for (double tol : ladder) {
             workprecision_point point;
             point.method = to_string(method);
             point.tolerance = tol;
             options.tolerance = tol;
+            if (!skip.empty()) {
+                point.failure = skip;
+                result.points.push_back(point);
+                continue;
+            }
             try {
                 double best = HUGE_VAL, total = 0;
                 trajectory run;
@@ -327,8 +374,11 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
                 for (const auto& [name, drift] : run.invariant_drift)
                     if (name == "energy")
                         point.energy_drift = drift;
+                if (best > max_seconds / 4)
+                    skip = "left out: the looser tolerance " + number(tol) + " already took " + number(best) + " s";
             } catch (const computation_error& error) {
                 point.failure = error.what();
+                skip = "left out: the looser tolerance " + number(tol) + " already failed";
             }
             result.points.push_back(point);
         }

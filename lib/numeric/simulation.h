@@ -88,6 +88,12 @@ struct workprecision_result {
     std::vector<workprecision_point> points;
 };
 
+/// `work_precision` on the scene's equations of motion at its parameter point, from
+/// its initial state over the `simulate` time span (or settings.until).
+workprecision_result scene_work_precision(const model& scene, const lagrangian_result& lagrangian,
+                                          const std::optional<std::vector<GiNaC::ex>>& equilibrium,
+                                          const simulation_settings& settings = {});
+
 /// Every method over tolerances 1e-3 … 1e-12 (`tolerances` if given), each run
 /// repeated while it takes under 0.2 s in total (the fastest kept).
 workprecision_result work_precision(const ode_system& system, const std::vector<double>& x0, double until,

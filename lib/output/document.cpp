@@ -3,6 +3,7 @@
 #include "output/document.h"
 
 #include "output/print.h"
+#include "output/simulation_output.h"
 
 #include <nlohmann/json.hpp>
 
@@ -321,6 +322,10 @@ void write_text(std::ostream& out, const analysis& result, const document_option
                 << print((*result.equations)[i], syntax::text, equation_order(scene)) << " = 0\n";
     }
     write_oscillations_text(out, result);
+    if (result.simulation)
+        write_simulation_text(out, *result.simulation, options.timings);
+    if (result.workprecision)
+        write_workprecision_text(out, *result.workprecision);
     for (const std::string& note : result.notes)
         out << "\nnote: " << note << '\n';
     if (options.timings) {
@@ -422,6 +427,10 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
             out << latex_display("", print_terms((*result.equations)[i], syntax::latex, equation_order(scene)), " = 0");
     }
     write_oscillations_latex(out, result);
+    if (result.simulation)
+        write_simulation_latex(out, *result.simulation, options.timings);
+    if (result.workprecision)
+        write_workprecision_latex(out, *result.workprecision);
     if (options.timings) {
         out << "\\subsection*{Stages}\n\\begin{tabular}{lr}\n";
         for (const stage_time& s : result.stages)
@@ -559,6 +568,10 @@ void write_json(std::ostream& out, const analysis& result, const document_option
             doc["equations"].push_back(print(e, syntax::plain, equation_order(scene)));
     }
     write_oscillations_json(doc, result);
+    if (result.simulation)
+        doc["simulation"] = simulation_json(*result.simulation, options.timings);
+    if (result.workprecision)
+        doc["workprecision"] = workprecision_json(*result.workprecision);
     if (!result.notes.empty())
         doc["notes"] = result.notes;
     out << doc.dump(2) << '\n';
