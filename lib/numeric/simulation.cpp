@@ -266,10 +266,14 @@ simulation_result simulate(const model& scene, const lagrangian_result& lagrangi
     if (result.run.exact_error) {
         result.error_estimate = result.run.exact_error;
         result.error_basis = "against the exact normal-mode solution of the linear equations";
+    } else if (settings.estimate_error && result.run.seconds > settings.max_seconds / 4) {
+        result.error_basis = "no estimate: the run took " + number(result.run.seconds) +
+                             " s, and a reference run at a tighter tolerance would exceed the time limit";
     } else if (settings.estimate_error) {
         integration_options fine = options;
         fine.progress = nullptr;
         fine.tolerance = std::max(result.tolerance / 1000, 1e-14);
+        fine.max_seconds = std::max(1.0, settings.max_seconds - result.run.seconds);
         ode_method reference = method == ode_method::implicit_midpoint
                                    ? (result.stiffness > stiffness_threshold ? ode_method::bdf : ode_method::rkf78)
                                    : method;
