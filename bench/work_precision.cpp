@@ -87,6 +87,8 @@ problem from_scene(const std::string& name, const std::string& text, double unti
     lagrange::analysis a = lagrange::analyze(*p.scene, {lagrange::product::equations});
     p.motion = std::make_shared<lagrange::compiled_motion>(*p.scene, *a.lagrangian,
                                                            lagrange::first_value_point(*p.scene));
+    if (!p.motion->compile_native())
+        std::cerr << "work_precision: no C compiler, the interpreter evaluates the equations\n";
     p.x0 = lagrange::initial_state_vector(*p.scene, lagrange::first_value_point(*p.scene));
     std::vector<double> rest(p.x0.size(), 0.0);
     // Energy above the equilibrium, as the peer scales it.

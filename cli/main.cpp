@@ -119,6 +119,7 @@ struct motion_options {
     std::string plot;
     std::string format = "text";
     std::string output;
+    bool native = false;
 };
 
 /// A progress bar on standard error when it is a terminal and the run takes over a second.
@@ -156,6 +157,7 @@ int motion_command(const motion_options& options, lagrange::product wanted)
         settings.method = options.method;
     settings.tolerance = options.tolerance;
     settings.progress = progress_bar();
+    settings.native = options.native;
     lagrange::analysis result = lagrange::analyze(scene, {wanted}, settings);
     std::string title = scene.title.empty() ? source.file() : scene.title;
     if (result.simulation && !options.csv.empty()) {
@@ -237,6 +239,8 @@ int run(int argc, char** argv)
     simulate->add_option("--tolerance", simulate_options.tolerance, "relative and absolute tolerance per step")
         ->check(CLI::Range(1e-14, 0.5));
     simulate->add_option("--csv", simulate_options.csv, "write the trajectory as CSV");
+    simulate->add_flag("--native", simulate_options.native,
+                       "compile the equations to machine code with the system's C compiler first");
 
     try {
         app.parse(argc, argv);

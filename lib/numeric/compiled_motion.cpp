@@ -43,44 +43,40 @@ double to_double(const GiNaC::ex& e, const std::string& what)
     return d;
 }
 
-/// Cholesky factor of the symmetric n × n matrix `m` (row-major) in place (lower
-/// triangle). Written by hand: for the 2–6 coordinates of a scene a plain loop beats
-/// a general library call, and it reports the failing pivot.
-bool cholesky(double* m, std::size_t n)
+/// LDLᵀ factor of the symmetric n × n matrix `m` (row-major) in place: L below the
+/// diagonal, D on it. Written by hand: for the 2–6 coordinates of a scene a plain
+/// loop without square roots beats a general library call, and it reports the failing
+/// pivot (a mass matrix that is not positive definite).
+bool factor_ldlt(double* m, std::size_t n)
 {
     for (std::size_t j = 0; j < n; ++j) {
         double d = m[j * n + j];
         for (std::size_t k = 0; k < j; ++k)
-            d -= m[j * n + k] * m[j * n + k];
+            d -= m[j * n + k] * m[j * n + k] * m[k * n + k];
         if (!(d > 0))
             return false;
-        d = std::sqrt(d);
         m[j * n + j] = d;
         for (std::size_t i = j + 1; i < n; ++i) {
             double s = m[i * n + j];
             for (std::size_t k = 0; k < j; ++k)
-                s -= m[i * n + k] * m[j * n + k];
+                s -= m[i * n + k] * m[j * n + k] * m[k * n + k];
             m[i * n + j] = s / d;
         }
     }
     return true;
 }
 
-/// Solves L Lᵀ y = b in place with the factor from cholesky().
-void cholesky_solve(const double* l, std::size_t n, double* b)
+/// Solves L D Lᵀ y = b in place with the factor from factor_ldlt().
+void ldlt_solve(const double* l, std::size_t n, double* b)
 {
-    for (std::size_t i = 0; i < n; ++i) {
-        double s = b[i];
+    for (std::size_t i = 0; i < n; ++i)
         for (std::size_t k = 0; k < i; ++k)
-            s -= l[i * n + k] * b[k];
-        b[i] = s / l[i * n + i];
-    }
-    for (std::size_t i = n; i-- > 0;) {
-        double s = b[i];
+            b[i] -= l[i * n + k] * b[k];
+    for (std::size_t i = 0; i < n; ++i)
+        b[i] /= l[i * n + i];
+    for (std::size_t i = n; i-- > 0;)
         for (std::size_t k = i + 1; k < n; ++k)
-            s -= l[k * n + i] * b[k];
-        b[i] = s / l[i * n + i];
-    }
+            b[i] -= l[k * n + i] * b[k];
 }
 
 } // namespace
@@ -143,17 +139,32 @@ compiled_motion::compiled_motion(const model& scene, const lagrangian_result& la
     jacobian_outputs_.resize(jacobian_outputs.size());
 }
 
-void compiled_motion::solve(double t, const double* x, double* acceleration) const
+void compiled_motion::solve(double t, const double* x, double* acceleration, bool keep_factor) const
 {
     symbols_[0] = t;
     std::copy(x, x + 2 * n_, symbols_.begin() + 1);
-    rhs_program_.run(symbols_.data(), scratch_, outputs_.data());
+    if (rhs_native_)
+        rhs_native_(symbols_.data(), outputs_.data());
+    else
+        rhs_program_.run(symbols_.data(), scratch_, outputs_.data());
+    if (n_ == 2 && !keep_factor) {
+        // Two coordinates: Cramer's rule (the common case, without the factorization's loops).
+        const double* o = outputs_.data();
+        double a = o[0], b = o[1], d = o[3], determinant = a * d - b * b;
+        if (!(a > 0 && determinant > 0))
+            throw computation_error("the mass matrix is not positive definite at t = " + number(t) +
+                                    " (a singular configuration of the coordinates)");
+        double inverse = 1 / determinant;
+        acceleration[0] = (d * o[4] - b * o[5]) * inverse;
+        acceleration[1] = (a * o[5] - b * o[4]) * inverse;
+        return;
+    }
     std::copy(outputs_.begin(), outputs_.begin() + static_cast<std::ptrdiff_t>(n_ * n_), factor_.begin());
     std::copy(outputs_.begin() + static_cast<std::ptrdiff_t>(n_ * n_), outputs_.end(), acceleration);
-    if (!cholesky(factor_.data(), n_))
+    if (!factor_ldlt(factor_.data(), n_))
         throw computation_error("the mass matrix is not positive definite at t = " + number(t) +
                                 " (a singular configuration of the coordinates)");
-    cholesky_solve(factor_.data(), n_, acceleration);
+    ldlt_solve(factor_.data(), n_, acceleration);
 }
 
 void compiled_motion::rhs(double t, const double* x, double* dxdt) const
@@ -166,8 +177,11 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
 {
     const std::size_t n = n_, d = 2 * n_;
     std::vector<double> acceleration(n);
-    solve(t, x, acceleration.data()); // leaves the Cholesky factor of M in factor_
-    jacobian_program_.run(symbols_.data(), scratch_, jacobian_outputs_.data());
+    solve(t, x, acceleration.data(), true); // leaves the LDLᵀ factor of M in factor_
+    if (jacobian_native_)
+        jacobian_native_(symbols_.data(), jacobian_outputs_.data());
+    else
+        jacobian_program_.run(symbols_.data(), scratch_, jacobian_outputs_.data());
     const double* mass_derivative = jacobian_outputs_.data();        // [k][i][j]: ∂M_ij/∂q_k
     const double* force_position = mass_derivative + n * n * n;      // [i][k]: ∂f_i/∂q_k
     const double* force_velocity = force_position + n * n;           // [i][k]: ∂f_i/∂q̇_k
@@ -186,10 +200,22 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
                 column[i] = force_velocity[i * n + (k - n)];
             }
         }
-        cholesky_solve(factor_.data(), n, column.data());
+        ldlt_solve(factor_.data(), n, column.data());
         for (std::size_t i = 0; i < n; ++i)
             out[(n + i) * d + k] = column[i];
     }
+}
+
+bool compiled_motion::compile_native()
+{
+    if (native_)
+        return true;
+    native_ = native_module::compile({&rhs_program_, &jacobian_program_});
+    if (!native_)
+        return false;
+    rhs_native_ = native_->get(0);
+    jacobian_native_ = native_->get(1);
+    return true;
 }
 
 double compiled_motion::energy(const double* x) const

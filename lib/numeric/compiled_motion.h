@@ -8,6 +8,7 @@
 
 #include "mechanics/lagrangian.h"
 #include "numeric/expression_program.h"
+#include "numeric/native_code.h"
 #include "numeric/ode.h"
 #include "scene/model.h"
 
@@ -31,7 +32,7 @@ public:
     bool conservative() const { return conservative_; } ///< L has no explicit time: energy is conserved
     std::size_t instructions() const { return rhs_program_.instruction_count(); }
 
-    /// dxdt = (q̇, q̈) with M q̈ = f solved by Cholesky; throws computation_error when M
+    /// dxdt = (q̇, q̈) with M q̈ = f solved by LDLᵀ; throws computation_error when M
     /// is not positive definite at x.
     void rhs(double t, const double* x, double* dxdt) const;
     /// ∂(q̇, q̈)/∂(q, q̇), row-major 2n × 2n: ∂q̈/∂y = M⁻¹ (∂f/∂y − (∂M/∂y) q̈).
@@ -39,17 +40,26 @@ public:
     /// The energy function h = Σ q̇ ∂L/∂q̇ − L (conserved when L has no explicit t).
     double energy(const double* x) const;
 
+    /// Compiles M, f and the Jacobian's parts to machine code (see native_code.h);
+    /// false, and the interpreter stays in use, when no C compiler is available.
+    bool compile_native();
+    bool native() const { return static_cast<bool>(native_); }
+
     /// The system for the integrators: rhs, Jacobian, and the energy as an invariant
     /// (relative to `energy_scale`, 0 for its initial magnitude) when it is conserved.
     ode_system system(double energy_scale = 0) const;
 
 private:
-    void solve(double t, const double* x, double* acceleration) const;
+    /// q̈ at x; `keep_factor` leaves the LDLᵀ factor of M in factor_ (for the Jacobian).
+    void solve(double t, const double* x, double* acceleration, bool keep_factor = false) const;
     std::size_t n_ = 0;
     bool conservative_ = true;
     expression_program rhs_program_;      ///< M (row-major, n²) then f (n)
     expression_program jacobian_program_; ///< ∂M/∂q_k (n³), ∂f/∂q (n²), ∂f/∂q̇ (n²)
     expression_program energy_program_;
+    std::shared_ptr<native_module> native_;
+    native_module::function rhs_native_ = nullptr;
+    native_module::function jacobian_native_ = nullptr;
     mutable std::vector<double> scratch_, symbols_, outputs_, factor_, jacobian_outputs_;
 };
 

@@ -182,6 +182,8 @@ prepared_motion prepare(const model& scene, const lagrangian_result& lagrangian,
     prepared_motion p;
     p.values = merged_values(scene);
     p.motion = std::make_unique<compiled_motion>(scene, lagrangian, p.values);
+    if (settings.native)
+        p.motion->compile_native(); // falls back to the interpreter without a compiler
     p.x0 = initial_state_vector(scene, p.values);
     const std::size_t n = p.motion->coordinates();
     p.until = settings.until ? *settings.until : scene.simulation ? to_double(scene.simulation->until) : 0;
@@ -316,7 +318,9 @@ workprecision_result scene_work_precision(const model& scene, const lagrangian_r
                                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
                                           const simulation_settings& settings)
 {
-    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, settings);
+    simulation_settings native = settings;
+    native.native = true;
+    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, native);
     return work_precision(prepared.system, prepared.x0, prepared.until, prepared.motion->coordinates(),
                           prepared.frequencies, {}, settings.max_seconds / 6);
 }
