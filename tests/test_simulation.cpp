@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
@@ -199,4 +200,34 @@ TEST_CASE("workprecision: the ladder on a linear scene, errors against the exact
         CHECK(*p.error <= p.tolerance);
         CHECK(p.seconds > 0);
     }
+}
+
+TEST_CASE("compiled_motion: native code agrees with the interpreter and leaves no files", "[simulation][native]")
+{
+    lagrange::model scene = load(double_pendulum + "values M = 2, m = 0.7, l = 1.3, g = 9.81\n");
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    lagrange::compiled_motion interpreted(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    lagrange::compiled_motion native(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    auto leftovers = [] {
+        int count = 0;
+        for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+            count += entry.path().filename().string().rfind("lagrange-native-", 0) == 0;
+        return count;
+    };
+    int before = leftovers();
+    if (!native.compile_native()) {
+        WARN("no C compiler: the native path is not tested");
+        return;
+    }
+    CHECK(native.native());
+    CHECK(leftovers() == before);
+    std::vector<double> x{0.4, -1.1, 0.7, -0.3}, f(4), g(4), j(16), k(16);
+    interpreted.rhs(0, x.data(), f.data());
+    native.rhs(0, x.data(), g.data());
+    interpreted.jacobian(0, x.data(), j.data());
+    native.jacobian(0, x.data(), k.data());
+    for (int i = 0; i < 4; ++i)
+        CHECK_THAT(g[i], WithinAbs(f[i], 1e-14 * (1 + std::abs(f[i]))));
+    for (int i = 0; i < 16; ++i)
+        CHECK_THAT(k[i], WithinAbs(j[i], 1e-13 * (1 + std::abs(j[i]))));
 }
