@@ -388,14 +388,14 @@ void plot_workprecision(const std::string& path, const workprecision_result& w, 
         }
     }
     std::ostringstream script;
-    script << "set terminal svg size 900,560 dynamic font 'sans,12'\n"
+    script << "set terminal svg size 900,560 dynamic enhanced font 'sans,12'\n"
               "set output 'plot.svg'\n"
-              "set logscale xy\nset format x '10^{%T}'\nset format y '10^{%T}'\n"
+              "set logscale xy\nset format x '1e%T'\nset format y '1e%T'\n"
               "set xlabel 'run time (s)'\nset ylabel 'relative error'\nset grid\nset key outside right top\n"
-           << "set title " << gnuplot_string(title + " — " + w.reference) << "\nplot ";
+           << "set title " << gnuplot_string(title + " — " + w.reference) << " noenhanced\nplot ";
     for (std::size_t k = 0; k < methods.size(); ++k)
-        script << (k ? ", " : "") << "'data.txt' index " << k << " using 1:2 with linespoints lw 1.5 title "
-               << gnuplot_string(methods[k]);
+        script << (k ? ", " : "") << "'data.txt' index " << k << " using 1:2 with linespoints lw 1.5 pt 7 ps 0.6 title "
+               << gnuplot_string(methods[k]) << " noenhanced";
     script << '\n';
     run_gnuplot(folder, script.str());
     deliver(folder, path);
