@@ -35,6 +35,19 @@ def run_peer():
         shutil.rmtree(folder, ignore_errors=True)
 
 
+def parse_peer_log(path):
+    """Rows from the peer's progress lines (for a peer run that was cut short)."""
+    import re
+    rows = []
+    pattern = re.compile(r"^\s+(\w+)\s+(\w+)\s+tol=(\S+) time=(\S+)s .*err_traj=(\S+)")
+    for line in open(path):
+        m = pattern.match(line)
+        if m:
+            rows.append({"problem": m.group(1), "method": m.group(2), "tol": float(m.group(3)),
+                         "time_s": float(m.group(4)), "err_traj": float(m.group(5))})
+    return {"problems": {}, "rows": rows}
+
+
 def fastest(rows, problem, level, time_key):
     best = None
     for r in rows:
@@ -50,6 +63,7 @@ def main():
     ap.add_argument("--build", default=os.path.join(HERE, "..", "build"))
     ap.add_argument("--peer-json")
     ap.add_argument("--ours-json")
+    ap.add_argument("--peer-log", help="the peer's printed progress, if its run was cut short")
     a = ap.parse_args()
     if a.ours_json:
         ours = json.load(open(a.ours_json))
@@ -57,13 +71,16 @@ def main():
         out = subprocess.run([os.path.join(a.build, "bench", "work_precision")], check=True,
                              stdout=subprocess.PIPE, stderr=subprocess.DEVNULL).stdout
         ours = json.loads(out)
-    peer = json.load(open(a.peer_json)) if a.peer_json else run_peer()
+    if a.peer_log:
+        peer = parse_peer_log(a.peer_log)
+    else:
+        peer = json.load(open(a.peer_json)) if a.peer_json else run_peer()
     print("Work precision: fastest run whose max relative trajectory error (1001 samples) is within the level")
     print("(lagrange: fastest of up to 7 repeats; scipy solve_ivp: its script's median; "
           "method and tolerance setting in brackets)")
     for problem in ("rigid", "lindp", "dp_small", "dp_large"):
         print(f"\n{problem}: reference ours = {ours['problems'][problem]['reference']}; "
-              f"scipy = {peer['problems'][problem]['reference']}")
+              f"scipy = {peer['problems'].get(problem, {}).get('reference', 'see its docstring')}")
         print(f"  {'level':>6} {'lagrange_s':>11} {'':24} {'scipy_s':>9} {'':18} {'ratio':>7}")
         for e in range(3, 13):
             level = 10.0 ** -e
