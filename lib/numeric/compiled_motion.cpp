@@ -90,11 +90,13 @@ compiled_motion::compiled_motion(const model& scene, const lagrangian_result& la
     GiNaC::ex lag = at_values(lagrangian.lagrangian, scene, values);
     conservative_ = !lag.has(scene.time);
 
-    std::vector<GiNaC::ex> symbols{scene.time};
+    // Symbols in the state's order, time last: without explicit time the programs read x directly.
+    std::vector<GiNaC::ex> symbols;
     for (const coordinate& c : scene.coordinates)
         symbols.push_back(c.position);
     for (const coordinate& c : scene.coordinates)
         symbols.push_back(c.velocity);
+    symbols.push_back(scene.time);
 
     // M_ij = ∂²L/∂q̇i∂q̇j; f_i = ∂L/∂q_i − Σ_j ∂²L/∂q̇i∂q_j q̇_j − ∂²L/∂q̇i∂t.
     std::vector<GiNaC::ex> momentum, mass(n_ * n_), force(n_);
@@ -141,12 +143,16 @@ compiled_motion::compiled_motion(const model& scene, const lagrangian_result& la
 
 void compiled_motion::solve(double t, const double* x, double* acceleration, bool keep_factor) const
 {
-    symbols_[0] = t;
-    std::copy(x, x + 2 * n_, symbols_.begin() + 1);
+    const double* symbols = x;
+    if (!conservative_) {
+        std::copy(x, x + 2 * n_, symbols_.begin());
+        symbols_[2 * n_] = t;
+        symbols = symbols_.data();
+    }
     if (rhs_native_)
-        rhs_native_(symbols_.data(), outputs_.data());
+        rhs_native_(symbols, outputs_.data());
     else
-        rhs_program_.run(symbols_.data(), scratch_, outputs_.data());
+        rhs_program_.run(symbols, scratch_, outputs_.data());
     if (n_ == 2 && !keep_factor) {
         // Two coordinates: Cramer's rule (the common case, without the factorization's loops).
         const double* o = outputs_.data();
@@ -178,6 +184,8 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
     const std::size_t n = n_, d = 2 * n_;
     std::vector<double> acceleration(n);
     solve(t, x, acceleration.data(), true); // leaves the LDLᵀ factor of M in factor_
+    std::copy(x, x + 2 * n_, symbols_.begin());
+    symbols_[2 * n_] = t;
     if (jacobian_native_)
         jacobian_native_(symbols_.data(), jacobian_outputs_.data());
     else
@@ -221,7 +229,7 @@ bool compiled_motion::compile_native()
 double compiled_motion::energy(const double* x) const
 {
     std::vector<double> symbols(1 + 2 * n_, 0.0);
-    std::copy(x, x + 2 * n_, symbols.begin() + 1);
+    std::copy(x, x + 2 * n_, symbols.begin());
     std::vector<double> scratch;
     double e = 0;
     energy_program_.run(symbols.data(), scratch, &e);
