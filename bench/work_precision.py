@@ -23,6 +23,10 @@ PEERS = os.path.join(HERE, "..", "..", "shared", "peers")
 
 
 def run_peer():
+    try:
+        import scipy, mpmath, matplotlib  # noqa: F401  (the peer needs them)
+    except ImportError:
+        sys.exit("work_precision.py: the peer needs Debian's python3-scipy python3-mpmath python3-matplotlib")
     folder = tempfile.mkdtemp(prefix="lagrange-peer-")
     try:
         for name in ("work_precision_scipy.py", "common.py"):
