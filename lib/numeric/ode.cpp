@@ -109,10 +109,9 @@ public:
             if (!std::isfinite(x[i]))
                 throw computation_error("the solution stopped being finite at t = " + number(t) +
                                         " (the motion runs away or the method is unstable at this tolerance)");
-        std::vector<double> state(x, x + n);
         if (!initialized_) {
             initialized_ = true;
-            initial_ = state;
+            initial_.assign(x, x + n);
             for (const auto& inv : system_.invariants) {
                 double value = inv.value(x);
                 initial_values_.push_back(value);
@@ -138,8 +137,8 @@ public:
         }
         result_.times.push_back(t);
         if (options_.keep_states)
-            result_.states.push_back(state);
-        result_.final_state = std::move(state);
+            result_.states.emplace_back(x, x + n);
+        result_.final_state.assign(x, x + n);
         if (options_.progress && ++observed_ % 16 == 0) {
             double span = options_.until - options_.start;
             options_.progress(span > 0 ? (t - options_.start) / span : 1.0);
