@@ -183,8 +183,8 @@ std::vector<double> output_times(const integration_options& options)
     return times;
 }
 
-void run_odeint(const ode_system& system, ode_method method, const std::vector<double>& x0,
-                const integration_options& options, run_state& run, trajectory& result)
+void run_odeint(ode_method method, const std::vector<double>& x0, const integration_options& options,
+                run_state& run, trajectory& result)
 {
     state_type x = x0;
     auto rhs = [&](const state_type& state, state_type& dxdt, double t) { run.rhs(t, state.data(), dxdt.data()); };
@@ -292,7 +292,7 @@ void run_cvode(const ode_system& system, const std::vector<double>& x0, const in
 {
     const auto n = static_cast<sunindextype>(system.dimension);
     cvode_session s;
-    cvode_data data{&system, &run, &result};
+    cvode_data data{&system, &run, &result, false, {}};
     if (SUNContext_Create(nullptr, &s.context) != 0)
         throw computation_error("SUNDIALS could not be initialized");
     s.y = N_VNew_Serial(n, s.context);
@@ -440,7 +440,7 @@ trajectory integrate(const ode_system& system, ode_method method, const std::vec
         run_implicit_midpoint(system, x0, options_used, run, result);
         break;
     default:
-        run_odeint(system, method, x0, options_used, run, result);
+        run_odeint(method, x0, options_used, run, result);
     }
     run.finish();
     return result;
