@@ -4,16 +4,22 @@
 #include "engine/analysis.h"
 #include "output/document.h"
 #include "output/report.h"
+#include "output/simulation_output.h"
 #include "scene/lower.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cctype>
+#include <chrono>
 #include <cstdio>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace {
 
@@ -105,6 +111,81 @@ int analyze_scene(const run_options& options)
     return exit_ok;
 }
 
+struct motion_options {
+    std::string scene_path;
+    std::vector<std::string> values;
+    std::optional<double> until;
+    std::string method;
+    std::optional<double> tolerance;
+    std::string csv;
+    std::string plot;
+    std::string format = "text";
+    std::string output;
+    bool native = false;
+};
+
+/// A progress bar on standard error when it is a terminal and the run takes over a second.
+std::function<void(double)> progress_bar()
+{
+    if (!isatty(STDERR_FILENO))
+        return nullptr;
+    auto start = std::chrono::steady_clock::now();
+    auto shown = std::make_shared<bool>(false);
+    return [start, shown](double fraction) {
+        std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+        if (elapsed.count() < 1 && !*shown)
+            return;
+        if (fraction >= 1) {
+            if (*shown)
+                std::cerr << "\r" << std::string(60, ' ') << "\r" << std::flush;
+            return;
+        }
+        *shown = true;
+        int filled = static_cast<int>(fraction * 40);
+        std::cerr << "\rsimulating [" << std::string(filled, '#') << std::string(40 - filled, ' ') << "] "
+                  << static_cast<int>(fraction * 100) << "%" << std::flush;
+    };
+}
+
+int motion_command(const motion_options& options, lagrange::product wanted)
+{
+    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::model scene = lagrange::load_model(source);
+    for (const std::string& v : options.values)
+        lagrange::add_values(scene, v);
+    lagrange::simulation_settings settings;
+    settings.until = options.until;
+    if (!options.method.empty())
+        settings.method = options.method;
+    settings.tolerance = options.tolerance;
+    settings.progress = progress_bar();
+    settings.native = options.native;
+    lagrange::analysis result = lagrange::analyze(scene, {wanted}, settings);
+    std::string title = scene.title.empty() ? source.file() : scene.title;
+    if (result.simulation && !options.csv.empty()) {
+        std::ostringstream csv;
+        lagrange::write_trajectory_csv(csv, *result.simulation);
+        write_output(options.csv, csv.str());
+    }
+    if (!options.plot.empty()) {
+        if (result.simulation)
+            lagrange::plot_trajectory(options.plot, *result.simulation, title);
+        if (result.workprecision)
+            lagrange::plot_workprecision(options.plot, *result.workprecision, title);
+    }
+    lagrange::document_options document;
+    document.timings = true; // a run's report: with run times
+    std::ostringstream out;
+    if (options.format == "json")
+        lagrange::write_json(out, result, document);
+    else if (options.format == "latex")
+        lagrange::write_latex(out, result, document);
+    else
+        lagrange::write_text(out, result, document);
+    write_output(options.output, out.str());
+    return exit_ok;
+}
+
 int check_scene(const std::string& path)
 {
     lagrange::source_text source = read_scene(path);
@@ -180,15 +261,26 @@ int run(int argc, char** argv)
     report->add_option("--want", report_options.want, "products to derive, comma-separated (default: the scene's `want`)");
     report->add_option("--values", report_options.values, "a parameter point such as a=1,b=2.5 (repeatable)");
 
-    std::string later_path;
-    std::vector<std::string> later_rest;
-    std::vector<CLI::App*> later;
-    for (const char* name : {"simulate", "workprecision"}) {
-        CLI::App* sub = app.add_subcommand(name, std::string("`") + name + "` (not in this version yet)");
-        sub->add_option("SCENE", later_path, "the scene file");
-        sub->allow_extras();
-        later.push_back(sub);
+    motion_options simulate_options, workprecision_options;
+    CLI::App* simulate = app.add_subcommand("simulate", "integrate the equations of motion from the initial state");
+    CLI::App* workprecision = app.add_subcommand("workprecision", "error against run time, per method and tolerance");
+    for (auto [sub, o] : {std::pair{simulate, &simulate_options}, std::pair{workprecision, &workprecision_options}}) {
+        sub->add_option("SCENE", o->scene_path, "the scene file (`-` for standard input)")->required();
+        sub->add_option("--values", o->values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
+        sub->add_option("--until", o->until, "end time (default: the scene's `simulate until`)")
+            ->check(CLI::PositiveNumber);
+        sub->add_option("--plot", o->plot, "draw a plot (SVG, with gnuplot)");
+        sub->add_option("--format", o->format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
+        sub->add_option("-o,--output", o->output, "write the output to this file");
     }
+    simulate->add_option("--method", simulate_options.method,
+                         "auto, dopri5, rkf78, bulirsch-stoer, bdf or implicit-midpoint")
+        ->check(CLI::IsMember({"auto", "dopri5", "rkf78", "bulirsch-stoer", "bdf", "implicit-midpoint"}));
+    simulate->add_option("--tolerance", simulate_options.tolerance, "relative and absolute tolerance per step")
+        ->check(CLI::Range(1e-14, 0.5));
+    simulate->add_option("--csv", simulate_options.csv, "write the trajectory as CSV");
+    simulate->add_flag("--native", simulate_options.native,
+                       "compile the equations to machine code with the system's C compiler first");
 
     try {
         app.parse(argc, argv);
@@ -201,11 +293,10 @@ int run(int argc, char** argv)
         return check_scene(check_path);
     if (report->parsed())
         return report_scene(report_options);
-    for (CLI::App* sub : later)
-        if (sub->parsed()) {
-            std::cerr << "lagrange: `" << sub->get_name() << "` is not available in this version yet\n";
-            return exit_failed;
-        }
+    if (simulate->parsed())
+        return motion_command(simulate_options, lagrange::product::simulation);
+    if (workprecision->parsed())
+        return motion_command(workprecision_options, lagrange::product::workprecision);
     if (options.scene_path.empty()) {
         std::cerr << app.help();
         return exit_bad_input;

@@ -5,8 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libboost-dev)
-# gnuplot draws the figures of `lagrange report` (without it they are left out)
+packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libboost-dev libsundials-dev)
+# gnuplot draws the figures of `lagrange report` and `--plot` (without it they are left out)
 packages+=(gnuplot-nox)
 if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then
   packages+=(texlive-latex-base)

@@ -178,3 +178,37 @@ TEST_CASE("cli: hostile input exits with 2 and a located message, never a crash 
         CHECK(r.err.size() < 2000);
     }
 }
+
+TEST_CASE("cli: simulate writes CSV, an SVG plot and the JSON simulation keys", "[cli][simulation]")
+{
+    std::string csv = temporary_file("beats.csv", "");
+    std::string svg = temporary_file("beats.svg", "");
+    cli_result r = run_cli("simulate " + examples + "beats.lag --until 30 --format json --csv " + csv + " --plot " + svg, "", 60);
+    REQUIRE(r.exit_code == 0);
+    nlohmann::json doc = nlohmann::json::parse(r.out);
+    const nlohmann::json& s = doc["simulation"];
+    CHECK(s["method"] == "rkf78");
+    CHECK(s["steps"].get<int>() > 0);
+    CHECK(s["t"].size() == s["states"]["phi"].size());
+    CHECK(s["states"].contains("theta_dot"));
+    CHECK(s["invariants"]["energy_drift"].get<double>() < 1e-9);
+    std::string table = read_file(csv);
+    CHECK(table.rfind("t,theta,phi,theta_dot,phi_dot\n0,0,0.050000000000000003,0,0\n", 0) == 0);
+    std::string plot = read_file(svg);
+    if (plot.find("<svg") == std::string::npos)
+        WARN("no SVG drawn (gnuplot missing?): " << r.err);
+}
+
+TEST_CASE("cli: simulate and workprecision usage errors and impossible runs", "[cli][simulation]")
+{
+    CHECK(run_cli("simulate " + double_pendulum + " --method leapfrog").exit_code == 2);
+    CHECK(run_cli("simulate " + double_pendulum + " --tolerance 0").exit_code == 2);
+    CHECK(run_cli("simulate " + double_pendulum + " --until -1").exit_code == 2);
+    cli_result no_end = run_cli("simulate -", "parameters k\ncoordinates x\nT = 1/2*x'^2\nV = 1/2*k*x^2\nvalues k = 1\n");
+    CHECK(no_end.exit_code == 1);
+    CHECK(no_end.err.find("end time") != std::string::npos);
+    cli_result runaway = run_cli("simulate -", "parameters k\ncoordinates x\nT = 1/2*x'^2\nV = -x^4\n"
+                                              "values k = 1\ninitial x = 1\nsimulate until 100\n");
+    CHECK(runaway.exit_code == 1);
+    CHECK(runaway.err.find("lagrange: error:") == 0);
+}

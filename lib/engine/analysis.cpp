@@ -13,6 +13,7 @@ const std::set<product>& available_products()
         product::equations,       product::equilibrium, product::linearization,      product::characteristic,
         product::frequencies,     product::modes,       product::normal_coordinates, product::asymptotic,
         product::numeric,         product::inertia,     product::euler,
+        product::simulation,      product::workprecision,
     };
     return products;
 }
@@ -75,12 +76,12 @@ std::set<product> default_products(const model& scene)
         products.insert(product::asymptotic);
     if (!scene.values.empty())
         products.insert(product::numeric);
+    if (scene.simulation)
+        products.insert(product::simulation);
     return products;
 }
 
-} // namespace
-
-analysis analyze(const model& scene, const std::set<product>& wanted)
+analysis analyze_symbolic(const model& scene, const std::set<product>& wanted)
 {
     analysis result;
     result.scene = &scene;
@@ -181,6 +182,40 @@ analysis analyze(const model& scene, const std::set<product>& wanted)
             throw;
         result.notes.push_back(std::string("small oscillations not computed: ") + error.what());
     }
+    return result;
+}
+
+/// The numeric time-integration stages: `simulation` and `workprecision`.
+void run_motion_stages(analysis& result, const model& scene, bool by_default, const simulation_settings& settings)
+{
+    const std::set<product>& w = result.wanted;
+    if (!wants_any(w, {product::simulation, product::workprecision}))
+        return;
+    std::optional<std::vector<GiNaC::ex>> equilibrium = scene.equilibrium;
+    if (result.equilibria)
+        equilibrium = result.equilibria->points.at(result.equilibria->chosen).position;
+    try {
+        if (w.count(product::simulation))
+            run_stage(result, "simulation", [&] {
+                result.simulation = simulate(scene, *result.lagrangian, equilibrium, settings);
+            });
+        if (w.count(product::workprecision))
+            run_stage(result, "workprecision", [&] {
+                result.workprecision = scene_work_precision(scene, *result.lagrangian, equilibrium, settings);
+            });
+    } catch (const computation_error& error) {
+        if (!by_default)
+            throw;
+        result.notes.push_back(std::string("simulation not computed: ") + error.what());
+    }
+}
+
+} // namespace
+
+analysis analyze(const model& scene, const std::set<product>& wanted, const simulation_settings& simulation)
+{
+    analysis result = analyze_symbolic(scene, wanted);
+    run_motion_stages(result, scene, wanted.empty() && scene.wanted.empty(), simulation);
     return result;
 }
 

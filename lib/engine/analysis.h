@@ -7,6 +7,7 @@
 #include "mechanics/oscillations.h"
 #include "mechanics/rigid_body.h"
 #include "numeric/normal_modes.h"
+#include "numeric/simulation.h"
 #include "scene/model.h"
 
 #include <optional>
@@ -38,6 +39,8 @@ struct analysis {
     std::optional<std::vector<inertia_result>> inertia; ///< one per body, in scene order
     std::optional<std::vector<euler_result>> euler;     ///< one per free body (with `omega`)
     std::optional<std::vector<top_result>> tops;        ///< bodies turned by three coordinates (heavy tops)
+    std::optional<simulation_result> simulation;
+    std::optional<workprecision_result> workprecision;
 };
 
 /// The products this version computes.
@@ -48,6 +51,8 @@ const std::set<product>& available_products();
 /// product that cannot be computed is left out with a note instead of failing).
 /// Throws computation_error for a product this version does not compute, or when
 /// a stage of an explicitly wanted product cannot be done.
-analysis analyze(const model& scene, const std::set<product>& wanted = {});
+/// `simulation` overrides the scene's `simulate` line (end time, method, tolerance).
+analysis analyze(const model& scene, const std::set<product>& wanted = {},
+                 const simulation_settings& simulation = {});
 
 } // namespace lagrange

@@ -9,6 +9,7 @@
 #include <cln/cln.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -403,6 +404,45 @@ expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, co
     compiler build(symbols, code_, algebraic_);
     for (const GiNaC::ex& e : outputs)
         outputs_.push_back(build.slot(e));
+}
+
+std::string expression_program::c_source(const std::string& name) const
+{
+    using op = instruction::code;
+    std::ostringstream c;
+    char number[40];
+    c << "static void " << name << "(const double* s, double* out)\n{\n";
+    for (std::size_t k = 0; k < code_.size(); ++k) {
+        const instruction& i = code_[k];
+        c << "    const double v" << k << " = ";
+        std::string a = "v" + std::to_string(i.first), b = "v" + std::to_string(i.second);
+        switch (i.op) {
+        case op::constant:
+            std::snprintf(number, sizeof number, "%a", i.value);
+            c << number;
+            break;
+        case op::symbol: c << "s[" << i.first << "]"; break;
+        case op::add: c << a << " + " << b; break;
+        case op::mul: c << a << " * " << b; break;
+        case op::neg: c << "-" << a; break;
+        case op::recip: c << "1.0 / " << a; break;
+        case op::square_root: c << "sqrt(" << a << ")"; break;
+        case op::integer_power: c << "__builtin_powi(" << a << ", " << i.second << ")"; break;
+        case op::real_power:
+            std::snprintf(number, sizeof number, "%a", i.value);
+            c << "pow(" << a << ", " << number << ")";
+            break;
+        case op::sine: c << "sin(" << a << ")"; break;
+        case op::cosine: c << "cos(" << a << ")"; break;
+        case op::exponential: c << "exp(" << a << ")"; break;
+        case op::logarithm: c << "log(" << a << ")"; break;
+        }
+        c << ";\n";
+    }
+    for (std::size_t k = 0; k < outputs_.size(); ++k)
+        c << "    out[" << k << "] = v" << outputs_[k] << ";\n";
+    c << "}\n";
+    return c.str();
 }
 
 void expression_program::run(const double* symbols, std::vector<double>& scratch, double* out) const

@@ -55,6 +55,10 @@ public:
     /// its ~32 digits and the bound scales with the unit roundoff.
     bool algebraic() const { return algebraic_; }
 
+    /// The program as a C function `static void NAME(const double* symbols, double* out)`
+    /// (straight-line code, constants exact as hexadecimal floats), for native compilation.
+    std::string c_source(const std::string& name) const;
+
     /// Runs the program on the symbol values; `scratch` is resized as needed.
     void run(const double* symbols, std::vector<double>& scratch, double* out) const;
     void run(const double* symbols, std::vector<bounded_double>& scratch, bounded_double* out) const;

@@ -5,6 +5,7 @@
 #include "output/latex_blocks.h"
 #include "output/bodies.h"
 #include "output/print.h"
+#include "output/simulation_output.h"
 
 #include <nlohmann/json.hpp>
 
@@ -396,6 +397,10 @@ void write_text(std::ostream& out, const analysis& result, const document_option
     }
     write_oscillations_text(out, result);
     write_bodies_text(out, result);
+    if (result.simulation)
+        write_simulation_text(out, *result.simulation, options.timings);
+    if (result.workprecision)
+        write_workprecision_text(out, *result.workprecision);
     for (const std::string& note : result.notes)
         out << "\nnote: " << note << '\n';
     if (options.timings) {
@@ -510,6 +515,10 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
     }
     write_oscillations_latex(out, result);
     write_bodies_latex(out, result);
+    if (result.simulation)
+        write_simulation_latex(out, *result.simulation, options.timings);
+    if (result.workprecision)
+        write_workprecision_latex(out, *result.workprecision);
     if (options.timings) {
         out << "\\subsection*{Stages}\n\\begin{tabular}{lr}\n";
         for (const stage_time& s : result.stages)
@@ -658,6 +667,10 @@ void write_json(std::ostream& out, const analysis& result, const document_option
     }
     write_oscillations_json(doc, result);
     write_bodies_json(doc, result);
+    if (result.simulation)
+        doc["simulation"] = simulation_json(*result.simulation, options.timings);
+    if (result.workprecision)
+        doc["workprecision"] = workprecision_json(*result.workprecision);
     if (!result.notes.empty())
         doc["notes"] = result.notes;
     out << doc.dump(2) << '\n';

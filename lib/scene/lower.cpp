@@ -648,8 +648,16 @@ private:
             r.step = positive_constant(*s.step, "the step");
         if (s.tolerance)
             r.tolerance = positive_constant(*s.tolerance, "the tolerance");
-        if (s.method)
+        if (s.method) {
+            static const std::set<std::string> methods = {
+                "auto", "dopri5", "rkf78", "bulirsch-stoer", "bdf", "implicit-midpoint", "dp5", "rk45",
+                "dormand-prince", "fehlberg", "rk78", "bs", "bulirsch_stoer", "cvode", "stiff", "midpoint",
+                "implicit_midpoint", "symplectic"};
+            if (!methods.count(s.method->name))
+                throw scene_error(s.method->where, "unknown method `" + s.method->name +
+                                                       "` (auto, dopri5, rkf78, bulirsch-stoer, bdf, implicit-midpoint)");
             r.method = s.method->name;
+        }
         scene_.simulation = r;
     }
 

@@ -1,0 +1,206 @@
+/** @file work_precision.cpp
+ *  Benchmark: error against run time of our integrators on the four problems of the
+ *  peer script ../shared/peers/work_precision_scipy.py, with the same error measure
+ *  (max over 1001 uniform times of ‖y − y_ref‖₂ / max ‖y_ref‖₂) and tolerances
+ *  1e-3 … 1e-12. Prints one JSON object (rows like the peer's) for bench/work_precision.py.
+ *    rigid     free asymmetric body, Euler's equations built here, I = (1, 2, 3),
+ *              ω0 = (1, 0.1, 0.5), t ∈ [0, 100]; exact: Jacobi elliptic functions (Boost.Math)
+ *    lindp     linearized double pendulum from a scene (ρ = 0.01, l = g = 1), q0 = (0.05, 0),
+ *              t ∈ [0, 200]; exact: normal modes
+ *    dp_small  double pendulum from a scene, M = m = l = g = 1, θ0 = φ0 = 0.05, t ∈ [0, 100]
+ *    dp_large  the same at 1.5 rad, t ∈ [0, 20]; reference: rkf78 at 1e-14 (labelled)
+ *  Usage: work_precision [max_seconds_per_run] */
+#include "engine/analysis.h"
+#include "numeric/compiled_motion.h"
+#include "numeric/simulation.h"
+#include "scene/lower.h"
+
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+
+namespace {
+
+struct problem {
+    std::string name;
+    std::string reference_kind;
+    lagrange::ode_system system;
+    std::vector<double> x0;
+    double until = 0;
+    std::vector<double> frequencies;
+    std::shared_ptr<lagrange::compiled_motion> motion; // keeps the compiled system alive
+    std::shared_ptr<lagrange::model> scene;
+};
+
+problem rigid_body()
+{
+    const double I1 = 1, I2 = 2, I3 = 3, w1 = 1, w2 = 0.1, w3 = 0.5;
+    const double c1 = (I2 - I3) / I1, c2 = (I3 - I1) / I2, c3 = (I1 - I2) / I3;
+    problem p;
+    p.name = "rigid";
+    p.reference_kind = "exact (Jacobi elliptic functions, Boost.Math)";
+    p.until = 100;
+    p.x0 = {w1, w2, w3};
+    p.system.dimension = 3;
+    p.system.rhs = [=](double, const double* w, double* f) {
+        f[0] = c1 * w[1] * w[2];
+        f[1] = c2 * w[2] * w[0];
+        f[2] = c3 * w[0] * w[1];
+    };
+    p.system.jacobian = [=](double, const double* w, double* j) {
+        j[0] = 0, j[1] = c1 * w[2], j[2] = c1 * w[1];
+        j[3] = c2 * w[2], j[4] = 0, j[5] = c2 * w[0];
+        j[6] = c3 * w[1], j[7] = c3 * w[0], j[8] = 0;
+    };
+    p.system.invariants.push_back({"energy", [=](const double* w) {
+        return 0.5 * (I1 * w[0] * w[0] + I2 * w[1] * w[1] + I3 * w[2] * w[2]); }, 0});
+    // Rotation about the axis of least inertia (L² < 2 E I2): ω1 = A1 dn u, ω2 = A2 sn u, ω3 = A3 cn u.
+    double E2 = I1 * w1 * w1 + I2 * w2 * w2 + I3 * w3 * w3;
+    double L2 = I1 * I1 * w1 * w1 + I2 * I2 * w2 * w2 + I3 * I3 * w3 * w3;
+    double A1 = std::sqrt((E2 * I3 - L2) / (I1 * (I3 - I1)));
+    double A2 = std::sqrt((L2 - E2 * I1) / (I2 * (I2 - I1)));
+    double A3 = std::sqrt((L2 - E2 * I1) / (I3 * (I3 - I1)));
+    double m = (I3 - I2) * (L2 - E2 * I1) / ((I2 - I1) * (E2 * I3 - L2));
+    double k = std::sqrt(m);
+    double lambda = (I3 - I1) * A1 * A3 / (I2 * A2);
+    double u0 = boost::math::ellint_1(k, std::atan2(w2 / A2, w3 / A3));
+    p.system.exact = [=](double t, double* w) {
+        double cn = 0, dn = 0;
+        double sn = boost::math::jacobi_elliptic(k, lambda * t + u0, &cn, &dn);
+        w[0] = A1 * dn, w[1] = A2 * sn, w[2] = A3 * cn;
+    };
+    return p;
+}
+
+problem from_scene(const std::string& name, const std::string& text, double until)
+{
+    problem p;
+    p.name = name;
+    p.until = until;
+    p.scene = std::make_shared<lagrange::model>(lagrange::load_model(lagrange::source_text(name + ".lag", text)));
+    lagrange::analysis a = lagrange::analyze(*p.scene, {lagrange::product::equations});
+    p.motion = std::make_shared<lagrange::compiled_motion>(*p.scene, *a.lagrangian,
+                                                           lagrange::first_value_point(*p.scene));
+    if (!p.motion->compile_native())
+        std::cerr << "work_precision: no C compiler, the interpreter evaluates the equations\n";
+    p.x0 = lagrange::initial_state_vector(*p.scene, lagrange::first_value_point(*p.scene));
+    std::vector<double> rest(p.x0.size(), 0.0);
+    // Energy above the equilibrium, as the peer scales it.
+    p.system = p.motion->system(std::abs(p.motion->energy(p.x0.data()) - p.motion->energy(rest.data())));
+    p.frequencies = lagrange::linearized_frequencies(p.system, rest);
+    p.system.exact = lagrange::normal_mode_solution(p.system, p.motion->coordinates(), p.x0);
+    p.reference_kind = p.system.exact ? "exact (normal modes)" : "numerical: rkf78 at tolerance 1e-14";
+    return p;
+}
+
+const std::string pendulum = "parameters M m l g\ncoordinates theta phi\n"
+                             "point upper mass M at (l*sin(theta), -l*cos(theta))\n"
+                             "point lower mass m at (l*sin(theta) + l*sin(phi), -l*cos(theta) - l*cos(phi))\n"
+                             "gravity g along (0, -1)\nvalues M = 1, m = 1, l = 1, g = 1\n";
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    double max_seconds = argc > 1 ? std::atof(argv[1]) : 10;
+    std::vector<problem> problems;
+    problems.push_back(rigid_body());
+    problems.push_back(from_scene("lindp",
+                                  "parameters M m l g\ncoordinates theta phi\n"
+                                  "T = 1/2*(M+m)*l^2*theta'^2 + m*l^2*theta'*phi' + 1/2*m*l^2*phi'^2\n"
+                                  "V = 1/2*(M+m)*g*l*theta^2 + 1/2*m*g*l*phi^2\n"
+                                  "values M = 1, m = 0.01, l = 1, g = 1\ninitial theta = 0.05\n",
+                                  200));
+    problems.push_back(from_scene("dp_small", pendulum + "initial theta = 0.05, phi = 0.05\n", 100));
+    problems.push_back(from_scene("dp_large", pendulum + "initial theta = 1.5, phi = 1.5\n", 20));
+
+    nlohmann::ordered_json out;
+    out["problems"] = nlohmann::ordered_json::object();
+    out["rows"] = nlohmann::ordered_json::array();
+    for (problem& p : problems) {
+        lagrange::integration_options options;
+        options.until = p.until;
+        options.max_seconds = max_seconds;
+        options.max_steps = 20'000'000;
+        options.frequency = p.frequencies.empty() ? 1.0 : p.frequencies.back();
+        // The reference at the 1001 output times, computed once (not inside the timed runs).
+        lagrange::trajectory reference;
+        if (p.system.exact) {
+            for (int k = 0; k <= 1000; ++k) {
+                double t = k == 1000 ? p.until : p.until * k / 1000.0;
+                std::vector<double> x(p.system.dimension);
+                p.system.exact(t, x.data());
+                reference.states.push_back(x);
+            }
+        } else {
+            lagrange::integration_options fine = options;
+            fine.tolerance = 1e-14;
+            reference = lagrange::integrate(p.system, lagrange::ode_method::rkf78, p.x0, fine);
+        }
+        // Timed as the peer times solve_ivp: no states kept, no invariants evaluated; the
+        // error and the energy drift come from one more, untimed run with the same steps.
+        lagrange::ode_system timed = p.system;
+        timed.exact = nullptr;
+        timed.invariants.clear();
+        lagrange::ode_system measured = p.system;
+        measured.exact = nullptr;
+        if (p.name == "rigid") {
+            std::vector<double> start(3);
+            p.system.exact(0, start.data());
+            double d = 0;
+            for (int i = 0; i < 3; ++i)
+                d = std::max(d, std::abs(start[i] - p.x0[i]));
+            out["problems"][p.name]["exact_at_0_maxabs"] = d;
+        }
+        out["problems"][p.name]["reference"] = p.reference_kind;
+        for (lagrange::ode_method method : lagrange::all_ode_methods()) {
+            bool give_up = false;
+            for (int e = 3; e <= 12; ++e) {
+                double tol = std::pow(10.0, -e);
+                nlohmann::ordered_json row;
+                row["problem"] = p.name;
+                row["method"] = lagrange::to_string(method);
+                row["tol"] = tol;
+                if (give_up) {
+                    row["failure"] = "left out";
+                    out["rows"].push_back(row);
+                    continue;
+                }
+                options.tolerance = tol;
+                try {
+                    double best = 1e300, total = 0;
+                    lagrange::trajectory run;
+                    lagrange::integration_options quiet = options;
+                    quiet.keep_states = false;
+                    for (int repeat = 0; repeat < 7 && (repeat == 0 || total < 0.2); ++repeat) {
+                        run = lagrange::integrate(timed, method, p.x0, quiet);
+                        best = std::min(best, run.seconds);
+                        total += run.seconds;
+                    }
+                    run = lagrange::integrate(measured, method, p.x0, options);
+                    row["time_s"] = best;
+                    row["steps"] = run.steps;
+                    row["nfev"] = run.evaluations;
+                    row["err_traj"] = lagrange::trajectory_difference(run, reference);
+                    if (!run.invariant_drift.empty())
+                        row["energy_drift"] = run.invariant_drift[0].second;
+                    if (best > max_seconds / 3)
+                        give_up = true;
+                } catch (const std::exception& error) {
+                    row["failure"] = error.what();
+                    give_up = true;
+                }
+                std::cerr << p.name << ' ' << row.dump() << '\n';
+                out["rows"].push_back(row);
+            }
+        }
+    }
+    std::cout << out.dump(1) << '\n';
+    return 0;
+}

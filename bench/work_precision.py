@@ -1,0 +1,102 @@
+#!/usr/bin/env python3
+"""Work-precision, ours against SciPy, in one run.
+
+Runs the peer ../shared/peers/work_precision_scipy.py (scipy.integrate.solve_ivp:
+RK45, DOP853, Radau, LSODA; in a private copy, so the shared folder is left
+alone) and build/bench/work_precision (ours: dopri5, rkf78, bulirsch-stoer, bdf,
+implicit-midpoint) on the same four problems with the same error measure, then
+prints for each accuracy level 1e-3 ... 1e-12 the fastest run of each side whose
+trajectory error is within that level, and the ratio.
+
+Usage: bench/work_precision.py [--build DIR] [--peer-json FILE] [--ours-json FILE]
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PEERS = os.path.join(HERE, "..", "..", "shared", "peers")
+
+
+def run_peer():
+    try:
+        import scipy, mpmath, matplotlib  # noqa: F401  (the peer needs them)
+    except ImportError:
+        sys.exit("work_precision.py: the peer needs Debian's python3-scipy python3-mpmath python3-matplotlib")
+    folder = tempfile.mkdtemp(prefix="lagrange-peer-")
+    try:
+        for name in ("work_precision_scipy.py", "common.py"):
+            shutil.copy(os.path.join(PEERS, name), folder)
+        subprocess.run([sys.executable, "work_precision_scipy.py"], cwd=folder, check=True,
+                       stdout=sys.stderr)
+        with open(os.path.join(folder, "results", "work_precision.json")) as f:
+            return json.load(f)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def parse_peer_log(path):
+    """Rows from the peer's progress lines (for a peer run that was cut short)."""
+    import re
+    rows = []
+    pattern = re.compile(r"^\s+(\w+)\s+(\w+)\s+tol=(\S+) time=(\S+)s .*err_traj=(\S+)")
+    for line in open(path):
+        m = pattern.match(line)
+        if m:
+            rows.append({"problem": m.group(1), "method": m.group(2), "tol": float(m.group(3)),
+                         "time_s": float(m.group(4)), "err_traj": float(m.group(5))})
+    return {"problems": {}, "rows": rows}
+
+
+def fastest(rows, problem, level, time_key):
+    best = None
+    for r in rows:
+        if r.get("problem") != problem or r.get("err_traj") is None or r.get(time_key) is None:
+            continue
+        if r["err_traj"] <= level and (best is None or r[time_key] < best[time_key]):
+            best = r
+    return best
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(HERE, "..", "build"))
+    ap.add_argument("--peer-json")
+    ap.add_argument("--ours-json")
+    ap.add_argument("--peer-log", help="the peer's printed progress, if its run was cut short")
+    a = ap.parse_args()
+    if a.ours_json:
+        ours = json.load(open(a.ours_json))
+    else:
+        out = subprocess.run([os.path.join(a.build, "bench", "work_precision")], check=True,
+                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL).stdout
+        ours = json.loads(out)
+    if a.peer_log:
+        peer = parse_peer_log(a.peer_log)
+    else:
+        peer = json.load(open(a.peer_json)) if a.peer_json else run_peer()
+    print("Work precision: fastest run whose max relative trajectory error (1001 samples) is within the level")
+    print("(lagrange: fastest of up to 7 repeats; scipy solve_ivp: its script's median; "
+          "method and tolerance setting in brackets)")
+    for problem in ("rigid", "lindp", "dp_small", "dp_large"):
+        print(f"\n{problem}: reference ours = {ours['problems'][problem]['reference']}; "
+              f"scipy = {peer['problems'].get(problem, {}).get('reference', 'see its docstring')}")
+        print(f"  {'level':>6} {'lagrange_s':>11} {'':24} {'scipy_s':>9} {'':18} {'ratio':>7}")
+        for e in range(3, 13):
+            level = 10.0 ** -e
+            o = fastest(ours["rows"], problem, level, "time_s")
+            p = fastest(peer["rows"], problem, level, "time_s")
+            os_ = f"{o['time_s']:.2e}" if o else "-"
+            ps = f"{p['time_s']:.2e}" if p else "-"
+            on = f"[{o['method']} {o['tol']:.0e}]" if o else ""
+            pn = f"[{p['method']} {p['tol']:.0e}]" if p else ""
+            ratio = f"{p['time_s'] / o['time_s']:.0f}" if o and p else "-"
+            print(f"  {level:6.0e} {os_:>11} {on:24} {ps:>9} {pn:18} {ratio:>7}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,277 @@
+/** @file compiled_motion.cpp
+ *  Equations of motion compiled to straight-line code and solved per evaluation. */
+#include "numeric/compiled_motion.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace lagrange {
+
+namespace {
+
+std::string number(double x)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", x);
+    return buffer;
+}
+
+/// Substitutes the parameter values; throws computation_error naming a parameter that L uses without one.
+GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values)
+{
+    GiNaC::lst substitutions;
+    for (const parameter& p : scene.parameters) {
+        auto found = values.find(p.name);
+        if (found != values.end())
+            substitutions.append(p.symbol == found->second);
+        else if (e.has(p.symbol))
+            throw computation_error("the simulation needs a value for the parameter `" + p.name +
+                                    "` (a `values` line or --values)");
+    }
+    return e.subs(substitutions);
+}
+
+double to_double(const GiNaC::ex& e, const std::string& what)
+{
+    GiNaC::ex value = e.evalf();
+    if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real())
+        throw computation_error(what + " is not a real number");
+    double d = GiNaC::ex_to<GiNaC::numeric>(value).to_double();
+    if (!std::isfinite(d))
+        throw computation_error(what + " is not a finite double");
+    return d;
+}
+
+/// LDLᵀ factor of the symmetric n × n matrix `m` (row-major) in place: L below the
+/// diagonal, D on it. Written by hand: for the 2–6 coordinates of a scene a plain
+/// loop without square roots beats a general library call, and it reports the failing
+/// pivot (a mass matrix that is not positive definite).
+bool factor_ldlt(double* m, std::size_t n)
+{
+    for (std::size_t j = 0; j < n; ++j) {
+        double d = m[j * n + j];
+        for (std::size_t k = 0; k < j; ++k)
+            d -= m[j * n + k] * m[j * n + k] * m[k * n + k];
+        if (!(d > 0))
+            return false;
+        m[j * n + j] = d;
+        for (std::size_t i = j + 1; i < n; ++i) {
+            double s = m[i * n + j];
+            for (std::size_t k = 0; k < j; ++k)
+                s -= m[i * n + k] * m[j * n + k] * m[k * n + k];
+            m[i * n + j] = s / d;
+        }
+    }
+    return true;
+}
+
+/// Solves L D Lᵀ y = b in place with the factor from factor_ldlt().
+void ldlt_solve(const double* l, std::size_t n, double* b)
+{
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t k = 0; k < i; ++k)
+            b[i] -= l[i * n + k] * b[k];
+    for (std::size_t i = 0; i < n; ++i)
+        b[i] /= l[i * n + i];
+    for (std::size_t i = n; i-- > 0;)
+        for (std::size_t k = i + 1; k < n; ++k)
+            b[i] -= l[k * n + i] * b[k];
+}
+
+} // namespace
+
+compiled_motion::compiled_motion(const model& scene, const lagrangian_result& lagrangian,
+                                 const std::map<std::string, GiNaC::ex>& values)
+{
+    n_ = scene.coordinates.size();
+    if (n_ == 0)
+        throw computation_error("the scene has no coordinates to simulate");
+    GiNaC::ex lag = at_values(lagrangian.lagrangian, scene, values);
+    conservative_ = !lag.has(scene.time);
+
+    // Symbols in the state's order, time last: without explicit time the programs read x directly.
+    std::vector<GiNaC::ex> symbols;
+    for (const coordinate& c : scene.coordinates)
+        symbols.push_back(c.position);
+    for (const coordinate& c : scene.coordinates)
+        symbols.push_back(c.velocity);
+    symbols.push_back(scene.time);
+
+    // M_ij = ∂²L/∂q̇i∂q̇j; f_i = ∂L/∂q_i − Σ_j ∂²L/∂q̇i∂q_j q̇_j − ∂²L/∂q̇i∂t.
+    std::vector<GiNaC::ex> momentum, mass(n_ * n_), force(n_);
+    for (const coordinate& c : scene.coordinates)
+        momentum.push_back(differentiate(lag, c.velocity));
+    for (std::size_t i = 0; i < n_; ++i) {
+        for (std::size_t j = 0; j < n_; ++j)
+            mass[i * n_ + j] = j < i ? mass[j * n_ + i] : differentiate(momentum[i], scene.coordinates[j].velocity);
+        GiNaC::ex f = differentiate(lag, scene.coordinates[i].position) - differentiate(momentum[i], scene.time);
+        for (const coordinate& c : scene.coordinates)
+            f -= differentiate(momentum[i], c.position) * c.velocity;
+        force[i] = f;
+    }
+    std::vector<GiNaC::ex> rhs_outputs = mass;
+    rhs_outputs.insert(rhs_outputs.end(), force.begin(), force.end());
+
+    std::vector<GiNaC::ex> jacobian_outputs;
+    for (const coordinate& c : scene.coordinates)
+        for (const GiNaC::ex& m : mass)
+            jacobian_outputs.push_back(differentiate(m, c.position));
+    for (const GiNaC::ex& f : force)
+        for (const coordinate& c : scene.coordinates)
+            jacobian_outputs.push_back(differentiate(f, c.position));
+    for (const GiNaC::ex& f : force)
+        for (const coordinate& c : scene.coordinates)
+            jacobian_outputs.push_back(differentiate(f, c.velocity));
+
+    GiNaC::ex energy = -lag;
+    for (std::size_t i = 0; i < n_; ++i)
+        energy += scene.coordinates[i].velocity * momentum[i];
+
+    try {
+        rhs_program_ = expression_program(rhs_outputs, symbols);
+        jacobian_program_ = expression_program(jacobian_outputs, symbols);
+        energy_program_ = expression_program({energy}, symbols);
+    } catch (const std::invalid_argument& error) {
+        throw computation_error(std::string("the equations of motion cannot be compiled: ") + error.what());
+    }
+    symbols_.resize(1 + 2 * n_);
+    outputs_.resize(n_ * n_ + n_);
+    factor_.resize(n_ * n_);
+    jacobian_outputs_.resize(jacobian_outputs.size());
+}
+
+void compiled_motion::solve(double t, const double* x, double* acceleration, bool keep_factor) const
+{
+    const double* symbols = x;
+    if (!conservative_) {
+        std::copy(x, x + 2 * n_, symbols_.begin());
+        symbols_[2 * n_] = t;
+        symbols = symbols_.data();
+    }
+    if (rhs_native_)
+        rhs_native_(symbols, outputs_.data());
+    else
+        rhs_program_.run(symbols, scratch_, outputs_.data());
+    if (n_ == 2 && !keep_factor) {
+        // Two coordinates: Cramer's rule (the common case, without the factorization's loops).
+        const double* o = outputs_.data();
+        double a = o[0], b = o[1], d = o[3], determinant = a * d - b * b;
+        if (!(a > 0 && determinant > 0))
+            throw computation_error("the mass matrix is not positive definite at t = " + number(t) +
+                                    " (a singular configuration of the coordinates)");
+        double inverse = 1 / determinant;
+        acceleration[0] = (d * o[4] - b * o[5]) * inverse;
+        acceleration[1] = (a * o[5] - b * o[4]) * inverse;
+        return;
+    }
+    std::copy(outputs_.begin(), outputs_.begin() + static_cast<std::ptrdiff_t>(n_ * n_), factor_.begin());
+    std::copy(outputs_.begin() + static_cast<std::ptrdiff_t>(n_ * n_), outputs_.end(), acceleration);
+    if (!factor_ldlt(factor_.data(), n_))
+        throw computation_error("the mass matrix is not positive definite at t = " + number(t) +
+                                " (a singular configuration of the coordinates)");
+    ldlt_solve(factor_.data(), n_, acceleration);
+}
+
+void compiled_motion::rhs(double t, const double* x, double* dxdt) const
+{
+    std::copy(x + n_, x + 2 * n_, dxdt);
+    solve(t, x, dxdt + n_);
+}
+
+void compiled_motion::jacobian(double t, const double* x, double* out) const
+{
+    const std::size_t n = n_, d = 2 * n_;
+    std::vector<double> acceleration(n);
+    solve(t, x, acceleration.data(), true); // leaves the LDLᵀ factor of M in factor_
+    std::copy(x, x + 2 * n_, symbols_.begin());
+    symbols_[2 * n_] = t;
+    if (jacobian_native_)
+        jacobian_native_(symbols_.data(), jacobian_outputs_.data());
+    else
+        jacobian_program_.run(symbols_.data(), scratch_, jacobian_outputs_.data());
+    const double* mass_derivative = jacobian_outputs_.data();        // [k][i][j]: ∂M_ij/∂q_k
+    const double* force_position = mass_derivative + n * n * n;      // [i][k]: ∂f_i/∂q_k
+    const double* force_velocity = force_position + n * n;           // [i][k]: ∂f_i/∂q̇_k
+    std::fill(out, out + d * d, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        out[i * d + n + i] = 1;
+    std::vector<double> column(n);
+    for (std::size_t k = 0; k < d; ++k) {
+        for (std::size_t i = 0; i < n; ++i) {
+            if (k < n) {
+                double s = force_position[i * n + k];
+                for (std::size_t j = 0; j < n; ++j)
+                    s -= mass_derivative[(k * n + i) * n + j] * acceleration[j];
+                column[i] = s;
+            } else {
+                column[i] = force_velocity[i * n + (k - n)];
+            }
+        }
+        ldlt_solve(factor_.data(), n, column.data());
+        for (std::size_t i = 0; i < n; ++i)
+            out[(n + i) * d + k] = column[i];
+    }
+}
+
+bool compiled_motion::compile_native()
+{
+    if (native_)
+        return true;
+    native_ = native_module::compile({&rhs_program_, &jacobian_program_});
+    if (!native_)
+        return false;
+    rhs_native_ = native_->get(0);
+    jacobian_native_ = native_->get(1);
+    return true;
+}
+
+double compiled_motion::energy(const double* x) const
+{
+    std::vector<double> symbols(1 + 2 * n_, 0.0);
+    std::copy(x, x + 2 * n_, symbols.begin());
+    std::vector<double> scratch;
+    double e = 0;
+    energy_program_.run(symbols.data(), scratch, &e);
+    return e;
+}
+
+ode_system compiled_motion::system(double energy_scale) const
+{
+    ode_system s;
+    s.dimension = dimension();
+    s.rhs = [this](double t, const double* x, double* dxdt) { rhs(t, x, dxdt); };
+    s.jacobian = [this](double t, const double* x, double* out) { jacobian(t, x, out); };
+    if (conservative_)
+        s.invariants.push_back({"energy", [this](const double* x) { return energy(x); }, energy_scale});
+    return s;
+}
+
+std::map<std::string, GiNaC::ex> first_value_point(const model& scene)
+{
+    std::map<std::string, GiNaC::ex> values;
+    if (!scene.values.empty())
+        for (const auto& [name, value] : scene.values.front().values)
+            values[name] = value;
+    return values;
+}
+
+std::vector<double> initial_state_vector(const model& scene, const std::map<std::string, GiNaC::ex>& values)
+{
+    std::size_t n = scene.coordinates.size();
+    std::vector<double> x(2 * n, 0.0);
+    if (!scene.initial)
+        return x;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::string& name = scene.coordinates[i].name;
+        auto p = scene.initial->positions.find(name);
+        if (p != scene.initial->positions.end())
+            x[i] = to_double(at_values(p->second, scene, values), "the initial value of `" + name + "`");
+        auto v = scene.initial->velocities.find(name);
+        if (v != scene.initial->velocities.end())
+            x[n + i] = to_double(at_values(v->second, scene, values), "the initial value of `" + name + "'`");
+    }
+    return x;
+}
+
+} // namespace lagrange

@@ -1,0 +1,72 @@
+/** @file compiled_motion.h
+ *  The equations of motion M(q) q̈ = f(t, q, q̇) of a Lagrangian at one parameter
+ *  point, compiled once into straight-line code (M, f, the energy function, and the
+ *  symbolic derivatives that make the Jacobian of the first-order system), and
+ *  solved for q̈ at each evaluation — the mass matrix is never inverted symbolically.
+ *  State layout: x = (q1 … qn, q̇1 … q̇n). */
+#pragma once
+
+#include "mechanics/lagrangian.h"
+#include "numeric/expression_program.h"
+#include "numeric/native_code.h"
+#include "numeric/ode.h"
+#include "scene/model.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+class compiled_motion {
+public:
+    /// `values`: a value for every parameter that L uses (exact or floating); throws
+    /// computation_error naming a parameter without one, or an expression that cannot
+    /// be evaluated.
+    compiled_motion(const model& scene, const lagrangian_result& lagrangian,
+                    const std::map<std::string, GiNaC::ex>& values);
+
+    std::size_t coordinates() const { return n_; }
+    std::size_t dimension() const { return 2 * n_; }
+    bool conservative() const { return conservative_; } ///< L has no explicit time: energy is conserved
+    std::size_t instructions() const { return rhs_program_.instruction_count(); }
+
+    /// dxdt = (q̇, q̈) with M q̈ = f solved by LDLᵀ; throws computation_error when M
+    /// is not positive definite at x.
+    void rhs(double t, const double* x, double* dxdt) const;
+    /// ∂(q̇, q̈)/∂(q, q̇), row-major 2n × 2n: ∂q̈/∂y = M⁻¹ (∂f/∂y − (∂M/∂y) q̈).
+    void jacobian(double t, const double* x, double* out) const;
+    /// The energy function h = Σ q̇ ∂L/∂q̇ − L (conserved when L has no explicit t).
+    double energy(const double* x) const;
+
+    /// Compiles M, f and the Jacobian's parts to machine code (see native_code.h);
+    /// false, and the interpreter stays in use, when no C compiler is available.
+    bool compile_native();
+    bool native() const { return static_cast<bool>(native_); }
+
+    /// The system for the integrators: rhs, Jacobian, and the energy as an invariant
+    /// (relative to `energy_scale`, 0 for its initial magnitude) when it is conserved.
+    ode_system system(double energy_scale = 0) const;
+
+private:
+    /// q̈ at x; `keep_factor` leaves the LDLᵀ factor of M in factor_ (for the Jacobian).
+    void solve(double t, const double* x, double* acceleration, bool keep_factor = false) const;
+    std::size_t n_ = 0;
+    bool conservative_ = true;
+    expression_program rhs_program_;      ///< M (row-major, n²) then f (n)
+    expression_program jacobian_program_; ///< ∂M/∂q_k (n³), ∂f/∂q (n²), ∂f/∂q̇ (n²)
+    expression_program energy_program_;
+    std::shared_ptr<native_module> native_;
+    native_module::function rhs_native_ = nullptr;
+    native_module::function jacobian_native_ = nullptr;
+    mutable std::vector<double> scratch_, symbols_, outputs_, factor_, jacobian_outputs_;
+};
+
+/// A value for every parameter from the first `values` line (later lines are other points).
+std::map<std::string, GiNaC::ex> first_value_point(const model& scene);
+
+/// The initial state x0 = (q, q̇) of the scene's `initial` line at those values (zeros if none).
+std::vector<double> initial_state_vector(const model& scene, const std::map<std::string, GiNaC::ex>& values);
+
+} // namespace lagrange

@@ -1,0 +1,38 @@
+/** @file native_code.h
+ *  Expression programs compiled to machine code at run time: C source generated from
+ *  the programs, compiled by the system's C compiler (`cc -O2 -shared`) in a private
+ *  temporary folder that is always removed, and loaded with dlopen. The compiler runs
+ *  through posix_spawnp with an argument vector — no shell — and the source holds
+ *  only generated identifiers and numbers, never scene text. */
+#pragma once
+
+#include "numeric/expression_program.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+/// A loaded native module with one function per program.
+class native_module {
+public:
+    using function = void (*)(const double* symbols, double* out);
+
+    /// Compiles `programs`; returns nullptr (never throws) when no compiler is
+    /// available or compilation fails, so callers fall back to the interpreter.
+    static std::shared_ptr<native_module> compile(const std::vector<const expression_program*>& programs);
+
+    ~native_module();
+    native_module(const native_module&) = delete;
+    native_module& operator=(const native_module&) = delete;
+
+    function get(std::size_t k) const { return functions_.at(k); }
+
+private:
+    native_module() = default;
+    void* handle_ = nullptr;
+    std::vector<function> functions_;
+};
+
+} // namespace lagrange

@@ -1,0 +1,397 @@
+/** @file simulation.cpp
+ *  Simulation and work-precision runs of a scene's equations of motion. */
+#include "numeric/simulation.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <cstdio>
+
+namespace lagrange {
+
+namespace {
+
+double to_double(const GiNaC::ex& e)
+{
+    GiNaC::ex value = e.evalf();
+    if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real())
+        throw computation_error("a value needed by the simulation is not a real number");
+    return GiNaC::ex_to<GiNaC::numeric>(value).to_double();
+}
+
+std::string number(double x)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3g", x);
+    return buffer;
+}
+
+/// Every `values` line overlaid in order: later points (and --values) override earlier ones.
+std::map<std::string, GiNaC::ex> merged_values(const model& scene)
+{
+    std::map<std::string, GiNaC::ex> values;
+    for (const value_point& point : scene.values)
+        for (const auto& [name, value] : point.values)
+            values[name] = value;
+    return values;
+}
+
+GiNaC::ex substitute(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values)
+{
+    GiNaC::lst substitutions;
+    for (const parameter& p : scene.parameters) {
+        auto found = values.find(p.name);
+        if (found != values.end())
+            substitutions.append(p.symbol == found->second);
+    }
+    return e.subs(substitutions);
+}
+
+} // namespace
+
+std::vector<double> linearized_frequencies(const ode_system& system, const std::vector<double>& x)
+{
+    const auto d = static_cast<Eigen::Index>(system.dimension);
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> jacobian(d, d);
+    system.jacobian(0, x.data(), jacobian.data());
+    if (!jacobian.allFinite())
+        return {};
+    Eigen::EigenSolver<Eigen::MatrixXd> solver(jacobian);
+    if (solver.info() != Eigen::Success)
+        return {};
+    std::vector<double> frequencies;
+    double largest = 0;
+    for (Eigen::Index k = 0; k < d; ++k)
+        largest = std::max(largest, std::abs(solver.eigenvalues()[k]));
+    for (Eigen::Index k = 0; k < d; ++k) {
+        std::complex<double> lambda = solver.eigenvalues()[k];
+        double size = std::abs(lambda);
+        if (size <= 1e-9 * largest || size == 0)
+            continue;
+        // ±iω (or ±γ for an unstable mode): keep the one with a positive part once.
+        if (lambda.imag() > 0 || (lambda.imag() == 0 && lambda.real() > 0))
+            frequencies.push_back(size);
+    }
+    std::sort(frequencies.begin(), frequencies.end());
+    return frequencies;
+}
+
+std::function<void(double, double*)> normal_mode_solution(const ode_system& system, std::size_t coordinates,
+                                                          const std::vector<double>& x0)
+{
+    const auto d = static_cast<Eigen::Index>(system.dimension);
+    using row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    row_major j0(d, d), j1(d, d), j2(d, d);
+    std::vector<double> zero(system.dimension, 0.0), other(system.dimension);
+    for (std::size_t i = 0; i < system.dimension; ++i)
+        other[i] = 0.37 + 1.3 * x0[i] - 0.11 * static_cast<double>(i);
+    try {
+        system.jacobian(0, x0.data(), j0.data());
+        system.jacobian(0, zero.data(), j1.data());
+        system.jacobian(1.7, other.data(), j2.data());
+    } catch (const computation_error&) {
+        return {};
+    }
+    double scale = j0.norm();
+    if (!j0.allFinite() || scale == 0 || (j0 - j1).norm() > 1e-13 * scale || (j0 - j2).norm() > 1e-13 * scale)
+        return {};
+    // Linear: also f(0) must vanish (no constant force), checked on the rhs.
+    std::vector<double> f0(system.dimension);
+    system.rhs(0, zero.data(), f0.data());
+    for (double v : f0)
+        if (std::abs(v) > 1e-14 * scale)
+            return {};
+    Eigen::EigenSolver<Eigen::MatrixXd> solver(j0);
+    if (solver.info() != Eigen::Success)
+        return {};
+    Eigen::MatrixXcd vectors = solver.eigenvectors();
+    Eigen::VectorXcd values = solver.eigenvalues();
+    Eigen::MatrixXcd rebuilt = vectors * values.asDiagonal() * vectors.inverse();
+    if ((rebuilt - j0.cast<std::complex<double>>()).norm() > 1e-12 * scale)
+        return {};
+    Eigen::VectorXcd weights =
+        vectors.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(x0.data(), d).cast<std::complex<double>>());
+    (void)coordinates;
+    return [vectors, values, weights, d](double t, double* x) {
+        Eigen::VectorXcd scaled(d);
+        for (Eigen::Index k = 0; k < d; ++k)
+            scaled[k] = std::exp(values[k] * t) * weights[k];
+        Eigen::VectorXcd state = vectors * scaled;
+        for (Eigen::Index k = 0; k < d; ++k)
+            x[k] = state[k].real();
+    };
+}
+
+beat_measurement measure_beats(const std::vector<double>& times, const std::vector<double>& signal)
+{
+    beat_measurement result;
+    // The envelope: the local maxima of |signal|, refined by a parabola through three samples.
+    std::vector<double> peak_times, peaks;
+    for (std::size_t k = 1; k + 1 < signal.size(); ++k) {
+        double a = std::abs(signal[k - 1]), b = std::abs(signal[k]), c = std::abs(signal[k + 1]);
+        if (b > a && b >= c) {
+            double curvature = a - 2 * b + c;
+            double offset = curvature != 0 ? 0.5 * (a - c) / curvature : 0;
+            double h = times[k + 1] - times[k];
+            peak_times.push_back(times[k] + offset * h);
+            peaks.push_back(b - 0.25 * (a - c) * offset);
+        }
+    }
+    // The minima of the envelope's square (smooth where the envelope has a corner).
+    std::vector<double> minima;
+    for (std::size_t k = 1; k + 1 < peaks.size(); ++k) {
+        double a = peaks[k - 1] * peaks[k - 1], b = peaks[k] * peaks[k], c = peaks[k + 1] * peaks[k + 1];
+        if (b < a && b <= c) {
+            // Parabola through three unevenly spaced points.
+            double t0 = peak_times[k - 1], t1 = peak_times[k], t2 = peak_times[k + 1];
+            double d1 = (b - a) / (t1 - t0), d2 = (c - b) / (t2 - t1);
+            double second = (d2 - d1) / (t2 - t0);
+            double at = second > 0 ? 0.5 * (t0 + t1) - d1 / (2 * second) : t1;
+            if (at < t0 || at > t2)
+                at = t1;
+            minima.push_back(at);
+        }
+    }
+    result.minima = minima.size();
+    if (minima.size() >= 2)
+        result.measured = (minima.back() - minima.front()) / static_cast<double>(minima.size() - 1);
+    return result;
+}
+
+namespace {
+
+/// The scene's motion at its parameter point, ready to integrate.
+struct prepared_motion {
+    std::map<std::string, GiNaC::ex> values;
+    std::unique_ptr<compiled_motion> motion;
+    std::vector<double> x0;
+    double until = 0;
+    double tolerance = 1e-9;
+    std::vector<double> frequencies;
+    double stiffness = 1;
+    ode_system system;
+};
+
+prepared_motion prepare(const model& scene, const lagrangian_result& lagrangian,
+                        const std::optional<std::vector<GiNaC::ex>>& equilibrium, const simulation_settings& settings)
+{
+    prepared_motion p;
+    p.values = merged_values(scene);
+    p.motion = std::make_unique<compiled_motion>(scene, lagrangian, p.values);
+    if (settings.native)
+        p.motion->compile_native(); // falls back to the interpreter without a compiler
+    p.x0 = initial_state_vector(scene, p.values);
+    const std::size_t n = p.motion->coordinates();
+    p.until = settings.until ? *settings.until : scene.simulation ? to_double(scene.simulation->until) : 0;
+    if (!(p.until > 0) || !std::isfinite(p.until))
+        throw computation_error("the simulation needs an end time: a `simulate until T` line or --until");
+    p.tolerance = settings.tolerance ? *settings.tolerance
+                  : scene.simulation && scene.simulation->tolerance ? to_double(*scene.simulation->tolerance)
+                                                                    : 1e-9;
+    if (!(p.tolerance >= 1e-14 && p.tolerance < 1))
+        throw computation_error("the tolerance " + number(p.tolerance) + " is outside 1e-14 … 1");
+
+    // The linearization about the equilibrium (or the initial position) for the choice of method.
+    std::vector<double> reference_state(2 * n, 0.0);
+    if (equilibrium && equilibrium->size() == n) {
+        for (std::size_t i = 0; i < n; ++i)
+            reference_state[i] = to_double(substitute((*equilibrium)[i], scene, p.values));
+    } else {
+        std::copy(p.x0.begin(), p.x0.begin() + static_cast<std::ptrdiff_t>(n), reference_state.begin());
+    }
+    double energy_scale = 0;
+    if (p.motion->conservative() && equilibrium)
+        energy_scale = std::abs(p.motion->energy(p.x0.data()) - p.motion->energy(reference_state.data()));
+    p.system = p.motion->system(energy_scale);
+    p.frequencies = linearized_frequencies(p.system, reference_state);
+    if (p.frequencies.size() >= 2)
+        p.stiffness = p.frequencies.back() / p.frequencies.front();
+    return p;
+}
+
+} // namespace
+
+simulation_result simulate(const model& scene, const lagrangian_result& lagrangian,
+                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
+                           const simulation_settings& settings)
+{
+    simulation_result result;
+    for (const coordinate& c : scene.coordinates)
+        result.coordinates.push_back(c.name);
+    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, settings);
+    result.values = prepared.values;
+    const std::size_t n = prepared.motion->coordinates();
+    const std::vector<double>& x0 = prepared.x0;
+    const double until = prepared.until;
+    result.tolerance = prepared.tolerance;
+    result.frequencies = prepared.frequencies;
+    result.stiffness = prepared.stiffness;
+    ode_system& system = prepared.system;
+
+    std::string method_name = settings.method ? *settings.method : scene.simulation ? scene.simulation->method : "auto";
+    ode_method method;
+    if (method_name == "auto") {
+        if (result.stiffness > stiffness_threshold) {
+            method = ode_method::bdf;
+            result.choice = "auto: the linearized frequencies spread over a factor " + number(result.stiffness) +
+                            " (> " + number(stiffness_threshold) + "): stiff, implicit BDF";
+        } else {
+            method = result.tolerance <= 1e-10 ? ode_method::rkf78 : ode_method::dopri5;
+            result.choice = "auto: the linearized frequencies spread over a factor " + number(result.stiffness) +
+                            " (≤ " + number(stiffness_threshold) + "): not stiff, explicit " + to_string(method);
+        }
+    } else {
+        std::optional<ode_method> named = ode_method_from_name(method_name);
+        if (!named)
+            throw computation_error("unknown method `" + method_name +
+                                    "` (auto, dopri5, rkf78, bulirsch-stoer, bdf, implicit-midpoint)");
+        method = *named;
+        result.choice = "as asked";
+    }
+    result.method = to_string(method);
+
+    integration_options options;
+    options.until = until;
+    options.tolerance = result.tolerance;
+    if (scene.simulation && scene.simulation->step)
+        options.output_step = to_double(*scene.simulation->step);
+    options.frequency = result.frequencies.empty() ? 1.0 : result.frequencies.back();
+    options.max_seconds = settings.max_seconds;
+    options.progress = settings.progress;
+
+    system.exact = normal_mode_solution(system, n, x0);
+    result.run = integrate(system, method, x0, options);
+    if (result.run.exact_error) {
+        result.error_estimate = result.run.exact_error;
+        result.error_basis = "against the exact normal-mode solution of the linear equations";
+    } else if (settings.estimate_error && result.run.seconds > settings.max_seconds / 4) {
+        result.error_basis = "no estimate: the run took " + number(result.run.seconds) +
+                             " s, and a reference run at a tighter tolerance would exceed the time limit";
+    } else if (settings.estimate_error) {
+        integration_options fine = options;
+        fine.progress = nullptr;
+        fine.tolerance = std::max(result.tolerance / 1000, 1e-14);
+        fine.max_seconds = std::max(1.0, settings.max_seconds - result.run.seconds);
+        ode_method reference = method == ode_method::implicit_midpoint
+                                   ? (result.stiffness > stiffness_threshold ? ode_method::bdf : ode_method::rkf78)
+                                   : method;
+        try {
+            trajectory check = integrate(system, reference, x0, fine);
+            result.error_estimate = trajectory_difference(result.run, check);
+            result.error_basis = "against " + to_string(reference) + " at tolerance " + number(fine.tolerance);
+        } catch (const computation_error& error) {
+            result.error_basis = std::string("no estimate: the reference run stopped: ") + error.what();
+        }
+    }
+
+    // Beats: two close linearized frequencies.
+    if (n >= 2 && result.frequencies.size() >= 2) {
+        double w1 = result.frequencies[0], w2 = result.frequencies[1];
+        double predicted = 2 * M_PI / (w2 - w1);
+        if (w2 > w1 && (w2 - w1) < 0.5 * w2 && until >= 1.5 * predicted && !result.run.states.empty()) {
+            double best_depth = -1;
+            for (std::size_t i = 0; i < n; ++i) {
+                std::vector<double> signal;
+                for (const auto& state : result.run.states)
+                    signal.push_back(state[i]);
+                beat_measurement b = measure_beats(result.run.times, signal);
+                double top = 0;
+                for (double v : signal)
+                    top = std::max(top, std::abs(v));
+                if (b.minima >= 2 && top > 0 && top > best_depth) {
+                    best_depth = top;
+                    b.coordinate = scene.coordinates[i].name;
+                    b.predicted = predicted;
+                    result.beats = b;
+                }
+            }
+        }
+    }
+    return result;
+}
+
+workprecision_result scene_work_precision(const model& scene, const lagrangian_result& lagrangian,
+                                          const std::optional<std::vector<GiNaC::ex>>& equilibrium,
+                                          const simulation_settings& settings)
+{
+    simulation_settings native = settings;
+    native.native = true;
+    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, native);
+    return work_precision(prepared.system, prepared.x0, prepared.until, prepared.motion->coordinates(),
+                          prepared.frequencies, {}, settings.max_seconds / 6);
+}
+
+workprecision_result work_precision(const ode_system& system, const std::vector<double>& x0, double until,
+                                    std::size_t coordinates, const std::vector<double>& frequencies,
+                                    const std::vector<double>& tolerances, double max_seconds)
+{
+    workprecision_result result;
+    result.until = until;
+    ode_system measured = system;
+    measured.exact = system.exact ? system.exact : normal_mode_solution(system, coordinates, x0);
+    integration_options options;
+    options.until = until;
+    options.max_seconds = max_seconds;
+    options.frequency = frequencies.empty() ? 1.0 : frequencies.back();
+    options.max_steps = 5'000'000;
+    bool stiff = frequencies.size() >= 2 && frequencies.back() / frequencies.front() > stiffness_threshold;
+
+    trajectory reference;
+    if (measured.exact) {
+        result.exact = true;
+        result.reference = "exact: the normal-mode solution of the linear equations";
+    } else {
+        integration_options fine = options;
+        fine.tolerance = stiff ? 1e-12 : 1e-13;
+        fine.max_seconds = 4 * max_seconds;
+        ode_method method = stiff ? ode_method::bdf : ode_method::rkf78;
+        reference = integrate(system, method, x0, fine);
+        result.reference = "reference (not exact): " + to_string(method) + " at tolerance " + number(fine.tolerance);
+    }
+    std::vector<double> ladder = tolerances;
+    if (ladder.empty())
+        for (int k = 3; k <= 12; ++k)
+            ladder.push_back(std::pow(10.0, -k));
+    for (ode_method method : all_ode_methods()) {
+        std::string skip;
+        for (double tol : ladder) {
+            workprecision_point point;
+            point.method = to_string(method);
+            point.tolerance = tol;
+            options.tolerance = tol;
+            if (!skip.empty()) {
+                point.failure = skip;
+                result.points.push_back(point);
+                continue;
+            }
+            try {
+                double best = HUGE_VAL, total = 0;
+                trajectory run;
+                for (int repeat = 0; repeat < 7 && (repeat == 0 || total < 0.2); ++repeat) {
+                    run = integrate(measured, method, x0, options);
+                    best = std::min(best, run.seconds);
+                    total += run.seconds;
+                }
+                point.seconds = best;
+                point.steps = run.steps;
+                point.error = run.exact_error ? *run.exact_error : trajectory_difference(run, reference);
+                for (const auto& [name, drift] : run.invariant_drift)
+                    if (name == "energy")
+                        point.energy_drift = drift;
+                if (best > max_seconds / 4)
+                    skip = "left out: the looser tolerance " + number(tol) + " already took " + number(best) + " s";
+            } catch (const computation_error& error) {
+                point.failure = error.what();
+                skip = "left out: the looser tolerance " + number(tol) + " already failed";
+            }
+            result.points.push_back(point);
+        }
+    }
+    return result;
+}
+
+} // namespace lagrange

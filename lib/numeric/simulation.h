@@ -1,0 +1,106 @@
+/** @file simulation.h
+ *  The `simulation` and `workprecision` products: the scene's equations of motion
+ *  compiled at its parameter point, integrated by the chosen (or automatically
+ *  picked) method, with an error estimate, invariant drift, steps and run time; and
+ *  the work-precision table of every method over a ladder of tolerances. */
+#pragma once
+
+#include "mechanics/lagrangian.h"
+#include "numeric/compiled_motion.h"
+#include "numeric/ode.h"
+#include "scene/model.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+struct simulation_settings {
+    std::optional<double> until;      ///< overrides the scene's `simulate until`
+    std::optional<std::string> method; ///< overrides the scene's method ("auto" picks)
+    std::optional<double> tolerance;  ///< overrides the scene's tolerance (default 1e-9)
+    bool estimate_error = true;       ///< also run at tolerance/1000 to estimate the error
+    double max_seconds = 120;
+    /// Compile the equations to machine code with the system's C compiler (about 0.1–0.3 s,
+    /// then 2–3× faster evaluations than the interpreter); `workprecision` always does.
+    bool native = false;
+    std::function<void(double fraction)> progress;
+};
+
+/// Beats: the envelope of a coordinate swells and fades with period 2π/(ω₂ − ω₁).
+struct beat_measurement {
+    std::string coordinate;  ///< the coordinate whose envelope was measured
+    double predicted = 0;    ///< 2π/(ω₂ − ω₁) from the linearized frequencies
+    double measured = 0;     ///< mean spacing of the envelope's minima in the trajectory
+    std::size_t minima = 0;  ///< how many minima were found
+};
+
+struct simulation_result {
+    std::vector<std::string> coordinates;
+    std::map<std::string, GiNaC::ex> values;  ///< the parameter point
+    std::string method;                       ///< the method that ran
+    std::string choice;                       ///< why (for `auto`)
+    double tolerance = 0;
+    std::vector<double> frequencies;          ///< linearized angular frequencies at the equilibrium (ascending)
+    double stiffness = 1;                     ///< ω_max/ω_min of the linearization
+    trajectory run;
+    std::optional<double> error_estimate;     ///< relative trajectory error
+    std::string error_basis;                  ///< how the estimate was made
+    std::optional<beat_measurement> beats;
+};
+
+/// Frequency spread above which `auto` picks the implicit BDF method.
+constexpr double stiffness_threshold = 1e3;
+
+/// Runs the simulation the scene's `simulate` line (and `settings`) ask for.
+/// `equilibrium`: numeric coordinates of the equilibrium to linearize about for the
+/// automatic choice (else the initial position).
+simulation_result simulate(const model& scene, const lagrangian_result& lagrangian,
+                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
+                           const simulation_settings& settings = {});
+
+/// Linearized angular frequencies of `system` about the state `x` (|Im λ| and |Re λ|
+/// of the Jacobian's eigenvalues, each pair once), ascending, zeros dropped.
+std::vector<double> linearized_frequencies(const ode_system& system, const std::vector<double>& x);
+
+/// The exact solution of a linear conservative system x = (q, q̇), q̈ = −M⁻¹K q, by its
+/// normal modes, if the Jacobian is the same at every state (checked at a few states);
+/// else empty.
+std::function<void(double, double*)> normal_mode_solution(const ode_system& system, std::size_t coordinates,
+                                                          const std::vector<double>& x0);
+
+/// Mean spacing of the minima of a signal's envelope (peaks of |signal|); 0 if fewer than two.
+beat_measurement measure_beats(const std::vector<double>& times, const std::vector<double>& signal);
+
+struct workprecision_point {
+    std::string method;
+    double tolerance = 0;
+    std::optional<double> error;     ///< relative trajectory error against the reference
+    double seconds = 0;              ///< fastest of the repeats
+    std::size_t steps = 0;
+    std::optional<double> energy_drift;
+    std::string failure;             ///< why the run stopped, if it did
+};
+
+struct workprecision_result {
+    std::string reference;           ///< "exact: normal modes" or "reference: rkf78 at tolerance 1e-13"
+    bool exact = false;
+    double until = 0;
+    std::vector<workprecision_point> points;
+};
+
+/// `work_precision` on the scene's equations of motion at its parameter point, from
+/// its initial state over the `simulate` time span (or settings.until).
+workprecision_result scene_work_precision(const model& scene, const lagrangian_result& lagrangian,
+                                          const std::optional<std::vector<GiNaC::ex>>& equilibrium,
+                                          const simulation_settings& settings = {});
+
+/// Every method over tolerances 1e-3 … 1e-12 (`tolerances` if given), each run
+/// repeated while it takes under 0.2 s in total (the fastest kept).
+workprecision_result work_precision(const ode_system& system, const std::vector<double>& x0, double until,
+                                    std::size_t coordinates, const std::vector<double>& frequencies,
+                                    const std::vector<double>& tolerances = {}, double max_seconds = 20);
+
+} // namespace lagrange

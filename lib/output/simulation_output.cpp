@@ -1,0 +1,404 @@
+/** @file simulation_output.cpp
+ *  Simulation sections, CSV, and gnuplot plots. gnuplot runs through fork/execvp
+ *  with a script file in a private temporary folder (mkdtemp) that is always
+ *  removed; no shell sees any text. */
+#include "output/simulation_output.h"
+
+#include "output/print.h"
+#include "scene/source.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace lagrange {
+
+namespace {
+
+std::string number(double x, int digits = 6)
+{
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+    return buffer;
+}
+
+/// x in LaTeX: 1.5\times10^{-9}.
+std::string latex_number(double x, int digits = 3)
+{
+    std::string text = number(x, digits);
+    std::size_t e = text.find('e');
+    if (e == std::string::npos)
+        return text;
+    std::string mantissa = text.substr(0, e);
+    int exponent = std::atoi(text.c_str() + e + 1);
+    return (mantissa == "1" ? "" : mantissa + "\\times") + "10^{" + std::to_string(exponent) + "}";
+}
+
+std::string latex_text(const std::string& text)
+{
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        char c = text[i];
+        if (static_cast<unsigned char>(c) >= 0x80) {
+            if (text.compare(i, 3, "≤") == 0) { out += "$\\le$"; i += 2; continue; }
+            if (text.compare(i, 3, "…") == 0) { out += "\\ldots{}"; i += 2; continue; }
+            out += '?';
+            while (i + 1 < text.size() && (static_cast<unsigned char>(text[i + 1]) & 0xC0) == 0x80)
+                ++i;
+            continue;
+        }
+        if (c == '_' || c == '%' || c == '&' || c == '#' || c == '$' || c == '{' || c == '}')
+            out += std::string("\\") + c;
+        else if (c == '>')
+            out += "$>$";
+        else if (c == '<')
+            out += "$<$";
+        else
+            out += c;
+    }
+    return out;
+}
+
+std::string drift_of(const trajectory& run, const std::string& name)
+{
+    for (const auto& [n, drift] : run.invariant_drift)
+        if (n == name)
+            return number(drift, 3);
+    return "";
+}
+
+/// A private temporary folder, removed with everything in it when this goes out of scope.
+class temporary_folder {
+public:
+    temporary_folder()
+    {
+        std::string pattern = (std::filesystem::temp_directory_path() / "lagrange-XXXXXX").string();
+        std::vector<char> buffer(pattern.begin(), pattern.end());
+        buffer.push_back('\0');
+        if (!mkdtemp(buffer.data()))
+            throw computation_error("cannot create a temporary folder for the plot");
+        path_ = buffer.data();
+    }
+    ~temporary_folder()
+    {
+        std::error_code ignored;
+        std::filesystem::remove_all(path_, ignored);
+    }
+    temporary_folder(const temporary_folder&) = delete;
+    temporary_folder& operator=(const temporary_folder&) = delete;
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+};
+
+/// Runs gnuplot on `script` (in `folder`), its output to /dev/null; throws on failure.
+void run_gnuplot(const temporary_folder& folder, const std::string& script)
+{
+    std::string script_path = folder.path() + "/plot.gp";
+    {
+        std::ofstream out(script_path);
+        out << script;
+        if (!out)
+            throw computation_error("cannot write the gnuplot script");
+    }
+    std::fflush(nullptr);
+    pid_t child = fork();
+    if (child < 0)
+        throw computation_error("cannot start gnuplot");
+    if (child == 0) {
+        std::freopen("/dev/null", "w", stdout);
+        std::freopen("/dev/null", "w", stderr);
+        if (chdir(folder.path().c_str()) != 0)
+            _exit(127);
+        char name[] = "gnuplot";
+        std::vector<char> file(script_path.begin(), script_path.end());
+        file.push_back('\0');
+        char* argv[] = {name, file.data(), nullptr};
+        execvp("gnuplot", argv);
+        _exit(127);
+    }
+    int status = 0;
+    while (waitpid(child, &status, 0) < 0)
+        if (errno != EINTR)
+            throw computation_error("gnuplot did not finish");
+    if (!WIFEXITED(status) || WEXITSTATUS(status) == 127)
+        throw computation_error("gnuplot is not installed (Debian package gnuplot-nox): no plot drawn");
+    if (WEXITSTATUS(status) != 0)
+        throw computation_error("gnuplot failed to draw the plot");
+}
+
+/// A string literal for gnuplot: single quotes, with quotes and non-printing characters dropped.
+std::string gnuplot_string(const std::string& text)
+{
+    std::string out = "'";
+    for (char c : text)
+        if (c != '\'' && c != '\\' && (static_cast<unsigned char>(c) >= 0x20))
+            out += c;
+    return out + "'";
+}
+
+/// Copies the plot out of the temporary folder to `path` through a temporary name.
+void deliver(const temporary_folder& folder, const std::string& path)
+{
+    std::string temporary = path + ".tmp";
+    std::error_code error;
+    std::filesystem::copy_file(folder.path() + "/plot.svg", temporary,
+                               std::filesystem::copy_options::overwrite_existing, error);
+    if (error || std::rename(temporary.c_str(), path.c_str()) != 0) {
+        std::remove(temporary.c_str());
+        throw computation_error("cannot write the plot to `" + path + "`");
+    }
+}
+
+} // namespace
+
+void write_simulation_text(std::ostream& out, const simulation_result& s, bool timings)
+{
+    const trajectory& run = s.run;
+    std::size_t n = s.coordinates.size();
+    out << "\nSimulation\n";
+    out << "  method: " << s.method << " (" << s.choice << ")\n";
+    out << "  from t = 0 to " << number(run.times.empty() ? 0 : run.times.back()) << ", tolerance "
+        << number(s.tolerance, 3) << ", " << run.times.size() << " output times\n";
+    if (!s.frequencies.empty()) {
+        out << "  linearized frequencies: ω =";
+        for (std::size_t k = 0; k < s.frequencies.size(); ++k)
+            out << (k ? ", " : " ") << number(s.frequencies[k]);
+        out << '\n';
+    }
+    out << "  steps: " << run.steps << " (" << run.evaluations << " evaluations, " << run.jacobians
+        << " Jacobians)\n";
+    if (s.error_estimate)
+        out << "  error estimate: " << number(*s.error_estimate, 3) << " relative (" << s.error_basis << ")\n";
+    else
+        out << "  error estimate: " << s.error_basis << '\n';
+    for (const auto& [name, drift] : run.invariant_drift)
+        out << "  " << name << " drift: " << number(drift, 3) << " relative\n";
+    if (timings)
+        out << "  run time: " << number(run.seconds, 3) << " s\n";
+    if (s.beats) {
+        const beat_measurement& b = *s.beats;
+        out << "  beats (" << print_name(b.coordinate, syntax::text) << "): period measured " << number(b.measured, 5)
+            << ", predicted 2π/(ω₂ − ω₁) = " << number(b.predicted, 5) << " (difference "
+            << number(100 * std::abs(b.measured - b.predicted) / b.predicted, 2) << " %, " << b.minima
+            << " envelope minima)\n";
+    }
+    if (!run.final_state.empty()) {
+        out << "  final state:";
+        for (std::size_t i = 0; i < n; ++i)
+            out << (i ? ", " : " ") << print_name(s.coordinates[i], syntax::text) << " = "
+                << number(run.final_state[i]);
+        for (std::size_t i = 0; i < n; ++i)
+            out << ", " << print_name(s.coordinates[i] + "_dot", syntax::text) << " = "
+                << number(run.final_state[n + i]);
+        out << '\n';
+    }
+}
+
+void write_workprecision_text(std::ostream& out, const workprecision_result& w)
+{
+    out << "\nWork precision (t from 0 to " << number(w.until) << "; error " << w.reference << ")\n";
+    char line[200];
+    std::snprintf(line, sizeof line, "  %-18s %9s %11s %11s %10s %11s\n", "method", "tolerance", "error", "seconds",
+                  "steps", "energy");
+    out << line;
+    for (const workprecision_point& p : w.points) {
+        if (!p.failure.empty()) {
+            std::snprintf(line, sizeof line, "  %-18s %9.0e  ", p.method.c_str(), p.tolerance);
+            out << line << p.failure << '\n';
+            continue;
+        }
+        std::snprintf(line, sizeof line, "  %-18s %9.0e %11.3e %11.3e %10zu %11s\n", p.method.c_str(), p.tolerance,
+                      p.error ? *p.error : NAN, p.seconds, p.steps,
+                      p.energy_drift ? number(*p.energy_drift, 3).c_str() : "-");
+        out << line;
+    }
+}
+
+void write_simulation_latex(std::ostream& out, const simulation_result& s, bool timings)
+{
+    const trajectory& run = s.run;
+    out << "\\subsection*{Simulation}\n";
+    out << "Method " << latex_text(s.method) << " (" << latex_text(s.choice) << "), from $t = 0$ to $"
+        << latex_number(run.times.empty() ? 0 : run.times.back(), 6) << "$, tolerance $" << latex_number(s.tolerance)
+        << "$.\\\\\n";
+    out << "\\begin{tabular}{ll}\n";
+    out << "steps & " << run.steps << " (" << run.evaluations << " evaluations, " << run.jacobians
+        << " Jacobians)\\\\\n";
+    if (s.error_estimate)
+        out << "error estimate & $" << latex_number(*s.error_estimate) << "$ relative\\\\\n";
+    for (const auto& [name, drift] : run.invariant_drift)
+        out << latex_text(name) << " drift & $" << latex_number(drift) << "$ relative\\\\\n";
+    if (timings)
+        out << "run time & " << number(run.seconds, 3) << " s\\\\\n";
+    if (s.beats)
+        out << "beat period & measured $" << latex_number(s.beats->measured, 5)
+            << "$, predicted $2\\pi/(\\omega_2-\\omega_1) = " << latex_number(s.beats->predicted, 5) << "$\\\\\n";
+    out << "\\end{tabular}\n\n";
+    if (s.error_estimate)
+        out << "The error estimate is " << latex_text(s.error_basis) << ".\n";
+}
+
+void write_workprecision_latex(std::ostream& out, const workprecision_result& w)
+{
+    out << "\\subsection*{Work precision}\n";
+    out << "Error " << latex_text(w.reference) << ".\\\\\n";
+    out << "\\begin{tabular}{lrrrr}\nmethod & tolerance & error & seconds & steps\\\\\n\\hline\n";
+    for (const workprecision_point& p : w.points) {
+        if (!p.failure.empty() || !p.error)
+            continue;
+        out << latex_text(p.method) << " & $" << latex_number(p.tolerance) << "$ & $" << latex_number(*p.error)
+            << "$ & $" << latex_number(p.seconds) << "$ & " << p.steps << "\\\\\n";
+    }
+    out << "\\end{tabular}\n";
+}
+
+nlohmann::ordered_json simulation_json(const simulation_result& s, bool timings)
+{
+    const trajectory& run = s.run;
+    std::size_t n = s.coordinates.size();
+    nlohmann::ordered_json doc;
+    doc["method"] = s.method;
+    doc["steps"] = run.steps;
+    doc["t"] = run.times;
+    nlohmann::ordered_json states = nlohmann::ordered_json::object();
+    for (std::size_t i = 0; i < 2 * n; ++i) {
+        std::vector<double> column;
+        for (const auto& state : run.states)
+            column.push_back(state[i]);
+        states[i < n ? s.coordinates[i] : s.coordinates[i - n] + "_dot"] = column;
+    }
+    doc["states"] = states;
+    nlohmann::ordered_json invariants = nlohmann::ordered_json::object();
+    for (const auto& [name, drift] : run.invariant_drift)
+        invariants[name + "_drift"] = drift;
+    doc["invariants"] = invariants;
+    doc["choice"] = s.choice;
+    doc["tolerance"] = s.tolerance;
+    doc["evaluations"] = run.evaluations;
+    doc["jacobians"] = run.jacobians;
+    if (s.error_estimate)
+        doc["error_estimate"] = *s.error_estimate;
+    doc["error_basis"] = s.error_basis;
+    doc["frequencies"] = s.frequencies;
+    if (s.beats)
+        doc["beats"] = {{"coordinate", s.beats->coordinate},
+                        {"measured", s.beats->measured},
+                        {"predicted", s.beats->predicted},
+                        {"minima", s.beats->minima}};
+    if (timings)
+        doc["seconds"] = run.seconds;
+    return doc;
+}
+
+nlohmann::ordered_json workprecision_json(const workprecision_result& w)
+{
+    nlohmann::ordered_json doc;
+    doc["reference"] = w.reference;
+    doc["exact"] = w.exact;
+    doc["until"] = w.until;
+    nlohmann::ordered_json runs = nlohmann::ordered_json::array();
+    for (const workprecision_point& p : w.points) {
+        nlohmann::ordered_json r;
+        r["method"] = p.method;
+        r["tolerance"] = p.tolerance;
+        if (p.failure.empty()) {
+            r["error"] = p.error ? nlohmann::ordered_json(*p.error) : nlohmann::ordered_json();
+            r["seconds"] = p.seconds;
+            r["steps"] = p.steps;
+            if (p.energy_drift)
+                r["energy_drift"] = *p.energy_drift;
+        } else {
+            r["failure"] = p.failure;
+        }
+        runs.push_back(r);
+    }
+    doc["runs"] = runs;
+    return doc;
+}
+
+void write_trajectory_csv(std::ostream& out, const simulation_result& s)
+{
+    std::size_t n = s.coordinates.size();
+    out << "t";
+    for (const std::string& name : s.coordinates)
+        out << ',' << name;
+    for (const std::string& name : s.coordinates)
+        out << ',' << name << "_dot";
+    out << '\n';
+    char buffer[40];
+    for (std::size_t k = 0; k < s.run.states.size(); ++k) {
+        std::snprintf(buffer, sizeof buffer, "%.17g", s.run.times[k]);
+        out << buffer;
+        for (std::size_t i = 0; i < 2 * n; ++i) {
+            std::snprintf(buffer, sizeof buffer, ",%.17g", s.run.states[k][i]);
+            out << buffer;
+        }
+        out << '\n';
+    }
+}
+
+void plot_trajectory(const std::string& path, const simulation_result& s, const std::string& title)
+{
+    temporary_folder folder;
+    {
+        std::ofstream data(folder.path() + "/data.csv");
+        write_trajectory_csv(data, s);
+    }
+    std::ostringstream script;
+    script << "set terminal svg size 900,420 dynamic font 'sans,12'\n"
+              "set output 'plot.svg'\n"
+              "set datafile separator ','\n"
+              "set key outside right top\n"
+              "set xlabel 't'\nset ylabel 'coordinate'\nset grid\n"
+           << "set title " << gnuplot_string(title + " (" + s.method + ")") << '\n' << "plot ";
+    for (std::size_t i = 0; i < s.coordinates.size(); ++i)
+        script << (i ? ", " : "") << "'data.csv' using 1:" << i + 2 << " with lines lw 1.2 title "
+               << gnuplot_string(print_name(s.coordinates[i], syntax::text));
+    script << '\n';
+    run_gnuplot(folder, script.str());
+    deliver(folder, path);
+}
+
+void plot_workprecision(const std::string& path, const workprecision_result& w, const std::string& title)
+{
+    temporary_folder folder;
+    std::vector<std::string> methods;
+    for (const workprecision_point& p : w.points)
+        if (p.failure.empty() && p.error && *p.error > 0 && (methods.empty() || methods.back() != p.method))
+            methods.push_back(p.method);
+    if (methods.empty())
+        throw computation_error("no run of the work-precision table succeeded: nothing to plot");
+    {
+        std::ofstream data(folder.path() + "/data.txt");
+        for (const std::string& m : methods) {
+            data << "# " << m << '\n';
+            for (const workprecision_point& p : w.points)
+                if (p.method == m && p.failure.empty() && p.error && *p.error > 0)
+                    data << number(p.seconds, 8) << ' ' << number(*p.error, 8) << ' ' << number(p.tolerance, 3)
+                         << '\n';
+            data << "\n\n";
+        }
+    }
+    std::ostringstream script;
+    script << "set terminal svg size 900,560 dynamic enhanced font 'sans,12'\n"
+              "set output 'plot.svg'\n"
+              "set logscale xy\nset format x '1e%T'\nset format y '1e%T'\n"
+              "set xlabel 'run time (s)'\nset ylabel 'relative error'\nset grid\nset key outside right top\n"
+           << "set title " << gnuplot_string(title + " — " + w.reference) << " noenhanced\nplot ";
+    for (std::size_t k = 0; k < methods.size(); ++k)
+        script << (k ? ", " : "") << "'data.txt' index " << k << " using 1:2 with linespoints lw 1.5 pt 7 ps 0.6 title "
+               << gnuplot_string(methods[k]) << " noenhanced";
+    script << '\n';
+    run_gnuplot(folder, script.str());
+    deliver(folder, path);
+}
+
+} // namespace lagrange

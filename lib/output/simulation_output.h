@@ -1,0 +1,33 @@
+/** @file simulation_output.h
+ *  The `simulation` and `workprecision` sections of the text, LaTeX and JSON
+ *  documents, the trajectory as CSV, and plots drawn by gnuplot (SVG). */
+#pragma once
+
+#include "numeric/simulation.h"
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+#include <string>
+
+namespace lagrange {
+
+/// Run times are printed only when `timings` is set (they differ from run to run).
+void write_simulation_text(std::ostream& out, const simulation_result& s, bool timings);
+void write_workprecision_text(std::ostream& out, const workprecision_result& w);
+void write_simulation_latex(std::ostream& out, const simulation_result& s, bool timings);
+void write_workprecision_latex(std::ostream& out, const workprecision_result& w);
+nlohmann::ordered_json simulation_json(const simulation_result& s, bool timings);
+nlohmann::ordered_json workprecision_json(const workprecision_result& w);
+
+/// t, then each coordinate, then each velocity (`q_dot`), one row per output time.
+void write_trajectory_csv(std::ostream& out, const simulation_result& s);
+
+/// θ(t), φ(t), … against time, as SVG, drawn by gnuplot. Throws computation_error
+/// if gnuplot is missing or fails.
+void plot_trajectory(const std::string& path, const simulation_result& s, const std::string& title);
+
+/// Error against run time, log–log, one line per method, as SVG drawn by gnuplot.
+void plot_workprecision(const std::string& path, const workprecision_result& w, const std::string& title);
+
+} // namespace lagrange

@@ -1,0 +1,231 @@
+/** @file test_simulation.cpp
+ *  Compiled equations of motion against hand-written ones and finite differences;
+ *  simulations of scenes: the beats of the homework against 2π/(ω+ − ω−) from the
+ *  closed-form frequencies, the automatic choice on a stiff scene, energy drift,
+ *  exact normal-mode errors, extreme mass ratios, and the messages. */
+#include "engine/analysis.h"
+#include "numeric/simulation.h"
+#include "scene_helpers.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+using lagrange_test::load;
+
+namespace {
+
+const std::string double_pendulum = "parameters M m l g\ncoordinates theta phi\n"
+                                    "point upper mass M at (l*sin(theta), -l*cos(theta))\n"
+                                    "point lower mass m at (l*sin(theta) + l*sin(phi), -l*cos(theta) - l*cos(phi))\n"
+                                    "gravity g along (0, -1)\n"
+                                    "equilibrium theta = 0, phi = 0\n";
+
+lagrange::simulation_result run(const lagrange::model& scene, lagrange::simulation_settings settings = {})
+{
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::simulation}, settings);
+    REQUIRE(a.simulation);
+    return *a.simulation;
+}
+
+} // namespace
+
+TEST_CASE("compiled_motion: double pendulum against the hand-solved equations and finite differences", "[simulation]")
+{
+    lagrange::model scene = load(double_pendulum + "values M = 2, m = 0.7, l = 1.3, g = 9.81\n");
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    lagrange::compiled_motion motion(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    const double M = 2, m = 0.7, l = 1.3, g = 9.81;
+    std::vector<double> x{0.4, -1.1, 0.7, -0.3}, f(4), j(16);
+    motion.rhs(0, x.data(), f.data());
+    // Cramer's rule on the 2×2 system of the textbook equations.
+    double c = std::cos(x[0] - x[1]), s = std::sin(x[0] - x[1]);
+    double a11 = (M + m) * l, a12 = m * l * c, a21 = l * c, a22 = l;
+    double b1 = -m * l * s * x[3] * x[3] - (M + m) * g * std::sin(x[0]);
+    double b2 = l * s * x[2] * x[2] - g * std::sin(x[1]);
+    double det = a11 * a22 - a12 * a21;
+    CHECK_THAT(f[0], WithinAbs(0.7, 0));
+    CHECK_THAT(f[2], WithinRel((b1 * a22 - a12 * b2) / det, 1e-13));
+    CHECK_THAT(f[3], WithinRel((a11 * b2 - a21 * b1) / det, 1e-13));
+    // The symbolic Jacobian against central differences.
+    motion.jacobian(0, x.data(), j.data());
+    for (int k = 0; k < 4; ++k) {
+        std::vector<double> up = x, down = x, fu(4), fd(4);
+        double h = 1e-6;
+        up[k] += h;
+        down[k] -= h;
+        motion.rhs(0, up.data(), fu.data());
+        motion.rhs(0, down.data(), fd.data());
+        for (int i = 0; i < 4; ++i)
+            CHECK_THAT(j[i * 4 + k], WithinAbs((fu[i] - fd[i]) / (2 * h), 1e-7 * (1 + std::abs(j[i * 4 + k]))));
+    }
+    // The energy function is T + V.
+    double T = 0.5 * (M + m) * l * l * x[2] * x[2] + m * l * l * c * x[2] * x[3] + 0.5 * m * l * l * x[3] * x[3];
+    double V = -(M + m) * g * l * std::cos(x[0]) - m * g * l * std::cos(x[1]);
+    CHECK_THAT(motion.energy(x.data()), WithinRel(T + V, 1e-14));
+}
+
+TEST_CASE("simulate: the homework's beats have the period 2π/(ω+ − ω−)", "[simulation][beats]")
+{
+    lagrange::model scene = load(double_pendulum + "values M = 1, m = 0.01, l = 1, g = 9.81\n"
+                                                   "initial theta = 0, phi = 0.05\n"
+                                                   "simulate until 100 step 0.02 tolerance 1e-10\n");
+    lagrange::simulation_result s = run(scene);
+    // ω±² = (g/l)(1 + ρ ± √(ρ(1 + ρ))) from the characteristic polynomial M l² ω⁴ − 2(M+m) g l ω² + (M+m) g².
+    double rho = 0.01, g = 9.81;
+    double plus = std::sqrt(g * (1 + rho + std::sqrt(rho * (1 + rho))));
+    double minus = std::sqrt(g * (1 + rho - std::sqrt(rho * (1 + rho))));
+    double predicted = 2 * M_PI / (plus - minus);
+    REQUIRE(s.frequencies.size() == 2);
+    CHECK_THAT(s.frequencies[0], WithinRel(minus, 1e-12));
+    CHECK_THAT(s.frequencies[1], WithinRel(plus, 1e-12));
+    REQUIRE(s.beats);
+    CHECK(s.beats->coordinate == "phi");
+    CHECK(s.beats->minima >= 4);
+    CHECK_THAT(s.beats->predicted, WithinRel(predicted, 1e-12));
+    CHECK_THAT(s.beats->measured, WithinRel(predicted, 2e-3));
+    REQUIRE(s.error_estimate);
+    CHECK(*s.error_estimate < 1e-9);
+    REQUIRE(s.run.invariant_drift.size() == 1);
+    CHECK(s.run.invariant_drift[0].second < 1e-9);
+}
+
+TEST_CASE("simulate: `auto` picks the implicit method on a stiff elastic pendulum", "[simulation][stiff]")
+{
+    const std::string elastic = "parameters m k a g\ncoordinates r theta\n"
+                                "point bob mass m at (r*sin(theta), -r*cos(theta))\n"
+                                "spring k between bob and (0, 0) rest a\ngravity g along (0, -1)\n"
+                                "equilibrium r = a + m*g/k, theta = 0\n";
+    lagrange::model stiff = load(elastic + "values m = 1, k = 9.81e8, a = 1, g = 9.81\n"
+                                           "initial r = 1.00000001, theta = 0.2\nsimulate until 1 tolerance 1e-6\n");
+    lagrange::simulation_result s = run(stiff);
+    CHECK(s.method == "bdf");
+    CHECK(s.stiffness > 1e3);
+    CHECK(s.run.jacobians > 0);
+    REQUIRE(s.error_estimate);
+    CHECK(*s.error_estimate < 1e-3);
+    lagrange::model soft = load(elastic + "values m = 1, k = 981, a = 1, g = 9.81\n"
+                                          "initial r = 1.01, theta = 0.2\nsimulate until 5\n");
+    lagrange::simulation_result t = run(soft);
+    CHECK(t.method == "dopri5");
+    CHECK(t.stiffness < 1e3);
+}
+
+TEST_CASE("simulate: a linear scene's error is measured against its exact normal-mode solution", "[simulation]")
+{
+    lagrange::model scene = load("parameters M m l g\ncoordinates theta phi\n"
+                                 "T = 1/2*(M+m)*l^2*theta'^2 + m*l^2*theta'*phi' + 1/2*m*l^2*phi'^2\n"
+                                 "V = 1/2*(M+m)*g*l*theta^2 + 1/2*m*g*l*phi^2\n"
+                                 "values M = 1, m = 0.01, l = 1, g = 1\ninitial theta = 0.05\nsimulate until 60\n");
+    for (const char* method : {"dopri5", "rkf78", "bulirsch-stoer", "bdf", "implicit-midpoint"}) {
+        lagrange::simulation_settings settings;
+        settings.method = method;
+        settings.tolerance = 1e-7;
+        lagrange::simulation_result s = run(scene, settings);
+        INFO(method);
+        REQUIRE(s.error_estimate);
+        CHECK(s.error_basis.find("exact normal-mode") != std::string::npos);
+        // BDF's global error exceeds its target by a few times at tight tolerances.
+        CHECK(*s.error_estimate <= (std::string(method) == "bdf" ? 3e-7 : 1e-7));
+    }
+}
+
+TEST_CASE("simulate: double pendulum at mass ratios 1e-8 and 1e8", "[simulation][extreme]")
+{
+    for (const char* ratio : {"1e-8", "1e8"}) {
+        lagrange::model scene = load(double_pendulum + "values M = 1, m = " + ratio + ", l = 1, g = 9.81\n"
+                                                       "initial theta = 0.1, phi = 0.1\n"
+                                                       "simulate until 1 tolerance 1e-6\n");
+        lagrange::simulation_settings settings;
+        settings.max_seconds = 30;
+        INFO("m/M = " << ratio);
+        lagrange::simulation_result s = run(scene, settings);
+        REQUIRE(s.error_estimate);
+        // At m/M = 1e8 the stiff mode (ω ≈ 4.4e4) makes `auto` choose BDF, whose error
+        // is well above its target there: the estimate says so.
+        CHECK(*s.error_estimate < (std::string(ratio) == "1e8" ? 1e-3 : 1e-6));
+        REQUIRE(s.run.invariant_drift.size() == 1);
+        CHECK(s.run.invariant_drift[0].second < 1e-5);
+    }
+}
+
+TEST_CASE("simulate: a pendulum started just below the separatrix", "[simulation][extreme]")
+{
+    lagrange::model scene = load("parameters m g l\ncoordinates q\npoint P mass m at (l*sin(q), -l*cos(q))\n"
+                                 "gravity g along (0, -1)\nequilibrium q = 0\nvalues m = 1, g = 1, l = 1\n"
+                                 "initial q = 3.14159, q' = 0\nsimulate until 40 tolerance 1e-10\n");
+    lagrange::simulation_result s = run(scene);
+    REQUIRE(s.error_estimate);
+    // Near the separatrix the period depends on the energy like a logarithm: errors grow.
+    CHECK(*s.error_estimate < 1e-4);
+    CHECK(s.run.invariant_drift[0].second < 1e-9);
+    // It stays on its side of the separatrix: q never passes π.
+    for (const auto& state : s.run.states)
+        CHECK(std::abs(state[0]) < M_PI);
+}
+
+TEST_CASE("simulate: what cannot be done is a message", "[simulation][errors]")
+{
+    lagrange::model no_value = load(double_pendulum + "values M = 1, l = 1, g = 9.81\nsimulate until 1\n");
+    CHECK_THROWS_WITH(lagrange::analyze(no_value, {lagrange::product::simulation}),
+                      Catch::Contains("needs a value for the parameter `m`"));
+    lagrange::model no_end = load(double_pendulum + "values M = 1, m = 1, l = 1, g = 9.81\n");
+    CHECK_THROWS_WITH(lagrange::analyze(no_end, {lagrange::product::simulation}), Catch::Contains("end time"));
+    lagrange_test::require_error(double_pendulum + "simulate until 1 method leapfrog\n", 7, 25, "unknown method");
+    // A runaway motion (an inverted harmonic potential) stops with a message, not garbage.
+    lagrange::model runaway = load("parameters k\ncoordinates x\nT = 1/2*x'^2\nV = -1/2*k*x^2 - x^4\n"
+                                   "values k = 1\ninitial x = 1\nsimulate until 100\n");
+    CHECK_THROWS_AS(lagrange::analyze(runaway, {lagrange::product::simulation}), lagrange::computation_error);
+}
+
+TEST_CASE("workprecision: the ladder on a linear scene, errors against the exact solution", "[simulation][workprecision]")
+{
+    lagrange::model scene = load("parameters k\ncoordinates x\nT = 1/2*x'^2\nV = 1/2*k*x^2\n"
+                                 "values k = 4\ninitial x = 1\nsimulate until 10\n");
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    lagrange::compiled_motion motion(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    lagrange::workprecision_result w =
+        lagrange::work_precision(motion.system(), {1.0, 0.0}, 10, 1, {2.0}, {1e-3, 1e-6, 1e-9});
+    CHECK(w.exact);
+    CHECK(w.points.size() == 15);
+    for (const lagrange::workprecision_point& p : w.points) {
+        INFO(p.method << " " << p.tolerance << " " << p.failure);
+        REQUIRE(p.failure.empty());
+        REQUIRE(p.error);
+        CHECK(*p.error <= p.tolerance);
+        CHECK(p.seconds > 0);
+    }
+}
+
+TEST_CASE("compiled_motion: native code agrees with the interpreter and leaves no files", "[simulation][native]")
+{
+    lagrange::model scene = load(double_pendulum + "values M = 2, m = 0.7, l = 1.3, g = 9.81\n");
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    lagrange::compiled_motion interpreted(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    lagrange::compiled_motion native(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    auto leftovers = [] {
+        int count = 0;
+        for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+            count += entry.path().filename().string().rfind("lagrange-native-", 0) == 0;
+        return count;
+    };
+    int before = leftovers();
+    if (!native.compile_native()) {
+        WARN("no C compiler: the native path is not tested");
+        return;
+    }
+    CHECK(native.native());
+    CHECK(leftovers() == before);
+    std::vector<double> x{0.4, -1.1, 0.7, -0.3}, f(4), g(4), j(16), k(16);
+    interpreted.rhs(0, x.data(), f.data());
+    native.rhs(0, x.data(), g.data());
+    interpreted.jacobian(0, x.data(), j.data());
+    native.jacobian(0, x.data(), k.data());
+    for (int i = 0; i < 4; ++i)
+        CHECK_THAT(g[i], WithinAbs(f[i], 1e-14 * (1 + std::abs(f[i]))));
+    for (int i = 0; i < 16; ++i)
+        CHECK_THAT(k[i], WithinAbs(j[i], 1e-13 * (1 + std::abs(j[i]))));
+}
