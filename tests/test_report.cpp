@@ -189,7 +189,7 @@ TEST_CASE("report: the double pendulum's report holds the homework's results", "
     {
         if (!have("gnuplot"))
             FAIL("gnuplot is not installed (the test command installs gnuplot-nox)");
-        REQUIRE(built->document.figures.size() == 1);
+        REQUIRE(built->document.figures.size() >= 1);
         CHECK(built->document.figures[0].name == "dp-modes.pdf");
         CHECK(built->document.figures[0].bytes.compare(0, 5, "%PDF-") == 0);
         CHECK(!contains(built->document.figures[0].bytes, "/CreationDate"));
@@ -559,4 +559,66 @@ TEST_CASE("report: the heavy top's sleeping-top condition", "[report][bodies]")
         printed += (printed.empty() ? "" : " ") + term;
     CHECK(contains(latex, printed + " > 0."));
     CHECK(contains(latex, "V_{\\mathrm{eff}}(\\theta)"));
+}
+
+TEST_CASE("report: the double pendulum's beats, measured against 2π/(ω+ − ω−)", "[report][motion]")
+{
+    for (const char* example : {"double_pendulum.lag", "beats.lag"}) {
+        INFO(example);
+        auto built = report_of(example);
+        const lagrange::analysis& result = built->result;
+        const std::string& latex = built->document.latex;
+        REQUIRE(result.simulation);
+        REQUIRE(result.simulation->beats);
+        const lagrange::beat_measurement& b = *result.simulation->beats;
+        // The homework's eq. (60) at the scene's values (ρ = m/M = 0.01, g = 9.81, l = 1):
+        // ω±² = [(1 + ρ) ± √(ρ(1 + ρ))] g/l, so the beat period is 2π/(ω+ − ω−).
+        const double rho = 0.01, g = 9.81, l = 1;
+        const double plus = std::sqrt(((1 + rho) + std::sqrt(rho * (1 + rho))) * g / l);
+        const double minus = std::sqrt(((1 + rho) - std::sqrt(rho * (1 + rho))) * g / l);
+        const double predicted = 2 * M_PI / (plus - minus);
+        CHECK(std::abs(b.predicted - predicted) < 1e-9 * predicted);
+        CHECK(std::abs(b.measured - predicted) < 0.01 * predicted);
+        CHECK(b.coordinate == "phi");
+        CHECK(contains(latex, "\\section{Motion in time}"));
+        CHECK(contains(latex, "predicted $2\\pi/(\\omega_{+} - \\omega_{-}) = " +
+                                  lagrange::report_writer::number(b.predicted, 5) + "$"));
+        CHECK(contains(latex, "measured $" + lagrange::report_writer::number(b.measured, 5) + "$"));
+        if (!have("gnuplot"))
+            FAIL("gnuplot is not installed (the test command installs gnuplot-nox)");
+        bool found = false;
+        for (const lagrange::report_file& f : built->document.figures)
+            if (f.name == "dp-beats.pdf") {
+                found = true;
+                CHECK(f.bytes.compare(0, 5, "%PDF-") == 0);
+            }
+        CHECK(found);
+        CHECK(contains(latex, "{dp-beats}"));
+        CHECK(contains(latex, "$\\theta(t)$ and $\\phi(t)$ from the simulation"));
+    }
+}
+
+TEST_CASE("report: the work-precision diagram when the scene wants it", "[report][motion]")
+{
+    std::string path = temporary_file("wp_oscillator.lag", "scene \"Oscillator\"\nparameters m k\ncoordinates x\n"
+                                                           "T = 1/2*m*x'^2\nV = 1/2*k*x^2\nvalues m = 1, k = 1\n"
+                                                           "initial x = 1, x' = 0\nsimulate until 5\n"
+                                                           "want workprecision\n");
+    lagrange::source_text source(path, read_file(path));
+    lagrange::model scene = lagrange::load_model(source);
+    lagrange::analysis result = lagrange::analyze(scene);
+    REQUIRE(result.workprecision);
+    lagrange::report_options options;
+    options.figure_prefix = "wp-";
+    lagrange::report_document document = lagrange::build_report(result, source, options);
+    CHECK(contains(document.latex, "\\subsection{Work and precision}"));
+    CHECK(contains(document.latex, "exact normal-mode solution") == result.workprecision->exact);
+    if (!have("gnuplot"))
+        FAIL("gnuplot is not installed (the test command installs gnuplot-nox)");
+    REQUIRE(document.figures.size() == 1);
+    CHECK(document.figures[0].name == "wp-workprecision.pdf");
+    CHECK(contains(document.latex, "{wp-workprecision}"));
+    // the diagram holds every run that measured an error, by steps: byte-identical on a second build
+    lagrange::report_document again = lagrange::build_report(result, source, options);
+    CHECK(again.figures[0].bytes == document.figures[0].bytes);
 }

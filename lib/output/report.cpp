@@ -736,6 +736,8 @@ const std::vector<report_section>& report_sections()
         {"bodies",
          [](const analysis& r) { return r.inertia.has_value() || r.euler.has_value() || (r.tops && !r.tops->empty()); },
          write_body_sections},
+        {"motion", [](const analysis& r) { return r.simulation.has_value() || r.workprecision.has_value(); },
+         write_motion_sections},
         {"notes", [](const analysis& r) { return !r.notes.empty(); }, write_notes},
     };
     return sections;

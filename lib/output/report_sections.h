@@ -16,4 +16,8 @@ void write_mode_figures(report_writer& w);
 /// equations, the torque-free solution, conserved quantities, stability, polhode.
 void write_body_sections(report_writer& w);
 
+/// The motion in time (report_motion.cpp): the simulation with the coordinates
+/// against time (the beats, measured against 2π/(ω₊ − ω₋)), the work-precision diagram.
+void write_motion_sections(report_writer& w);
+
 } // namespace lagrange
