@@ -602,7 +602,7 @@ TEST_CASE("report: the work-precision diagram when the scene wants it", "[report
 {
     std::string path = temporary_file("wp_oscillator.lag", "scene \"Oscillator\"\nparameters m k\ncoordinates x\n"
                                                            "T = 1/2*m*x'^2\nV = 1/2*k*x^2\nvalues m = 1, k = 1\n"
-                                                           "initial x = 1, x' = 0\nsimulate until 5\n"
+                                                           "initial x = 1, x' = 0\nsimulate until 2\n"
                                                            "want workprecision\n");
     lagrange::source_text source(path, read_file(path));
     lagrange::model scene = lagrange::load_model(source);
