@@ -73,7 +73,17 @@ std::string latex_escape(const std::string& text)
 {
     static const std::vector<std::pair<std::string, std::string>> unicode = {
         {"∂", "$\\partial$"}, {"²", "$^2$"}, {"≤", "$\\le$"}, {"→", "$\\to$"}, {"·", "$\\cdot$"},
-        {"−", "$-$"},          {"ω", "$\\omega$"}, {"θ", "$\\theta$"}, {"φ", "$\\phi$"}, {"ρ", "$\\rho$"}};
+        {"−", "$-$"},          {"ω", "$\\omega$"}, {"θ", "$\\theta$"}, {"φ", "$\\phi$"}, {"ρ", "$\\rho$"},
+        // more of what scenes' comments and the report's prose use (the homework's bodies, beats)
+        {"π", "$\\pi$"}, {"δ", "$\\delta$"}, {"ψ", "$\\psi$"}, {"λ", "$\\lambda$"}, {"α", "$\\alpha$"},
+        {"β", "$\\beta$"}, {"γ", "$\\gamma$"}, {"ε", "$\\varepsilon$"}, {"μ", "$\\mu$"}, {"σ", "$\\sigma$"},
+        {"τ", "$\\tau$"}, {"ν", "$\\nu$"}, {"ξ", "$\\xi$"}, {"ζ", "$\\zeta$"}, {"η", "$\\eta$"},
+        {"κ", "$\\kappa$"}, {"χ", "$\\chi$"}, {"Ω", "$\\Omega$"}, {"Δ", "$\\Delta$"}, {"Θ", "$\\Theta$"},
+        {"Φ", "$\\Phi$"}, {"Ψ", "$\\Psi$"}, {"Λ", "$\\Lambda$"}, {"Σ", "$\\Sigma$"}, {"Γ", "$\\Gamma$"},
+        {"¹", "$^1$"}, {"³", "$^3$"}, {"⁴", "$^4$"}, {"₀", "$_0$"}, {"₁", "$_1$"}, {"₂", "$_2$"}, {"₃", "$_3$"},
+        {"₊", "$_+$"}, {"₋", "$_-$"}, {"ᵀ", "$^T$"}, {"½", "$\\frac12$"}, {"¼", "$\\frac14$"},
+        {"–", "--"}, {"—", "---"}, {"±", "$\\pm$"}, {"∓", "$\\mp$"}, {"×", "$\\times$"}, {"≈", "$\\approx$"},
+        {"≥", "$\\ge$"}, {"∫", "$\\int$"}, {"√", "$\\surd$"}, {"…", "\\ldots{}"}, {"§", "\\S{}"}};
     std::string out;
     for (std::size_t i = 0; i < text.size(); ++i) {
         char c = text[i];
