@@ -250,9 +250,9 @@ void polhode_figure(report_writer& w, const euler_result& e, const std::string& 
     const auto& p = *e.poinsot;
     if (p.polhode.empty())
         return;
-    std::string script = "set parametric\nset view equal xyz\nset view 62, 32\nset ticslevel 0\n"
+    std::string script = "set parametric\nset view equal xyz\nset view 64, 28, 1.2\nset ticslevel 0\nset hidden3d\n"
                          "set urange [0:2*pi]\nset vrange [-pi/2:pi/2]\nset isosamples 25, 13\n"
-                         "set key at screen 0.98, 0.97 right top\nset xtics 0.5\nset ytics 0.5\nset ztics 0.5\n";
+                         "set key at screen 0.98, 0.97 right top\nset xtics 0.5 offset 0, -0.5\nset ytics 0.5\nset ztics 0.5\n";
     script += "set xlabel '" + plain_name(e.omega[0]) + "'\nset ylabel '" + plain_name(e.omega[1]) + "'\nset zlabel '" +
               plain_name(e.omega[2]) + "'\n";
     script += "$polhode << EOD\n";
