@@ -622,3 +622,43 @@ TEST_CASE("report: the work-precision diagram when the scene wants it", "[report
     lagrange::report_document again = lagrange::build_report(result, source, options);
     CHECK(again.figures[0].bytes == document.figures[0].bytes);
 }
+
+TEST_CASE("report: a cone, a region of given density and a free box compile, centre of mass as integrals",
+          "[report][bodies][latex]")
+{
+    std::string path = temporary_file("bodies_region.lag",
+                                      "scene \"Cone, ball of varying density, box\"\nparameters M R h a rho0\n"
+                                      "body C cone(R, h) mass M\nbody B region ball(R) density rho0*(1 + z/R)\n"
+                                      "body X box(a, 2*a, 3*a) mass M at (a, 0, 0)\nomega X (w1, w2, w3)\n"
+                                      "want inertia, euler\n");
+    lagrange::source_text source(path, read_file(path));
+    lagrange::model scene = lagrange::load_model(source);
+    lagrange::analysis result = lagrange::analyze(scene);
+    lagrange::report_options options;
+    options.figure_prefix = "region-";
+    lagrange::report_document document = lagrange::build_report(result, source, options);
+    const std::string& latex = document.latex;
+    REQUIRE(result.inertia);
+    REQUIRE(result.inertia->size() == 3);
+    using GiNaC::ex;
+    ex h = parameter_named(scene, "h").symbol, R = parameter_named(scene, "R").symbol,
+       rho0 = parameter_named(scene, "rho0").symbol;
+    // A solid cone's centre of mass is a quarter of its height above the base;
+    // the ball's mass ∫ρ0(1 + z/R) dV = 4/3 π R³ ρ0 (the z term integrates to zero).
+    CHECK((result.inertia->at(0).centre_of_mass[2] - h / 4).expand().is_zero());
+    CHECK((result.inertia->at(1).mass - GiNaC::numeric(4, 3) * GiNaC::Pi * pow(R, 3) * rho0).expand().is_zero());
+    const std::string cone = section_of(latex, "\\subsection{Body $C$}");
+    CHECK(contains(cone, "M z_{\\mathrm{cm}} &= \\int_{V} "));
+    CHECK(contains(cone, "so the centre of mass is at"));
+    const std::string ball = section_of(latex, "\\subsection{Body $B$}");
+    CHECK(contains(ball, "M &= \\int_{V} "));
+    CHECK(contains(latex, "\\mathbf{I}_{O} &= "));
+    if (!have("pdflatex"))
+        FAIL("pdflatex is not installed (the test command installs texlive-latex-base)");
+    std::string tex = temporary_file("bodies_region.tex", latex);
+    int status = 0;
+    std::string log = compile_latex(tex, status);
+    INFO(log.substr(log.size() > 3000 ? log.size() - 3000 : 0));
+    CHECK(status == 0);
+    CHECK(widest_overfull_box(log) <= 10.0);
+}
