@@ -252,9 +252,13 @@ TEST_CASE("report: byte-identical from run to run, .tex with its figures and .pd
     std::string tex = folder + "/same.tex", figure = folder + "/same-modes.pdf";
     REQUIRE(run_cli("report " + scene + " -o " + tex, "", 60).exit_code == 0);
     std::string first_tex = read_file(tex), first_figure = read_file(figure);
+    const std::string beats = folder + "/same-beats.pdf"; // the simulation's figure, drawn from the trajectory
+    std::string first_beats = have("gnuplot") ? read_file(beats) : "";
     REQUIRE(run_cli("report " + scene + " -o " + tex, "", 60).exit_code == 0);
     CHECK(read_file(tex) == first_tex);
     CHECK(read_file(figure) == first_figure);
+    if (have("gnuplot"))
+        CHECK(read_file(beats) == first_beats);
     if (have("pdflatex")) {
         std::string pdf = folder + "/same.pdf";
         REQUIRE(run_cli("report " + scene + " -o " + pdf, "", 60).exit_code == 0);
