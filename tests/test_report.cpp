@@ -610,7 +610,19 @@ TEST_CASE("report: the work-precision diagram when the scene wants it", "[report
                                                            "want workprecision\n");
     lagrange::source_text source(path, read_file(path));
     lagrange::model scene = lagrange::load_model(source);
+    // workprecision compiles native code in a temporary folder: keep it out of the
+    // system's temporary folder, where a test running beside this one counts them.
+    const std::filesystem::path private_tmp =
+        std::filesystem::path(temporary_file("wp_probe", "")).parent_path() / "wp_native_tmp";
+    std::filesystem::create_directories(private_tmp);
+    const char* old_tmp = std::getenv("TMPDIR");
+    const std::string saved_tmp = old_tmp ? old_tmp : "";
+    setenv("TMPDIR", private_tmp.c_str(), 1);
     lagrange::analysis result = lagrange::analyze(scene);
+    if (old_tmp)
+        setenv("TMPDIR", saved_tmp.c_str(), 1);
+    else
+        unsetenv("TMPDIR");
     REQUIRE(result.workprecision);
     lagrange::report_options options;
     options.figure_prefix = "wp-";
