@@ -5,6 +5,7 @@
  *  RK4; the textbook precession for a symmetric one), with T and |L|² drift bounds;
  *  work precision labelled exact; a heavy top (a body in a Lagrangian) conserving energy;
  *  native code against the interpreter. */
+#include "cli_runner.h"
 #include "engine/analysis.h"
 #include "numeric/free_body_motion.h"
 #include "numeric/simulation.h"
@@ -205,4 +206,20 @@ TEST_CASE("simulate: the heavy top (a body in a Lagrangian) conserves energy", "
     const auto& x0 = s.run.states.front();
     const auto& x1 = s.run.final_state;
     CHECK_THAT(0.2 * (x1[3] * std::cos(x1[1]) + x1[5]), WithinRel(0.2 * (x0[3] * std::cos(x0[1]) + x0[5]), 1e-7));
+}
+
+TEST_CASE("lagrange simulate: a free body from the command line, the same bytes run to run", "[simulation][freebody][cli]")
+{
+    const std::string scene = std::string(LAGRANGE_SOURCE_DIR) + "/examples/free_asymmetric_top.lag";
+    lagrange_test::cli_result first = lagrange_test::run_cli("simulate " + scene),
+                              second = lagrange_test::run_cli("simulate " + scene);
+    REQUIRE(first.exit_code == 0);
+    CHECK(first.out == second.out);
+    CHECK(first.out.find("against the Jacobi elliptic solution") != std::string::npos);
+    CHECK(first.out.find("angular_momentum_squared drift") != std::string::npos);
+    CHECK(first.out.find("run time") == std::string::npos);
+    lagrange_test::cli_result interpreted = lagrange_test::run_cli("simulate --interpret --timings " + scene);
+    REQUIRE(interpreted.exit_code == 0);
+    CHECK(interpreted.out.find("evaluation: interpreted (as asked)") != std::string::npos);
+    CHECK(interpreted.out.find("run time") != std::string::npos);
 }
