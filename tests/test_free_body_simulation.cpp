@@ -121,10 +121,15 @@ TEST_CASE("simulate: free asymmetric body, every method against the elliptic sol
         CHECK(s.coordinates == std::vector<std::string>{"w1", "w2", "w3"});
         CHECK(s.error_basis.find("Jacobi elliptic") != std::string::npos);
         REQUIRE(s.error_estimate);
-        // Relative trajectory error over 20 time units (about 1.4 polhode periods).
-        CHECK(*s.error_estimate < (explicit_method ? 10 : 100) * 1e-8);
-        CHECK(drift(s.run, "energy") < (explicit_method ? 1e-7 : 1e-6));
-        CHECK(drift(s.run, "angular_momentum_squared") < (explicit_method ? 1e-7 : 1e-6));
+        // Relative trajectory error over 20 time units (about 1.4 polhode periods): within the tolerance.
+        CHECK(*s.error_estimate <= 1e-8);
+        CHECK(drift(s.run, "energy") < 1e-8);
+        CHECK(drift(s.run, "angular_momentum_squared") < 1e-8);
+        if (std::string(method) == "implicit-midpoint") {
+            // The implicit midpoint rule keeps quadratic invariants (T and |L|² are) up to rounding and Newton.
+            CHECK(drift(s.run, "energy") < 1e-12);
+            CHECK(drift(s.run, "angular_momentum_squared") < 1e-12);
+        }
         // The final state against the independent RK4.
         std::array<double, 3> reference = rk4(box_moments, {0.2, 1, 0.3}, 20, 20000);
         for (int i = 0; i < 3; ++i)
@@ -180,8 +185,8 @@ TEST_CASE("workprecision: a free body is measured against its exact solution", "
             continue;
         ++measured;
         INFO(p.method << " " << p.tolerance << ": " << *p.error);
-        if (p.method != "implicit-midpoint" && p.method != "bdf")
-            CHECK(*p.error <= 10 * p.tolerance);
+        if (p.method != "bdf") // (BDF misses its tolerance at the tightest levels, as the README says)
+            CHECK(*p.error <= p.tolerance);
     }
     CHECK(measured >= 30);
 }
