@@ -3,8 +3,8 @@
  *  peer script ../shared/peers/work_precision_scipy.py, with the same error measure
  *  (max over 1001 uniform times of ‖y − y_ref‖₂ / max ‖y_ref‖₂) and tolerances
  *  1e-3 … 1e-12. Prints one JSON object (rows like the peer's) for bench/work_precision.py.
- *    rigid     free asymmetric body, Euler's equations built here, I = (1, 2, 3),
- *              ω0 = (1, 0.1, 0.5), t ∈ [0, 100]; exact: Jacobi elliptic functions (Boost.Math)
+ *    rigid     free asymmetric body, I = (1, 2, 3), ω0 = (1, 0.1, 0.5), t ∈ [0, 100]: the
+ *              engine's Euler equations and Jacobi elliptic solution (free_body_motion.h)
  *    lindp     linearized double pendulum from a scene (ρ = 0.01, l = g = 1), q0 = (0.05, 0),
  *              t ∈ [0, 200]; exact: normal modes
  *    dp_small  double pendulum from a scene, M = m = l = g = 1, θ0 = φ0 = 0.05, t ∈ [0, 100]
@@ -12,11 +12,10 @@
  *  Usage: work_precision [max_seconds_per_run] */
 #include "engine/analysis.h"
 #include "numeric/compiled_motion.h"
+#include "numeric/free_body_motion.h"
 #include "numeric/simulation.h"
 #include "scene/lower.h"
 
-#include <boost/math/special_functions/ellint_1.hpp>
-#include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -35,46 +34,27 @@ struct problem {
     double until = 0;
     std::vector<double> frequencies;
     std::shared_ptr<lagrange::compiled_motion> motion; // keeps the compiled system alive
+    std::shared_ptr<lagrange::free_body_motion> body;  // (the free body's)
     std::shared_ptr<lagrange::model> scene;
 };
 
 problem rigid_body()
 {
-    const double I1 = 1, I2 = 2, I3 = 3, w1 = 1, w2 = 0.1, w3 = 0.5;
-    const double c1 = (I2 - I3) / I1, c2 = (I3 - I1) / I2, c3 = (I1 - I2) / I3;
+    // The engine's own free body: Euler's equations from the rigid-body derivation,
+    // compiled with their symbolic Jacobian, and its Jacobi elliptic solution.
     problem p;
     p.name = "rigid";
-    p.reference_kind = "exact (Jacobi elliptic functions, Boost.Math)";
     p.until = 100;
-    p.x0 = {w1, w2, w3};
-    p.system.dimension = 3;
-    p.system.rhs = [=](double, const double* w, double* f) {
-        f[0] = c1 * w[1] * w[2];
-        f[1] = c2 * w[2] * w[0];
-        f[2] = c3 * w[0] * w[1];
-    };
-    p.system.jacobian = [=](double, const double* w, double* j) {
-        j[0] = 0, j[1] = c1 * w[2], j[2] = c1 * w[1];
-        j[3] = c2 * w[2], j[4] = 0, j[5] = c2 * w[0];
-        j[6] = c3 * w[1], j[7] = c3 * w[0], j[8] = 0;
-    };
-    p.system.invariants.push_back({"energy", [=](const double* w) {
-        return 0.5 * (I1 * w[0] * w[0] + I2 * w[1] * w[1] + I3 * w[2] * w[2]); }, 0});
-    // Rotation about the axis of least inertia (L² < 2 E I2): ω1 = A1 dn u, ω2 = A2 sn u, ω3 = A3 cn u.
-    double E2 = I1 * w1 * w1 + I2 * w2 * w2 + I3 * w3 * w3;
-    double L2 = I1 * I1 * w1 * w1 + I2 * I2 * w2 * w2 + I3 * I3 * w3 * w3;
-    double A1 = std::sqrt((E2 * I3 - L2) / (I1 * (I3 - I1)));
-    double A2 = std::sqrt((L2 - E2 * I1) / (I2 * (I2 - I1)));
-    double A3 = std::sqrt((L2 - E2 * I1) / (I3 * (I3 - I1)));
-    double m = (I3 - I2) * (L2 - E2 * I1) / ((I2 - I1) * (E2 * I3 - L2));
-    double k = std::sqrt(m);
-    double lambda = (I3 - I1) * A1 * A3 / (I2 * A2);
-    double u0 = boost::math::ellint_1(k, std::atan2(w2 / A2, w3 / A3));
-    p.system.exact = [=](double t, double* w) {
-        double cn = 0, dn = 0;
-        double sn = boost::math::jacobi_elliptic(k, lambda * t + u0, &cn, &dn);
-        w[0] = A1 * dn, w[1] = A2 * sn, w[2] = A3 * cn;
-    };
+    p.scene = std::make_shared<lagrange::model>(lagrange::load_model(
+        lagrange::source_text("rigid.lag", "body X inertia (1, 2, 3) mass 1\nomega X (w1, w2, w3)\n"
+                                           "initial w1 = 1, w2 = 0.1, w3 = 0.5\n")));
+    p.body = std::make_shared<lagrange::free_body_motion>(*p.scene, lagrange::first_value_point(*p.scene));
+    if (!p.body->compile_native())
+        std::cerr << "work_precision: no C compiler, the interpreter evaluates the equations\n";
+    p.reference_kind = "exact (" + p.body->exact_kind() + ", Boost.Math)";
+    p.x0 = p.body->initial();
+    p.system = p.body->system();
+    p.system.invariants.resize(1); // T, as the peer reports its energy drift
     return p;
 }
 

@@ -121,7 +121,8 @@ struct motion_options {
     std::string plot;
     std::string format = "text";
     std::string output;
-    bool native = false;
+    bool interpret = false; ///< evaluate the equations with the interpreter instead of native code
+    bool timings = false;
 };
 
 /// A progress bar on standard error when it is a terminal and the run takes over a second.
@@ -159,7 +160,7 @@ int motion_command(const motion_options& options, lagrange::product wanted)
         settings.method = options.method;
     settings.tolerance = options.tolerance;
     settings.progress = progress_bar();
-    settings.native = options.native;
+    settings.native = !options.interpret;
     lagrange::analysis result = lagrange::analyze(scene, {wanted}, settings);
     std::string title = scene.title.empty() ? source.file() : scene.title;
     if (result.simulation && !options.csv.empty()) {
@@ -174,7 +175,7 @@ int motion_command(const motion_options& options, lagrange::product wanted)
             lagrange::plot_workprecision(options.plot, *result.workprecision, title);
     }
     lagrange::document_options document;
-    document.timings = true; // a run's report: with run times
+    document.timings = options.timings; // run times only when asked: the output stays the same run to run
     std::ostringstream out;
     if (options.format == "json")
         lagrange::write_json(out, result, document);
@@ -272,6 +273,10 @@ int run(int argc, char** argv)
         sub->add_option("--plot", o->plot, "draw a plot (SVG, with gnuplot)");
         sub->add_option("--format", o->format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
         sub->add_option("-o,--output", o->output, "write the output to this file");
+        sub->add_flag("--interpret", o->interpret,
+                      "evaluate the equations with the interpreter (default: compiled to machine code by the "
+                      "system's C compiler, when there is one)");
+        sub->add_flag("--timings", o->timings, "show the run time and the stages' times");
     }
     simulate->add_option("--method", simulate_options.method,
                          "auto, dopri5, rkf78, bulirsch-stoer, bdf or implicit-midpoint")
@@ -279,8 +284,8 @@ int run(int argc, char** argv)
     simulate->add_option("--tolerance", simulate_options.tolerance, "relative and absolute tolerance per step")
         ->check(CLI::Range(1e-14, 0.5));
     simulate->add_option("--csv", simulate_options.csv, "write the trajectory as CSV");
-    simulate->add_flag("--native", simulate_options.native,
-                       "compile the equations to machine code with the system's C compiler first");
+    bool native_flag = false; // accepted for older scripts: native code is the default now
+    simulate->add_flag("--native", native_flag, "compile the equations to machine code (the default)");
 
     try {
         app.parse(argc, argv);

@@ -2,6 +2,8 @@
  *  The stage planner. */
 #include "engine/analysis.h"
 
+#include "numeric/free_body_motion.h"
+
 #include <chrono>
 #include <functional>
 
@@ -195,6 +197,17 @@ void run_motion_stages(analysis& result, const model& scene, bool by_default, co
     if (result.equilibria)
         equilibrium = result.equilibria->points.at(result.equilibria->chosen).position;
     try {
+        if (!result.lagrangian) {
+            // A free body (no coordinates): Euler's equations.
+            if (!has_free_body(scene))
+                throw computation_error("the scene has no coordinates to simulate");
+            if (w.count(product::simulation))
+                run_stage(result, "simulation", [&] { result.simulation = simulate_free_body(scene, settings); });
+            if (w.count(product::workprecision))
+                run_stage(result, "workprecision",
+                          [&] { result.workprecision = free_body_work_precision(scene, settings); });
+            return;
+        }
         if (w.count(product::simulation))
             run_stage(result, "simulation", [&] {
                 result.simulation = simulate(scene, *result.lagrangian, equilibrium, settings);

@@ -208,7 +208,9 @@ void run_odeint(ode_method method, const std::vector<double>& x0, const integrat
             break;
         }
         case ode_method::bulirsch_stoer: {
-            odeint::bulirsch_stoer_dense_out<state_type> stepper(tol, tol);
+            // control_interpolation: the dense output's error is part of the step control too (else
+            // long steps interpolate 1000 output times with errors far above the tolerance).
+            odeint::bulirsch_stoer_dense_out<state_type> stepper(tol, tol, 1.0, 0.0, 0.0, true);
             result.steps = odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(), first_step,
                                                    observer, checker);
             break;

@@ -2,6 +2,8 @@
  *  Simulation and work-precision runs of a scene's equations of motion. */
 #include "numeric/simulation.h"
 
+#include "numeric/free_body_motion.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -167,25 +169,23 @@ namespace {
 /// The scene's motion at its parameter point, ready to integrate.
 struct prepared_motion {
     std::map<std::string, GiNaC::ex> values;
-    std::unique_ptr<compiled_motion> motion;
+    std::unique_ptr<compiled_motion> motion;      ///< a Lagrangian scene
+    std::unique_ptr<free_body_motion> free_body;  ///< or a free body (Euler's equations)
+    std::size_t coordinates = 0;                  ///< n (the state is (q, q̇)); 0 for a free body
+    std::vector<std::string> names;               ///< coordinate names, or ω's for a free body
+    std::string evaluation;                       ///< empty when native code runs, else why not
     std::vector<double> x0;
     double until = 0;
     double tolerance = 1e-9;
     std::vector<double> frequencies;
     double stiffness = 1;
+    double rate = 0;                              ///< fastest rate of the motion (0: the largest frequency)
     ode_system system;
 };
 
-prepared_motion prepare(const model& scene, const lagrangian_result& lagrangian,
-                        const std::optional<std::vector<GiNaC::ex>>& equilibrium, const simulation_settings& settings)
+/// The end time and tolerance of the `simulate` line, or their overrides.
+void read_span(prepared_motion& p, const model& scene, const simulation_settings& settings)
 {
-    prepared_motion p;
-    p.values = merged_values(scene);
-    p.motion = std::make_unique<compiled_motion>(scene, lagrangian, p.values);
-    if (settings.native)
-        p.motion->compile_native(); // falls back to the interpreter without a compiler
-    p.x0 = initial_state_vector(scene, p.values);
-    const std::size_t n = p.motion->coordinates();
     p.until = settings.until ? *settings.until : scene.simulation ? to_double(scene.simulation->until) : 0;
     if (!(p.until > 0) || !std::isfinite(p.until))
         throw computation_error("the simulation needs an end time: a `simulate until T` line or --until");
@@ -194,6 +194,24 @@ prepared_motion prepare(const model& scene, const lagrangian_result& lagrangian,
                                                                     : 1e-9;
     if (!(p.tolerance >= 1e-14 && p.tolerance < 1))
         throw computation_error("the tolerance " + number(p.tolerance) + " is outside 1e-14 … 1");
+}
+
+prepared_motion prepare(const model& scene, const lagrangian_result& lagrangian,
+                        const std::optional<std::vector<GiNaC::ex>>& equilibrium, const simulation_settings& settings)
+{
+    prepared_motion p;
+    p.values = merged_values(scene);
+    p.motion = std::make_unique<compiled_motion>(scene, lagrangian, p.values);
+    if (!settings.native)
+        p.evaluation = "interpreted (as asked)";
+    else if (!p.motion->compile_native()) // falls back to the interpreter without a compiler
+        p.evaluation = "interpreted: no C compiler was found to compile the equations";
+    p.x0 = initial_state_vector(scene, p.values);
+    const std::size_t n = p.motion->coordinates();
+    p.coordinates = n;
+    for (const coordinate& c : scene.coordinates)
+        p.names.push_back(c.name);
+    read_span(p, scene, settings);
 
     // The linearization about the equilibrium (or the initial position) for the choice of method.
     std::vector<double> reference_state(2 * n, 0.0);
@@ -213,18 +231,42 @@ prepared_motion prepare(const model& scene, const lagrangian_result& lagrangian,
     return p;
 }
 
+/// A free body: Euler's equations from the rigid-body derivation, with the exact
+/// solution (elliptic or symmetric closed form) when it is torque-free.
+prepared_motion prepare_free_body(const model& scene, const simulation_settings& settings)
+{
+    prepared_motion p;
+    p.values = merged_values(scene);
+    p.free_body = std::make_unique<free_body_motion>(scene, p.values);
+    if (!settings.native)
+        p.evaluation = "interpreted (as asked)";
+    else if (!p.free_body->compile_native())
+        p.evaluation = "interpreted: no C compiler was found to compile the equations";
+    p.names = p.free_body->names();
+    p.x0 = p.free_body->initial();
+    read_span(p, scene, settings);
+    p.system = p.free_body->system();
+    p.frequencies = linearized_frequencies(p.system, p.x0);
+    // The body turns at |ω|; the linearization about ω0 gives the wobble (polhode) rate.
+    double spin = std::sqrt(p.x0[0] * p.x0[0] + p.x0[1] * p.x0[1] + p.x0[2] * p.x0[2]);
+    if (p.frequencies.size() >= 2)
+        p.stiffness = p.frequencies.back() / p.frequencies.front();
+    p.rate = std::max(spin, p.frequencies.empty() ? 0.0 : p.frequencies.back());
+    return p;
+}
+
 } // namespace
 
-simulation_result simulate(const model& scene, const lagrangian_result& lagrangian,
-                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
-                           const simulation_settings& settings)
+namespace {
+
+simulation_result run_simulation(const model& scene, prepared_motion& prepared, const simulation_settings& settings)
 {
     simulation_result result;
-    for (const coordinate& c : scene.coordinates)
-        result.coordinates.push_back(c.name);
-    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, settings);
+    result.coordinates = prepared.names;
+    result.first_order = static_cast<bool>(prepared.free_body);
+    result.evaluation = prepared.evaluation;
     result.values = prepared.values;
-    const std::size_t n = prepared.motion->coordinates();
+    const std::size_t n = prepared.coordinates;
     const std::vector<double>& x0 = prepared.x0;
     const double until = prepared.until;
     result.tolerance = prepared.tolerance;
@@ -259,15 +301,19 @@ simulation_result simulate(const model& scene, const lagrangian_result& lagrangi
     options.tolerance = result.tolerance;
     if (scene.simulation && scene.simulation->step)
         options.output_step = to_double(*scene.simulation->step);
-    options.frequency = result.frequencies.empty() ? 1.0 : result.frequencies.back();
+    options.frequency = prepared.rate > 0 ? prepared.rate : result.frequencies.empty() ? 1.0 : result.frequencies.back();
     options.max_seconds = settings.max_seconds;
     options.progress = settings.progress;
 
-    system.exact = normal_mode_solution(system, n, x0);
+    std::string exact_basis = "against the exact normal-mode solution of the linear equations";
+    if (prepared.free_body)
+        exact_basis = "against " + prepared.free_body->exact_kind() + " of Euler's equations";
+    else
+        system.exact = normal_mode_solution(system, n, x0);
     result.run = integrate(system, method, x0, options);
     if (result.run.exact_error) {
         result.error_estimate = result.run.exact_error;
-        result.error_basis = "against the exact normal-mode solution of the linear equations";
+        result.error_basis = exact_basis;
     } else if (settings.estimate_error && result.run.seconds > settings.max_seconds / 4) {
         result.error_basis = "no estimate: the run took " + number(result.run.seconds) +
                              " s, and a reference run at a tighter tolerance would exceed the time limit";
@@ -289,7 +335,7 @@ simulation_result simulate(const model& scene, const lagrangian_result& lagrangi
     }
 
     // Beats: two close linearized frequencies.
-    if (n >= 2 && result.frequencies.size() >= 2) {
+    if (!result.first_order && n >= 2 && result.frequencies.size() >= 2) {
         double w1 = result.frequencies[0], w2 = result.frequencies[1];
         double predicted = 2 * M_PI / (w2 - w1);
         if (w2 > w1 && (w2 - w1) < 0.5 * w2 && until >= 1.5 * predicted && !result.run.states.empty()) {
@@ -314,15 +360,43 @@ simulation_result simulate(const model& scene, const lagrangian_result& lagrangi
     return result;
 }
 
+} // namespace
+
+simulation_result simulate(const model& scene, const lagrangian_result& lagrangian,
+                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
+                           const simulation_settings& settings)
+{
+    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, settings);
+    return run_simulation(scene, prepared, settings);
+}
+
+simulation_result simulate_free_body(const model& scene, const simulation_settings& settings)
+{
+    prepared_motion prepared = prepare_free_body(scene, settings);
+    return run_simulation(scene, prepared, settings);
+}
+
+workprecision_result free_body_work_precision(const model& scene, const simulation_settings& settings)
+{
+    prepared_motion prepared = prepare_free_body(scene, settings);
+    workprecision_result result = work_precision(prepared.system, prepared.x0, prepared.until, 0, {prepared.rate}, {},
+                                                 settings.max_seconds / 6);
+    if (result.exact)
+        result.reference = "exact: " + prepared.free_body->exact_kind() + " of Euler's equations";
+    result.evaluation = prepared.evaluation;
+    return result;
+}
+
 workprecision_result scene_work_precision(const model& scene, const lagrangian_result& lagrangian,
                                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
                                           const simulation_settings& settings)
 {
-    simulation_settings native = settings;
-    native.native = true;
-    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, native);
-    return work_precision(prepared.system, prepared.x0, prepared.until, prepared.motion->coordinates(),
-                          prepared.frequencies, {}, settings.max_seconds / 6);
+    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, settings);
+    workprecision_result result = work_precision(prepared.system, prepared.x0, prepared.until,
+                                                 prepared.motion->coordinates(), prepared.frequencies, {},
+                                                 settings.max_seconds / 6);
+    result.evaluation = prepared.evaluation;
+    return result;
 }
 
 workprecision_result work_precision(const ode_system& system, const std::vector<double>& x0, double until,
@@ -332,7 +406,11 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
     workprecision_result result;
     result.until = until;
     ode_system measured = system;
-    measured.exact = system.exact ? system.exact : normal_mode_solution(system, coordinates, x0);
+    if (!measured.exact && coordinates > 0)
+        measured.exact = normal_mode_solution(system, coordinates, x0);
+    ode_system timed = measured;
+    timed.exact = nullptr;
+    timed.invariants.clear();
     integration_options options;
     options.until = until;
     options.max_seconds = max_seconds;
@@ -369,13 +447,17 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
                 continue;
             }
             try {
+                // Timed without the measuring (no states kept, no invariants, no exact
+                // solution evaluated at the output times); measured by one more run.
                 double best = HUGE_VAL, total = 0;
-                trajectory run;
+                integration_options quiet = options;
+                quiet.keep_states = false;
                 for (int repeat = 0; repeat < 7 && (repeat == 0 || total < 0.2); ++repeat) {
-                    run = integrate(measured, method, x0, options);
-                    best = std::min(best, run.seconds);
-                    total += run.seconds;
+                    trajectory timed_run = integrate(timed, method, x0, quiet);
+                    best = std::min(best, timed_run.seconds);
+                    total += timed_run.seconds;
                 }
+                trajectory run = integrate(measured, method, x0, options);
                 point.seconds = best;
                 point.steps = run.steps;
                 point.error = run.exact_error ? *run.exact_error : trajectory_difference(run, reference);

@@ -24,8 +24,9 @@ struct simulation_settings {
     bool estimate_error = true;       ///< also run at tolerance/1000 to estimate the error
     double max_seconds = 120;
     /// Compile the equations to machine code with the system's C compiler (about 0.1–0.3 s,
-    /// then 2–3× faster evaluations than the interpreter); `workprecision` always does.
-    bool native = false;
+    /// then 2–3× faster evaluations than the interpreter); the default. Without a
+    /// compiler, or when false (`--interpret`), the interpreter evaluates them.
+    bool native = true;
     std::function<void(double fraction)> progress;
 };
 
@@ -49,6 +50,9 @@ struct simulation_result {
     std::optional<double> error_estimate;     ///< relative trajectory error
     std::string error_basis;                  ///< how the estimate was made
     std::optional<beat_measurement> beats;
+    /// A free body: the state is (ω1, ω2, ω3) named by `coordinates`, without velocities.
+    bool first_order = false;
+    std::string evaluation;                   ///< empty: native code; else how, and why not native
 };
 
 /// Frequency spread above which `auto` picks the implicit BDF method.
@@ -60,6 +64,11 @@ constexpr double stiffness_threshold = 1e3;
 simulation_result simulate(const model& scene, const lagrangian_result& lagrangian,
                            const std::optional<std::vector<GiNaC::ex>>& equilibrium,
                            const simulation_settings& settings = {});
+
+/// Integrates a free body's Euler equations (a scene without coordinates with `omega B
+/// (w1, w2, w3)`, see free_body_motion.h); the error is measured against the exact
+/// solution when the body is torque-free, with the drift of T and |L|².
+simulation_result simulate_free_body(const model& scene, const simulation_settings& settings = {});
 
 /// Linearized angular frequencies of `system` about the state `x` (|Im λ| and |Re λ|
 /// of the Jacobian's eigenvalues, each pair once), ascending, zeros dropped.
@@ -89,6 +98,7 @@ struct workprecision_result {
     bool exact = false;
     double until = 0;
     std::vector<workprecision_point> points;
+    std::string evaluation;          ///< empty: native code; else how, and why not native
 };
 
 /// `work_precision` on the scene's equations of motion at its parameter point, from
@@ -96,6 +106,9 @@ struct workprecision_result {
 workprecision_result scene_work_precision(const model& scene, const lagrangian_result& lagrangian,
                                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
                                           const simulation_settings& settings = {});
+
+/// `work_precision` on a free body, against its exact solution when it has one.
+workprecision_result free_body_work_precision(const model& scene, const simulation_settings& settings = {});
 
 /// Every method over tolerances 1e-3 … 1e-12 (`tolerances` if given), each run
 /// repeated while it takes under 0.2 s in total (the fastest kept).

@@ -181,6 +181,8 @@ void write_simulation_text(std::ostream& out, const simulation_result& s, bool t
         out << "  error estimate: " << s.error_basis << '\n';
     for (const auto& [name, drift] : run.invariant_drift)
         out << "  " << name << " drift: " << number(drift, 3) << " relative\n";
+    if (!s.evaluation.empty())
+        out << "  evaluation: " << s.evaluation << '\n';
     if (timings)
         out << "  run time: " << number(run.seconds, 3) << " s\n";
     if (s.beats) {
@@ -195,7 +197,7 @@ void write_simulation_text(std::ostream& out, const simulation_result& s, bool t
         for (std::size_t i = 0; i < n; ++i)
             out << (i ? ", " : " ") << print_name(s.coordinates[i], syntax::text) << " = "
                 << number(run.final_state[i]);
-        for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t i = 0; i < n && !s.first_order; ++i)
             out << ", " << print_name(s.coordinates[i] + "_dot", syntax::text) << " = "
                 << number(run.final_state[n + i]);
         out << '\n';
@@ -205,6 +207,8 @@ void write_simulation_text(std::ostream& out, const simulation_result& s, bool t
 void write_workprecision_text(std::ostream& out, const workprecision_result& w)
 {
     out << "\nWork precision (t from 0 to " << number(w.until) << "; error " << w.reference << ")\n";
+    if (!w.evaluation.empty())
+        out << "  evaluation: " << w.evaluation << '\n';
     char line[200];
     std::snprintf(line, sizeof line, "  %-18s %9s %11s %11s %10s %11s\n", "method", "tolerance", "error", "seconds",
                   "steps", "energy");
@@ -269,7 +273,7 @@ nlohmann::ordered_json simulation_json(const simulation_result& s, bool timings)
     doc["steps"] = run.steps;
     doc["t"] = run.times;
     nlohmann::ordered_json states = nlohmann::ordered_json::object();
-    for (std::size_t i = 0; i < 2 * n; ++i) {
+    for (std::size_t i = 0; i < (s.first_order ? n : 2 * n); ++i) {
         std::vector<double> column;
         for (const auto& state : run.states)
             column.push_back(state[i]);
@@ -331,13 +335,14 @@ void write_trajectory_csv(std::ostream& out, const simulation_result& s)
     for (const std::string& name : s.coordinates)
         out << ',' << name;
     for (const std::string& name : s.coordinates)
-        out << ',' << name << "_dot";
+        if (!s.first_order)
+            out << ',' << name << "_dot";
     out << '\n';
     char buffer[40];
     for (std::size_t k = 0; k < s.run.states.size(); ++k) {
         std::snprintf(buffer, sizeof buffer, "%.17g", s.run.times[k]);
         out << buffer;
-        for (std::size_t i = 0; i < 2 * n; ++i) {
+        for (std::size_t i = 0; i < (s.first_order ? n : 2 * n); ++i) {
             std::snprintf(buffer, sizeof buffer, ",%.17g", s.run.states[k][i]);
             out << buffer;
         }
