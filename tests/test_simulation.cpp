@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 using Catch::Matchers::WithinAbs;
@@ -206,6 +207,22 @@ TEST_CASE("compiled_motion: native code agrees with the interpreter and leaves n
     lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
     lagrange::compiled_motion interpreted(scene, *a.lagrangian, lagrange::first_value_point(scene));
     lagrange::compiled_motion native(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    // A private TMPDIR, so that native code compiled by other processes at the same time is not counted.
+    std::string private_tmp = (std::filesystem::temp_directory_path() / "lagrange-test-XXXXXX").string();
+    REQUIRE(mkdtemp(private_tmp.data()) != nullptr);
+    std::string old_tmp = std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "";
+    setenv("TMPDIR", private_tmp.c_str(), 1);
+    struct restore {
+        std::string dir, old;
+        ~restore()
+        {
+            if (old.empty())
+                unsetenv("TMPDIR");
+            else
+                setenv("TMPDIR", old.c_str(), 1);
+            std::filesystem::remove_all(dir);
+        }
+    } restore_tmp{private_tmp, old_tmp};
     auto leftovers = [] {
         int count = 0;
         for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
