@@ -78,6 +78,7 @@ struct run_options {
     std::string format = "text";
     std::string output;
     bool timings = false;
+    lagrange::budget_limits budget;
 };
 
 int analyze_scene(const run_options& options)
@@ -89,7 +90,7 @@ int analyze_scene(const run_options& options)
     std::set<lagrange::product> wanted;
     if (!options.want.empty())
         wanted = lagrange::parse_want_list(options.want);
-    lagrange::analysis result = lagrange::analyze(scene, wanted);
+    lagrange::analysis result = lagrange::analyze(scene, wanted, options.budget);
     lagrange::document_options document;
     document.timings = options.timings;
     std::ostringstream out;
@@ -125,6 +126,13 @@ int run(int argc, char** argv)
     app.add_option("--format", options.format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
     app.add_option("-o,--output", options.output, "write the output to this file");
     app.add_flag("--timings", options.timings, "show which stages ran and how long each took");
+    app.add_option("--max-terms", options.budget.max_terms,
+                   "size budget: most terms in any expression of a symbolic stage")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40))
+        ->capture_default_str();
+    app.add_option("--max-seconds", options.budget.max_seconds, "time budget of each symbolic stage, in seconds")
+        ->check(CLI::Range(1e-3, 1e7))
+        ->capture_default_str();
 
     std::string check_path;
     CLI::App* check = app.add_subcommand("check", "parse and validate a scene only");

@@ -9,6 +9,13 @@ packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2
 if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then
   packages+=(texlive-latex-base)
 fi
+# fuzz/run.sh: clang and its libFuzzer/sanitizer runtimes; bench/run.sh: GNU time (peak memory).
+if [ "${LAGRANGE_WITH_FUZZ:-0}" = 1 ]; then
+  packages+=(clang libclang-rt-14-dev)
+fi
+if [ "${LAGRANGE_WITH_TIME:-0}" = 1 ]; then
+  packages+=(time)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -23,5 +30,6 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 fi
 
+if [ "${LAGRANGE_SETUP_ONLY:-0}" = 1 ]; then exit 0; fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@" >&2
 cmake --build build -j "$(nproc)" >&2

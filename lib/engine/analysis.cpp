@@ -30,10 +30,12 @@ std::string name_of(product p)
 /// Times one stage and records it. A failure inside the algebra (GiNaC throws
 /// plain std::exceptions with internal messages) becomes a computation_error
 /// that names the stage.
-void run_stage(analysis& result, const std::string& name, const std::function<void()>& stage)
+void run_stage(analysis& result, const std::string& name, const std::function<void()>& stage,
+               const budget_limits& limits = {})
 {
     auto start = std::chrono::steady_clock::now();
     try {
+        budget_scope budget(name, limits);
         stage();
     } catch (const computation_error&) {
         throw;
@@ -69,9 +71,28 @@ std::set<product> default_products(const model& scene)
     return products;
 }
 
-} // namespace
+/// True if any of the wanted products was computed.
+bool computed_any(const analysis& result)
+{
+    for (product p : result.wanted) {
+        switch (p) {
+        case product::equations: if (result.equations) return true; break;
+        case product::equilibrium: if (result.equilibria) return true; break;
+        case product::linearization: if (result.linearization) return true; break;
+        case product::characteristic: if (result.characteristic) return true; break;
+        case product::frequencies:
+        case product::modes:
+        case product::normal_coordinates: if (result.modes) return true; break;
+        case product::asymptotic: if (result.asymptotic) return true; break;
+        case product::numeric: if (result.numeric) return true; break;
+        default: break;
+        }
+    }
+    return false;
+}
 
-analysis analyze(const model& scene, const std::set<product>& wanted)
+analysis analyze_within(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
+                        std::optional<budget_exceeded>& exceeded)
 {
     analysis result;
     result.scene = &scene;
@@ -92,10 +113,16 @@ analysis analyze(const model& scene, const std::set<product>& wanted)
     bool need_equations = w.count(product::equations) > 0;
 
     simplifier simplify = make_simplifier(scene);
-    run_stage(result, "lagrangian", [&] { result.lagrangian = derive_lagrangian(scene, simplify); });
-    if (need_equations)
-        run_stage(result, "equations",
-                  [&] { result.equations = derive_equations(scene, *result.lagrangian, simplify); });
+    run_stage(result, "lagrangian", [&] { result.lagrangian = derive_lagrangian(scene, simplify); }, limits);
+    if (need_equations) {
+        try {
+            run_stage(result, "equations",
+                      [&] { result.equations = derive_equations(scene, *result.lagrangian, simplify); }, limits);
+        } catch (const budget_exceeded& error) {
+            result.notes.push_back(std::string("equations not computed: ") + error.what());
+            exceeded = error;
+        }
+    }
     if (!need_equilibria)
         return result;
 
@@ -109,29 +136,54 @@ analysis analyze(const model& scene, const std::set<product>& wanted)
         if (need_numeric && scene.values.empty())
             throw computation_error("`numeric` needs a `values` line or --values");
         run_stage(result, "equilibrium",
-                  [&] { result.equilibria = find_equilibria(scene, *result.lagrangian, simplify); });
+                  [&] { result.equilibria = find_equilibria(scene, *result.lagrangian, simplify); }, limits);
         if (!need_linearization)
             return result;
         const equilibrium_point& point = result.equilibria->points.at(result.equilibria->chosen);
         run_stage(result, "linearization",
-                  [&] { result.linearization = linearize(scene, *result.lagrangian, point.position, simplify); });
-        if (need_characteristic)
-            run_stage(result, "characteristic",
-                      [&] { result.characteristic = characteristic_polynomial(scene, *result.linearization); });
-        if (need_modes)
-            run_stage(result, "modes", [&] {
-                result.modes = symbolic_modes(scene, *result.linearization, *result.characteristic);
-            });
-        if (need_asymptotic)
-            run_stage(result, "asymptotic", [&] { result.asymptotic = asymptotic_limit(scene, *result.modes); });
+                  [&] { result.linearization = linearize(scene, *result.lagrangian, point.position, simplify); },
+                  limits);
+        // Budgets: a symbolic stage that swells leaves out its products (with a note)
+        // and those after it, but not the numeric modes, which need only the linearization.
+        try {
+            if (need_characteristic)
+                run_stage(result, "characteristic",
+                          [&] { result.characteristic = characteristic_polynomial(scene, *result.linearization); },
+                          limits);
+            if (need_modes)
+                run_stage(result, "modes", [&] {
+                    result.modes = symbolic_modes(scene, *result.linearization, *result.characteristic);
+                }, limits);
+            if (need_asymptotic)
+                run_stage(result, "asymptotic", [&] { result.asymptotic = asymptotic_limit(scene, *result.modes); },
+                          limits);
+        } catch (const budget_exceeded& error) {
+            result.notes.push_back(std::string("symbolic modes not computed: ") + error.what() +
+                                   (need_numeric ? "; the numeric modes are still computed" : ""));
+            exceeded = error;
+        }
         if (need_numeric)
             run_stage(result, "numeric",
-                      [&] { result.numeric = numeric_normal_modes(scene, *result.linearization); });
+                      [&] { result.numeric = numeric_normal_modes(scene, *result.linearization); }, limits);
+    } catch (const budget_exceeded& error) {
+        result.notes.push_back(std::string("small oscillations not computed: ") + error.what());
+        exceeded = error;
     } catch (const computation_error& error) {
         if (!by_default)
             throw;
         result.notes.push_back(std::string("small oscillations not computed: ") + error.what());
     }
+    return result;
+}
+
+} // namespace
+
+analysis analyze(const model& scene, const std::set<product>& wanted, const budget_limits& limits)
+{
+    std::optional<budget_exceeded> exceeded;
+    analysis result = analyze_within(scene, wanted, limits, exceeded);
+    if (exceeded && !computed_any(result))
+        throw *exceeded;
     return result;
 }
 

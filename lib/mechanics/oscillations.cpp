@@ -4,6 +4,7 @@
  *  polynomial det(V − ω²T), and the frequencies, mode vectors, normal
  *  coordinates and asymptotic limits in closed form where one exists. */
 #include "mechanics/oscillations.h"
+#include "mechanics/budget.h"
 
 #include "scene/source.h"
 
@@ -332,6 +333,7 @@ std::vector<ex> leading_minors(const GiNaC::matrix& a)
             break;
         for (std::size_t i = k + 1; i < n; ++i)
             for (std::size_t j = k + 1; j < n; ++j) {
+                budget_check_terms(m[k][k] * m[i][j] - m[i][k] * m[k][j], "a minor of the determinant");
                 ex numerator = (m[k][k] * m[i][j] - m[i][k] * m[k][j]).expand();
                 ex quotient;
                 if (GiNaC::divide(numerator, previous, quotient))
@@ -352,6 +354,9 @@ ex fraction_free_determinant(const GiNaC::matrix& a)
     std::vector<ex> minors = leading_minors(a);
     if (minors.size() == a.rows())
         return minors.back();
+    budget_check();
+    if (a.rows() > 8)
+        throw computation_error("the determinant has a zero leading minor and is too large to expand by minors");
     return a.determinant(GiNaC::determinant_algo::laplace).expand();
 }
 
