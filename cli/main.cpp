@@ -11,7 +11,11 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <cerrno>
+#include <cstring>
 #include <sys/stat.h>
+#include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -50,7 +54,9 @@ lagrange::source_text read_scene(const std::string& path)
     return lagrange::source_text(path == "-" ? "<stdin>" : path, text);
 }
 
-/// Writes `text` to `path` through a temporary file, so that a failure never leaves a half-written file.
+/// Writes `text` to `path` through a temporary file in the same folder (so that the
+/// rename is atomic), renamed over `path` only once it is complete: a failure never
+/// truncates or half-writes an existing file, and leaves no temporary file behind.
 void write_output(const std::string& path, const std::string& text)
 {
     if (path.empty() || path == "-") {
@@ -58,16 +64,42 @@ void write_output(const std::string& path, const std::string& text)
         std::cout.flush();
         return;
     }
-    std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << text;
-        if (!out)
-            throw usage_error("cannot write `" + path + "`");
+    std::string pattern = path + ".XXXXXX";
+    std::vector<char> name(pattern.begin(), pattern.end());
+    name.push_back('\0');
+    int fd = mkstemp(name.data());
+    if (fd < 0)
+        throw usage_error("cannot write `" + path + "`: " + std::strerror(errno));
+    const std::string temporary(name.data());
+    // mkstemp makes the file private (0600); give it the usual mode (0666 less the umask).
+    mode_t mask = umask(0);
+    umask(mask);
+    bool ok = fchmod(fd, 0666 & ~mask) == 0;
+    const char* data = text.data();
+    std::size_t left = text.size();
+    while (ok && left > 0) {
+        ssize_t written = ::write(fd, data, left);
+        if (written < 0 && errno == EINTR)
+            continue;
+        if (written <= 0) {
+            ok = false;
+            break;
+        }
+        data += written;
+        left -= static_cast<std::size_t>(written);
     }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    int error = ok ? 0 : errno;
+    if (::close(fd) != 0 && ok) {
+        ok = false;
+        error = errno;
+    }
+    if (ok && std::rename(temporary.c_str(), path.c_str()) != 0) {
+        ok = false;
+        error = errno;
+    }
+    if (!ok) {
         std::remove(temporary.c_str());
-        throw usage_error("cannot write `" + path + "`");
+        throw usage_error("cannot write `" + path + "`" + (error ? std::string(": ") + std::strerror(error) : ""));
     }
 }
 
