@@ -18,8 +18,8 @@ nice -n 19 cmake --build build-fuzz -j "${FUZZ_JOBS:-2}" --target lagrange_fuzz 
 mkdir -p fuzz/corpus fuzz/crashes
 if [ -z "$(ls -A fuzz/corpus)" ]; then cp examples/*.lag fuzz/seeds/*.lag fuzz/corpus/; fi
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}"
-export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan.supp:print_suppressions=0"
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$PWD/scripts/sanitizers/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="suppressions=$PWD/scripts/sanitizers/ubsan.supp:print_stacktrace=1:halt_on_error=1"
 # -timeout=5: an input that runs longer is a hang; -rss_limit_mb: swell is a bug too.
 exec nice -n 19 build-fuzz/fuzz/lagrange_fuzz -timeout=5 -rss_limit_mb=2048 -max_len=4096 \
   -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix=fuzz/crashes/ \
