@@ -335,6 +335,7 @@ std::vector<ex> leading_minors(const GiNaC::matrix& a)
             for (std::size_t j = k + 1; j < n; ++j) {
                 budget_check_terms(m[k][k] * m[i][j] - m[i][k] * m[k][j], "a minor of the determinant");
                 ex numerator = (m[k][k] * m[i][j] - m[i][k] * m[k][j]).expand();
+                budget_check_terms(numerator, "a minor of the determinant");
                 ex quotient;
                 if (GiNaC::divide(numerator, previous, quotient))
                     m[i][j] = quotient;
