@@ -3,6 +3,7 @@
  *  errors to exit codes (0 success, 1 computation not possible, 2 bad input or usage). */
 #include "engine/analysis.h"
 #include "output/document.h"
+#include "output/sweep_output.h"
 #include "scene/lower.h"
 
 #include <CLI/CLI.hpp>
@@ -54,53 +55,73 @@ lagrange::source_text read_scene(const std::string& path)
     return lagrange::source_text(path == "-" ? "<stdin>" : path, text);
 }
 
-/// Writes `text` to `path` through a temporary file in the same folder (so that the
-/// rename is atomic), renamed over `path` only once it is complete: a failure never
-/// truncates or half-writes an existing file, and leaves no temporary file behind.
+/// Output to standard output (path empty or `-`) or to a file written through a
+/// temporary file in the same folder (so that the rename is atomic), renamed over
+/// `path` only by commit(): a failure never truncates or half-writes an existing
+/// file, and the destructor removes the temporary file of a run that failed.
+class output_file {
+public:
+    explicit output_file(const std::string& path) : path_(path)
+    {
+        if (path.empty() || path == "-")
+            return;
+        std::string pattern = path + ".XXXXXX";
+        std::vector<char> name(pattern.begin(), pattern.end());
+        name.push_back('\0');
+        int fd = mkstemp(name.data());
+        if (fd < 0)
+            throw usage_error("cannot write `" + path + "`: " + std::strerror(errno));
+        ::close(fd);
+        temporary_ = name.data();
+        file_.open(temporary_, std::ios::binary | std::ios::trunc);
+        if (!file_) {
+            std::remove(temporary_.c_str());
+            temporary_.clear();
+            throw usage_error("cannot write `" + path + "`");
+        }
+    }
+    ~output_file()
+    {
+        if (!temporary_.empty()) {
+            file_.close();
+            std::remove(temporary_.c_str());
+        }
+    }
+    output_file(const output_file&) = delete;
+    output_file& operator=(const output_file&) = delete;
+
+    std::ostream& stream() { return temporary_.empty() ? std::cout : file_; }
+
+    void commit()
+    {
+        if (temporary_.empty()) {
+            std::cout.flush();
+            return;
+        }
+        file_.close();
+        if (file_.fail())
+            throw usage_error("cannot write `" + path_ + "`");
+        // mkstemp makes the file private (0600); give it the usual mode (0666 less the umask).
+        mode_t mask = umask(0);
+        umask(mask);
+        chmod(temporary_.c_str(), 0666 & ~mask);
+        if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
+            throw usage_error("cannot write `" + path_ + "`: " + std::strerror(errno));
+        temporary_.clear();
+    }
+
+private:
+    std::string path_;
+    std::string temporary_;
+    std::ofstream file_;
+};
+
+/// Writes `text` to `path` (see output_file).
 void write_output(const std::string& path, const std::string& text)
 {
-    if (path.empty() || path == "-") {
-        std::cout << text;
-        std::cout.flush();
-        return;
-    }
-    std::string pattern = path + ".XXXXXX";
-    std::vector<char> name(pattern.begin(), pattern.end());
-    name.push_back('\0');
-    int fd = mkstemp(name.data());
-    if (fd < 0)
-        throw usage_error("cannot write `" + path + "`: " + std::strerror(errno));
-    const std::string temporary(name.data());
-    // mkstemp makes the file private (0600); give it the usual mode (0666 less the umask).
-    mode_t mask = umask(0);
-    umask(mask);
-    bool ok = fchmod(fd, 0666 & ~mask) == 0;
-    const char* data = text.data();
-    std::size_t left = text.size();
-    while (ok && left > 0) {
-        ssize_t written = ::write(fd, data, left);
-        if (written < 0 && errno == EINTR)
-            continue;
-        if (written <= 0) {
-            ok = false;
-            break;
-        }
-        data += written;
-        left -= static_cast<std::size_t>(written);
-    }
-    int error = ok ? 0 : errno;
-    if (::close(fd) != 0 && ok) {
-        ok = false;
-        error = errno;
-    }
-    if (ok && std::rename(temporary.c_str(), path.c_str()) != 0) {
-        ok = false;
-        error = errno;
-    }
-    if (!ok) {
-        std::remove(temporary.c_str());
-        throw usage_error("cannot write `" + path + "`" + (error ? std::string(": ") + std::strerror(error) : ""));
-    }
+    output_file out(path);
+    out.stream() << text;
+    out.commit();
 }
 
 struct run_options {
@@ -111,10 +132,35 @@ struct run_options {
     std::string output;
     bool timings = false;
     lagrange::budget_limits budget;
+    std::vector<std::string> sweeps;
 };
+
+/// `--sweep`: the numeric modes over a grid, streamed to the output as computed.
+int sweep_scene(const run_options& options)
+{
+    if (options.format == "latex")
+        throw usage_error("--sweep writes text or json, not latex");
+    if (!options.want.empty())
+        throw usage_error("--sweep computes the numeric modes only; leave out --want");
+    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::model scene = lagrange::load_model(source);
+    for (const std::string& v : options.values)
+        lagrange::add_values(scene, v);
+    std::vector<lagrange::sweep_axis> axes;
+    for (const std::string& s : options.sweeps)
+        axes.push_back(lagrange::parse_sweep_axis(s, scene));
+    lagrange::sweep_size(axes);
+    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::linearization}, options.budget);
+    output_file out(options.output);
+    lagrange::write_sweep(out.stream(), scene, *result.linearization, axes, options.format);
+    out.commit();
+    return exit_ok;
+}
 
 int analyze_scene(const run_options& options)
 {
+    if (!options.sweeps.empty())
+        return sweep_scene(options);
     lagrange::source_text source = read_scene(options.scene_path);
     lagrange::model scene = lagrange::load_model(source);
     for (const std::string& v : options.values)
@@ -158,6 +204,8 @@ int run(int argc, char** argv)
     app.add_option("--format", options.format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
     app.add_option("-o,--output", options.output, "write the output to this file");
     app.add_flag("--timings", options.timings, "show which stages ran and how long each took");
+    app.add_option("--sweep", options.sweeps,
+                   "numeric modes over a grid, streamed: name=from..to:count[:log] (repeatable)");
     app.add_option("--max-terms", options.budget.max_terms,
                    "size budget: most terms in any expression of a symbolic stage")
         ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40))
