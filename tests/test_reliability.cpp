@@ -262,3 +262,84 @@ TEST_CASE("nothing is left in the working folder after any run", "[cli][output]"
     std::remove((folder + "/out.json").c_str());
     rmdir(folder.c_str());
 }
+
+TEST_CASE("sweep: the double pendulum over m/M = 1e-6 ... 1e6 matches the closed form, streamed", "[sweep][cli]")
+{
+    std::string out = temporary_file("sweep.txt", "");
+    cli_result r = run_cli(examples + "double_pendulum.lag --values M=1,l=1,g=9.81 --sweep m=1e-6..1e6:1201:log -o " +
+                           out);
+    REQUIRE(r.exit_code == 0);
+    std::istringstream lines(read_file(out));
+    std::string line;
+    std::getline(lines, line);
+    CHECK(line == "# m omega1 omega2 error1 error2");
+    std::size_t rows = 0;
+    double previous = 0;
+    while (std::getline(lines, line)) {
+        std::istringstream fields(line);
+        double mu, w1, w2, e1, e2;
+        REQUIRE(fields >> mu >> w1 >> w2 >> e1 >> e2);
+        CHECK(mu > previous);
+        previous = mu;
+        // Independent reference (M = l = 1): ω±² = g (1 + μ ± √(μ(1 + μ))); the small
+        // root from the product of the roots, g² (1 + μ), to avoid cancellation.
+        const double g = 9.81;
+        const double large = g * (1 + mu + std::sqrt(mu * (1 + mu)));
+        const double small = g * g * (1 + mu) / large;
+        CHECK(w1 == Approx(std::sqrt(small)).epsilon(1e-13));
+        CHECK(w2 == Approx(std::sqrt(large)).epsilon(1e-13));
+        CHECK(e1 < 1e-13);
+        CHECK(e2 < 1e-13);
+        ++rows;
+    }
+    CHECK(rows == 1201);
+    CHECK(previous == 1e6);
+    // JSON: one object, streamed, that parses.
+    cli_result json = run_cli(examples + "double_pendulum.lag --sweep m=1..2:3 --sweep l=1..3:2 --format json");
+    REQUIRE(json.exit_code == 0);
+    CHECK(json.out.find("\"points\"") != std::string::npos);
+    CHECK(std::count(json.out.begin(), json.out.end(), '\n') == 1 + 6 + 1);
+}
+
+TEST_CASE("sweep: bad sweeps are located input errors; a singular point is named, and -o keeps the old file",
+          "[sweep][cli]")
+{
+    const std::string scene = examples + "double_pendulum.lag";
+    cli_result unknown = run_cli(scene + " --sweep q=1..2:3");
+    CHECK(unknown.exit_code == 2);
+    CHECK(unknown.err == "--sweep:1:1: error: `q` is not a parameter of the scene\nq=1..2:3\n^\n");
+    CHECK(run_cli(scene + " --sweep m=1..x:3").exit_code == 2);
+    CHECK(run_cli(scene + " --sweep m=0..1:3:log").exit_code == 2);
+    CHECK(run_cli(scene + " --sweep m=1..2:0").exit_code == 2);
+    CHECK(run_cli(scene + " --sweep m=1..2").exit_code == 2);
+    CHECK(run_cli(scene + " --sweep m=1..2:3 --format latex").exit_code == 2);
+    std::string target = temporary_file("sweep-old.txt", "old\n");
+    cli_result singular = run_cli(scene + " --values M=0,l=1,g=1 --sweep m=-1..1:3 -o " + target);
+    CHECK(singular.exit_code == 1);
+    CHECK(singular.err.find("sweep point 1") != std::string::npos);
+    CHECK(read_file(target) == "old\n");
+}
+
+TEST_CASE("numeric modes: a non-finite value is an error naming its cause", "[numeric][cli]")
+{
+    cli_result overflow = run_cli(examples + "double_pendulum.lag --want numeric --values M=1e200,m=1,l=1e200,g=1");
+    CHECK(overflow.exit_code == 1);
+    CHECK(overflow.err == "lagrange: error: the entry T(1,1) of the kinetic matrix overflows double precision at the "
+                          "values on line 1 (its magnitude is beyond 1.8e308)\n");
+    std::string root = temporary_file("sqrt.lag", "parameters m k\ncoordinates x\nT = 1/2*m*x'^2\n"
+                                                  "V = 1/2*sqrt(k)*x^2\nequilibrium x = 0\nvalues m = 1, k = -1\n");
+    cli_result domain = run_cli(root + " --want numeric");
+    CHECK(domain.exit_code == 1);
+    CHECK(domain.err.find("the entry V(1,1) of the potential matrix is not real at the values on line 6: a value "
+                          "outside the domain of sqrt") != std::string::npos);
+    std::string log = temporary_file("log.lag", "parameters m k\ncoordinates x\nT = 1/2*m*x'^2\n"
+                                                "V = 1/2*log(k)*x^2\nequilibrium x = 0\nvalues m = 1, k = 0\n");
+    cli_result pole = run_cli(log + " --want numeric");
+    CHECK(pole.exit_code == 1);
+    CHECK(pole.err.find("V(1,1) of the potential matrix cannot be evaluated at the values on line 6") !=
+          std::string::npos);
+    for (const cli_result* r : {&overflow, &domain, &pole}) {
+        CHECK(r->out.find("nan") == std::string::npos);
+        CHECK(r->out.find("inf") == std::string::npos);
+    }
+}
