@@ -195,7 +195,7 @@ TEST_CASE("budget: --max-seconds trips with a message naming the stage and exit 
     CHECK(r.err.find("stage exceeded its time budget of 0.001 s (--max-seconds)") != std::string::npos);
 }
 
-TEST_CASE("-o: a failing run leaves the existing file intact and no temporary file", "[cli][output]")
+TEST_CASE("output: a failing run with -o leaves the existing file intact and no temporary file", "[cli][output]")
 {
     std::string folder = fresh_folder();
     std::string target = folder + "/result.txt";
