@@ -343,3 +343,28 @@ TEST_CASE("numeric modes: a non-finite value is an error naming its cause", "[nu
         CHECK(r->out.find("inf") == std::string::npos);
     }
 }
+
+TEST_CASE("nothing runs a shell or a program: no system, popen or exec in the library and the command",
+          "[output]")
+{
+    // A guard over the sources: scene text must never reach a shell.
+    std::string listing = std::string("find ") + LAGRANGE_SOURCE_DIR + "/lib " + LAGRANGE_SOURCE_DIR +
+                          "/cli -name '*.cpp' -o -name '*.h'";
+    FILE* files = popen(listing.c_str(), "r");
+    REQUIRE(files);
+    char line[4096];
+    std::size_t scanned = 0;
+    while (fgets(line, sizeof line, files)) {
+        std::string path(line);
+        path.erase(path.find_last_not_of("\n") + 1);
+        std::string text = read_file(path);
+        ++scanned;
+        for (const char* call : {"system(", "popen(", "execv", "execl", "fork("}) {
+            INFO(path << " calls " << call);
+            CHECK(text.find(std::string("std::") + call) == std::string::npos);
+            CHECK(text.find(std::string(" ") + call) == std::string::npos);
+        }
+    }
+    pclose(files);
+    CHECK(scanned > 20);
+}
