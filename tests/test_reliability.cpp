@@ -368,3 +368,22 @@ TEST_CASE("nothing runs a shell or a program: no system, popen or exec in the li
     pclose(files);
     CHECK(scanned > 20);
 }
+
+// Regressions from the fuzzer (tests/fuzz_regressions/, named after what they showed).
+// Both ran past libFuzzer's wall-clock -timeout while the machine was loaded (1.0–1.5 s
+// of CPU under ASan, 0.1–0.3 s in Release): the symbolic modes with surds of
+// multivariate polynomials (GiNaC's normal and factor). They must complete, with
+// every product, under the default budgets.
+TEST_CASE("fuzz regressions: slow symbolic modes complete under the default budgets", "[fuzz]")
+{
+    for (const char* name : {"slow_modes_unequal_pendulum_arms.lag", "slow_modes_energies_with_surds.lag"}) {
+        INFO(name);
+        std::string text = read_file(std::string(LAGRANGE_SOURCE_DIR) + "/tests/fuzz_regressions/" + name);
+        REQUIRE_FALSE(text.empty());
+        model scene = load(text);
+        analysis a = analyze(scene);
+        CHECK(a.equations);
+        CHECK(a.modes);
+        CHECK(a.notes.empty());
+    }
+}
