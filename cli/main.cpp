@@ -5,6 +5,7 @@
 #include "output/document.h"
 #include "output/report.h"
 #include "output/simulation_output.h"
+#include "output/sweep_output.h"
 #include "scene/lower.h"
 
 #include <CLI/CLI.hpp>
@@ -18,8 +19,11 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <cerrno>
+#include <cstring>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -58,25 +62,73 @@ lagrange::source_text read_scene(const std::string& path)
     return lagrange::source_text(path == "-" ? "<stdin>" : path, text);
 }
 
-/// Writes `text` to `path` through a temporary file, so that a failure never leaves a half-written file.
+/// Output to standard output (path empty or `-`) or to a file written through a
+/// temporary file in the same folder (so that the rename is atomic), renamed over
+/// `path` only by commit(): a failure never truncates or half-writes an existing
+/// file, and the destructor removes the temporary file of a run that failed.
+class output_file {
+public:
+    explicit output_file(const std::string& path) : path_(path)
+    {
+        if (path.empty() || path == "-")
+            return;
+        std::string pattern = path + ".XXXXXX";
+        std::vector<char> name(pattern.begin(), pattern.end());
+        name.push_back('\0');
+        int fd = mkstemp(name.data());
+        if (fd < 0)
+            throw usage_error("cannot write `" + path + "`: " + std::strerror(errno));
+        ::close(fd);
+        temporary_ = name.data();
+        file_.open(temporary_, std::ios::binary | std::ios::trunc);
+        if (!file_) {
+            std::remove(temporary_.c_str());
+            temporary_.clear();
+            throw usage_error("cannot write `" + path + "`");
+        }
+    }
+    ~output_file()
+    {
+        if (!temporary_.empty()) {
+            file_.close();
+            std::remove(temporary_.c_str());
+        }
+    }
+    output_file(const output_file&) = delete;
+    output_file& operator=(const output_file&) = delete;
+
+    std::ostream& stream() { return temporary_.empty() ? std::cout : file_; }
+
+    void commit()
+    {
+        if (temporary_.empty()) {
+            std::cout.flush();
+            return;
+        }
+        file_.close();
+        if (file_.fail())
+            throw usage_error("cannot write `" + path_ + "`");
+        // mkstemp makes the file private (0600); give it the usual mode (0666 less the umask).
+        mode_t mask = umask(0);
+        umask(mask);
+        chmod(temporary_.c_str(), 0666 & ~mask);
+        if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
+            throw usage_error("cannot write `" + path_ + "`: " + std::strerror(errno));
+        temporary_.clear();
+    }
+
+private:
+    std::string path_;
+    std::string temporary_;
+    std::ofstream file_;
+};
+
+/// Writes `text` to `path` (see output_file).
 void write_output(const std::string& path, const std::string& text)
 {
-    if (path.empty() || path == "-") {
-        std::cout << text;
-        std::cout.flush();
-        return;
-    }
-    std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << text;
-        if (!out)
-            throw usage_error("cannot write `" + path + "`");
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        std::remove(temporary.c_str());
-        throw usage_error("cannot write `" + path + "`");
-    }
+    output_file out(path);
+    out.stream() << text;
+    out.commit();
 }
 
 struct run_options {
@@ -86,10 +138,36 @@ struct run_options {
     std::string format = "text";
     std::string output;
     bool timings = false;
+    lagrange::budget_limits budget;
+    std::vector<std::string> sweeps;
 };
+
+/// `--sweep`: the numeric modes over a grid, streamed to the output as computed.
+int sweep_scene(const run_options& options)
+{
+    if (options.format == "latex")
+        throw usage_error("--sweep writes text or json, not latex");
+    if (!options.want.empty())
+        throw usage_error("--sweep computes the numeric modes only; leave out --want");
+    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::model scene = lagrange::load_model(source);
+    for (const std::string& v : options.values)
+        lagrange::add_values(scene, v);
+    std::vector<lagrange::sweep_axis> axes;
+    for (const std::string& s : options.sweeps)
+        axes.push_back(lagrange::parse_sweep_axis(s, scene));
+    lagrange::sweep_size(axes);
+    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::linearization}, options.budget);
+    output_file out(options.output);
+    lagrange::write_sweep(out.stream(), scene, *result.linearization, axes, options.format);
+    out.commit();
+    return exit_ok;
+}
 
 int analyze_scene(const run_options& options)
 {
+    if (!options.sweeps.empty())
+        return sweep_scene(options);
     lagrange::source_text source = read_scene(options.scene_path);
     lagrange::model scene = lagrange::load_model(source);
     for (const std::string& v : options.values)
@@ -97,7 +175,7 @@ int analyze_scene(const run_options& options)
     std::set<lagrange::product> wanted;
     if (!options.want.empty())
         wanted = lagrange::parse_want_list(options.want);
-    lagrange::analysis result = lagrange::analyze(scene, wanted);
+    lagrange::analysis result = lagrange::analyze(scene, wanted, options.budget);
     lagrange::document_options document;
     document.timings = options.timings;
     std::ostringstream out;
@@ -250,6 +328,15 @@ int run(int argc, char** argv)
     app.add_option("--format", options.format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
     app.add_option("-o,--output", options.output, "write the output to this file");
     app.add_flag("--timings", options.timings, "show which stages ran and how long each took");
+    app.add_option("--sweep", options.sweeps,
+                   "numeric modes over a grid, streamed: name=from..to:count[:log] (repeatable)");
+    app.add_option("--max-terms", options.budget.max_terms,
+                   "size budget: most terms in any expression of a symbolic stage")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40))
+        ->capture_default_str();
+    app.add_option("--max-seconds", options.budget.max_seconds, "time budget of each symbolic stage, in seconds")
+        ->check(CLI::Range(1e-3, 1e7))
+        ->capture_default_str();
 
     std::string check_path;
     CLI::App* check = app.add_subcommand("check", "parse and validate a scene only");

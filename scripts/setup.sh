@@ -11,6 +11,13 @@ packages+=(gnuplot-nox)
 if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then
   packages+=(texlive-latex-base)
 fi
+# fuzz/run.sh: clang and its libFuzzer/sanitizer runtimes; bench/run.sh: GNU time (peak memory).
+if [ "${LAGRANGE_WITH_FUZZ:-0}" = 1 ]; then
+  packages+=(clang libclang-rt-14-dev)
+fi
+if [ "${LAGRANGE_WITH_TIME:-0}" = 1 ]; then
+  packages+=(time)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -25,5 +32,6 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 fi
 
+if [ "${LAGRANGE_SETUP_ONLY:-0}" = 1 ]; then exit 0; fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@" >&2
 cmake --build build -j "$(nproc)" >&2

@@ -33,10 +33,12 @@ std::string name_of(product p)
 /// Times one stage and records it. A failure inside the algebra (GiNaC throws
 /// plain std::exceptions with internal messages) becomes a computation_error
 /// that names the stage.
-void run_stage(analysis& result, const std::string& name, const std::function<void()>& stage)
+void run_stage(analysis& result, const std::string& name, const std::function<void()>& stage,
+               const budget_limits& limits = {})
 {
     auto start = std::chrono::steady_clock::now();
     try {
+        budget_scope budget(name, limits);
         stage();
     } catch (const computation_error&) {
         throw;
@@ -83,7 +85,32 @@ std::set<product> default_products(const model& scene)
     return products;
 }
 
-analysis analyze_symbolic(const model& scene, const std::set<product>& wanted)
+/// True if any of the wanted products was computed.
+bool computed_any(const analysis& result)
+{
+    for (product p : result.wanted) {
+        switch (p) {
+        case product::equations: if (result.equations) return true; break;
+        case product::equilibrium: if (result.equilibria) return true; break;
+        case product::linearization: if (result.linearization) return true; break;
+        case product::characteristic: if (result.characteristic) return true; break;
+        case product::frequencies:
+        case product::modes:
+        case product::normal_coordinates: if (result.modes) return true; break;
+        case product::asymptotic: if (result.asymptotic) return true; break;
+        case product::numeric: if (result.numeric) return true; break;
+        case product::inertia: if (result.inertia) return true; break;
+        case product::euler: if (result.euler) return true; break;
+        case product::simulation: if (result.simulation) return true; break;
+        case product::workprecision: if (result.workprecision) return true; break;
+        default: break;
+        }
+    }
+    return false;
+}
+
+analysis analyze_within(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
+                        std::optional<budget_exceeded>& exceeded)
 {
     analysis result;
     result.scene = &scene;
@@ -112,7 +139,7 @@ analysis analyze_symbolic(const model& scene, const std::set<product>& wanted)
             result.inertia.emplace();
             for (const rigid_body& b : scene.bodies)
                 result.inertia->push_back(derive_inertia(b));
-        });
+        }, limits);
     }
     if (need_euler) {
         bool free_body = false;
@@ -127,7 +154,7 @@ analysis analyze_symbolic(const model& scene, const std::set<product>& wanted)
             for (std::size_t i = 0; i < scene.bodies.size(); ++i)
                 if (scene.bodies[i].omega)
                     result.euler->push_back(derive_euler(scene.bodies[i], result.inertia->at(i), scene.initial, values));
-        });
+        }, limits);
     }
     if (scene.coordinates.empty()) {
         if (wants_any(w, {product::equations, product::equilibrium, product::linearization, product::characteristic,
@@ -139,15 +166,21 @@ analysis analyze_symbolic(const model& scene, const std::set<product>& wanted)
     }
 
     simplifier simplify = make_simplifier(scene);
-    run_stage(result, "lagrangian", [&] { result.lagrangian = derive_lagrangian(scene, simplify); });
-    if (need_equations)
-        run_stage(result, "equations",
-                  [&] { result.equations = derive_equations(scene, *result.lagrangian, simplify); });
+    run_stage(result, "lagrangian", [&] { result.lagrangian = derive_lagrangian(scene, simplify); }, limits);
+    if (need_equations) {
+        try {
+            run_stage(result, "equations",
+                      [&] { result.equations = derive_equations(scene, *result.lagrangian, simplify); }, limits);
+        } catch (const budget_exceeded& error) {
+            result.notes.push_back(std::string("equations not computed: ") + error.what());
+            exceeded = error;
+        }
+    }
     bool has_top = false;
     for (const rigid_body& b : scene.bodies)
         has_top = has_top || b.orientation.has_value();
     if (has_top && (need_equations || w.count(product::inertia)))
-        run_stage(result, "top", [&] { result.tops = analyze_tops(scene, *result.lagrangian, simplify); });
+        run_stage(result, "top", [&] { result.tops = analyze_tops(scene, *result.lagrangian, simplify); }, limits);
     if (!need_equilibria)
         return result;
 
@@ -161,24 +194,38 @@ analysis analyze_symbolic(const model& scene, const std::set<product>& wanted)
         if (need_numeric && scene.values.empty())
             throw computation_error("`numeric` needs a `values` line or --values");
         run_stage(result, "equilibrium",
-                  [&] { result.equilibria = find_equilibria(scene, *result.lagrangian, simplify); });
+                  [&] { result.equilibria = find_equilibria(scene, *result.lagrangian, simplify); }, limits);
         if (!need_linearization)
             return result;
         const equilibrium_point& point = result.equilibria->points.at(result.equilibria->chosen);
         run_stage(result, "linearization",
-                  [&] { result.linearization = linearize(scene, *result.lagrangian, point.position, simplify); });
-        if (need_characteristic)
-            run_stage(result, "characteristic",
-                      [&] { result.characteristic = characteristic_polynomial(scene, *result.linearization); });
-        if (need_modes)
-            run_stage(result, "modes", [&] {
-                result.modes = symbolic_modes(scene, *result.linearization, *result.characteristic);
-            });
-        if (need_asymptotic)
-            run_stage(result, "asymptotic", [&] { result.asymptotic = asymptotic_limit(scene, *result.modes); });
+                  [&] { result.linearization = linearize(scene, *result.lagrangian, point.position, simplify); },
+                  limits);
+        // Budgets: a symbolic stage that swells leaves out its products (with a note)
+        // and those after it, but not the numeric modes, which need only the linearization.
+        try {
+            if (need_characteristic)
+                run_stage(result, "characteristic",
+                          [&] { result.characteristic = characteristic_polynomial(scene, *result.linearization); },
+                          limits);
+            if (need_modes)
+                run_stage(result, "modes", [&] {
+                    result.modes = symbolic_modes(scene, *result.linearization, *result.characteristic);
+                }, limits);
+            if (need_asymptotic)
+                run_stage(result, "asymptotic", [&] { result.asymptotic = asymptotic_limit(scene, *result.modes); },
+                          limits);
+        } catch (const budget_exceeded& error) {
+            result.notes.push_back(std::string("symbolic modes not computed: ") + error.what() +
+                                   (need_numeric ? "; the numeric modes are still computed" : ""));
+            exceeded = error;
+        }
         if (need_numeric)
             run_stage(result, "numeric",
-                      [&] { result.numeric = numeric_normal_modes(scene, *result.linearization); });
+                      [&] { result.numeric = numeric_normal_modes(scene, *result.linearization); }, limits);
+    } catch (const budget_exceeded& error) {
+        result.notes.push_back(std::string("small oscillations not computed: ") + error.what());
+        exceeded = error;
     } catch (const computation_error& error) {
         if (!by_default)
             throw;
@@ -188,7 +235,8 @@ analysis analyze_symbolic(const model& scene, const std::set<product>& wanted)
 }
 
 /// The numeric time-integration stages: `simulation` and `workprecision`.
-void run_motion_stages(analysis& result, const model& scene, bool by_default, const simulation_settings& settings)
+void run_motion_stages(analysis& result, const model& scene, bool by_default, const simulation_settings& settings,
+                       const budget_limits& limits)
 {
     const std::set<product>& w = result.wanted;
     if (!wants_any(w, {product::simulation, product::workprecision}))
@@ -202,20 +250,20 @@ void run_motion_stages(analysis& result, const model& scene, bool by_default, co
             if (!has_free_body(scene))
                 throw computation_error("the scene has no coordinates to simulate");
             if (w.count(product::simulation))
-                run_stage(result, "simulation", [&] { result.simulation = simulate_free_body(scene, settings); });
+                run_stage(result, "simulation", [&] { result.simulation = simulate_free_body(scene, settings); }, limits);
             if (w.count(product::workprecision))
                 run_stage(result, "workprecision",
-                          [&] { result.workprecision = free_body_work_precision(scene, settings); });
+                          [&] { result.workprecision = free_body_work_precision(scene, settings); }, limits);
             return;
         }
         if (w.count(product::simulation))
             run_stage(result, "simulation", [&] {
                 result.simulation = simulate(scene, *result.lagrangian, equilibrium, settings);
-            });
+            }, limits);
         if (w.count(product::workprecision))
             run_stage(result, "workprecision", [&] {
                 result.workprecision = scene_work_precision(scene, *result.lagrangian, equilibrium, settings);
-            });
+            }, limits);
     } catch (const computation_error& error) {
         if (!by_default)
             throw;
@@ -225,11 +273,20 @@ void run_motion_stages(analysis& result, const model& scene, bool by_default, co
 
 } // namespace
 
+analysis analyze(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
+                 const simulation_settings& simulation)
+{
+    std::optional<budget_exceeded> exceeded;
+    analysis result = analyze_within(scene, wanted, limits, exceeded);
+    run_motion_stages(result, scene, wanted.empty() && scene.wanted.empty(), simulation, limits);
+    if (exceeded && !computed_any(result))
+        throw *exceeded;
+    return result;
+}
+
 analysis analyze(const model& scene, const std::set<product>& wanted, const simulation_settings& simulation)
 {
-    analysis result = analyze_symbolic(scene, wanted);
-    run_motion_stages(result, scene, wanted.empty() && scene.wanted.empty(), simulation);
-    return result;
+    return analyze(scene, wanted, budget_limits{}, simulation);
 }
 
 } // namespace lagrange

@@ -3,6 +3,7 @@
  *  stage once, in order, and records its time. Stages that are not needed do not run. */
 #pragma once
 
+#include "mechanics/budget.h"
 #include "mechanics/lagrangian.h"
 #include "mechanics/oscillations.h"
 #include "mechanics/rigid_body.h"
@@ -51,8 +52,17 @@ const std::set<product>& available_products();
 /// product that cannot be computed is left out with a note instead of failing).
 /// Throws computation_error for a product this version does not compute, or when
 /// a stage of an explicitly wanted product cannot be done.
-/// `simulation` overrides the scene's `simulate` line (end time, method, tolerance).
-analysis analyze(const model& scene, const std::set<product>& wanted = {},
+///
+/// Each symbolic stage runs under `limits` (see mechanics/budget.h). A stage that exceeds
+/// its budget leaves out its products and those that depend on it, with a note naming
+/// the stage and the limit; the rest is still computed (numeric modes need only the
+/// linearization). Throws budget_exceeded only when none of the wanted products
+/// could be computed. `simulation` overrides the scene's `simulate` line (end time,
+/// method, tolerance).
+analysis analyze(const model& scene, const std::set<product>& wanted = {}, const budget_limits& limits = {},
                  const simulation_settings& simulation = {});
+
+/// The same, with the default budgets.
+analysis analyze(const model& scene, const std::set<product>& wanted, const simulation_settings& simulation);
 
 } // namespace lagrange

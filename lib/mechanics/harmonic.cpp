@@ -4,6 +4,7 @@
  *  term (which dominated the derivation of the equations of motion), and neither
  *  GiNaC nor CLN has a sparse polynomial type whose monomials carry harmonics. */
 #include "mechanics/harmonic.h"
+#include "mechanics/budget.h"
 
 #include "mechanics/rules.h"
 
@@ -278,7 +279,10 @@ harmonic_polynomial harmonic_polynomial::operator*(const harmonic_polynomial& ot
     const std::size_t a = angle_count_;
     std::vector<std::int32_t> difference(n), sum(n);
     const cln::cl_RA half = cln::cl_RA(1) / 2;
+    budget_check_count(size() * other.size(), "a product of trigonometric polynomials");
     for (std::size_t i = 0; i < size(); ++i) {
+        if (i % 64 == 0)
+            budget_check_count(product.size(), "a product of trigonometric polynomials");
         const std::int32_t* x = key(i);
         const wave x_wave = static_cast<wave>(x[0]);
         for (std::size_t j = 0; j < other.size(); ++j) {

@@ -4,6 +4,7 @@
  *  polynomial det(V − ω²T), and the frequencies, mode vectors, normal
  *  coordinates and asymptotic limits in closed form where one exists. */
 #include "mechanics/oscillations.h"
+#include "mechanics/budget.h"
 
 #include "scene/source.h"
 
@@ -412,7 +413,9 @@ std::vector<ex> leading_minors(const GiNaC::matrix& a)
             break;
         for (std::size_t i = k + 1; i < n; ++i)
             for (std::size_t j = k + 1; j < n; ++j) {
+                budget_check_terms(m[k][k] * m[i][j] - m[i][k] * m[k][j], "a minor of the determinant");
                 ex numerator = (m[k][k] * m[i][j] - m[i][k] * m[k][j]).expand();
+                budget_check_terms(numerator, "a minor of the determinant");
                 ex quotient;
                 if (GiNaC::divide(numerator, previous, quotient))
                     m[i][j] = quotient;
@@ -432,6 +435,9 @@ ex fraction_free_determinant(const GiNaC::matrix& a)
     std::vector<ex> minors = leading_minors(a);
     if (minors.size() == a.rows())
         return minors.back();
+    budget_check();
+    if (a.rows() > 8)
+        throw computation_error("the determinant has a zero leading minor and is too large to expand by minors");
     return a.determinant(GiNaC::determinant_algo::laplace).expand();
 }
 
@@ -614,12 +620,37 @@ std::vector<std::vector<ex>> solve_several(const model& scene, const std::vector
 stability classify(const GiNaC::matrix& hessian)
 {
     std::size_t n = hessian.rows();
+    // A diagonal Hessian (a chain about its rest position): the eigenvalues are the
+    // diagonal entries, no determinant needed.
+    bool diagonal = true;
+    for (std::size_t i = 0; i < n && diagonal; ++i)
+        for (std::size_t j = 0; j < n && diagonal; ++j)
+            if (i != j && !vanishes(hessian(i, j)))
+                diagonal = false;
+    if (diagonal) {
+        bool zero = false, unknown = false;
+        for (std::size_t i = 0; i < n; ++i) {
+            std::optional<int> sign = sign_of(hessian(i, i));
+            if (!sign)
+                unknown = true;
+            else if (*sign < 0)
+                return stability::unstable;
+            else if (*sign == 0)
+                zero = true;
+        }
+        return unknown ? stability::unknown : zero ? stability::marginal : stability::stable;
+    }
     GiNaC::symbol lambda("lambda");
     GiNaC::matrix shifted(n, n);
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j)
             shifted(i, j) = (i == j ? lambda : ex(0)) - hessian(i, j);
-    ex polynomial = fraction_free_determinant(shifted).expand();
+    ex polynomial;
+    try {
+        polynomial = fraction_free_determinant(shifted).expand();
+    } catch (const budget_exceeded&) {
+        return stability::unknown; // too large to decide symbolically: the equilibrium is still usable
+    }
     bool zero_root = false, all_decided = true, negative_root = false;
     bool lowest_found = false;
     for (std::size_t k = 0; k <= n; ++k) {

@@ -3,6 +3,7 @@
  *  sums match any k of their terms, products match their factors in any order, and
  *  a wildcard factor takes the rest of a product (numeric coefficient included). */
 #include "mechanics/rules.h"
+#include "mechanics/budget.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -997,6 +998,7 @@ GiNaC::ex rewrite(const GiNaC::ex& e, const std::vector<rewrite_rule>& rules, in
     std::vector<rule_precheck> prechecks(rules.begin(), rules.end());
     ex x = e;
     for (int pass = 0; pass < max_passes; ++pass) {
+        budget_check();
         rewrite_pass rewriter(rules, prechecks);
         x = rewriter(x);
         if (!rewriter.changed)

@@ -4,6 +4,7 @@
  *  harmonics), a compact grouping by velocities and accelerations, and the
  *  simplifier that chains them with the rewrite rules. */
 #include "mechanics/simplify.h"
+#include "mechanics/budget.h"
 
 #include "mechanics/harmonic.h"
 
@@ -144,7 +145,9 @@ ex half_sum(const ex& a, const ex& b, int sign)
 fourier_series multiply(const fourier_series& a, const fourier_series& b)
 {
     fourier_series product;
+    budget_check_count(a.size() * b.size(), "a product of trigonometric sums");
     for (const auto& [p, hp] : a) {
+        budget_check();
         const bool p_constant = leading_sign(p) == 0;
         for (const auto& [q, hq] : b) {
             if (p_constant) {

@@ -1,9 +1,10 @@
 /** @file simulation_output.cpp
- *  Simulation sections, CSV, and gnuplot plots. gnuplot runs through fork/execvp
- *  with a script file in a private temporary folder (mkdtemp) that is always
- *  removed; no shell sees any text. */
+ *  Simulation sections, CSV, and gnuplot plots. gnuplot runs through
+ *  run_program (output/external.h: an argument vector, no shell) on a script file in
+ *  a private temporary folder that is always removed. */
 #include "output/simulation_output.h"
 
+#include "output/external.h"
 #include "output/print.h"
 #include "scene/source.h"
 
@@ -14,8 +15,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace lagrange {
 
@@ -73,64 +72,16 @@ std::string drift_of(const trajectory& run, const std::string& name)
     return "";
 }
 
-/// A private temporary folder, removed with everything in it when this goes out of scope.
-class temporary_folder {
-public:
-    temporary_folder()
-    {
-        std::string pattern = (std::filesystem::temp_directory_path() / "lagrange-XXXXXX").string();
-        std::vector<char> buffer(pattern.begin(), pattern.end());
-        buffer.push_back('\0');
-        if (!mkdtemp(buffer.data()))
-            throw computation_error("cannot create a temporary folder for the plot");
-        path_ = buffer.data();
-    }
-    ~temporary_folder()
-    {
-        std::error_code ignored;
-        std::filesystem::remove_all(path_, ignored);
-    }
-    temporary_folder(const temporary_folder&) = delete;
-    temporary_folder& operator=(const temporary_folder&) = delete;
-    const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
-};
-
-/// Runs gnuplot on `script` (in `folder`), its output to /dev/null; throws on failure.
-void run_gnuplot(const temporary_folder& folder, const std::string& script)
+/// Runs gnuplot on `script` in `folder` (through run_program: argv, no shell); throws on failure.
+void run_gnuplot(const private_directory& folder, const std::string& script)
 {
-    std::string script_path = folder.path() + "/plot.gp";
-    {
-        std::ofstream out(script_path);
-        out << script;
-        if (!out)
-            throw computation_error("cannot write the gnuplot script");
-    }
-    std::fflush(nullptr);
-    pid_t child = fork();
-    if (child < 0)
-        throw computation_error("cannot start gnuplot");
-    if (child == 0) {
-        std::freopen("/dev/null", "w", stdout);
-        std::freopen("/dev/null", "w", stderr);
-        if (chdir(folder.path().c_str()) != 0)
-            _exit(127);
-        char name[] = "gnuplot";
-        std::vector<char> file(script_path.begin(), script_path.end());
-        file.push_back('\0');
-        char* argv[] = {name, file.data(), nullptr};
-        execvp("gnuplot", argv);
-        _exit(127);
-    }
-    int status = 0;
-    while (waitpid(child, &status, 0) < 0)
-        if (errno != EINTR)
-            throw computation_error("gnuplot did not finish");
-    if (!WIFEXITED(status) || WEXITSTATUS(status) == 127)
+    folder.write("plot.gp", script);
+    if (!program_available("gnuplot"))
         throw computation_error("gnuplot is not installed (Debian package gnuplot-nox): no plot drawn");
-    if (WEXITSTATUS(status) != 0)
+    program_result run = run_program({"gnuplot", "plot.gp"}, folder.path(), "gnuplot.log");
+    if (run.timed_out)
+        throw computation_error("gnuplot did not finish in time: no plot drawn");
+    if (run.exit_code != 0)
         throw computation_error("gnuplot failed to draw the plot");
 }
 
@@ -145,7 +96,7 @@ std::string gnuplot_string(const std::string& text)
 }
 
 /// Copies the plot out of the temporary folder to `path` through a temporary name.
-void deliver(const temporary_folder& folder, const std::string& path)
+void deliver(const private_directory& folder, const std::string& path)
 {
     std::string temporary = path + ".tmp";
     std::error_code error;
@@ -352,7 +303,7 @@ void write_trajectory_csv(std::ostream& out, const simulation_result& s)
 
 void plot_trajectory(const std::string& path, const simulation_result& s, const std::string& title)
 {
-    temporary_folder folder;
+    private_directory folder;
     {
         std::ofstream data(folder.path() + "/data.csv");
         write_trajectory_csv(data, s);
@@ -374,7 +325,7 @@ void plot_trajectory(const std::string& path, const simulation_result& s, const 
 
 void plot_workprecision(const std::string& path, const workprecision_result& w, const std::string& title)
 {
-    temporary_folder folder;
+    private_directory folder;
     std::vector<std::string> methods;
     for (const workprecision_point& p : w.points)
         if (p.failure.empty() && p.error && *p.error > 0 && (methods.empty() || methods.back() != p.method))

@@ -1,0 +1,50 @@
+/** @file fuzz_scene.cpp
+ *  libFuzzer target over the whole path: scene text -> parse -> check -> derive ->
+ *  linearize -> characteristic polynomial -> symbolic and numeric modes -> the three
+ *  printers, with small budgets (fuzz/run.sh builds and runs it).
+ *
+ *  Allowed outcomes: scene_error (bad input, exit 2) or computation_error (exit 1,
+ *  budget_exceeded included). Anything else that escapes — a GiNaC or CLN internal
+ *  exception that would reach the user, a crash, a sanitizer report, a leak, a hang
+ *  past libFuzzer's -timeout — is a bug. */
+#include "engine/analysis.h"
+#include "output/document.h"
+#include "scene/lower.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <sstream>
+#include <string>
+#include <typeinfo>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    if (size > 4096)
+        return -1; // keep scenes small: expression swell is the budgets' business, not the fuzzer's
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    lagrange::source_text source("fuzz.lag", text);
+    // `use "file.rules"` must not touch the disk: every file is an empty rules file.
+    lagrange::file_reader no_files = [](const std::string&, const lagrange::source_location&) {
+        return std::string("# empty\n");
+    };
+    try {
+        lagrange::model scene = lagrange::load_model(source, no_files);
+        lagrange::budget_limits limits;
+        limits.max_terms = 2000;
+        limits.max_seconds = 0.5;
+        lagrange::analysis result = lagrange::analyze(scene, {}, limits);
+        std::ostringstream out;
+        lagrange::write_text(out, result);
+        lagrange::write_json(out, result);
+        lagrange::write_latex(out, result);
+    } catch (const lagrange::scene_error& error) {
+        (void)lagrange::format_error(error);
+    } catch (const lagrange::computation_error&) {
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "fuzz: unexpected %s escaped: %s\n", typeid(error).name(), error.what());
+        std::abort();
+    }
+    return 0;
+}

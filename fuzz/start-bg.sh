@@ -1,0 +1,5 @@
+#!/usr/bin/env bash
+# Long fuzzing run in the background (log in fuzz/long.log): fuzz/start-bg.sh SECONDS
+cd "$(dirname "$0")/.."
+nohup fuzz/run.sh "${1:-2400}" >> fuzz/long.log 2>&1 &
+echo $! > fuzz/long.pid

@@ -1,0 +1,113 @@
+/** @file budget.cpp
+ *  Size and time budgets of the symbolic stages (see budget.h). */
+#include "mechanics/budget.h"
+
+#include <limits>
+#include <sstream>
+
+namespace lagrange {
+
+namespace {
+
+thread_local budget_scope::state* current_budget = nullptr;
+
+std::string seconds_text(double s)
+{
+    std::ostringstream out;
+    out << s;
+    return out.str();
+}
+
+std::size_t saturating_multiply(std::size_t a, std::size_t b, std::size_t cap)
+{
+    if (a == 0 || b == 0)
+        return 0;
+    if (a > cap / b)
+        return cap;
+    return std::min(a * b, cap);
+}
+
+} // namespace
+
+budget_scope::budget_scope(std::string stage, const budget_limits& limits) : previous_(current_budget)
+{
+    current_.stage = std::move(stage);
+    current_.limits = limits;
+    auto now = std::chrono::steady_clock::now();
+    double seconds = limits.max_seconds;
+    if (!(seconds > 0) || seconds > 1e7)
+        seconds = 1e7;
+    current_.deadline = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                  std::chrono::duration<double>(seconds));
+    current_budget = &current_;
+}
+
+budget_scope::~budget_scope() { current_budget = previous_; }
+
+void budget_check()
+{
+    if (!current_budget)
+        return;
+    if (std::chrono::steady_clock::now() > current_budget->deadline)
+        throw budget_exceeded(current_budget->stage,
+                              "the `" + current_budget->stage + "` stage exceeded its time budget of " +
+                                  seconds_text(current_budget->limits.max_seconds) + " s (--max-seconds)");
+}
+
+void budget_check_count(std::size_t terms, const char* what)
+{
+    if (!current_budget)
+        return;
+    if (terms > current_budget->limits.max_terms)
+        throw budget_exceeded(current_budget->stage,
+                              "the `" + current_budget->stage + "` stage exceeded its size budget: " + what +
+                                  " has more than " + std::to_string(current_budget->limits.max_terms) +
+                                  " terms (--max-terms)");
+    budget_check();
+}
+
+void budget_check_terms(const GiNaC::ex& e, const char* what)
+{
+    if (!current_budget)
+        return;
+    const std::size_t limit = current_budget->limits.max_terms;
+    budget_check_count(expanded_terms(e, limit == std::numeric_limits<std::size_t>::max() ? limit : limit + 1),
+                       what);
+}
+
+std::size_t expanded_terms(const GiNaC::ex& e, std::size_t cap)
+{
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+        std::size_t total = 0;
+        for (const GiNaC::ex& term : e) {
+            total += expanded_terms(term, cap);
+            if (total >= cap)
+                return cap;
+        }
+        return total;
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        std::size_t total = 1;
+        for (const GiNaC::ex& factor : e)
+            total = saturating_multiply(total, std::max<std::size_t>(1, expanded_terms(factor, cap)), cap);
+        return total;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::add>(e.op(0)) && e.op(1).info(GiNaC::info_flags::posint)) {
+        // A sum of k terms to the n-th power has at most C(n+k-1, n) terms.
+        const long double k = static_cast<long double>(expanded_terms(e.op(0), cap));
+        const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(e.op(1));
+        if (k <= 1)
+            return static_cast<std::size_t>(k);
+        if (n > 100000)
+            return cap;
+        long double count = 1;
+        for (long i = 1; i <= n.to_long() && count < static_cast<long double>(cap); ++i)
+            count = count * (k - 1 + i) / i;
+        return count >= static_cast<long double>(cap) ? cap : static_cast<std::size_t>(count + 0.5L);
+    }
+    return 1;
+}
+
+std::string budget_stage() { return current_budget ? current_budget->stage : std::string(); }
+
+} // namespace lagrange

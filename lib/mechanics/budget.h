@@ -1,0 +1,94 @@
+/** @file budget.h
+ *  Budgets instead of hangs: a size budget (terms) and a time budget for the
+ *  symbolic stages.
+ *
+ *  How to use it (for whoever writes a stage):
+ *
+ *  - The planner (lib/engine/analysis.cpp) opens a `budget_scope` around each
+ *    stage; the scope names the stage and starts its clock. Nothing else is needed
+ *    to get the stage boundary checks.
+ *  - Inside an expensive loop of a symbolic stage (elimination, series products,
+ *    simplification passes), call
+ *        budget_check();                 // throws if the stage is out of time
+ *        budget_check_terms(e, "the determinant");  // ... or if `e` is too large
+ *    These are cheap (one clock read; a walk over the top of the expression) and do
+ *    nothing when no budget_scope is open (library calls from tests, say).
+ *  - Both throw `budget_exceeded` (a computation_error, so exit code 1 if it reaches
+ *    the command line), whose message names the stage and the limit:
+ *        the `characteristic` stage exceeded its size budget: the determinant has
+ *        more than 20000 terms (--max-terms)
+ *    The planner catches it, writes a note for the products of that stage and
+ *    continues with what does not depend on it (numeric modes need only the
+ *    linearization, so they are still computed).
+ *
+ *  The limits come from the command line (`--max-terms`, `--max-seconds`); the
+ *  defaults below are generous for every example and small enough that a
+ *  12-link chain with distinct masses gives up on its symbolic determinant in
+ *  seconds instead of hours.
+ *
+ *  The budget is per thread (thread_local), so parallel analyses do not interfere. */
+#pragma once
+
+#include "scene/source.h"
+
+#include <ginac/ginac.h>
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+
+namespace lagrange {
+
+struct budget_limits {
+    std::size_t max_terms = 20000; ///< terms of any one expression (counted as if expanded)
+    double max_seconds = 30;       ///< wall-clock time of any one symbolic stage
+};
+
+/// A symbolic stage ran out of its size or time budget.
+class budget_exceeded : public computation_error {
+public:
+    budget_exceeded(std::string stage, std::string message)
+        : computation_error(message), stage_(std::move(stage)) {}
+    const std::string& stage() const { return stage_; }
+
+private:
+    std::string stage_;
+};
+
+/// Opens a budget for one stage on this thread; the previous one is restored on exit.
+class budget_scope {
+public:
+    budget_scope(std::string stage, const budget_limits& limits);
+    ~budget_scope();
+    budget_scope(const budget_scope&) = delete;
+    budget_scope& operator=(const budget_scope&) = delete;
+
+    struct state {
+        std::string stage;
+        budget_limits limits;
+        std::chrono::steady_clock::time_point deadline;
+    };
+
+private:
+    state current_;
+    state* previous_;
+};
+
+/// Throws budget_exceeded if the current stage is past its time budget.
+void budget_check();
+
+/// Throws budget_exceeded if `e` has more terms than the size budget allows
+/// (or the stage is out of time). `what` names `e` in the message ("the determinant").
+void budget_check_terms(const GiNaC::ex& e, const char* what);
+
+/// Same for a count computed by the caller.
+void budget_check_count(std::size_t terms, const char* what);
+
+/// The number of terms `e` would have if expanded, saturating at `cap` (cheap:
+/// products of sums multiply, powers of sums are raised, nothing is expanded).
+std::size_t expanded_terms(const GiNaC::ex& e, std::size_t cap);
+
+/// The name of the stage whose budget is open on this thread, or "" if none.
+std::string budget_stage();
+
+} // namespace lagrange

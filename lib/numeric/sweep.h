@@ -1,0 +1,51 @@
+/** @file sweep.h
+ *  Numeric modes over a grid of parameter values (`--sweep m=1e-6..1e6:1000000:log`),
+ *  streamed: each point is handed to a callback and forgotten, so a sweep of any
+ *  length runs in constant memory. */
+#pragma once
+
+#include "mechanics/oscillations.h"
+#include "scene/model.h"
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+/// One swept parameter: `count` values from `from` to `to`, evenly spaced, or
+/// geometrically (`:log`; then both ends must be positive).
+struct sweep_axis {
+    std::string name;
+    std::size_t parameter = 0; ///< index into model::parameters
+    double from = 0, to = 0;
+    std::size_t count = 1;
+    bool logarithmic = false;
+    double at(std::size_t k) const; ///< the k-th value (exact ends)
+};
+
+/// Parses `NAME=FROM..TO:COUNT` or `NAME=FROM..TO:COUNT:log`; throws scene_error
+/// located in the pseudo-file `--sweep` on bad input or an unknown parameter.
+sweep_axis parse_sweep_axis(const std::string& text, const model& scene);
+
+/// One point of a sweep, valid only during the callback.
+struct sweep_row {
+    std::size_t index = 0;                 ///< 0-based, the last axis varies fastest
+    const double* parameter_values = nullptr; ///< every parameter, in model::parameters order
+    const double* omega = nullptr;         ///< size() entries, ascending (sign(ω²)·√|ω²|)
+    const double* error = nullptr;         ///< bound on the relative error of each ω
+};
+
+/// The modes at every point of the grid `axes` (Cartesian product, the last axis
+/// fastest). Parameters not swept take their values from the scene's `values`
+/// points (and --values), later points overriding earlier ones. Throws
+/// computation_error naming the point where the modes cannot be computed, or a
+/// parameter that has no value.
+void sweep_numeric_modes(const model& scene, const linearization_result& linear, const std::vector<sweep_axis>& axes,
+                         const std::function<void(const sweep_row&)>& each);
+
+/// The number of points of the grid (throws computation_error above 1e10).
+std::size_t sweep_size(const std::vector<sweep_axis>& axes);
+
+} // namespace lagrange
