@@ -34,7 +34,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         lagrange::budget_limits limits;
         limits.max_terms = 2000;
         limits.max_seconds = 0.5;
-        lagrange::analysis result = lagrange::analyze(scene, {}, limits);
+        // The motion stages run too, but briefly, interpreted (no compiler per input) and
+        // without the second run that estimates the error.
+        lagrange::simulation_settings motion;
+        motion.until = 0.05;
+        motion.estimate_error = false;
+        motion.native = false;
+        motion.max_seconds = 1;
+        lagrange::analysis result = lagrange::analyze(scene, {}, limits, motion);
         std::ostringstream out;
         lagrange::write_text(out, result);
         lagrange::write_json(out, result);
