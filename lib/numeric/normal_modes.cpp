@@ -327,7 +327,7 @@ LAGRANGE_ALWAYS_INLINE inline void set_frequency_select(double w, double dw, dou
                                                         double& w2, double& omega, double& error)
 {
     double m = std::abs(w);
-    bool zero = m <= dw || m == 0;
+    bool zero = m <= (dw > 0 ? dw : 0.0); // m <= dw || m == 0, in a form that vectorizes
     w2 = zero ? 0.0 : w;
     omega = zero ? 0.0 : std::copysign(omega_hi, w);
     error = zero ? std::sqrt(dw) : (root_relative_error(dw, m) + extra) * (1 + 1e-6);
