@@ -17,6 +17,7 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace lagrange {
 
@@ -394,36 +395,46 @@ LAGRANGE_ALWAYS_INLINE inline void pair_frequencies(const double* __restrict o, 
     }
 }
 
-/// Mode k of lane j is orthogonal to the larger row of V − W T, then scaled so that
-/// aᵀ T a = 1 (T = [[x4, x5], [x5, x6]], V = [[x7, x8], [x8, x9]]).
-template <bool fused>
-LAGRANGE_ALWAYS_INLINE inline void pair_modes(const double* o, std::size_t B, std::size_t j, const double* root_hi,
-                                              const double* root_lo, const double* w2, double* modes)
+/// Mode k of each lane is orthogonal to the larger row of V − W T, then scaled so that
+/// aᵀ T a = 1 (T = [[x4, x5], [x5, x6]], V = [[x7, x8], [x8, x9]]). Selects, no
+/// branches: the loop over lanes vectorizes. Modes of lane j at modes[4j…4j+3].
+template <bool fused, std::size_t B>
+LAGRANGE_ALWAYS_INLINE inline void pair_modes(const double* __restrict o, const double* __restrict root_hi,
+                                              const double* __restrict root_lo, const double* __restrict w2,
+                                              double* __restrict modes)
 {
-    auto X = [&](std::size_t k) { return double_double{o[4 * k * B + j], o[4 * k * B + B + j]}; };
-    for (int k = 0; k < 2; ++k) {
-        double_double W{root_hi[k], root_lo[k]};
-        auto entry = [&](std::size_t v, std::size_t t) { return dd::sub(X(v), dd::mul<fused>(W, X(t))); };
-        double_double r11 = entry(7, 4), r12 = entry(8, 5), r22 = entry(9, 6);
-        double n1 = std::max(std::abs(r11.hi), std::abs(r12.hi)), n2 = std::max(std::abs(r12.hi), std::abs(r22.hi));
-        double_double a0, a1;
-        if (std::max(n1, n2) == 0 || (k == 1 && w2[0] == w2[1])) {
-            // V = W T: any T-orthonormal pair.
-            a0 = k == 0 ? dd::from(1) : dd::neg(dd::div<fused>(X(5), X(4)));
-            a1 = k == 0 ? dd::from(0) : dd::from(1);
-        } else if (n1 >= n2) {
-            a0 = dd::neg(r12);
-            a1 = r11;
-        } else {
-            a0 = dd::neg(r22);
-            a1 = r12;
-        }
-        double_double norm = dd::add(dd::add(dd::mul<fused>(dd::mul<fused>(a0, a0), X(4)),
-                                             dd::mul<fused>(dd::mul<fused>(a1, a1), X(6))),
-                                     dd::mul<fused>(dd::mul<fused>(dd::add(a0, a0), a1), X(5)));
-        double_double scale_by = dd::div<fused>(dd::from(1), dd::sqrt<fused>(norm));
-        modes[2 * k] = dd::mul<fused>(a0, scale_by).hi;
-        modes[2 * k + 1] = dd::mul<fused>(a1, scale_by).hi;
+    for (std::size_t j = 0; j < B; ++j) {
+        auto X = [&](std::size_t k) { return double_double{o[4 * k * B + j], o[4 * k * B + B + j]}; };
+        bool equal = w2[2 * j] == w2[2 * j + 1];
+        auto mode = [&](auto constant) LAGRANGE_ALWAYS_INLINE { // k = 0, 1 unrolled: the lane loop vectorizes
+            constexpr int k = decltype(constant)::value;
+            double_double W{root_hi[2 * j + k], root_lo[2 * j + k]};
+            auto entry = [&](std::size_t v, std::size_t t) { return dd::sub(X(v), dd::mul<fused>(W, X(t))); };
+            double_double r11 = entry(7, 4), r12 = entry(8, 5), r22 = entry(9, 6);
+            double n1 = std::max(std::abs(r11.hi), std::abs(r12.hi)), n2 = std::max(std::abs(r12.hi), std::abs(r22.hi));
+            // V = W T (both rows zero, or a double root): any T-orthonormal pair
+            bool degenerate = std::max(n1, n2) == 0;
+            if constexpr (k == 1)
+                degenerate = degenerate | equal;
+            bool first_row = n1 >= n2;
+            double_double a0 = select(first_row, dd::neg(r12), dd::neg(r22));
+            double_double a1 = select(first_row, r11, r12);
+            if constexpr (k == 0) {
+                a0 = select(degenerate, dd::from(1), a0);
+                a1 = select(degenerate, dd::from(0), a1);
+            } else {
+                a0 = select(degenerate, dd::neg(dd::div<fused>(X(5), X(4))), a0);
+                a1 = select(degenerate, dd::from(1), a1);
+            }
+            double_double norm = dd::add(dd::add(dd::mul<fused>(dd::mul<fused>(a0, a0), X(4)),
+                                                 dd::mul<fused>(dd::mul<fused>(a1, a1), X(6))),
+                                         dd::mul<fused>(dd::mul<fused>(dd::add(a0, a0), a1), X(5)));
+            double_double scale_by = dd::div<fused>(dd::from(1), dd::sqrt<fused>(norm));
+            modes[4 * j + 2 * k] = dd::mul<fused>(a0, scale_by).hi;
+            modes[4 * j + 2 * k + 1] = dd::mul<fused>(a1, scale_by).hi;
+        };
+        mode(std::integral_constant<int, 0>{});
+        mode(std::integral_constant<int, 1>{});
     }
 }
 
@@ -436,9 +447,11 @@ LAGRANGE_ALWAYS_INLINE inline void pair_block_kernel(const double* o, std::size_
     std::copy(lane_w2, lane_w2 + 2 * count, w2);
     std::copy(lane_w, lane_w + 2 * count, w);
     std::copy(lane_error, lane_error + 2 * count, error);
-    if (modes)
-        for (std::size_t j = 0; j < count; ++j)
-            pair_modes<fused>(o, B, j, root_hi + 2 * j, root_lo + 2 * j, lane_w2 + 2 * j, modes + 4 * j);
+    if (modes) {
+        alignas(32) double lane_modes[4 * B];
+        pair_modes<fused, B>(o, root_hi, root_lo, lane_w2, lane_modes);
+        std::copy(lane_modes, lane_modes + 4 * count, modes);
+    }
 }
 
 template <bool fused>
