@@ -125,6 +125,8 @@ std::vector<double> random_points(std::size_t width, std::size_t count, unsigned
 
 int main(int argc, char** argv)
 {
+    if (std::getenv("LAGRANGE_PORTABLE_KERNELS")) // the kernels without FMA, for comparison
+        lagrange::use_fma_kernels(false);
     std::size_t count = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 1000000;
     int runs = argc > 2 ? std::atoi(argv[2]) : 5;
 

@@ -306,3 +306,46 @@ TEST_CASE("normal modes: batch evaluation gives the same numbers as one point at
             CHECK(cw[4 * k + i] == r.omega[i]);
     }
 }
+
+TEST_CASE("normal modes: the FMA and portable kernels give the same numbers bit for bit", "[normal_modes]")
+{
+    // Both kernels' double-double products are exact (one FMA, or Dekker's splitting), and
+    // nothing is contracted: the same numbers on CPUs with and without FMA. On a CPU
+    // without FMA both runs take the portable kernels and the test still checks the sweep.
+    pendulum system;
+    compiled_modes fast(system.parameters, system.linear), portable(system.parameters, system.linear);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> scale(0.3, 3.0);
+    const std::size_t count = 301;
+    std::vector<double> points;
+    for (std::size_t k = 0; k < count; ++k) {
+        double rho = std::pow(10.0, -16.0 + 32.0 * static_cast<double>(k) / (count - 1)), M = scale(random);
+        points.insert(points.end(), {M, rho * M, scale(random), scale(random) * 10});
+    }
+    std::vector<double> w2(2 * count), w(2 * count), error(2 * count), shapes(4 * count);
+    std::vector<double> pw2(2 * count), pw(2 * count), perror(2 * count), pshapes(4 * count);
+    bool had_fma = lagrange::fma_kernels();
+    fast.evaluate_batch(count, points.data(), 4, w2.data(), w.data(), error.data(), shapes.data());
+    lagrange::use_fma_kernels(false);
+    CHECK_FALSE(lagrange::fma_kernels());
+    portable.evaluate_batch(count, points.data(), 4, pw2.data(), pw.data(), perror.data(), pshapes.data());
+    lagrange::numeric_modes one = portable.evaluate(&points[4 * 7]);
+    lagrange::use_fma_kernels(had_fma);
+    for (std::size_t k = 0; k < 2 * count; ++k) {
+        INFO("entry " << k);
+        CHECK(w[k] == pw[k]);
+        CHECK(w2[k] == pw2[k]);
+        CHECK(error[k] == perror[k]);
+    }
+    for (std::size_t k = 0; k < 4 * count; ++k)
+        CHECK(shapes[k] == pshapes[k]);
+    CHECK(one.omega[0] == w[14]);
+    CHECK(one.omega[1] == w[15]);
+    for (std::size_t k = 0; k < count; ++k) {
+        auto [slow, quick] = pendulum_reference(points[4 * k], points[4 * k + 1], points[4 * k + 2], points[4 * k + 3]);
+        CHECK(relative_error(w[2 * k], slow) <= 4e-16);
+        CHECK(relative_error(w[2 * k + 1], quick) <= 4e-16);
+        CHECK(relative_error(w[2 * k], slow) <= error[2 * k]);
+        CHECK(relative_error(w[2 * k + 1], quick) <= error[2 * k + 1]);
+    }
+}

@@ -9,6 +9,7 @@
 #include <cln/cln.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <cmath>
 #include <limits>
@@ -332,70 +333,162 @@ void interpret(const std::vector<instruction>& code, const std::vector<int>& out
         out[k] = s[outputs[k]];
 }
 
-/// One instruction over a batch of points (slots laid out [slot][point]).
-template <class number>
-void step_batch(const instruction& i, std::size_t k, const double* symbols, std::size_t stride, std::size_t count,
-                number* s)
+/// One instruction over a batch of points, structure of arrays: slot k holds
+/// [hi × B, lo × B, value × B, error × B]. All B lanes are computed (lanes past the
+/// batch's count hold zeros or harmless garbage, never read back), so the loops have a
+/// fixed trip count and no branches, and vectorize.
+template <bool fused>
+LAGRANGE_ALWAYS_INLINE inline void step_batch(const instruction& i, std::size_t k, const double* symbols,
+                                              std::size_t stride, std::size_t count, double* s)
 {
     using op = instruction::code;
     constexpr std::size_t B = expression_program::batch_size;
-    number* to = s + k * B;
-    const number* a = s + static_cast<std::size_t>(i.first) * B;
-    const number* b = s + static_cast<std::size_t>(i.second) * B;
+    double* __restrict th = s + k * 4 * B;
+    double* __restrict tl = th + B;
+    double* __restrict tv = th + 2 * B;
+    double* __restrict te = th + 3 * B;
+    const double* __restrict ah = s + static_cast<std::size_t>(i.first) * 4 * B;
+    const double* __restrict al = ah + B;
+    const double* __restrict av = ah + 2 * B;
+    const double* __restrict ae = ah + 3 * B;
+    const double* __restrict bh = s + static_cast<std::size_t>(i.second) * 4 * B;
+    const double* __restrict bl = bh + B;
+    const double* __restrict bv = bh + 2 * B;
+    const double* __restrict be = bh + 3 * B;
+    auto put = [&](std::size_t j, double_double x, bounded_double y) {
+        th[j] = x.hi;
+        tl[j] = x.lo;
+        tv[j] = y.value;
+        te[j] = y.error;
+    };
+    auto A = [&](std::size_t j) { return double_double{ah[j], al[j]}; };
+    auto Ab = [&](std::size_t j) { return bounded_double{av[j], ae[j]}; };
+    auto Bd = [&](std::size_t j) { return double_double{bh[j], bl[j]}; };
+    auto Bb = [&](std::size_t j) { return bounded_double{bv[j], be[j]}; };
     switch (i.op) {
     case op::constant: {
-        number c = make_constant(i, static_cast<number*>(nullptr));
-        for (std::size_t j = 0; j < count; ++j)
-            to[j] = c;
+        double_double c = make_constant(i, static_cast<double_double*>(nullptr));
+        bounded_double d = make_constant(i, static_cast<bounded_double*>(nullptr));
+        for (std::size_t j = 0; j < B; ++j)
+            put(j, c, d);
         break;
     }
     case op::symbol:
-        for (std::size_t j = 0; j < count; ++j)
-            to[j] = from_symbol<number>(symbols[j * stride + static_cast<std::size_t>(i.first)]);
+        for (std::size_t j = 0; j < B; ++j) {
+            double v = j < count ? symbols[j * stride + static_cast<std::size_t>(i.first)] : 0.0;
+            put(j, {v, 0}, {v, 0});
+        }
         break;
-    case op::add: for (std::size_t j = 0; j < count; ++j) to[j] = add(a[j], b[j]); break;
-    case op::mul: for (std::size_t j = 0; j < count; ++j) to[j] = mul(a[j], b[j]); break;
-    case op::neg: for (std::size_t j = 0; j < count; ++j) to[j] = neg(a[j]); break;
-    case op::recip: for (std::size_t j = 0; j < count; ++j) to[j] = recip(a[j]); break;
-    case op::square_root: for (std::size_t j = 0; j < count; ++j) to[j] = square_root(a[j]); break;
+    case op::add:
+        for (std::size_t j = 0; j < B; ++j)
+            put(j, dd::add(A(j), Bd(j)), running::add(Ab(j), Bb(j)));
+        break;
+    case op::mul:
+        for (std::size_t j = 0; j < B; ++j)
+            put(j, dd::mul<fused>(A(j), Bd(j)), running::mul(Ab(j), Bb(j)));
+        break;
+    case op::neg:
+        for (std::size_t j = 0; j < B; ++j)
+            put(j, dd::neg(A(j)), running::neg(Ab(j)));
+        break;
+    case op::recip:
+        for (std::size_t j = 0; j < B; ++j)
+            put(j, dd::div<fused>({1, 0}, A(j)), running::recip(Ab(j)));
+        break;
+    case op::square_root:
+        for (std::size_t j = 0; j < B; ++j)
+            put(j, dd::sqrt<fused>(A(j)), running::sqrt(Ab(j)));
+        break;
     case op::integer_power:
+        // the same products, in the same order, as integer_power()
         if (i.second == 2)
-            for (std::size_t j = 0; j < count; ++j) to[j] = mul(a[j], a[j]);
+            for (std::size_t j = 0; j < B; ++j)
+                put(j, dd::mul<fused>(A(j), A(j)), running::mul(Ab(j), Ab(j)));
         else if (i.second == 3)
-            for (std::size_t j = 0; j < count; ++j) to[j] = mul(a[j], mul(a[j], a[j])); // as integer_power
+            for (std::size_t j = 0; j < B; ++j)
+                put(j, dd::mul<fused>(A(j), dd::mul<fused>(A(j), A(j))),
+                    running::mul(Ab(j), running::mul(Ab(j), Ab(j))));
         else if (i.second == 4)
-            for (std::size_t j = 0; j < count; ++j) { number square = mul(a[j], a[j]); to[j] = mul(square, square); }
+            for (std::size_t j = 0; j < B; ++j) {
+                double_double x = dd::mul<fused>(A(j), A(j));
+                bounded_double y = running::mul(Ab(j), Ab(j));
+                put(j, dd::mul<fused>(x, x), running::mul(y, y));
+            }
         else
-            for (std::size_t j = 0; j < count; ++j) to[j] = integer_power(a[j], i.second);
+            for (std::size_t j = 0; j < B; ++j)
+                put(j, integer_power(A(j), i.second), integer_power(Ab(j), i.second));
         break;
-    case op::real_power: for (std::size_t j = 0; j < count; ++j) to[j] = real_power(a[j], i.value); break;
-    case op::sine: for (std::size_t j = 0; j < count; ++j) to[j] = sine(a[j]); break;
-    case op::cosine: for (std::size_t j = 0; j < count; ++j) to[j] = cosine(a[j]); break;
-    case op::exponential: for (std::size_t j = 0; j < count; ++j) to[j] = exponential(a[j]); break;
-    case op::logarithm: for (std::size_t j = 0; j < count; ++j) to[j] = logarithm(a[j]); break;
+    // not algebraic: double accuracy only, no vectorization needed
+    case op::real_power:
+        for (std::size_t j = 0; j < B; ++j)
+            put(j, real_power(A(j), i.value), real_power(Ab(j), i.value));
+        break;
+    case op::sine: for (std::size_t j = 0; j < B; ++j) put(j, sine(A(j)), sine(Ab(j))); break;
+    case op::cosine: for (std::size_t j = 0; j < B; ++j) put(j, cosine(A(j)), cosine(Ab(j))); break;
+    case op::exponential: for (std::size_t j = 0; j < B; ++j) put(j, exponential(A(j)), exponential(Ab(j))); break;
+    case op::logarithm: for (std::size_t j = 0; j < B; ++j) put(j, logarithm(A(j)), logarithm(Ab(j))); break;
     }
+}
+
+template <bool fused>
+LAGRANGE_ALWAYS_INLINE inline void run_batch_kernel(const std::vector<instruction>& code, const double* symbols,
+                                                    std::size_t stride, std::size_t count, double* s)
+{
+    for (std::size_t k = 0; k < code.size(); ++k)
+        step_batch<fused>(code[k], k, symbols, stride, count, s);
+}
+
+void run_batch_portable(const std::vector<instruction>& code, const double* symbols, std::size_t stride,
+                        std::size_t count, double* s)
+{
+    run_batch_kernel<false>(code, symbols, stride, count, s);
+}
+
+#if LAGRANGE_HAVE_FMA_KERNELS
+LAGRANGE_FMA_TARGET void run_batch_fma(const std::vector<instruction>& code, const double* symbols,
+                                       std::size_t stride, std::size_t count, double* s)
+{
+    run_batch_kernel<true>(code, symbols, stride, count, s);
+}
+#endif
+
+bool cpu_has_fma()
+{
+#if LAGRANGE_HAVE_FMA_KERNELS
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("fma");
+#else
+    return false;
+#endif
+}
+
+std::atomic<bool>& fma_switch()
+{
+    static std::atomic<bool> on{cpu_has_fma()};
+    return on;
 }
 
 } // namespace
 
+bool fma_kernels() { return fma_switch().load(std::memory_order_relaxed); }
+void use_fma_kernels(bool on) { fma_switch().store(on && cpu_has_fma(), std::memory_order_relaxed); }
+
 void expression_program::run_batch(const double* symbols, std::size_t stride, std::size_t count,
-                                   std::vector<double_double>& dd_scratch, std::vector<bounded_double>& bounded_scratch,
-                                   double_double* dd_out, bounded_double* bounded_out) const
+                                   std::vector<double>& scratch, double* out) const
 {
     constexpr std::size_t B = batch_size;
     count = std::min(count, B);
-    dd_scratch.resize(code_.size() * B);
-    bounded_scratch.resize(code_.size() * B);
-    double_double* x = dd_scratch.data();
-    bounded_double* y = bounded_scratch.data();
-    for (std::size_t k = 0; k < code_.size(); ++k) {
-        step_batch(code_[k], k, symbols, stride, count, x);
-        step_batch(code_[k], k, symbols, stride, count, y);
-    }
+    scratch.resize(code_.size() * 4 * B);
+    double* s = scratch.data();
+#if LAGRANGE_HAVE_FMA_KERNELS
+    if (fma_kernels())
+        run_batch_fma(code_, symbols, stride, count, s);
+    else
+#endif
+        run_batch_portable(code_, symbols, stride, count, s);
     for (std::size_t k = 0; k < outputs_.size(); ++k) {
-        std::size_t from = static_cast<std::size_t>(outputs_[k]) * B;
-        std::copy(x + from, x + from + count, dd_out + k * B);
-        std::copy(y + from, y + from + count, bounded_out + k * B);
+        const double* from = s + static_cast<std::size_t>(outputs_[k]) * 4 * B;
+        std::copy(from, from + 4 * B, out + k * 4 * B);
     }
 }
 

@@ -13,6 +13,31 @@
 
 namespace lagrange {
 
+#if defined(__GNUC__)
+#define LAGRANGE_ALWAYS_INLINE __attribute__((always_inline))
+#else
+#define LAGRANGE_ALWAYS_INLINE
+#endif
+
+#if defined(__GNUC__) && defined(__x86_64__)
+#define LAGRANGE_HAVE_FMA_KERNELS 1
+/// Kernels compiled for FMA (and so AVX) beside the portable ones, picked at run time.
+/// 128-bit vectors: on the development machine the 256-bit loops over the batch ran at
+/// half the speed of 128-bit ones (measured with bench/numeric_modes).
+#define LAGRANGE_FMA_TARGET __attribute__((target("fma,prefer-vector-width=128")))
+#else
+#define LAGRANGE_HAVE_FMA_KERNELS 0
+#define LAGRANGE_FMA_TARGET
+#endif
+
+/// Whether the batch kernels run their FMA versions (x86-64 CPUs with FMA, checked once
+/// at run time; the binary itself does not need FMA). Both versions give the
+/// same numbers bit for bit: their double-double products are exact either way.
+bool fma_kernels();
+/// Tests and benchmarks: force the portable kernels (false) or, where the CPU has them,
+/// the FMA ones (true). Process-wide.
+void use_fma_kernels(bool on);
+
 /// Unit roundoff of double (round to nearest).
 constexpr double unit_roundoff = 0x1p-53;
 
@@ -65,14 +90,15 @@ public:
     void run(const double* symbols, std::vector<double_double>& scratch, double_double* out) const;
 
     /// Runs the program on `count` points at once (at most batch_size), in double-double
-    /// and with running error bounds together: point j's symbols start at
-    /// symbols + j·stride; output k of point j goes to dd_out[k·batch_size + j] and
-    /// bounded_out[k·batch_size + j]. One dispatch per instruction for the whole
-    /// batch instead of one per point (the loops over points vectorize).
+    /// and with running error bounds together, structure of arrays: point j's symbols start
+    /// at symbols + j·stride; output k of point j goes to out[k·4·batch_size + j] (hi),
+    /// [.. + batch_size + j] (lo), [.. + 2·batch_size + j] (value of the bounded run) and
+    /// [.. + 3·batch_size + j] (its error bound). One dispatch per instruction for the
+    /// whole batch instead of one per point; the loops over points vectorize (with FMA
+    /// products where the CPU has them, see fma_kernels()).
     static constexpr std::size_t batch_size = 32;
-    void run_batch(const double* symbols, std::size_t stride, std::size_t count, std::vector<double_double>& dd_scratch,
-                   std::vector<bounded_double>& bounded_scratch, double_double* dd_out,
-                   bounded_double* bounded_out) const;
+    void run_batch(const double* symbols, std::size_t stride, std::size_t count, std::vector<double>& scratch,
+                   double* out) const;
 
 private:
     std::vector<instruction> code_;
@@ -84,30 +110,38 @@ private:
 
 namespace dd {
 
-inline double_double two_sum(double a, double b)
+LAGRANGE_ALWAYS_INLINE inline double_double two_sum(double a, double b)
 {
     double s = a + b;
     double bb = s - a;
     return {s, (a - (s - bb)) + (b - bb)};
 }
 
-inline double_double quick_two_sum(double a, double b)
+LAGRANGE_ALWAYS_INLINE inline double_double quick_two_sum(double a, double b)
 {
     double s = a + b;
     return {s, b - (s - a)};
 }
 
-inline double_double two_prod(double a, double b)
+/// a·b = p + e exactly (barring overflow and underflow). `fused`: e from one FMA, for code
+/// compiled for FMA (see fma_kernels()); otherwise Dekker's splitting. Both give the same
+/// exact e, so the two kernels agree bit for bit.
+template <bool fused = false>
+LAGRANGE_ALWAYS_INLINE inline double_double two_prod(double a, double b)
 {
-    constexpr double splitter = 134217729.0; // 2^27 + 1
     double p = a * b;
-    double ta = splitter * a, tb = splitter * b;
-    double ahi = ta - (ta - a), alo = a - ahi;
-    double bhi = tb - (tb - b), blo = b - bhi;
-    return {p, ((ahi * bhi - p) + ahi * blo + alo * bhi) + alo * blo};
+    if constexpr (fused) {
+        return {p, __builtin_fma(a, b, -p)};
+    } else {
+        constexpr double splitter = 134217729.0; // 2^27 + 1
+        double ta = splitter * a, tb = splitter * b;
+        double ahi = ta - (ta - a), alo = a - ahi;
+        double bhi = tb - (tb - b), blo = b - bhi;
+        return {p, ((ahi * bhi - p) + ahi * blo + alo * bhi) + alo * blo};
+    }
 }
 
-inline double_double add(double_double a, double_double b)
+LAGRANGE_ALWAYS_INLINE inline double_double add(double_double a, double_double b)
 {
     double_double s = two_sum(a.hi, b.hi);
     double_double t = two_sum(a.lo, b.lo);
@@ -117,33 +151,38 @@ inline double_double add(double_double a, double_double b)
     return quick_two_sum(s.hi, s.lo);
 }
 
-inline double_double neg(double_double a) { return {-a.hi, -a.lo}; }
-inline double_double sub(double_double a, double_double b) { return add(a, neg(b)); }
+LAGRANGE_ALWAYS_INLINE inline double_double neg(double_double a) { return {-a.hi, -a.lo}; }
+LAGRANGE_ALWAYS_INLINE inline double_double sub(double_double a, double_double b) { return add(a, neg(b)); }
 
-inline double_double mul(double_double a, double_double b)
+template <bool fused = false>
+LAGRANGE_ALWAYS_INLINE inline double_double mul(double_double a, double_double b)
 {
-    double_double p = two_prod(a.hi, b.hi);
+    double_double p = two_prod<fused>(a.hi, b.hi);
     p.lo += a.hi * b.lo + a.lo * b.hi;
     return quick_two_sum(p.hi, p.lo);
 }
 
-inline double_double div(double_double a, double_double b)
+template <bool fused = false>
+LAGRANGE_ALWAYS_INLINE inline double_double div(double_double a, double_double b)
 {
     double q1 = a.hi / b.hi;
-    double_double r = sub(a, mul(b, {q1, 0}));
+    double_double r = sub(a, mul<fused>(b, {q1, 0}));
     double q2 = r.hi / b.hi;
-    r = sub(r, mul(b, {q2, 0}));
+    r = sub(r, mul<fused>(b, {q2, 0}));
     double q3 = r.hi / b.hi;
     return add(quick_two_sum(q1, q2), {q3, 0});
 }
 
-inline double_double sqrt(double_double a)
+/// √a; for a ≤ 0 the double √a.hi (+0 for ±0). Branch free, so that loops over points
+/// vectorize.
+template <bool fused = false>
+LAGRANGE_ALWAYS_INLINE inline double_double sqrt(double_double a)
 {
-    if (a.hi <= 0)
-        return {a.hi == 0 ? 0.0 : std::sqrt(a.hi), 0};
     double s = std::sqrt(a.hi);
-    double_double r = sub(a, two_prod(s, s));
-    return quick_two_sum(s, r.hi / (2 * s));
+    double_double r = sub(a, two_prod<fused>(s, s));
+    double_double result = quick_two_sum(s, r.hi / (2 * s));
+    bool positive = a.hi > 0;
+    return {positive ? result.hi : (a.hi == 0 ? 0.0 : s), positive ? result.lo : 0.0};
 }
 
 inline double_double from(double a) { return {a, 0}; }
@@ -178,12 +217,12 @@ inline bounded_double recip(bounded_double a)
 
 inline bounded_double sqrt(bounded_double a)
 {
-    if (a.value < 0 && -a.value > a.error)
-        return {std::sqrt(a.value), HUGE_VAL};
+    // branch free (selects), so that loops over points vectorize
+    bool negative = a.value < 0 && -a.value > a.error;
     double v = std::sqrt(a.value > 0 ? a.value : 0.0);
     double low = std::sqrt(a.value - a.error > 0 ? a.value - a.error : 0.0);
     double e = v + low > 0 ? a.error / (v + low) : std::sqrt(a.error);
-    return {v, e + unit_roundoff * v};
+    return {negative ? std::sqrt(a.value) : v, negative ? HUGE_VAL : e + unit_roundoff * v};
 }
 
 } // namespace running

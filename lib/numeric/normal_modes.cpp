@@ -17,6 +17,7 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace lagrange {
 
@@ -275,7 +276,16 @@ modes_method compiled_modes::closed_form(const double* p, double* w2, double* w,
     out_dd_.resize(outputs);
     closed_.run(p, scratch_bounded_, out_bounded_.data());
     closed_.run(p, scratch_dd_, out_dd_.data());
-    return closed_form_from(out_dd_.data(), out_bounded_.data(), w2, w, error, modes);
+    // the batch layout with one lane, so that one point and a batch run the same code
+    double packed[4 * 16];
+    for (std::size_t k = 0; k < outputs; ++k) {
+        packed[4 * k] = out_dd_[k].hi;
+        packed[4 * k + 1] = out_dd_[k].lo;
+        packed[4 * k + 2] = out_bounded_[k].value;
+        packed[4 * k + 3] = out_bounded_[k].error;
+    }
+    closed_form_block(packed, 1, 1, w2, w, error, modes);
+    return modes_method::closed_form;
 }
 
 void compiled_modes::evaluate_batch(std::size_t count, const double* p, std::size_t stride, double* w2, double* w,
@@ -291,24 +301,17 @@ void compiled_modes::evaluate_batch(std::size_t count, const double* p, std::siz
         return;
     }
     constexpr std::size_t B = expression_program::batch_size;
-    const std::size_t outputs = closed_.output_count();
-    batch_dd_out_.resize(outputs * B);
-    batch_bounded_out_.resize(outputs * B);
-    double_double x[16];
-    bounded_double b[16];
+    batch_out_.resize(closed_.output_count() * 4 * B);
     for (std::size_t start = 0; start < count; start += B) {
         std::size_t block = std::min(B, count - start);
-        closed_.run_batch(p + start * stride, stride, block, batch_dd_scratch_, batch_bounded_scratch_,
-                          batch_dd_out_.data(), batch_bounded_out_.data());
+        closed_.run_batch(p + start * stride, stride, block, batch_scratch_, batch_out_.data());
+        double* modes_block = modes ? modes + start * n * n : nullptr;
+        closed_form_block(batch_out_.data(), B, block, w2 + start * n, w + start * n, error + start * n, modes_block);
         for (std::size_t j = 0; j < block; ++j) {
             std::size_t point = start + j;
-            for (std::size_t k = 0; k < outputs; ++k) {
-                x[k] = batch_dd_out_[k * B + j];
-                b[k] = batch_bounded_out_[k * B + j];
-            }
             double *w2_j = w2 + point * n, *w_j = w + point * n, *error_j = error + point * n;
             double* modes_j = modes ? modes + point * n * n : nullptr;
-            modes_method route = closed_form_from(x, b, w2_j, w_j, error_j, modes_j);
+            modes_method route = modes_method::closed_form;
             for (int digits = options_.digits; !acceptable(error_j, w2_j) && digits <= 4 * options_.digits; digits *= 2)
                 route = high_precision(p + point * stride, w2_j, w_j, error_j, modes_j, digits);
             if (used)
@@ -317,97 +320,212 @@ void compiled_modes::evaluate_batch(std::size_t count, const double* p, std::siz
     }
 }
 
-modes_method compiled_modes::closed_form_from(const double_double* x, const bounded_double* b, double* w2, double* w,
-                                              double* error, double* modes) const
+namespace {
+
+/// set_frequency without branches (selects), for the vectorized closed form; the same
+/// numbers. ω is the double-double √|w| rounded, `extra` its rounding.
+LAGRANGE_ALWAYS_INLINE inline void set_frequency_select(double w, double dw, double extra, double omega_hi,
+                                                        double& w2, double& omega, double& error)
 {
-    using namespace dd;
+    double m = std::abs(w);
+    bool zero = m <= (dw > 0 ? dw : 0.0); // m <= dw || m == 0, in a form that vectorizes
+    w2 = zero ? 0.0 : w;
+    omega = zero ? 0.0 : std::copysign(omega_hi, w);
+    error = zero ? std::sqrt(dw) : (root_relative_error(dw, m) + extra) * (1 + 1e-6);
+}
+
+/// The two-coordinate closed form on the lanes of a block laid out as expression_program::
+/// run_batch leaves it (output k, lane j: hi at o[4kB + j], lo at +B, the bounded run's
+/// value at +2B and its error bound at +3B). Outputs: [k·2 + i] for lane k. All B lanes are
+/// computed (fixed trip count, no branches: the loop vectorizes).
+/// a W² − b W + c = 0 (outputs a, b, c, b² − 4ac): the root of larger magnitude without
+/// cancellation, the other by Vieta, in double-double; the error bound runs beside.
+LAGRANGE_ALWAYS_INLINE inline double_double select(bool c, double_double a, double_double b)
+{
+    return {c ? a.hi : b.hi, c ? a.lo : b.lo};
+}
+LAGRANGE_ALWAYS_INLINE inline bounded_double select(bool c, bounded_double a, bounded_double b)
+{
+    return {c ? a.value : b.value, c ? a.error : b.error};
+}
+
+/// One root W (with bound) to ω², ω and the error bound of lane j's mode k.
+template <bool fused>
+LAGRANGE_ALWAYS_INLINE inline void pair_root(double_double W, bounded_double Wb, double scale, double& w2, double& w,
+                                             double& error)
+{
+    double dw = Wb.error * scale;
+    double_double magnitude = select(W.hi < 0, dd::neg(W), W);
+    double_double omega = dd::sqrt<fused>(magnitude);
+    double extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
+    set_frequency_select(W.hi, dw, extra, omega.hi, w2, w, error);
+}
+
+template <bool fused, std::size_t B>
+LAGRANGE_ALWAYS_INLINE inline void pair_frequencies(const double* __restrict o, double scale,
+                                                    double* __restrict w2, double* __restrict w,
+                                                    double* __restrict error, double* __restrict root_hi,
+                                                    double* __restrict root_lo)
+{
+    for (std::size_t j = 0; j < B; ++j) {
+        auto X = [&](std::size_t k) { return double_double{o[4 * k * B + j], o[4 * k * B + B + j]}; };
+        auto Y = [&](std::size_t k) { return bounded_double{o[4 * k * B + 2 * B + j], o[4 * k * B + 3 * B + j]}; };
+        double_double x0 = X(0), x1 = X(1), x2 = X(2), x3 = X(3);
+        bounded_double b0 = Y(0), b1 = Y(1), b2 = Y(2), b3 = Y(3);
+        bool negative_b = x1.hi < 0;
+        double_double root = dd::sqrt<fused>(select(x3.hi > 0, x3, double_double{}));
+        double_double q = dd::add(x1, select(negative_b, dd::neg(root), root));
+        bounded_double root_b = running::sqrt(select(b3.value > 0, b3, bounded_double{0, b3.error}));
+        bounded_double q_b = running::add(b1, select(negative_b, running::neg(root_b), root_b));
+        double_double big = dd::div<fused>(q, dd::add(x0, x0));
+        bounded_double big_b = running::mul(q_b, running::recip(running::add(b0, b0)));
+        bool has_q = q.hi != 0;
+        double_double small = select(has_q, dd::div<fused>(dd::add(x2, x2), q), double_double{});
+        bounded_double small_b = select(has_q, running::mul(running::add(b2, b2), running::recip(q_b)),
+                                        bounded_double{0, big_b.error});
+        bool swap = big.hi < small.hi;
+        double_double first = select(swap, big, small), second = select(swap, small, big);
+        bounded_double first_b = select(swap, big_b, small_b), second_b = select(swap, small_b, big_b);
+        pair_root<fused>(first, first_b, scale, w2[2 * j], w[2 * j], error[2 * j]);
+        pair_root<fused>(second, second_b, scale, w2[2 * j + 1], w[2 * j + 1], error[2 * j + 1]);
+        root_hi[2 * j] = first.hi;
+        root_lo[2 * j] = first.lo;
+        root_hi[2 * j + 1] = second.hi;
+        root_lo[2 * j + 1] = second.lo;
+    }
+}
+
+/// Mode k of each lane is orthogonal to the larger row of V − W T, then scaled so that
+/// aᵀ T a = 1 (T = [[x4, x5], [x5, x6]], V = [[x7, x8], [x8, x9]]). Selects, no
+/// branches: the loop over lanes vectorizes. Modes of lane j at modes[4j…4j+3].
+template <bool fused, std::size_t B>
+LAGRANGE_ALWAYS_INLINE inline void pair_modes(const double* __restrict o, const double* __restrict root_hi,
+                                              const double* __restrict root_lo, const double* __restrict w2,
+                                              double* __restrict modes)
+{
+    for (std::size_t j = 0; j < B; ++j) {
+        auto X = [&](std::size_t k) { return double_double{o[4 * k * B + j], o[4 * k * B + B + j]}; };
+        bool equal = w2[2 * j] == w2[2 * j + 1];
+        auto mode = [&](auto constant) LAGRANGE_ALWAYS_INLINE { // k = 0, 1 unrolled: the lane loop vectorizes
+            constexpr int k = decltype(constant)::value;
+            double_double W{root_hi[2 * j + k], root_lo[2 * j + k]};
+            auto entry = [&](std::size_t v, std::size_t t) { return dd::sub(X(v), dd::mul<fused>(W, X(t))); };
+            double_double r11 = entry(7, 4), r12 = entry(8, 5), r22 = entry(9, 6);
+            double n1 = std::max(std::abs(r11.hi), std::abs(r12.hi)), n2 = std::max(std::abs(r12.hi), std::abs(r22.hi));
+            // V = W T (both rows zero, or a double root): any T-orthonormal pair
+            bool degenerate = std::max(n1, n2) == 0;
+            if constexpr (k == 1)
+                degenerate = degenerate | equal;
+            bool first_row = n1 >= n2;
+            double_double a0 = select(first_row, dd::neg(r12), dd::neg(r22));
+            double_double a1 = select(first_row, r11, r12);
+            if constexpr (k == 0) {
+                a0 = select(degenerate, dd::from(1), a0);
+                a1 = select(degenerate, dd::from(0), a1);
+            } else {
+                a0 = select(degenerate, dd::neg(dd::div<fused>(X(5), X(4))), a0);
+                a1 = select(degenerate, dd::from(1), a1);
+            }
+            double_double norm = dd::add(dd::add(dd::mul<fused>(dd::mul<fused>(a0, a0), X(4)),
+                                                 dd::mul<fused>(dd::mul<fused>(a1, a1), X(6))),
+                                         dd::mul<fused>(dd::mul<fused>(dd::add(a0, a0), a1), X(5)));
+            double_double scale_by = dd::div<fused>(dd::from(1), dd::sqrt<fused>(norm));
+            modes[4 * j + 2 * k] = dd::mul<fused>(a0, scale_by).hi;
+            modes[4 * j + 2 * k + 1] = dd::mul<fused>(a1, scale_by).hi;
+        };
+        mode(std::integral_constant<int, 0>{});
+        mode(std::integral_constant<int, 1>{});
+    }
+}
+
+template <bool fused, std::size_t B>
+LAGRANGE_ALWAYS_INLINE inline void pair_block_kernel(const double* o, std::size_t count, double scale, double* w2,
+                                                     double* w, double* error, double* modes)
+{
+    alignas(32) double lane_w2[2 * B], lane_w[2 * B], lane_error[2 * B], root_hi[2 * B], root_lo[2 * B];
+    pair_frequencies<fused, B>(o, scale, lane_w2, lane_w, lane_error, root_hi, root_lo);
+    std::copy(lane_w2, lane_w2 + 2 * count, w2);
+    std::copy(lane_w, lane_w + 2 * count, w);
+    std::copy(lane_error, lane_error + 2 * count, error);
+    if (modes) {
+        alignas(32) double lane_modes[4 * B];
+        pair_modes<fused, B>(o, root_hi, root_lo, lane_w2, lane_modes);
+        std::copy(lane_modes, lane_modes + 4 * count, modes);
+    }
+}
+
+template <bool fused>
+LAGRANGE_ALWAYS_INLINE inline void pair_block_any(const double* o, std::size_t B, std::size_t count, double scale,
+                                                  double* w2, double* w, double* error, double* modes)
+{
+    // one point, or a whole batch: the same arithmetic per lane
+    if (B == 1)
+        pair_block_kernel<fused, 1>(o, count, scale, w2, w, error, modes);
+    else
+        pair_block_kernel<fused, expression_program::batch_size>(o, count, scale, w2, w, error, modes);
+}
+
+void pair_block_portable(const double* o, std::size_t B, std::size_t count, double scale, double* w2, double* w,
+                         double* error, double* modes)
+{
+    pair_block_any<false>(o, B, count, scale, w2, w, error, modes);
+}
+
+#if LAGRANGE_HAVE_FMA_KERNELS
+LAGRANGE_FMA_TARGET void pair_block_fma(const double* o, std::size_t B, std::size_t count, double scale, double* w2,
+                                        double* w, double* error, double* modes)
+{
+    pair_block_any<true>(o, B, count, scale, w2, w, error, modes);
+}
+#endif
+
+} // namespace
+
+void compiled_modes::closed_form_block(const double* o, std::size_t B, std::size_t count, double* w2, double* w,
+                                       double* error, double* modes) const
+{
     const std::size_t n = size_;
     const double scale = closed_.algebraic() ? double_double_scale : 1.0;
-    auto positive = [&](std::size_t k) { return x[k].hi > b[k].error * scale; };
+    auto X = [&](std::size_t k, std::size_t j) { return double_double{o[4 * k * B + j], o[4 * k * B + B + j]}; };
+    auto Y = [&](std::size_t k, std::size_t j) {
+        return bounded_double{o[4 * k * B + 2 * B + j], o[4 * k * B + 3 * B + j]};
+    };
+    auto positive = [&](std::size_t k, std::size_t j) { return X(k, j).hi > Y(k, j).error * scale; };
 
     if (n == 1) {
-        if (!positive(0))
-            not_positive_definite(0);
-        double_double W = dd::div(x[1], x[0]);
-        bounded_double Wb = running::mul(b[1], running::recip(b[0]));
-        double dw = Wb.error * scale;
-        double_double omega = dd::sqrt(W.hi < 0 ? dd::neg(W) : W);
-        double extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
-        set_frequency(W.hi, dw, extra, w2[0], w[0], error[0]);
-        if (w[0] != 0)
-            w[0] = std::copysign(omega.hi, W.hi);
-        if (modes)
-            modes[0] = 1 / dd::sqrt(x[0]).hi;
-        return modes_method::closed_form;
-    }
-
-    // T = [[x4, x5], [x5, x6]], V = [[x7, x8], [x8, x9]], det T = x0 > 0 iff positive definite.
-    if (!positive(4))
-        not_positive_definite(0);
-    if (!positive(6))
-        not_positive_definite(1);
-    if (!positive(0))
-        not_positive_definite(1);
-
-    // a W² − b W + c = 0: the root of larger magnitude without cancellation, the other by Vieta.
-    bool negative_b = x[1].hi < 0;
-    double_double root = dd::sqrt(x[3].hi > 0 ? x[3] : double_double{});
-    double_double q = negative_b ? dd::sub(x[1], root) : dd::add(x[1], root);
-    bounded_double root_b = running::sqrt(b[3].value > 0 ? b[3] : bounded_double{0, b[3].error});
-    bounded_double q_b = running::add(b[1], negative_b ? running::neg(root_b) : root_b);
-    double_double big = dd::div(q, dd::add(x[0], x[0]));
-    bounded_double big_b = running::mul(q_b, running::recip(running::add(b[0], b[0])));
-    double_double small{};
-    bounded_double small_b{0, 0};
-    if (q.hi != 0) {
-        small = dd::div(dd::add(x[2], x[2]), q);
-        small_b = running::mul(running::add(b[2], b[2]), running::recip(q_b));
-    } else {
-        small_b.error = big_b.error;
-    }
-    double_double roots[2] = {small, big};
-    bounded_double roots_b[2] = {small_b, big_b};
-    if (big.hi < small.hi) {
-        std::swap(roots[0], roots[1]);
-        std::swap(roots_b[0], roots_b[1]);
-    }
-    for (int k = 0; k < 2; ++k) {
-        double dw = roots_b[k].error * scale;
-        double_double magnitude = roots[k].hi < 0 ? dd::neg(roots[k]) : roots[k];
-        double_double omega = dd::sqrt(magnitude);
-        double extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
-        set_frequency(roots[k].hi, dw, extra, w2[k], w[k], error[k]);
-        if (w[k] != 0)
-            w[k] = std::copysign(omega.hi, roots[k].hi);
-    }
-    if (!modes)
-        return modes_method::closed_form;
-
-    // Mode k is orthogonal to the larger row of V − W T, then scaled so that aᵀ T a = 1.
-    for (int k = 0; k < 2; ++k) {
-        double_double W = roots[k];
-        auto entry = [&](std::size_t v, std::size_t t) { return dd::sub(x[v], dd::mul(W, x[t])); };
-        double_double r11 = entry(7, 4), r12 = entry(8, 5), r22 = entry(9, 6);
-        double n1 = std::max(std::abs(r11.hi), std::abs(r12.hi)), n2 = std::max(std::abs(r12.hi), std::abs(r22.hi));
-        double_double a0, a1;
-        if (std::max(n1, n2) == 0 || (k == 1 && w2[0] == w2[1])) {
-            // V = W T: any T-orthonormal pair.
-            a0 = k == 0 ? dd::from(1) : dd::neg(dd::div(x[5], x[4]));
-            a1 = k == 0 ? dd::from(0) : dd::from(1);
-        } else if (n1 >= n2) {
-            a0 = dd::neg(r12);
-            a1 = r11;
-        } else {
-            a0 = dd::neg(r22);
-            a1 = r12;
+        for (std::size_t j = 0; j < count; ++j) {
+            if (!positive(0, j))
+                not_positive_definite(0);
+            double_double W = dd::div(X(1, j), X(0, j));
+            bounded_double Wb = running::mul(Y(1, j), running::recip(Y(0, j)));
+            double dw = Wb.error * scale;
+            double_double omega = dd::sqrt(W.hi < 0 ? dd::neg(W) : W);
+            double extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
+            set_frequency(W.hi, dw, extra, w2[j], w[j], error[j]);
+            if (w[j] != 0)
+                w[j] = std::copysign(omega.hi, W.hi);
+            if (modes)
+                modes[j] = 1 / dd::sqrt(X(0, j)).hi;
         }
-        double_double norm = dd::add(dd::add(dd::mul(dd::mul(a0, a0), x[4]), dd::mul(dd::mul(a1, a1), x[6])),
-                                     dd::mul(dd::mul(dd::add(a0, a0), a1), x[5]));
-        double_double scale_by = dd::div(dd::from(1), dd::sqrt(norm));
-        modes[2 * k] = dd::mul(a0, scale_by).hi;
-        modes[2 * k + 1] = dd::mul(a1, scale_by).hi;
+        return;
     }
-    return modes_method::closed_form;
+
+    // det T = x0 > 0 iff positive definite (with x4 = T11 > 0).
+    for (std::size_t j = 0; j < count; ++j) {
+        if (!positive(4, j))
+            not_positive_definite(0);
+        if (!positive(6, j))
+            not_positive_definite(1);
+        if (!positive(0, j))
+            not_positive_definite(1);
+    }
+#if LAGRANGE_HAVE_FMA_KERNELS
+    if (fma_kernels()) {
+        pair_block_fma(o, B, count, scale, w2, w, error, modes);
+        return;
+    }
+#endif
+    pair_block_portable(o, B, count, scale, w2, w, error, modes);
 }
 
 modes_method compiled_modes::normalized(const double* p, double* w2, double* w, double* error, double* modes)

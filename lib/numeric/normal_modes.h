@@ -74,9 +74,10 @@ public:
 
 private:
     modes_method closed_form(const double* p, double* w2, double* w, double* error, double* modes);
-    /// The closed form from the program's outputs (x in double-double, b with error bounds).
-    modes_method closed_form_from(const double_double* x, const bounded_double* b, double* w2, double* w,
-                                  double* error, double* modes) const;
+    /// The closed form on `count` lanes of the closed program's outputs laid out as
+    /// expression_program::run_batch leaves them (B lanes per row); results per lane.
+    void closed_form_block(const double* outputs, std::size_t B, std::size_t count, double* w2, double* w,
+                           double* error, double* modes) const;
     modes_method normalized(const double* p, double* w2, double* w, double* error, double* modes);
     modes_method generalized(const double* p, double* w2, double* w, double* error, double* modes);
     modes_method high_precision(const double* p, double* w2, double* w, double* error, double* modes, int digits);
@@ -97,8 +98,7 @@ private:
     std::vector<double> scratch_double_;
     std::vector<bounded_double> scratch_bounded_, out_bounded_;
     std::vector<double_double> scratch_dd_, out_dd_;
-    std::vector<double_double> batch_dd_scratch_, batch_dd_out_;
-    std::vector<bounded_double> batch_bounded_scratch_, batch_bounded_out_;
+    std::vector<double> batch_scratch_, batch_out_;
     Eigen::MatrixXd work_, work_abs_;
     Eigen::VectorXd vector_, vector_abs_, residual_;
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> symmetric_solver_;
