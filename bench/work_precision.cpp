@@ -2,7 +2,9 @@
  *  Benchmark: error against run time of our integrators on the four problems of the
  *  peer script ../shared/peers/work_precision_scipy.py, with the same error measure
  *  (max over 1001 uniform times of ‖y − y_ref‖₂ / max ‖y_ref‖₂) and tolerances
- *  1e-3 … 1e-12. Prints one JSON object (rows like the peer's) for bench/work_precision.py.
+ *  1e-3 … 1e-12. Timed as the peer times solve_ivp: without output (dopri5 and Bulirsch–Stoer
+ *  then interpolate nothing; the other methods step to the 1001 output times regardless), the
+ *  error from one more, untimed run that takes the same steps. Prints one JSON object (rows like the peer's) for bench/work_precision.py.
  *    rigid     free asymmetric body, I = (1, 2, 3), ω0 = (1, 0.1, 0.5), t ∈ [0, 100]: the
  *              engine's Euler equations and Jacobi elliptic solution (free_body_motion.h)
  *    lindp     linearized double pendulum from a scene (ρ = 0.01, l = g = 1), q0 = (0.05, 0),
@@ -158,12 +160,18 @@ int main(int argc, char** argv)
                     lagrange::trajectory run;
                     lagrange::integration_options quiet = options;
                     quiet.keep_states = false;
+                    quiet.outputs = false; // the dense-output methods: no interpolation, the same steps
+                    std::size_t timed_steps = 0;
                     for (int repeat = 0; repeat < 7 && (repeat == 0 || total < 0.2); ++repeat) {
                         run = lagrange::integrate(timed, method, p.x0, quiet);
                         best = std::min(best, run.seconds);
                         total += run.seconds;
+                        timed_steps = run.steps;
                     }
                     run = lagrange::integrate(measured, method, p.x0, options);
+                    if (run.steps != timed_steps) // the error below would not be the timed run's
+                        throw std::runtime_error("the timed run took " + std::to_string(timed_steps) +
+                                                 " steps, the measured one " + std::to_string(run.steps));
                     row["time_s"] = best;
                     row["steps"] = run.steps;
                     row["nfev"] = run.evaluations;

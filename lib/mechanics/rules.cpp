@@ -496,8 +496,8 @@ bool match_node(const ex& e, const ex& pattern, exmap& bindings, match_context& 
         return matched;
     }
     // Any other container: same type and size, operands in order.
-    if (typeid(GiNaC::ex_to<GiNaC::basic>(e)) != typeid(GiNaC::ex_to<GiNaC::basic>(pattern)) ||
-        e.nops() != pattern.nops())
+    const GiNaC::basic &object = GiNaC::ex_to<GiNaC::basic>(e), &model = GiNaC::ex_to<GiNaC::basic>(pattern);
+    if (typeid(object) != typeid(model) || e.nops() != pattern.nops())
         return false;
     for (size_t i = 0; i < e.nops(); ++i)
         if (!match_node(e.op(i), pattern.op(i), bindings, context))
@@ -516,7 +516,8 @@ bool may_match(const ex& e, const ex& pattern)
         return ex_kind_of(e) == ex_kind::function &&
                GiNaC::ex_to<GiNaC::function>(e).get_serial() ==
                    GiNaC::ex_to<GiNaC::function>(pattern).get_serial();
-    return typeid(GiNaC::ex_to<GiNaC::basic>(e)) == typeid(GiNaC::ex_to<GiNaC::basic>(pattern));
+    const GiNaC::basic &object = GiNaC::ex_to<GiNaC::basic>(e), &model = GiNaC::ex_to<GiNaC::basic>(pattern);
+    return typeid(object) == typeid(model);
 }
 
 /// A cheap necessary condition for `rule` to match at the top of an expression,
@@ -898,7 +899,8 @@ ex_kind ex_kind_of(const GiNaC::ex& e)
         {&typeid(GiNaC::wildcard), ex_kind::wildcard},
         {&typeid(GiNaC::constant), ex_kind::constant},
     };
-    const std::type_info* type = &typeid(GiNaC::ex_to<GiNaC::basic>(e));
+    const GiNaC::basic& object = GiNaC::ex_to<GiNaC::basic>(e);
+    const std::type_info* type = &typeid(object);
     for (const auto& [known_type, kind] : known)
         if (type == known_type)
             return kind;

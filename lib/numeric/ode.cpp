@@ -197,8 +197,10 @@ void run_odeint(ode_method method, const std::vector<double>& x0, const integrat
         switch (method) {
         case ode_method::dopri5: {
             auto stepper = odeint::make_dense_output(tol, tol, odeint::runge_kutta_dopri5<state_type>());
-            result.steps = odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(), first_step,
-                                                   observer, checker);
+            result.steps = options.outputs ? odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(),
+                                                                     first_step, observer, checker)
+                                           : odeint::integrate_adaptive(stepper, rhs, x, options.start,
+                                                                        options.until, first_step, observer);
             break;
         }
         case ode_method::rkf78: {
@@ -211,8 +213,10 @@ void run_odeint(ode_method method, const std::vector<double>& x0, const integrat
             // control_interpolation: the dense output's error is part of the step control too (else
             // long steps interpolate 1000 output times with errors far above the tolerance).
             odeint::bulirsch_stoer_dense_out<state_type> stepper(tol, tol, 1.0, 0.0, 0.0, true);
-            result.steps = odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(), first_step,
-                                                   observer, checker);
+            result.steps = options.outputs ? odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(),
+                                                                     first_step, observer, checker)
+                                           : odeint::integrate_adaptive(stepper, rhs, x, options.start,
+                                                                        options.until, first_step, observer);
             break;
         }
         default:

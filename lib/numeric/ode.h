@@ -56,6 +56,12 @@ struct integration_options {
     std::size_t max_steps = 20'000'000; ///< stop with a message beyond this many steps
     double max_seconds = 120;     ///< stop with a message beyond this much run time
     bool keep_states = true;      ///< keep the states at the output times
+    /// false: no output times for the dense-output methods (dopri5, Bulirsch–Stoer), which
+    /// then observe the end of each step instead of interpolating. They take the same steps
+    /// either way, so a run without outputs times the integration alone (as SciPy's
+    /// solve_ivp without t_eval) and a run with them measures its error. The trajectory's
+    /// `times` are then the step ends. Other methods step to the output times regardless.
+    bool outputs = true;
     /// Called now and then with the fraction done (for a progress bar); may be empty.
     std::function<void(double fraction)> progress;
 };
