@@ -93,8 +93,14 @@ bool vanishes(const ex& e)
 ex tidy(const ex& e)
 {
     try {
+        budget_check(); // GiNaC's normal and factor can take long: a checkpoint before each
         ex fraction = e.normal().numer_denom();
-        return GiNaC::factor(fraction.op(0)) / GiNaC::factor(fraction.op(1));
+        budget_check();
+        ex numerator = GiNaC::factor(fraction.op(0));
+        budget_check();
+        return numerator / GiNaC::factor(fraction.op(1));
+    } catch (const budget_exceeded&) {
+        throw; // out of budget: the stage stops, no fallback
     } catch (const std::exception&) {
         return e;
     }
@@ -182,6 +188,8 @@ std::optional<int> sign_of(const ex& e)
     if (!denominator) {
         try {
             denominator = sign_by_structure(GiNaC::factor(fraction.op(1)));
+        } catch (const budget_exceeded&) {
+            throw; // out of budget: the stage stops, no fallback
         } catch (const std::exception&) {
         }
     }
@@ -193,6 +201,8 @@ std::optional<int> sign_of(const ex& e)
     if (!numerator) {
         try {
             numerator = sign_by_structure(GiNaC::factor(fraction.op(0)));
+        } catch (const budget_exceeded&) {
+            throw; // out of budget: the stage stops, no fallback
         } catch (const std::exception&) {
         }
     }
@@ -263,6 +273,8 @@ std::pair<ex, ex> square_root_parts(const ex& e)
         auto [denominator_out, denominator_in] = square_root_parts_of_product(GiNaC::factor(fraction.op(1)));
         // √(a/b) = √(a b)/b
         return {numerator_out / (denominator_out * denominator_in), numerator_in * denominator_in};
+    } catch (const budget_exceeded&) {
+        throw; // out of budget: the stage stops, no fallback
     } catch (const std::exception&) {
         return {1, e};
     }
@@ -317,7 +329,9 @@ ex simplify_with(const ex& e, const surd& r)
             }
             return std::make_pair(even.expand(), odd.expand());
         };
+        budget_check();
         ex fraction = e.normal().numer_denom();
+        budget_check();
         auto [numerator_0, numerator_1] = reduce(fraction.op(0));
         auto [denominator_0, denominator_1] = reduce(fraction.op(1));
         if (!denominator_1.is_zero()) {
@@ -329,6 +343,8 @@ ex simplify_with(const ex& e, const surd& r)
             denominator_0 = (denominator_0 * denominator_0 - denominator_1 * denominator_1 * r.radicand).expand();
         }
         return tidy(numerator_0 / denominator_0) + tidy(numerator_1 / denominator_0) * s;
+    } catch (const budget_exceeded&) {
+        throw; // out of budget: the stage stops, no fallback
     } catch (const std::exception&) {
         return tidy(e);
     }
@@ -593,6 +609,8 @@ std::vector<std::vector<ex>> solve_several(const model& scene, const std::vector
             ex solution;
             try {
                 solution = GiNaC::lsolve(equations, unknowns);
+            } catch (const budget_exceeded&) {
+                throw; // out of budget: the stage stops, no fallback
             } catch (const std::exception&) {
                 continue;
             }
@@ -985,6 +1003,8 @@ std::optional<ex> clean_normal_coordinate(const model& scene, const std::vector<
         ex scale = numerator_out / denominator_out * GiNaC::sqrt(r.restore(numerator_in)) /
                    GiNaC::sqrt(r.restore(denominator_in));
         return *sign * r.restore(scale) * combination;
+    } catch (const budget_exceeded&) {
+        throw; // out of budget: the stage stops, no fallback
     } catch (const std::exception&) {
         return std::nullopt;
     }
@@ -1290,6 +1310,8 @@ asymptotic_result asymptotic_limit(const model& scene, const modes_result& modes
             if (terms.empty())
                 return 0;
             return terms[0].second * GiNaC::pow(eps, terms[0].first);
+        } catch (const budget_exceeded&) {
+            throw; // out of budget: the stage stops, no fallback
         } catch (const std::exception&) {
         }
         if (is_a<GiNaC::mul>(e)) {
@@ -1305,6 +1327,8 @@ asymptotic_result asymptotic_limit(const model& scene, const modes_result& modes
     auto leading = [&](const ex& e) -> ex {
         try {
             return tidy(leading_in_eps(in_eps(e)).subs(eps == back));
+        } catch (const budget_exceeded&) {
+            throw; // out of budget: the stage stops, no fallback
         } catch (const std::exception&) {
             return e;
         }
@@ -1315,6 +1339,8 @@ asymptotic_result asymptotic_limit(const model& scene, const modes_result& modes
     for (const ex& f : *frequencies) {
         try {
             terms.push_back(series_terms(in_eps(f), eps, 4));
+        } catch (const budget_exceeded&) {
+            throw; // out of budget: the stage stops, no fallback
         } catch (const std::exception&) {
             expanded = false;
             break;
@@ -1360,6 +1386,8 @@ asymptotic_result asymptotic_limit(const model& scene, const modes_result& modes
                         continue;
                     difference = tidy(difference.subs(eps == back));
                     result.beats.push_back({i, j, difference, tidy(2 * GiNaC::Pi / difference)});
+                } catch (const budget_exceeded&) {
+                    throw; // out of budget: the stage stops, no fallback
                 } catch (const std::exception&) {
                 }
             }

@@ -43,7 +43,11 @@ struct simulation_result {
     std::map<std::string, GiNaC::ex> values;  ///< the parameter point
     std::string method;                       ///< the method that ran
     std::string choice;                       ///< why (for `auto`)
-    double tolerance = 0;
+    double tolerance = 0;                     ///< the tolerance asked for (a target for the global error)
+    /// The tolerance setting of the run reported: `tolerance`, or tighter when the error
+    /// estimate of a first run missed `tolerance` and the run was repeated.
+    double run_tolerance = 0;
+    std::optional<double> missed_error;       ///< the first run's error estimate, when it missed
     std::vector<double> frequencies;          ///< linearized angular frequencies at the equilibrium (ascending)
     double stiffness = 1;                     ///< ω_max/ω_min of the linearization
     trajectory run;

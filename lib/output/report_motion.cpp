@@ -75,6 +75,12 @@ void write_simulation(report_writer& w, const simulation_result& s)
     for (const auto& [name, drift] : s.run.invariant_drift)
         w.text(", a relative drift of the " + name + " of ").latex("$" + report_writer::number(drift, 2) + "$");
     w.text(".\n");
+    if (s.missed_error)
+        w.text(" A first run's error, about ")
+            .latex("$" + report_writer::number(*s.missed_error, 2) + "$")
+            .text(", missed the tolerance, and the run was repeated at the setting ")
+            .latex("$" + report_writer::number(s.run_tolerance, 3) + "$")
+            .text(".\n");
     if (!s.frequencies.empty()) {
         std::string list;
         for (std::size_t k = 0; k < s.frequencies.size(); ++k)

@@ -118,6 +118,9 @@ void write_simulation_text(std::ostream& out, const simulation_result& s, bool t
     out << "  method: " << s.method << " (" << s.choice << ")\n";
     out << "  from t = 0 to " << number(run.times.empty() ? 0 : run.times.back()) << ", tolerance "
         << number(s.tolerance, 3) << ", " << run.times.size() << " output times\n";
+    if (s.missed_error)
+        out << "  run again at tolerance " << number(s.run_tolerance, 3) << ": the first run's error, "
+            << number(*s.missed_error, 3) << ", missed the tolerance\n";
     if (!s.frequencies.empty()) {
         out << "  linearized frequencies: ω =";
         for (std::size_t k = 0; k < s.frequencies.size(); ++k)
@@ -183,7 +186,11 @@ void write_simulation_latex(std::ostream& out, const simulation_result& s, bool 
     out << "\\subsection*{Simulation}\n";
     out << "Method " << latex_text(s.method) << " (" << latex_text(s.choice) << "), from $t = 0$ to $"
         << latex_number(run.times.empty() ? 0 : run.times.back(), 6) << "$, tolerance $" << latex_number(s.tolerance)
-        << "$.\\\\\n";
+        << "$.";
+    if (s.missed_error)
+        out << " Run again at tolerance $" << latex_number(s.run_tolerance) << "$: the first run's error, $"
+            << latex_number(*s.missed_error) << "$, missed the tolerance.";
+    out << "\\\\\n";
     out << "\\begin{tabular}{ll}\n";
     out << "steps & " << run.steps << " (" << run.evaluations << " evaluations, " << run.jacobians
         << " Jacobians)\\\\\n";
@@ -237,6 +244,9 @@ nlohmann::ordered_json simulation_json(const simulation_result& s, bool timings)
     doc["invariants"] = invariants;
     doc["choice"] = s.choice;
     doc["tolerance"] = s.tolerance;
+    doc["run_tolerance"] = s.run_tolerance;
+    if (s.missed_error)
+        doc["missed_error"] = *s.missed_error;
     doc["evaluations"] = run.evaluations;
     doc["jacobians"] = run.jacobians;
     if (s.error_estimate)
