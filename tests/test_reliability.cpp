@@ -5,6 +5,7 @@
 #include "cli_runner.h"
 #include "engine/analysis.h"
 #include "mechanics/budget.h"
+#include "mechanics/factor.h"
 #include "scene_helpers.h"
 
 #include <catch2/catch.hpp>
@@ -389,7 +390,7 @@ TEST_CASE("nothing runs a shell: no system or popen, and programs start only fro
 TEST_CASE("fuzz regressions: slow symbolic modes complete under the default budgets", "[fuzz]")
 {
     for (const char* name : {"slow_modes_unequal_pendulum_arms.lag", "slow_modes_energies_with_surds.lag",
-                             "slow_modes_factor_after_factor.lag"}) {
+                             "slow_modes_factor_after_factor.lag", "slow_factor_high_degree_hoop.lag"}) {
         INFO(name);
         std::string text = read_file(std::string(LAGRANGE_SOURCE_DIR) + "/tests/fuzz_regressions/" + name);
         REQUIRE_FALSE(text.empty());
@@ -426,5 +427,30 @@ TEST_CASE("fuzz regressions: an exhausted budget stops the symbolic modes, throu
     CHECK_FALSE(partial.modes);
     REQUIRE_FALSE(partial.notes.empty());
     CHECK_THAT(partial.notes.front(), Catch::Matchers::Contains("time budget"));
+}
+
+// The fourth: a bead on a hoop with R^22, whose equilibrium's Hessian has R^42 w^4 − g^2.
+// GiNaC's factor() of it took 0.05 s or 3.8 s from run to run in Release (random
+// evaluation points), one call the time budget cannot interrupt. Polynomials of degree
+// above factor_max_degree in some symbol are no longer handed to factor().
+TEST_CASE("fuzz regressions: factor() only where it is quick", "[fuzz][budget]")
+{
+    GiNaC::symbol R("R"), w("w"), g("g"), m("m");
+    GiNaC::ex small = m * (GiNaC::pow(R, 8) * GiNaC::pow(w, 4) - GiNaC::pow(g, 2));
+    GiNaC::ex factored = factor_if_quick(small);
+    CHECK(GiNaC::is_a<GiNaC::mul>(factored));
+    CHECK(factored.nops() >= 3); // m, (R^4 w^2 − g), (R^4 w^2 + g)
+    CHECK((factored - small).expand().is_zero());
+    GiNaC::ex large = m * (GiNaC::pow(R, 42) * GiNaC::pow(w, 4) - GiNaC::pow(g, 2));
+    CHECK(too_large_to_factor(large));
+    CHECK_FALSE(too_large_to_factor(small));
+    CHECK((factor_if_quick(large) - large).is_zero()); // returned as it is
+    CHECK(too_large_to_factor(GiNaC::pow(R + 1, factor_max_degree + 1)));
+    CHECK_FALSE(too_large_to_factor(GiNaC::pow(R + 1, factor_max_degree)));
+    // The scene: all three equilibria, with the Hessian left unfactored.
+    model scene = load(read_file(std::string(LAGRANGE_SOURCE_DIR) + "/tests/fuzz_regressions/slow_factor_high_degree_hoop.lag"));
+    analysis a = analyze(scene, {product::equilibrium});
+    REQUIRE(a.equilibria);
+    CHECK(a.equilibria->points.size() == 3);
 }
 

@@ -4,6 +4,7 @@
  *  polynomial det(V − ω²T), and the frequencies, mode vectors, normal
  *  coordinates and asymptotic limits in closed form where one exists. */
 #include "mechanics/oscillations.h"
+#include "mechanics/factor.h"
 #include "mechanics/budget.h"
 
 #include "scene/source.h"
@@ -96,9 +97,9 @@ ex tidy(const ex& e)
         budget_check(); // GiNaC's normal and factor can take long: a checkpoint before each
         ex fraction = e.normal().numer_denom();
         budget_check();
-        ex numerator = GiNaC::factor(fraction.op(0));
+        ex numerator = factor_if_quick(fraction.op(0));
         budget_check();
-        return numerator / GiNaC::factor(fraction.op(1));
+        return numerator / factor_if_quick(fraction.op(1));
     } catch (const budget_exceeded&) {
         throw; // out of budget: the stage stops, no fallback
     } catch (const std::exception&) {
@@ -187,7 +188,7 @@ std::optional<int> sign_of(const ex& e)
     std::optional<int> denominator = sign_by_structure(fraction.op(1));
     if (!denominator) {
         try {
-            denominator = sign_by_structure(GiNaC::factor(fraction.op(1)));
+            denominator = sign_by_structure(factor_if_quick(fraction.op(1)));
         } catch (const budget_exceeded&) {
             throw; // out of budget: the stage stops, no fallback
         } catch (const std::exception&) {
@@ -200,7 +201,7 @@ std::optional<int> sign_of(const ex& e)
         numerator = sign_by_structure(fraction.op(0).expand());
     if (!numerator) {
         try {
-            numerator = sign_by_structure(GiNaC::factor(fraction.op(0)));
+            numerator = sign_by_structure(factor_if_quick(fraction.op(0)));
         } catch (const budget_exceeded&) {
             throw; // out of budget: the stage stops, no fallback
         } catch (const std::exception&) {
@@ -269,8 +270,8 @@ std::pair<ex, ex> square_root_parts(const ex& e)
 {
     try {
         ex fraction = e.normal().numer_denom();
-        auto [numerator_out, numerator_in] = square_root_parts_of_product(GiNaC::factor(fraction.op(0)));
-        auto [denominator_out, denominator_in] = square_root_parts_of_product(GiNaC::factor(fraction.op(1)));
+        auto [numerator_out, numerator_in] = square_root_parts_of_product(factor_if_quick(fraction.op(0)));
+        auto [denominator_out, denominator_in] = square_root_parts_of_product(factor_if_quick(fraction.op(1)));
         // √(a/b) = √(a b)/b
         return {numerator_out / (denominator_out * denominator_in), numerator_in * denominator_in};
     } catch (const budget_exceeded&) {
@@ -477,7 +478,7 @@ std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
     if (!trigonometric) {
         if (!g.info(GiNaC::info_flags::polynomial))
             return {};
-        ex factored = GiNaC::factor(g);
+        ex factored = factor_if_quick(g);
         exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
         for (ex factor : factors) {
             if (is_a<GiNaC::power>(factor))
@@ -525,7 +526,7 @@ std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
     a = a.expand();
     b = b.expand();
     auto roots_in_cos = [&](const ex& polynomial) {
-        ex factored = GiNaC::factor(polynomial);
+        ex factored = factor_if_quick(polynomial);
         exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
         for (ex factor : factors) {
             if (is_a<GiNaC::power>(factor))
@@ -750,7 +751,7 @@ std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const 
         ex quotient;
         if (!GiNaC::divide(c, content, quotient))
             quotient = (c / content).normal();
-        c = GiNaC::factor(flip * quotient);
+        c = factor_if_quick(flip * quotient);
     }
     return coefficients;
 }
@@ -809,7 +810,7 @@ std::optional<std::vector<closed_root>> closed_form_roots(const std::vector<ex>&
     ex polynomial = 0;
     for (std::size_t k = 0; k < coefficients.size(); ++k)
         polynomial += coefficients[k] * GiNaC::pow(w, static_cast<int>(k));
-    ex factored = GiNaC::factor(polynomial.expand());
+    ex factored = factor_if_quick(polynomial.expand());
     exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
     std::vector<closed_root> roots;
     for (const ex& f : factors) {
@@ -998,8 +999,8 @@ std::optional<ex> clean_normal_coordinate(const model& scene, const std::vector<
         ex scale_squared = simplify_with(weights[pivot] * weights[pivot] / norm_squared, r);
         // the squares come out of the root; the numeric denominator stays in it
         ex fraction = tidy(scale_squared).numer_denom();
-        auto [numerator_out, numerator_in] = square_root_parts_of_product(GiNaC::factor(fraction.op(0)));
-        auto [denominator_out, denominator_in] = square_root_parts_of_product(GiNaC::factor(fraction.op(1)));
+        auto [numerator_out, numerator_in] = square_root_parts_of_product(factor_if_quick(fraction.op(0)));
+        auto [denominator_out, denominator_in] = square_root_parts_of_product(factor_if_quick(fraction.op(1)));
         ex scale = numerator_out / denominator_out * GiNaC::sqrt(r.restore(numerator_in)) /
                    GiNaC::sqrt(r.restore(denominator_in));
         return *sign * r.restore(scale) * combination;

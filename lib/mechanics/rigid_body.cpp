@@ -1,6 +1,7 @@
 /** @file rigid_body.cpp
  *  Inertia by integration, Euler's equations, torque-free motion, Poinsot. */
 #include "mechanics/rigid_body.h"
+#include "mechanics/factor.h"
 
 #include "mechanics/lagrangian.h"
 
@@ -199,7 +200,7 @@ GiNaC::ex with_pi_as_symbol(const GiNaC::ex& e, GiNaC::ex (*f)(const GiNaC::ex&)
 }
 
 GiNaC::ex normal_of(const GiNaC::ex& e) { return e.normal(); }
-GiNaC::ex factor_of(const GiNaC::ex& e) { return GiNaC::factor(e.normal()); }
+GiNaC::ex factor_of(const GiNaC::ex& e) { return factor_if_quick(e.normal()); }
 
 GiNaC::ex integrate_over(GiNaC::ex f, const std::vector<integration_limit>& limits)
 {

@@ -4,6 +4,7 @@
  *  harmonics), a compact grouping by velocities and accelerations, and the
  *  simplifier that chains them with the rewrite rules. */
 #include "mechanics/simplify.h"
+#include "mechanics/factor.h"
 #include "mechanics/budget.h"
 
 #include "mechanics/harmonic.h"
@@ -661,7 +662,7 @@ ex factor_polynomial(const ex& p)
     exmap replacements;
     const ex rational = p.to_rational(replacements);
     const ex parts = rational.numer_denom();
-    const ex factored = GiNaC::factor(parts.op(0)) / GiNaC::factor(parts.op(1));
+    const ex factored = factor_if_quick(parts.op(0)) / factor_if_quick(parts.op(1));
     return factored.subs(replacements, GiNaC::subs_options::no_pattern);
 }
 

@@ -7,6 +7,7 @@
  *  scalar type with numeric_limits and math functions that cl_F does not provide,
  *  and no multiprecision eigensolver is among the project's dependencies. */
 #include "numeric/normal_modes.h"
+#include "mechanics/factor.h"
 
 #include "scene/source.h"
 
@@ -42,7 +43,7 @@ GiNaC::ex tidy(const GiNaC::ex& e)
     GiNaC::ex n = GiNaC::normal(e);
     try {
         GiNaC::ex nd = n.numer_denom();
-        return GiNaC::factor(nd.op(0)) / GiNaC::factor(nd.op(1));
+        return factor_if_quick(nd.op(0)) / factor_if_quick(nd.op(1));
     } catch (const std::exception&) {
         return n;
     }

@@ -1,0 +1,35 @@
+/** @file factor.cpp
+ *  GiNaC's factor() where it is quick (see factor.h). */
+#include "mechanics/factor.h"
+
+#include "mechanics/budget.h"
+
+#include <cstdlib>
+
+namespace lagrange {
+
+bool too_large_to_factor(const GiNaC::ex& e)
+{
+    if (GiNaC::is_a<GiNaC::power>(e)) {
+        const GiNaC::ex& exponent = e.op(1);
+        if (GiNaC::is_a<GiNaC::numeric>(exponent)) {
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(exponent);
+            if (n.is_integer() && GiNaC::abs(n) > factor_max_degree)
+                return true;
+        }
+    }
+    for (const GiNaC::ex& operand : e)
+        if (too_large_to_factor(operand))
+            return true;
+    return false;
+}
+
+GiNaC::ex factor_if_quick(const GiNaC::ex& e)
+{
+    budget_check();
+    if (too_large_to_factor(e))
+        return e;
+    return GiNaC::factor(e);
+}
+
+} // namespace lagrange
