@@ -11,10 +11,11 @@ launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="${CXX:-clang++}" \
   -DLAGRANGE_SANITIZE=ON -DLAGRANGE_BUILD_BENCH=OFF "${launcher[@]}" >&2
-cmake --build build-asan -j "$(nproc)" --target lagrange_tests lagrange_cli >&2
+# The suppressions apply to the build too: it runs lagrange_tests to list its tests.
 export LAGRANGE_TEST_TIME_SCALE=10 # the CLI tests' time limits: sanitized code is slower
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:malloc_context_size=10"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="suppressions=$PWD/scripts/sanitizers/ubsan.supp:print_stacktrace=1:halt_on_error=1"
+cmake --build build-asan -j "$(nproc)" --target lagrange_tests lagrange_cli >&2
 cd build-asan
 ctest --output-on-failure -j "$(nproc)" "$@"
