@@ -17,25 +17,6 @@ namespace lagrange {
 
 namespace {
 
-term_order velocity_order(const model& scene)
-{
-    term_order order;
-    order.groups.emplace_back();
-    for (const coordinate& c : scene.coordinates)
-        order.groups.back().push_back(c.velocity);
-    return order;
-}
-
-term_order equation_order(const model& scene)
-{
-    term_order order;
-    order.groups.emplace_back();
-    for (const coordinate& c : scene.coordinates)
-        order.groups.back().push_back(c.acceleration);
-    order.groups.push_back(velocity_order(scene).groups[0]);
-    return order;
-}
-
 std::string seconds(double s)
 {
     char buffer[32];
@@ -177,14 +158,6 @@ std::string latex_display(const std::string& lhs, const std::vector<std::string>
         joined += (joined.empty() ? "" : " ") + term;
     return "\\[\\resizebox{\\linewidth}{!}{$\\displaystyle " + (lhs.empty() ? "" : lhs + " " + relation + " ") + joined + rhs +
            "$}\\]\n";
-}
-
-term_order omega_order(const analysis& result)
-{
-    term_order order;
-    if (result.characteristic)
-        order.groups.push_back({result.characteristic->omega});
-    return order;
 }
 
 /// `coordinate = value` pairs of a point, in coordinate order.
@@ -687,6 +660,33 @@ void write_json(std::ostream& out, const analysis& result, const document_option
 }
 
 // The building blocks above, shared with the report (lib/output/report.cpp).
+term_order velocity_order(const model& scene)
+{
+    term_order order;
+    order.groups.emplace_back();
+    for (const coordinate& c : scene.coordinates)
+        order.groups.back().push_back(c.velocity);
+    return order;
+}
+
+term_order equation_order(const model& scene)
+{
+    term_order order;
+    order.groups.emplace_back();
+    for (const coordinate& c : scene.coordinates)
+        order.groups.back().push_back(c.acceleration);
+    order.groups.push_back(velocity_order(scene).groups[0]);
+    return order;
+}
+
+term_order omega_order(const analysis& result)
+{
+    term_order order;
+    if (result.characteristic)
+        order.groups.push_back({result.characteristic->omega});
+    return order;
+}
+
 std::string latex_text(const std::string& text) { return latex_escape(text); }
 std::size_t latex_math_width(const std::string& latex) { return latex_width(latex); }
 std::string latex_equation(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs,

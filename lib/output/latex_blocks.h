@@ -1,6 +1,10 @@
 /** @file latex_blocks.h
- *  The LaTeX building blocks of document.cpp, shared with the report. */
+ *  The building blocks of document.cpp shared with the report: LaTeX pieces and the
+ *  term orders the printers use. */
 #pragma once
+
+#include "engine/analysis.h"
+#include "output/print.h"
 
 #include <ginac/ginac.h>
 
@@ -22,5 +26,12 @@ std::string latex_equation(const std::string& lhs, const std::vector<std::string
 
 /// A pmatrix of the entries, printed deterministically.
 std::string latex_matrix(const GiNaC::matrix& m);
+
+/// Terms ordered by the coordinates' velocities.
+term_order velocity_order(const model& scene);
+/// Terms ordered by the accelerations, then the velocities (equations of motion).
+term_order equation_order(const model& scene);
+/// Terms ordered by powers of ω (the characteristic polynomial's variable), if there is one.
+term_order omega_order(const analysis& result);
 
 } // namespace lagrange

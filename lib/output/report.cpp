@@ -23,33 +23,6 @@ namespace lagrange {
 
 namespace {
 
-term_order velocity_order(const model& scene)
-{
-    term_order order;
-    order.groups.emplace_back();
-    for (const coordinate& c : scene.coordinates)
-        order.groups.back().push_back(c.velocity);
-    return order;
-}
-
-term_order equation_order(const model& scene)
-{
-    term_order order;
-    order.groups.emplace_back();
-    for (const coordinate& c : scene.coordinates)
-        order.groups.back().push_back(c.acceleration);
-    order.groups.push_back(velocity_order(scene).groups[0]);
-    return order;
-}
-
-term_order omega_order(const analysis& result)
-{
-    term_order order;
-    if (result.characteristic)
-        order.groups.push_back({result.characteristic->omega});
-    return order;
-}
-
 bool wants(const analysis& result, product p) { return result.wanted.count(p) > 0; }
 
 std::string index(std::size_t k) { return "_{" + std::to_string(k + 1) + "}"; }
