@@ -810,6 +810,20 @@ void diagnose_point(const model& scene, const linearization_result& linear, cons
 
 } // namespace
 
+void read_value_point(const model& scene, const value_point& point, std::vector<double>& values,
+                      std::vector<bool>& given)
+{
+    for (const auto& [name, value] : point.values)
+        for (std::size_t k = 0; k < scene.parameters.size(); ++k)
+            if (scene.parameters[k].name == name) {
+                GiNaC::ex number = value.evalf();
+                if (!GiNaC::is_a<GiNaC::numeric>(number) || !GiNaC::ex_to<GiNaC::numeric>(number).is_real())
+                    throw computation_error("the value of parameter `" + name + "` is not a real number");
+                values[k] = GiNaC::ex_to<GiNaC::numeric>(number).to_double();
+                given[k] = true;
+            }
+}
+
 std::vector<numeric_modes> numeric_normal_modes(const model& scene, const linearization_result& linear)
 {
     std::vector<std::string> names;
@@ -820,15 +834,7 @@ std::vector<numeric_modes> numeric_normal_modes(const model& scene, const linear
     for (const value_point& point : scene.values) {
         std::vector<double> values(scene.parameters.size(), std::nan(""));
         std::vector<bool> given(scene.parameters.size(), false);
-        for (const auto& [name, value] : point.values)
-            for (std::size_t k = 0; k < scene.parameters.size(); ++k)
-                if (scene.parameters[k].name == name) {
-                    GiNaC::ex number = value.evalf();
-                    if (!GiNaC::is_a<GiNaC::numeric>(number) || !GiNaC::ex_to<GiNaC::numeric>(number).is_real())
-                        throw computation_error("the value of parameter `" + name + "` is not a real number");
-                    values[k] = GiNaC::ex_to<GiNaC::numeric>(number).to_double();
-                    given[k] = true;
-                }
+        read_value_point(scene, point, values, given);
         for (std::size_t k = 0; k < scene.parameters.size(); ++k)
             if (compiled.uses(k) && !given[k])
                 throw computation_error("no value for parameter `" + scene.parameters[k].name + "` at the values on line "

@@ -104,6 +104,12 @@ private:
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> symmetric_solver_;
 };
 
+/// Sets values[k] (and given[k]) for every parameter k that `point` gives a value to,
+/// in the order of scene.parameters. Throws computation_error when a value is not a
+/// real number.
+void read_value_point(const model& scene, const value_point& point, std::vector<double>& values,
+                      std::vector<bool>& given);
+
 /// Numeric modes at every `values` point of the scene. Throws computation_error
 /// with the cause (singular kinetic matrix at these values, a parameter without a
 /// value, ...) rather than returning NaN or infinity.

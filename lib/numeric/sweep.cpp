@@ -123,15 +123,7 @@ void sweep_numeric_modes(const model& scene, const linearization_result& linear,
     std::vector<double> values(scene.parameters.size(), std::nan(""));
     std::vector<bool> given(scene.parameters.size(), false);
     for (const value_point& point : scene.values)
-        for (const auto& [name, value] : point.values)
-            for (std::size_t k = 0; k < scene.parameters.size(); ++k)
-                if (scene.parameters[k].name == name) {
-                    GiNaC::ex number = value.evalf();
-                    if (!GiNaC::is_a<GiNaC::numeric>(number) || !GiNaC::ex_to<GiNaC::numeric>(number).is_real())
-                        throw computation_error("the value of parameter `" + name + "` is not a real number");
-                    values[k] = GiNaC::ex_to<GiNaC::numeric>(number).to_double();
-                    given[k] = true;
-                }
+        read_value_point(scene, point, values, given);
     for (const sweep_axis& a : axes)
         given[a.parameter] = true;
     for (std::size_t k = 0; k < scene.parameters.size(); ++k)
