@@ -149,8 +149,8 @@ void compiled_motion::solve(double t, const double* x, double* acceleration, boo
         symbols_[2 * n_] = t;
         symbols = symbols_.data();
     }
-    if (rhs_native_)
-        rhs_native_(symbols, outputs_.data());
+    if (native_.rhs)
+        native_.rhs(symbols, outputs_.data());
     else
         rhs_program_.run(symbols, scratch_, outputs_.data());
     if (n_ == 2 && !keep_factor) {
@@ -186,8 +186,8 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
     solve(t, x, acceleration.data(), true); // leaves the LDLᵀ factor of M in factor_
     std::copy(x, x + 2 * n_, symbols_.begin());
     symbols_[2 * n_] = t;
-    if (jacobian_native_)
-        jacobian_native_(symbols_.data(), jacobian_outputs_.data());
+    if (native_.jacobian)
+        native_.jacobian(symbols_.data(), jacobian_outputs_.data());
     else
         jacobian_program_.run(symbols_.data(), scratch_, jacobian_outputs_.data());
     const double* mass_derivative = jacobian_outputs_.data();        // [k][i][j]: ∂M_ij/∂q_k
@@ -214,17 +214,7 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
     }
 }
 
-bool compiled_motion::compile_native()
-{
-    if (native_)
-        return true;
-    native_ = native_module::compile({&rhs_program_, &jacobian_program_});
-    if (!native_)
-        return false;
-    rhs_native_ = native_->get(0);
-    jacobian_native_ = native_->get(1);
-    return true;
-}
+bool compiled_motion::compile_native() { return native_.compile(rhs_program_, jacobian_program_); }
 
 double compiled_motion::energy(const double* x) const
 {

@@ -57,9 +57,7 @@ private:
     expression_program rhs_program_;      ///< M (row-major, n²) then f (n)
     expression_program jacobian_program_; ///< ∂M/∂q_k (n³), ∂f/∂q (n²), ∂f/∂q̇ (n²)
     expression_program energy_program_;
-    std::shared_ptr<native_module> native_;
-    native_module::function rhs_native_ = nullptr;
-    native_module::function jacobian_native_ = nullptr;
+    native_rhs native_;
     mutable std::vector<double> scratch_, symbols_, outputs_, factor_, jacobian_outputs_;
 };
 

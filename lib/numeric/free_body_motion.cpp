@@ -158,8 +158,8 @@ free_body_motion::free_body_motion(const model& scene, const std::map<std::strin
 void free_body_motion::rhs(double t, const double* w, double* dwdt) const
 {
     const double symbols[4] = {w[0], w[1], w[2], t};
-    if (rhs_native_)
-        rhs_native_(symbols, dwdt);
+    if (native_.rhs)
+        native_.rhs(symbols, dwdt);
     else
         rhs_program_.run(symbols, scratch_, dwdt);
 }
@@ -167,8 +167,8 @@ void free_body_motion::rhs(double t, const double* w, double* dwdt) const
 void free_body_motion::jacobian(double t, const double* w, double* out) const
 {
     const double symbols[4] = {w[0], w[1], w[2], t};
-    if (jacobian_native_)
-        jacobian_native_(symbols, out);
+    if (native_.jacobian)
+        native_.jacobian(symbols, out);
     else
         jacobian_program_.run(symbols, scratch_, out);
 }
@@ -183,17 +183,7 @@ std::array<double, 3> free_body_motion::exact(double t) const
     return w;
 }
 
-bool free_body_motion::compile_native()
-{
-    if (native_)
-        return true;
-    native_ = native_module::compile({&rhs_program_, &jacobian_program_});
-    if (!native_)
-        return false;
-    rhs_native_ = native_->get(0);
-    jacobian_native_ = native_->get(1);
-    return true;
-}
+bool free_body_motion::compile_native() { return native_.compile(rhs_program_, jacobian_program_); }
 
 ode_system free_body_motion::system() const
 {

@@ -63,9 +63,7 @@ private:
     expression_program symmetric_program_; ///< ω(t) of the symmetric body's closed form, symbol t
     expression_program rhs_program_;       ///< ω̇ (3), symbols w1 w2 w3 t
     expression_program jacobian_program_;  ///< ∂ω̇_i/∂ω_j (9, row-major)
-    std::shared_ptr<native_module> native_;
-    native_module::function rhs_native_ = nullptr;
-    native_module::function jacobian_native_ = nullptr;
+    native_rhs native_;
     mutable std::vector<double> scratch_;
 };
 

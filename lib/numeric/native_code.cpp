@@ -105,6 +105,19 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     return module; // the folder and its files go; the loaded library stays mapped
 }
 
+bool native_rhs::compile(const expression_program& rhs_program, const expression_program& jacobian_program)
+{
+    if (module)
+        return true;
+    std::shared_ptr<native_module> compiled = native_module::compile({&rhs_program, &jacobian_program});
+    if (!compiled)
+        return false;
+    module = std::move(compiled);
+    rhs = module->get(0);
+    jacobian = module->get(1);
+    return true;
+}
+
 native_module::~native_module()
 {
     if (handle_)

@@ -35,4 +35,16 @@ private:
     std::vector<function> functions_;
 };
 
+/// A right-hand side and its Jacobian compiled together, as the motion classes use
+/// them; both null (the interpreter runs) until compile() succeeds.
+struct native_rhs {
+    std::shared_ptr<native_module> module;
+    native_module::function rhs = nullptr;
+    native_module::function jacobian = nullptr;
+
+    /// Compiles both programs once; false when there is no compiler (nothing changes).
+    bool compile(const expression_program& rhs_program, const expression_program& jacobian_program);
+    explicit operator bool() const { return static_cast<bool>(module); }
+};
+
 } // namespace lagrange
