@@ -312,21 +312,19 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         system.exact = normal_mode_solution(system, n, x0);
     // The error of a run: against the exact solution when there is one, else against a
     // run of the same method (or rkf78/BDF for implicit midpoint) at a 1000 times tighter
-    // tolerance, when asked for and when time allows.
-    auto estimate = [&](const trajectory& run, double tolerance, double seconds_left) {
-        result.error_estimate.reset();
-        if (run.exact_error) {
-            result.error_estimate = run.exact_error;
-            result.error_basis = exact_basis;
-            return;
-        }
+    // tolerance, when asked for and when time allows. No value: the basis says why.
+    struct error_estimate {
+        std::optional<double> value;
+        std::string basis;
+    };
+    auto estimate = [&](const trajectory& run, double tolerance, double seconds_left) -> error_estimate {
+        if (run.exact_error)
+            return {run.exact_error, exact_basis};
         if (!settings.estimate_error)
-            return;
-        if (run.seconds > seconds_left / 4) {
-            result.error_basis = "no estimate: the run took " + number(run.seconds) +
-                                 " s, and a reference run at a tighter tolerance would exceed the time limit";
-            return;
-        }
+            return {};
+        if (run.seconds > seconds_left / 4)
+            return {std::nullopt, "no estimate: the run took " + number(run.seconds) +
+                                      " s, and a reference run at a tighter tolerance would exceed the time limit"};
         integration_options fine = options;
         fine.progress = nullptr;
         fine.tolerance = std::max(tolerance / 1000, 1e-14);
@@ -336,53 +334,52 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
                                    : method;
         try {
             trajectory check = integrate(system, reference, x0, fine);
-            result.error_estimate = trajectory_difference(run, check);
-            result.error_basis = "against " + to_string(reference) + " at tolerance " + number(fine.tolerance);
+            return {trajectory_difference(run, check),
+                    "against " + to_string(reference) + " at tolerance " + number(fine.tolerance)};
         } catch (const computation_error& error) {
-            result.error_basis = std::string("no estimate: the reference run stopped: ") + error.what();
+            return {std::nullopt, std::string("no estimate: the reference run stopped: ") + error.what()};
         }
     };
-    auto started = std::chrono::steady_clock::now();
-    auto seconds_left = [&] {
-        std::chrono::duration<double> spent = std::chrono::steady_clock::now() - started;
-        return settings.max_seconds - spent.count();
+    const auto started = std::chrono::steady_clock::now();
+    auto seconds_spent = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     };
     result.run = integrate(system, method, x0, options);
     result.run_tolerance = options.tolerance;
-    estimate(result.run, options.tolerance, seconds_left());
+    error_estimate first = estimate(result.run, options.tolerance, settings.max_seconds - seconds_spent());
+    result.error_estimate = first.value;
+    result.error_basis = first.basis;
 
     // The tolerance is a target for the global error, and each method's per-step setting
     // is derived from it by a factor measured on a model problem (ode.cpp). When the
     // estimate says a run missed it (long runs collect more error), run again tighter by
     // the factor it missed by, twice over, at most twice, while the time limit allows a
-    // run and its reference at the tighter setting (about 5 times the first).
+    // run and its reference at the tighter setting (about 5 times the first). A tighter
+    // run without an estimate of its own leaves the last estimated one standing.
     for (int retry = 0; retry < 2; ++retry) {
         if (!result.error_estimate || *result.error_estimate <= result.tolerance)
             break;
         double factor = std::max(2 * *result.error_estimate / result.tolerance, 4.0);
         double tighter = result.run_tolerance / factor;
-        std::chrono::duration<double> spent = std::chrono::steady_clock::now() - started;
-        if (tighter < 1e-14 || 5 * spent.count() > seconds_left())
+        double spent = seconds_spent(), left = settings.max_seconds - spent;
+        if (tighter < 1e-14 || 5 * spent > left)
             break;
         integration_options again = options;
         again.tolerance = tighter;
-        again.max_seconds = std::max(1.0, seconds_left());
+        again.max_seconds = std::max(1.0, left);
         try {
             trajectory run = integrate(system, method, x0, again);
-            std::optional<double> before = result.error_estimate;
-            std::string before_basis = result.error_basis;
-            estimate(run, tighter, seconds_left());
-            if (!result.error_estimate) { // no estimate for the tighter run: keep the first
-                result.error_estimate = before;
-                result.error_basis = before_basis;
+            error_estimate next = estimate(run, tighter, settings.max_seconds - seconds_spent());
+            if (!next.value)
                 break;
-            }
             if (!result.missed_error)
-                result.missed_error = before;
+                result.missed_error = result.error_estimate;
             result.run = std::move(run);
             result.run_tolerance = tighter;
+            result.error_estimate = next.value;
+            result.error_basis = next.basis;
         } catch (const computation_error&) {
-            break; // the first run stands, with its estimate
+            break; // the last run stands, with its estimate
         }
     }
 
