@@ -143,6 +143,23 @@ struct run_options {
 };
 
 /// `--sweep`: the numeric modes over a grid, streamed to the output as computed.
+/// The analysis as text, LaTeX or JSON, to `path` (or standard output). Run times only
+/// with `timings`: the output stays the same run to run.
+void write_document(const lagrange::analysis& result, const std::string& format, bool timings,
+                    const std::string& path)
+{
+    lagrange::document_options document;
+    document.timings = timings;
+    std::ostringstream out;
+    if (format == "json")
+        lagrange::write_json(out, result, document);
+    else if (format == "latex")
+        lagrange::write_latex(out, result, document);
+    else
+        lagrange::write_text(out, result, document);
+    write_output(path, out.str());
+}
+
 int sweep_scene(const run_options& options)
 {
     if (options.format == "latex")
@@ -176,16 +193,7 @@ int analyze_scene(const run_options& options)
     if (!options.want.empty())
         wanted = lagrange::parse_want_list(options.want);
     lagrange::analysis result = lagrange::analyze(scene, wanted, options.budget);
-    lagrange::document_options document;
-    document.timings = options.timings;
-    std::ostringstream out;
-    if (options.format == "json")
-        lagrange::write_json(out, result, document);
-    else if (options.format == "latex")
-        lagrange::write_latex(out, result, document);
-    else
-        lagrange::write_text(out, result, document);
-    write_output(options.output, out.str());
+    write_document(result, options.format, options.timings, options.output);
     return exit_ok;
 }
 
@@ -252,16 +260,7 @@ int motion_command(const motion_options& options, lagrange::product wanted)
         if (result.workprecision)
             lagrange::plot_workprecision(options.plot, *result.workprecision, title);
     }
-    lagrange::document_options document;
-    document.timings = options.timings; // run times only when asked: the output stays the same run to run
-    std::ostringstream out;
-    if (options.format == "json")
-        lagrange::write_json(out, result, document);
-    else if (options.format == "latex")
-        lagrange::write_latex(out, result, document);
-    else
-        lagrange::write_text(out, result, document);
-    write_output(options.output, out.str());
+    write_document(result, options.format, options.timings, options.output);
     return exit_ok;
 }
 
