@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -32,6 +33,26 @@ std::string read_file(const std::string& path)
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
+}
+
+std::vector<std::string> example_scenes()
+{
+    std::vector<std::string> scenes;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(LAGRANGE_SOURCE_DIR) + "/examples"))
+        if (entry.path().extension() == ".lag")
+            scenes.push_back(entry.path().string());
+    std::sort(scenes.begin(), scenes.end());
+    return scenes;
+}
+
+std::string compile_latex(const std::string& tex, int& status)
+{
+    std::string directory = tex.substr(0, tex.rfind('/'));
+    std::string name = tex.substr(tex.rfind('/') + 1);
+    std::string command = "cd " + directory + " && pdflatex -interaction=nonstopmode -halt-on-error " + name +
+                          " >/dev/null 2>&1";
+    status = std::system(command.c_str());
+    return read_file(tex.substr(0, tex.size() - 4) + ".log");
 }
 
 std::string temporary_file(const std::string& name, const std::string& content)

@@ -1,8 +1,10 @@
 /** @file cli_runner.h
- *  Runs the `lagrange` program built alongside the tests and captures what it prints. */
+ *  Runs the `lagrange` program built alongside the tests and captures what it prints;
+ *  the files the CLI, example and report tests share. */
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace lagrange_test {
 
@@ -21,5 +23,11 @@ cli_result run_cli(const std::string& args, const std::string& input = "", int l
 std::string temporary_file(const std::string& name, const std::string& content);
 
 std::string read_file(const std::string& path);
+
+/// The scenes in examples/, as paths, sorted.
+std::vector<std::string> example_scenes();
+
+/// Compiles `tex` (a path) with pdflatex in its folder; returns pdflatex's log.
+std::string compile_latex(const std::string& tex, int& status);
 
 } // namespace lagrange_test

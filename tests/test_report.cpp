@@ -25,30 +25,9 @@ using namespace lagrange_test;
 
 namespace {
 
-std::vector<std::string> example_scenes()
-{
-    std::vector<std::string> scenes;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(LAGRANGE_SOURCE_DIR) + "/examples"))
-        if (entry.path().extension() == ".lag")
-            scenes.push_back(entry.path().string());
-    std::sort(scenes.begin(), scenes.end());
-    return scenes;
-}
-
 bool have(const char* program)
 {
     return std::system((std::string("command -v ") + program + " >/dev/null 2>&1").c_str()) == 0;
-}
-
-/// Compiles `tex` (a path) with pdflatex in its folder; returns pdflatex's log.
-std::string compile_latex(const std::string& tex, int& status)
-{
-    std::string directory = tex.substr(0, tex.rfind('/'));
-    std::string name = tex.substr(tex.rfind('/') + 1);
-    std::string command = "cd " + directory + " && pdflatex -interaction=nonstopmode -halt-on-error " + name +
-                          " >/dev/null 2>&1";
-    status = std::system(command.c_str());
-    return read_file(tex.substr(0, tex.size() - 4) + ".log");
 }
 
 /// The widest overfull \hbox of a pdflatex log, in pt (0 if none).
