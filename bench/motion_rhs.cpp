@@ -70,52 +70,43 @@ int main(int argc, char** argv)
         difference = std::max(difference, std::abs(out[i] - reference[i]));
 
     volatile double sink = 0;
-    double hand = nanoseconds_per_call(
-        [&](long n) {
-            for (long k = 0; k < n; ++k) {
-                x[0] = 1e-9 * static_cast<double>(k & 1023);
-                x[1] = -0.2 + 1e-9 * static_cast<double>(k & 511);
-                hand_written(x.data(), out.data());
-                sink = sink + out[2];
-            }
+    // Every timed loop varies the inputs on each call (nothing can be hoisted out of it)
+    // and keeps one output of `evaluate`.
+    auto timed = [&](auto evaluate, long count) {
+        return nanoseconds_per_call(
+            [&](long n) {
+                for (long k = 0; k < n; ++k) {
+                    x[0] = 1e-9 * static_cast<double>(k & 1023);
+                    x[1] = -0.2 + 1e-9 * static_cast<double>(k & 511);
+                    sink = sink + evaluate();
+                }
+            },
+            count);
+    };
+    auto right_hand_side = [&] {
+        motion.rhs(0, x.data(), out.data());
+        return out[2];
+    };
+    double hand = timed(
+        [&] {
+            hand_written(x.data(), out.data());
+            return out[2];
         },
         calls);
-    double compiled = nanoseconds_per_call(
-        [&](long n) {
-            for (long k = 0; k < n; ++k) {
-                x[0] = 1e-9 * static_cast<double>(k & 1023);
-                x[1] = -0.2 + 1e-9 * static_cast<double>(k & 511);
-                motion.rhs(0, x.data(), out.data());
-                sink = sink + out[2];
-            }
-        },
-        calls);
+    double compiled = timed(right_hand_side, calls);
     auto compile_start = clock_type::now();
     bool native = motion.compile_native();
     std::chrono::duration<double> compile_time = clock_type::now() - compile_start;
-    double compiled_native = nanoseconds_per_call(
-        [&](long n) {
-            for (long k = 0; k < n; ++k) {
-                x[0] = 1e-9 * static_cast<double>(k & 1023);
-                x[1] = -0.2 + 1e-9 * static_cast<double>(k & 511);
-                motion.rhs(0, x.data(), out.data());
-                sink = sink + out[2];
-            }
-        },
-        calls);
+    double compiled_native = timed(right_hand_side, calls);
     motion.rhs(0, x.data(), out.data());
     hand_written(x.data(), reference.data());
     for (int i = 0; i < 4; ++i)
         difference = std::max(difference, std::abs(out[i] - reference[i]));
     std::vector<double> jac(16);
-    double jacobian = nanoseconds_per_call(
-        [&](long n) {
-            for (long k = 0; k < n; ++k) {
-                x[0] = 1e-9 * static_cast<double>(k & 1023);
-                x[1] = -0.2 + 1e-9 * static_cast<double>(k & 511);
-                motion.jacobian(0, x.data(), jac.data());
-                sink = sink + jac[9];
-            }
+    double jacobian = timed(
+        [&] {
+            motion.jacobian(0, x.data(), jac.data());
+            return jac[9];
         },
         calls / 4);
     std::printf("double pendulum right-hand side (best of 5 runs of %ld calls)\n", calls);
