@@ -1,5 +1,6 @@
 /** @file scene_helpers.h
- *  Helpers shared by the front-end tests: load a scene from text, expect an error at a position. */
+ *  Helpers shared by the tests: load a scene from text, expect an error at a position,
+ *  find a scene's symbol by name. */
 #pragma once
 
 #include "scene/lower.h"
@@ -33,5 +34,27 @@ inline void require_error(const std::string& text, int line, int column, const s
 }
 
 const std::string header = "parameters m g l\ncoordinates q\n";
+
+/// The symbol of a parameter, coordinate (`q`, `q_dot`, `q_ddot`), the ratio or time `t`.
+inline GiNaC::ex symbol_of(const lagrange::model& scene, const std::string& name)
+{
+    for (const lagrange::parameter& p : scene.parameters)
+        if (p.name == name)
+            return p.symbol;
+    for (const lagrange::coordinate& c : scene.coordinates) {
+        if (c.name == name)
+            return c.position;
+        if (c.name + "_dot" == name)
+            return c.velocity;
+        if (c.name + "_ddot" == name)
+            return c.acceleration;
+    }
+    if (scene.ratio && scene.ratio->name == name)
+        return scene.ratio->symbol;
+    if (name == "t")
+        return scene.time;
+    FAIL("no symbol " << name);
+    return 0;
+}
 
 } // namespace lagrange_test

@@ -4,32 +4,17 @@
 #include "mechanics/lagrangian.h"
 #include "mechanics/simplify.h"
 #include "scene/lower.h"
+#include "scene_helpers.h"
 
 #include <catch2/catch.hpp>
 
 #include <random>
 
 using namespace lagrange;
+using lagrange_test::load;
+using lagrange_test::symbol_of;
 
 namespace {
-
-model load(const std::string& text) { return load_model(source_text("test.lag", text)); }
-
-GiNaC::ex symbol_of(const model& scene, const std::string& name)
-{
-    for (const parameter& p : scene.parameters)
-        if (p.name == name)
-            return p.symbol;
-    for (const coordinate& c : scene.coordinates) {
-        if (c.name == name) return c.position;
-        if (c.name + "_dot" == name) return c.velocity;
-        if (c.name + "_ddot" == name) return c.acceleration;
-    }
-    if (name == "t")
-        return scene.time;
-    FAIL("no symbol " << name);
-    return 0;
-}
 
 const char* double_pendulum_points = R"(parameters M m l g
 coordinates theta phi

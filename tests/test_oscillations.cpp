@@ -4,6 +4,7 @@
 #include "mechanics/oscillations.h"
 #include "mechanics/lagrangian.h"
 #include "scene/lower.h"
+#include "scene_helpers.h"
 
 #include <catch2/catch.hpp>
 
@@ -11,26 +12,12 @@
 #include <cmath>
 
 using namespace lagrange;
+using lagrange_test::load;
+using lagrange_test::symbol_of;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
 namespace {
-
-model load(const std::string& text) { return load_model(source_text("test.lag", text)); }
-
-GiNaC::ex symbol_of(const model& scene, const std::string& name)
-{
-    for (const parameter& p : scene.parameters)
-        if (p.name == name)
-            return p.symbol;
-    for (const coordinate& c : scene.coordinates)
-        if (c.name == name)
-            return c.position;
-    if (scene.ratio && scene.ratio->name == name)
-        return scene.ratio->symbol;
-    FAIL("no symbol " << name);
-    return 0;
-}
 
 /// Everything the stages give for a scene, about the chosen equilibrium.
 struct analysed {

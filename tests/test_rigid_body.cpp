@@ -35,17 +35,6 @@ loaded_body body_of(const std::string& line)
     return b;
 }
 
-GiNaC::ex symbol_of(const model& scene, const std::string& name)
-{
-    for (const parameter& p : scene.parameters)
-        if (p.name == name)
-            return p.symbol;
-    for (const coordinate& c : scene.coordinates)
-        if (c.name == name)
-            return c.position;
-    throw std::invalid_argument(name);
-}
-
 bool same(const GiNaC::ex& a, const GiNaC::ex& b) { return (a - b).expand().normal().is_zero(); }
 
 /// Checks the tensor is diag(d) exactly.
