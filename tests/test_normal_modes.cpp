@@ -265,12 +265,17 @@ TEST_CASE("normal modes: batch evaluation gives the same numbers as one point at
     compiled_modes single(system.parameters, system.linear), batch(system.parameters, system.linear);
     std::mt19937 random(77);
     std::uniform_real_distribution<double> scale(0.3, 3.0);
-    const std::size_t count = 201;
+    const std::size_t sweep = 201;
     std::vector<double> points;
-    for (std::size_t k = 0; k < count; ++k) {
-        double rho = std::pow(10.0, -16.0 + 32.0 * static_cast<double>(k) / (count - 1)), M = scale(random);
+    for (std::size_t k = 0; k < sweep; ++k) {
+        double rho = std::pow(10.0, -16.0 + 32.0 * static_cast<double>(k) / (sweep - 1)), M = scale(random);
         points.insert(points.end(), {M, rho * M, scale(random), 9.81});
     }
+    // Points the a priori bounds leave to the running bound (g < 0: a negative parameter) or
+    // to high precision (a value under- or overflows), amid ordinary ones in one block.
+    points.insert(points.end(), {1, 0.5, 1, -9.81, 1, 1e-120, 1, 9.81, 2, 1, 1.5, 9.81, 1e150, 1e-150, 1, 9.81,
+                                 1.5, 1e-3, 0.5, 9.81, 1, 2, 3, -1, 1e-20, 1e-20, 1, 9.81, 3, 0.2, 1, 9.81});
+    const std::size_t count = points.size() / 4;
     std::vector<double> w2(2 * count), w(2 * count), error(2 * count), shapes(4 * count);
     std::vector<modes_method> used(count);
     batch.evaluate_batch(count, points.data(), 4, w2.data(), w.data(), error.data(), shapes.data(), used.data());
@@ -285,10 +290,17 @@ TEST_CASE("normal modes: batch evaluation gives the same numbers as one point at
         }
         for (std::size_t i = 0; i < 4; ++i)
             CHECK(shapes[4 * k + i] == r.modes.data()[i]);
+        if (points[4 * k + 3] < 0)
+            continue; // unstable: ω² < 0
         auto [slow, fast] = pendulum_reference(points[4 * k], points[4 * k + 1], points[4 * k + 2], 9.81);
         CHECK(relative_error(w[2 * k], slow) <= 4e-16);
         CHECK(relative_error(w[2 * k + 1], fast) <= 4e-16);
     }
+    CHECK(used[sweep] == modes_method::closed_form);        // g < 0: the running bound
+    CHECK(used[sweep + 1] == modes_method::high_precision); // m³ underflows
+    // 4 l⁶ (M + m) g² m³ underflows at M = 1e150, m = 1e-150 too, but high precision's bound
+    // (up to 120 digits) is far from the tolerance there: the closed form stands
+    CHECK(used[sweep + 3] == modes_method::closed_form);
 
     GiNaC::possymbol m1("m1"), m2("m2"), m3("m3"), m4("m4"), k1("k1"), k2("k2"), k3("k3"), k4("k4"), k5("k5");
     std::vector<lagrange::parameter> parameters{{"m1", m1}, {"m2", m2}, {"m3", m3}, {"m4", m4}, {"k1", k1},
@@ -305,6 +317,40 @@ TEST_CASE("normal modes: batch evaluation gives the same numbers as one point at
         for (std::size_t i = 0; i < 4; ++i)
             CHECK(cw[4 * k + i] == r.omega[i]);
     }
+}
+
+TEST_CASE("normal modes: the closed form's a priori bounds, and where they hand over", "[normal_modes]")
+{
+    // At m/M = 1e-120 the discriminant 4 l⁶ (M + m) g² m³ underflows; in double-double the
+    // two roots then come out equal and the modes would be an arbitrary T-orthonormal pair.
+    // The a priori check sends the point to high precision, whose modes are the true
+    // ones, (∓√ρ, 1)-shaped: |a₁/a₂| = √ρ = 1e-60.
+    pendulum system;
+    compiled_modes modes(system.parameters, system.linear);
+    const double point[] = {1, 1e-120, 1, 9.81};
+    lagrange::numeric_modes r = modes.evaluate(point);
+    CHECK(r.method == lagrange::to_string(modes_method::high_precision));
+    for (int i = 0; i < 2; ++i) {
+        INFO("mode " << i);
+        CHECK(std::abs(r.modes(0, i) / r.modes(1, i)) == Approx(1e-60).epsilon(1e-8));
+    }
+    CHECK(r.modes(0, 0) * r.modes(0, 1) < 0); // one in phase, one in antiphase
+    auto [slow, fast] = pendulum_reference(1, 1e-120, 1, 9.81);
+    CHECK(relative_error(r.omega[0], slow) <= 4e-16);
+    CHECK(relative_error(r.omega[1], fast) <= 4e-16);
+    // Where the bounds hold, the reported error bounds the actual one and is the rounding of
+    // ω to double alone, give or take its 1e-6 safety factor and a few 1e-30.
+    const double ordinary[] = {1.3, 0.01, 0.7, 9.81};
+    lagrange::numeric_modes o = modes.evaluate(ordinary);
+    CHECK(o.method == lagrange::to_string(modes_method::closed_form));
+    auto [s2, f2] = pendulum_reference(1.3, 0.01, 0.7, 9.81);
+    CHECK(relative_error(o.omega[0], s2) <= o.error[0]);
+    CHECK(relative_error(o.omega[1], f2) <= o.error[1]);
+    CHECK(o.error[0] <= 0x1p-53);
+    CHECK(o.error[0] <= relative_error(o.omega[0], s2) * (1 + 2e-6) + 1e-28);
+    // An overflowing entry is still an error (the point is not quietly handed on).
+    const double huge[] = {1e200, 1, 1e200, 1};
+    CHECK_THROWS_AS(modes.evaluate(huge), lagrange::computation_error);
 }
 
 TEST_CASE("normal modes: the FMA and portable kernels give the same numbers bit for bit", "[normal_modes]")

@@ -295,6 +295,143 @@ number integer_power(number base, int exponent)
     return result;
 }
 
+// ---- a priori bounds (see a_priori_bound) ----
+
+/// Rounds a bound up past the rounding of its own computation in double.
+double up(double relative) { return relative * (1 + 0x1p-30); }
+
+/// (1 + r)·(1 + double_double_step) − 1, the bound after one more rounding.
+double one_more_rounding(double r) { return up(r + double_double_step + r * double_double_step); }
+
+a_priori_bound unknown_bound() { return {}; }
+
+a_priori_bound bound_of(const instruction& i, const std::vector<a_priori_bound>& slots)
+{
+    using op = instruction::code;
+    const a_priori_bound& a = slots[static_cast<std::size_t>(i.first)];
+    switch (i.op) {
+    case op::constant:
+        // value + value_low is within 2^-106 of the exact constant when value_low ≠ 0
+        return {true, i.value > 0 ? 1 : (i.value < 0 ? -1 : 0), i.value_error == 0 ? 0.0 : double_double_step};
+    case op::symbol: return {true, 1, 0};
+    case op::neg: return a.known ? a_priori_bound{true, -a.sign, a.relative} : unknown_bound();
+    case op::add: {
+        const a_priori_bound& b = slots[static_cast<std::size_t>(i.second)];
+        if (!a.known || !b.known || a.sign * b.sign < 0)
+            return unknown_bound(); // terms of opposite sign may cancel
+        return {true, a.sign != 0 ? a.sign : b.sign, one_more_rounding(std::max(a.relative, b.relative))};
+    }
+    case op::mul: {
+        const a_priori_bound& b = slots[static_cast<std::size_t>(i.second)];
+        if (!a.known || !b.known)
+            return unknown_bound();
+        if (a.sign == 0 || b.sign == 0)
+            return {true, 0, 0};
+        return {true, a.sign * b.sign, one_more_rounding(up(a.relative + b.relative + a.relative * b.relative))};
+    }
+    case op::recip:
+        // 1/(x(1 + θ)) = (1/x)(1 − θ/(1 + θ)), |θ/(1 + θ)| ≤ r/(1 − r)
+        if (!a.known || a.sign == 0 || a.relative > 0.5)
+            return unknown_bound();
+        return {true, a.sign, one_more_rounding(up(a.relative / (1 - a.relative)))};
+    case op::square_root:
+        // |√(1 + θ) − 1| ≤ r/(2 − r) for |θ| ≤ r ≤ 1
+        if (!a.known || a.sign < 0 || a.relative > 0.5)
+            return unknown_bound();
+        return {true, a.sign, one_more_rounding(up(a.relative / (2 - a.relative)))};
+    case op::integer_power: {
+        if (!a.known)
+            return unknown_bound();
+        int n = i.second;
+        if (a.sign == 0)
+            return {true, 0, 0};
+        // x^n (1 + θ)^n, then one rounding per product of integer_power()
+        int products = 0;
+        for (int e = n, first = 1; e > 0; e >>= 1) {
+            if (e & 1) {
+                products += first ? 0 : 1;
+                first = 0;
+            }
+            if (e > 1)
+                ++products;
+        }
+        double r = up(std::expm1(n * std::log1p(a.relative)));
+        for (int k = 0; k < products; ++k)
+            r = one_more_rounding(r);
+        return {true, n % 2 == 0 ? 1 : a.sign, r};
+    }
+    case op::real_power:
+    case op::sine:
+    case op::cosine:
+    case op::exponential:
+    case op::logarithm: return unknown_bound();
+    }
+    return unknown_bound();
+}
+
+/// Where each slot's magnitude lies when every symbol lies in [2^−t, 2^t]:
+/// log2 |value| ∈ [low − low_slope·t, high + high_slope·t] (slots of known sign only).
+/// From it, the widest such t in which no slot can leave [a_priori_smallest,
+/// a_priori_largest]: inside it, checking the symbols is enough.
+struct magnitude {
+    double low = 0, low_slope = 0, high = 0, high_slope = 0;
+};
+
+double widest_safe_exponent(const std::vector<instruction>& code, const std::vector<a_priori_bound>& bounds)
+{
+    using op = instruction::code;
+    constexpr double margin = 0x1p-10; // bits, per step: roundings and the relative errors
+    const double floor_bits = std::log2(a_priori_smallest) + 8, ceiling_bits = std::log2(a_priori_largest) - 8;
+    std::vector<magnitude> m(code.size());
+    double widest = 1000;
+    for (std::size_t k = 0; k < code.size(); ++k) {
+        const instruction& i = code[k];
+        if (!bounds[k].known || bounds[k].sign == 0)
+            continue; // never checked (zeros are exact; unknown slots have no bound to keep)
+        const magnitude& a = m[static_cast<std::size_t>(i.first)];
+        const magnitude& b = m[static_cast<std::size_t>(i.second)];
+        magnitude& r = m[k];
+        switch (i.op) {
+        case op::constant: r.low = r.high = std::log2(std::abs(i.value)); break;
+        case op::symbol: r.low_slope = r.high_slope = 1; break;
+        case op::neg: r = a; break;
+        case op::add: {
+            // terms of one sign: at least either term, at most twice the larger
+            const bool a_zero = bounds[static_cast<std::size_t>(i.first)].sign == 0;
+            const bool b_zero = bounds[static_cast<std::size_t>(i.second)].sign == 0;
+            if (a_zero || b_zero) {
+                r = a_zero ? b : a;
+                break;
+            }
+            const magnitude& lower = a.low_slope < b.low_slope || (a.low_slope == b.low_slope && a.low > b.low) ? a : b;
+            r.low = lower.low;
+            r.low_slope = lower.low_slope;
+            r.high = std::max(a.high, b.high) + 1;
+            r.high_slope = std::max(a.high_slope, b.high_slope);
+            break;
+        }
+        case op::mul: r = {a.low + b.low, a.low_slope + b.low_slope, a.high + b.high, a.high_slope + b.high_slope}; break;
+        case op::recip: r = {-a.high, a.high_slope, -a.low, a.low_slope}; break;
+        case op::square_root: r = {a.low / 2, a.low_slope / 2, a.high / 2, a.high_slope / 2}; break;
+        case op::integer_power: {
+            double n = i.second;
+            r = {a.low * n, a.low_slope * n, a.high * n, a.high_slope * n};
+            break;
+        }
+        default: return 0; // not of known sign (unreachable)
+        }
+        r.low -= margin;
+        r.high += margin;
+        if (r.low < floor_bits || r.high > ceiling_bits)
+            return 0; // out of range at t = 0 already: check every point in full
+        if (r.low_slope > 0)
+            widest = std::min(widest, (r.low - floor_bits) / r.low_slope);
+        if (r.high_slope > 0)
+            widest = std::min(widest, (ceiling_bits - r.high) / r.high_slope);
+    }
+    return std::floor(widest);
+}
+
 template <class number>
 number from_symbol(double v);
 template <>
@@ -334,37 +471,43 @@ void interpret(const std::vector<instruction>& code, const std::vector<int>& out
 }
 
 /// One instruction over a batch of points, structure of arrays: slot k holds
-/// [hi × B, lo × B, value × B, error × B]. All B lanes are computed (lanes past the
-/// batch's count hold zeros or harmless garbage, never read back), so the loops have a
-/// fixed trip count and no branches, and vectorize.
-template <bool fused>
+/// [hi × B, lo × B, value × B, error × B] (`bounded`), or [hi × B, lo × B] (double-double
+/// only). All B lanes are computed (lanes past the batch's count hold zeros or harmless
+/// garbage, never read back), so the loops have a fixed trip count and no branches, and
+/// vectorize.
+template <bool fused, bool bounded>
 LAGRANGE_ALWAYS_INLINE inline void step_batch(const instruction& i, std::size_t k, const double* symbols,
                                               std::size_t stride, std::size_t count, double* s)
 {
     using op = instruction::code;
     constexpr std::size_t B = expression_program::batch_size;
-    double* __restrict th = s + k * 4 * B;
+    constexpr std::size_t width = bounded ? 4 * B : 2 * B;
+    constexpr std::size_t run = bounded ? 2 * B : 0; // offset of the bounded run (itself when none)
+    double* __restrict th = s + k * width;
     double* __restrict tl = th + B;
-    double* __restrict tv = th + 2 * B;
-    double* __restrict te = th + 3 * B;
-    const double* __restrict ah = s + static_cast<std::size_t>(i.first) * 4 * B;
+    double* __restrict tv = th + run;
+    double* __restrict te = th + run + (bounded ? B : 0);
+    const double* __restrict ah = s + static_cast<std::size_t>(i.first) * width;
     const double* __restrict al = ah + B;
-    const double* __restrict av = ah + 2 * B;
-    const double* __restrict ae = ah + 3 * B;
-    const double* __restrict bh = s + static_cast<std::size_t>(i.second) * 4 * B;
+    const double* __restrict av = ah + run;
+    const double* __restrict ae = ah + run + (bounded ? B : 0);
+    const double* __restrict bh = s + static_cast<std::size_t>(i.second) * width;
     const double* __restrict bl = bh + B;
-    const double* __restrict bv = bh + 2 * B;
-    const double* __restrict be = bh + 3 * B;
-    auto put = [&](std::size_t j, double_double x, bounded_double y) {
+    const double* __restrict bv = bh + run;
+    const double* __restrict be = bh + run + (bounded ? B : 0);
+    auto put = [&](std::size_t j, double_double x, bounded_double y) LAGRANGE_ALWAYS_INLINE {
         th[j] = x.hi;
         tl[j] = x.lo;
-        tv[j] = y.value;
-        te[j] = y.error;
+        if constexpr (bounded) {
+            tv[j] = y.value;
+            te[j] = y.error;
+        }
     };
+    // without the bounded run, its steps are dead code and compiled away
     auto A = [&](std::size_t j) { return double_double{ah[j], al[j]}; };
-    auto Ab = [&](std::size_t j) { return bounded_double{av[j], ae[j]}; };
+    auto Ab = [&](std::size_t j) { return bounded ? bounded_double{av[j], ae[j]} : bounded_double{}; };
     auto Bd = [&](std::size_t j) { return double_double{bh[j], bl[j]}; };
-    auto Bb = [&](std::size_t j) { return bounded_double{bv[j], be[j]}; };
+    auto Bb = [&](std::size_t j) { return bounded ? bounded_double{bv[j], be[j]} : bounded_double{}; };
     switch (i.op) {
     case op::constant: {
         double_double c = make_constant(i, static_cast<double_double*>(nullptr));
@@ -399,25 +542,47 @@ LAGRANGE_ALWAYS_INLINE inline void step_batch(const instruction& i, std::size_t 
         for (std::size_t j = 0; j < B; ++j)
             put(j, dd::sqrt<fused>(A(j)), running::sqrt(Ab(j)));
         break;
-    case op::integer_power:
-        // the same products, in the same order, as integer_power()
-        if (i.second == 2)
-            for (std::size_t j = 0; j < B; ++j)
-                put(j, dd::mul<fused>(A(j), A(j)), running::mul(Ab(j), Ab(j)));
-        else if (i.second == 3)
-            for (std::size_t j = 0; j < B; ++j)
-                put(j, dd::mul<fused>(A(j), dd::mul<fused>(A(j), A(j))),
-                    running::mul(Ab(j), running::mul(Ab(j), Ab(j))));
-        else if (i.second == 4)
-            for (std::size_t j = 0; j < B; ++j) {
-                double_double x = dd::mul<fused>(A(j), A(j));
-                bounded_double y = running::mul(Ab(j), Ab(j));
-                put(j, dd::mul<fused>(x, x), running::mul(y, y));
+    case op::integer_power: {
+        // integer_power()'s products in its order (binary powering), in lockstep over the
+        // lanes: the exponent is the same for all, so each product is one vectorized loop.
+        // The running power is kept in the target slot, the squared base here.
+        alignas(64) double xh[B], xl[B], xv[B], xe[B];
+        auto X = [&](std::size_t j) { return double_double{xh[j], xl[j]}; };
+        auto Xb = [&](std::size_t j) { return bounded_double{xv[j], xe[j]}; };
+        auto T = [&](std::size_t j) { return double_double{th[j], tl[j]}; };
+        auto Tb = [&](std::size_t j) { return bounded ? bounded_double{tv[j], te[j]} : bounded_double{}; };
+        for (std::size_t j = 0; j < B; ++j) {
+            xh[j] = ah[j];
+            xl[j] = al[j];
+            xv[j] = bounded ? av[j] : 0.0;
+            xe[j] = bounded ? ae[j] : 0.0;
+        }
+        bool first = true;
+        for (int e = i.second; e > 0;) {
+            if (e & 1) {
+                if (first)
+                    for (std::size_t j = 0; j < B; ++j)
+                        put(j, X(j), Xb(j));
+                else
+                    for (std::size_t j = 0; j < B; ++j)
+                        put(j, dd::mul<fused>(T(j), X(j)), running::mul(Tb(j), Xb(j)));
+                first = false;
             }
-        else
-            for (std::size_t j = 0; j < B; ++j)
-                put(j, integer_power(A(j), i.second), integer_power(Ab(j), i.second));
+            e >>= 1;
+            if (e > 0)
+                for (std::size_t j = 0; j < B; ++j) {
+                    double_double x = dd::mul<fused>(X(j), X(j));
+                    bounded_double y = running::mul(Xb(j), Xb(j));
+                    xh[j] = x.hi;
+                    xl[j] = x.lo;
+                    if constexpr (bounded) {
+                        xv[j] = y.value;
+                        xe[j] = y.error;
+                    }
+                }
+        }
         break;
+    }
     // not algebraic: double accuracy only, no vectorization needed
     case op::real_power:
         for (std::size_t j = 0; j < B; ++j)
@@ -430,25 +595,27 @@ LAGRANGE_ALWAYS_INLINE inline void step_batch(const instruction& i, std::size_t 
     }
 }
 
-template <bool fused>
+template <bool fused, bool bounded>
 LAGRANGE_ALWAYS_INLINE inline void run_batch_kernel(const std::vector<instruction>& code, const double* symbols,
                                                     std::size_t stride, std::size_t count, double* s)
 {
     for (std::size_t k = 0; k < code.size(); ++k)
-        step_batch<fused>(code[k], k, symbols, stride, count, s);
+        step_batch<fused, bounded>(code[k], k, symbols, stride, count, s);
 }
 
+template <bool bounded>
 void run_batch_portable(const std::vector<instruction>& code, const double* symbols, std::size_t stride,
                         std::size_t count, double* s)
 {
-    run_batch_kernel<false>(code, symbols, stride, count, s);
+    run_batch_kernel<false, bounded>(code, symbols, stride, count, s);
 }
 
 #if LAGRANGE_HAVE_FMA_KERNELS
+template <bool bounded>
 LAGRANGE_FMA_TARGET void run_batch_fma(const std::vector<instruction>& code, const double* symbols,
                                        std::size_t stride, std::size_t count, double* s)
 {
-    run_batch_kernel<true>(code, symbols, stride, count, s);
+    run_batch_kernel<true, bounded>(code, symbols, stride, count, s);
 }
 #endif
 
@@ -468,6 +635,19 @@ std::atomic<bool>& fma_switch()
     return on;
 }
 
+template <bool bounded>
+void run_batch_any(const std::vector<instruction>& code, const double* symbols, std::size_t stride,
+                   std::size_t count, double* s)
+{
+#if LAGRANGE_HAVE_FMA_KERNELS
+    if (fma_kernels()) {
+        run_batch_fma<bounded>(code, symbols, stride, count, s);
+        return;
+    }
+#endif
+    run_batch_portable<bounded>(code, symbols, stride, count, s);
+}
+
 } // namespace
 
 bool fma_kernels() { return fma_switch().load(std::memory_order_relaxed); }
@@ -480,16 +660,72 @@ void expression_program::run_batch(const double* symbols, std::size_t stride, st
     count = std::min(count, B);
     scratch.resize(code_.size() * 4 * B);
     double* s = scratch.data();
-#if LAGRANGE_HAVE_FMA_KERNELS
-    if (fma_kernels())
-        run_batch_fma(code_, symbols, stride, count, s);
-    else
-#endif
-        run_batch_portable(code_, symbols, stride, count, s);
+    run_batch_any<true>(code_, symbols, stride, count, s);
     for (std::size_t k = 0; k < outputs_.size(); ++k) {
         const double* from = s + static_cast<std::size_t>(outputs_[k]) * 4 * B;
         std::copy(from, from + 4 * B, out + k * 4 * B);
     }
+}
+
+void expression_program::run_batch_a_priori(const double* symbols, std::size_t stride, std::size_t count,
+                                            std::vector<double>& scratch, double* out,
+                                            a_priori_status* status) const
+{
+    constexpr std::size_t B = batch_size;
+    count = std::min(count, B);
+    scratch.resize(code_.size() * 2 * B);
+    double* s = scratch.data();
+    run_batch_any<false>(code_, symbols, stride, count, s);
+    // symbols in the range where no slot can leave its own (widest_safe_exponent): all hold
+    bool all_safe = true;
+    for (std::size_t j = 0; j < count; ++j)
+        for (int i : symbols_read_) {
+            double x = symbols[j * stride + static_cast<std::size_t>(i)];
+            all_safe = all_safe && x >= safe_symbols_.first && x <= safe_symbols_.second;
+        }
+    if (all_safe)
+        std::fill(status, status + count, a_priori_status::holds);
+    else
+        check_block(s, count, status);
+    for (std::size_t k = 0; k < outputs_.size(); ++k) {
+        const double* from = s + static_cast<std::size_t>(outputs_[k]) * 2 * B;
+        double* to = out + k * 4 * B;
+        const a_priori_bound& b = output_bounds_[k];
+        for (std::size_t j = 0; j < B; ++j) {
+            to[j] = from[j];
+            to[B + j] = from[B + j];
+            to[2 * B + j] = from[j];
+            to[3 * B + j] = b.known ? b.relative * std::abs(from[j]) : HUGE_VAL;
+        }
+    }
+}
+
+void expression_program::check_block(const double* s, std::size_t count, a_priori_status* status) const
+{
+    constexpr std::size_t B = batch_size;
+    // every slot of known sign: symbols positive, values in range (NaN, from a symbol or an
+    // overflow inside a double-double step, included); flags per lane, so that it vectorizes
+    alignas(64) double not_positive[B], out_of_range[B];
+    std::fill(not_positive, not_positive + B, 0.0);
+    std::fill(out_of_range, out_of_range + B, 0.0);
+    for (std::size_t k = 0; k < code_.size(); ++k) {
+        const a_priori_bound& b = bounds_[k];
+        if (!b.known || b.sign == 0 || code_[k].op == instruction::code::constant)
+            continue;
+        const double* __restrict hi = s + k * 2 * B;
+        const double sign = b.sign;
+        if (code_[k].op == instruction::code::symbol)
+            for (std::size_t j = 0; j < B; ++j)
+                not_positive[j] = hi[j] > 0 ? not_positive[j] : 1.0;
+        for (std::size_t j = 0; j < B; ++j) {
+            double v = sign * hi[j];
+            out_of_range[j] = (v >= a_priori_smallest) & (v <= a_priori_largest) ? out_of_range[j] : 1.0;
+        }
+    }
+    for (std::size_t j = 0; j < count; ++j)
+        status[j] = not_positive[j] != 0   ? a_priori_status::not_positive
+                    : out_of_range[j] != 0 ? a_priori_status::out_of_range
+                                           : a_priori_status::holds;
 }
 
 expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols)
@@ -497,6 +733,32 @@ expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, co
     compiler build(symbols, code_, algebraic_);
     for (const GiNaC::ex& e : outputs)
         outputs_.push_back(build.slot(e));
+    for (const instruction& i : code_)
+        bounds_.push_back(bound_of(i, bounds_));
+    for (int slot : outputs_)
+        output_bounds_.push_back(bounds_[static_cast<std::size_t>(slot)]);
+    for (std::size_t k = 0; k < code_.size(); ++k)
+        if (code_[k].op == instruction::code::symbol && bounds_[k].known)
+            symbols_read_.push_back(code_[k].first);
+    double widest = widest_safe_exponent(code_, bounds_);
+    safe_symbols_ = {std::exp2(-widest), std::exp2(widest)};
+}
+
+expression_program::a_priori_status expression_program::check_a_priori(
+    const std::vector<double_double>& scratch) const
+{
+    a_priori_status status = a_priori_status::holds;
+    for (std::size_t k = 0; k < code_.size() && k < scratch.size(); ++k) {
+        const a_priori_bound& b = bounds_[k];
+        if (!b.known || b.sign == 0 || code_[k].op == instruction::code::constant)
+            continue;
+        double v = b.sign * scratch[k].hi;
+        if (code_[k].op == instruction::code::symbol && !(v > 0))
+            return a_priori_status::not_positive;
+        if (!(v >= a_priori_smallest && v <= a_priori_largest))
+            status = a_priori_status::out_of_range;
+    }
+    return status;
 }
 
 std::string expression_program::c_source(const std::string& name) const

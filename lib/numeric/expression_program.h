@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lagrange {
@@ -67,6 +68,27 @@ struct instruction {
     double value_error = 0; ///< constant: |exact − value|
 };
 
+/// What is known of a slot before it runs, where every symbol it reads is positive: its
+/// sign, and a bound on the relative error of its double-double value. Both are known for
+/// slots built from symbols and constants by +, ×, ÷, √ and integer powers without adding
+/// terms of opposite sign (subtraction-free: no cancellation, so every step only adds its
+/// own rounding). Each double-double step is taken to round within 2^-99 relative, eight
+/// times the published bounds of these algorithms (at most 16u², Joldes–Muller–Popescu,
+/// ACM TOMS 44(2), 2017), and as long as no value under- or overflows (run_batch_a_priori
+/// checks that on every point).
+struct a_priori_bound {
+    bool known = false;
+    int sign = 0;         ///< −1, 0 or +1, where known
+    double relative = 0;  ///< |computed − exact| ≤ relative·|exact|, where known
+};
+
+/// One rounding of a double-double step in a priori bounds (see a_priori_bound).
+constexpr double double_double_step = 0x1p-99;
+/// Below this a double-double's low part loses bits to underflow; above it Dekker's
+/// splitting or a product overflows. A priori bounds need every value in between.
+constexpr double a_priori_smallest = 0x1p-968;
+constexpr double a_priori_largest = 0x1p995;
+
 /// Compiled from `outputs`, a list of expressions in `symbols`; throws
 /// std::invalid_argument naming any other symbol or unsupported function.
 class expression_program {
@@ -100,10 +122,34 @@ public:
     void run_batch(const double* symbols, std::size_t stride, std::size_t count, std::vector<double>& scratch,
                    double* out) const;
 
+    /// A priori bound of output k (see a_priori_bound).
+    const a_priori_bound& output_bound(std::size_t k) const { return output_bounds_[k]; }
+    /// What a point's run says of the a priori bounds.
+    enum class a_priori_status : unsigned char {
+        holds,        ///< every symbol positive, every slot of known sign in range
+        not_positive, ///< a symbol the program reads is not positive (or not a number): no a priori bounds
+        out_of_range, ///< a slot of known sign left [2^-968, 2^995]: under- or overflow, no bounds at all
+    };
+    /// As run_batch, in double-double only: no running bound is computed. In its place
+    /// output k's bounded run holds hi and its a priori absolute bound,
+    /// output_bound(k).relative·|hi| (+inf where not known). status[j] says whether point
+    /// j's bounds hold.
+    void run_batch_a_priori(const double* symbols, std::size_t stride, std::size_t count,
+                            std::vector<double>& scratch, double* out, a_priori_status* status) const;
+    /// The status of a point from the slots a double-double run() left in `scratch`.
+    a_priori_status check_a_priori(const std::vector<double_double>& scratch) const;
+
 private:
     std::vector<instruction> code_;
     std::vector<int> outputs_; ///< slot of each output
     bool algebraic_ = true;
+    std::vector<a_priori_bound> bounds_;        ///< of each slot
+    std::vector<a_priori_bound> output_bounds_; ///< of each output
+    std::vector<int> symbols_read_;             ///< by the program
+    /// Symbols all in this range: no slot of known sign can leave its range (a fast check).
+    std::pair<double, double> safe_symbols_{HUGE_VAL, 0};
+    /// status of each point from every slot of known sign (the full check)
+    void check_block(const double* slots, std::size_t count, a_priori_status* status) const;
 };
 
 // ---- double-double arithmetic (Dekker, Knuth; Hida–Li–Bailey's QD formulas) ----
@@ -162,25 +208,33 @@ LAGRANGE_ALWAYS_INLINE inline double_double mul(double_double a, double_double b
     return quick_two_sum(p.hi, p.lo);
 }
 
+/// a/b: DWDivDW2 of Joldes, Muller and Popescu (ACM TOMS 44(2), 2017, Algorithm 17),
+/// relative error within 15u² + 56u³, with their DWTimesFP1 for b·q (the same bits with
+/// and without FMA: its only product error term is exact either way). Two divisions and a
+/// dozen additions, against three divisions and three accurate sums of QD's formula.
 template <bool fused = false>
 LAGRANGE_ALWAYS_INLINE inline double_double div(double_double a, double_double b)
 {
-    double q1 = a.hi / b.hi;
-    double_double r = sub(a, mul<fused>(b, {q1, 0}));
-    double q2 = r.hi / b.hi;
-    r = sub(r, mul<fused>(b, {q2, 0}));
-    double q3 = r.hi / b.hi;
-    return add(quick_two_sum(q1, q2), {q3, 0});
+    double th = a.hi / b.hi;
+    double_double c = two_prod<fused>(b.hi, th); // (rh, rl) = b·th, DWTimesFP1
+    double_double t = quick_two_sum(c.hi, b.lo * th);
+    double_double r = quick_two_sum(t.hi, t.lo + c.lo);
+    double delta = (a.hi - r.hi) + (a.lo - r.lo);
+    return quick_two_sum(th, delta / b.hi);
 }
 
 /// √a; for a ≤ 0 the double √a.hi (+0 for ±0). Branch free, so that loops over points
 /// vectorize.
+/// SQRTDWtoDW (Lefèvre, Louvet, Muller, Picot, Rideau, IEEE TC 2023), relative error
+/// within 25/8 u²: a.hi − s² is exactly representable (s the rounded √a.hi), so both
+/// subtractions below are exact, with FMA or without.
 template <bool fused = false>
 LAGRANGE_ALWAYS_INLINE inline double_double sqrt(double_double a)
 {
     double s = std::sqrt(a.hi);
-    double_double r = sub(a, two_prod<fused>(s, s));
-    double_double result = quick_two_sum(s, r.hi / (2 * s));
+    double_double p = two_prod<fused>(s, s);
+    double r = ((a.hi - p.hi) - p.lo) + a.lo;
+    double_double result = quick_two_sum(s, r / (2 * s));
     bool positive = a.hi > 0;
     return {positive ? result.hi : (a.hi == 0 ? 0.0 : s), positive ? result.lo : 0.0};
 }

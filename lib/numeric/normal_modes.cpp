@@ -133,6 +133,7 @@ compiled_modes::compiled_modes(const std::vector<parameter>& parameters, const l
             closed_ = expression_program({a, b, c, disc, T(0, 0), T(0, 1), T(1, 1), V(0, 0), V(0, 1), V(1, 1)},
                                          symbols);
             has_closed_ = true;
+            set_a_priori_bounds();
         }
 
         // T = L Lᵀ symbolically, where that stays small (diagonal T, or few coordinates).
@@ -199,6 +200,35 @@ compiled_modes::compiled_modes(const std::vector<parameter>& parameters, const l
     }
 }
 
+void compiled_modes::set_a_priori_bounds()
+{
+    auto bound = [&](std::size_t k) { return closed_.output_bound(k); };
+    if (!closed_.algebraic())
+        return;
+    for (std::size_t k : {0, 1, 2, 3, 4, 6})
+        if (!bound(k).known)
+            return;
+    if (bound(3).sign < 0)
+        return;
+    // the closed form's steps (pair_frequencies), each with one more double-double rounding
+    auto rounded = [](double r) {
+        return (r + double_double_step + r * double_double_step) * (1 + 0x1p-30);
+    };
+    double a = bound(0).relative, b = bound(1).relative, c = bound(2).relative, d = bound(3).relative;
+    double root = rounded(d / (2 - d));                // √(b² − 4ac)
+    double q = rounded(std::max(b, root));             // b ± √…, both terms of one sign
+    if (q >= 0.5 || a >= 0.5)
+        return;
+    double big = rounded((q + a) / (1 - a));           // q / 2a  ((1 + q)/(1 − a) − 1)
+    double small = rounded((c + q) / (1 - q));         // 2c / q
+    double w = std::max(big, small);
+    if (w >= 0.5)
+        return;
+    omega_bound_ = w / (1 + std::sqrt(1 - w)) * (1 + 0x1p-30); // |√(1 + θ) − 1| for |θ| ≤ w
+    zero_root_ = bound(2).sign == 0;
+    a_priori_ = true;
+}
+
 void compiled_modes::not_positive_definite(std::size_t coordinate) const
 {
     if (coordinate < size_) {
@@ -242,15 +272,53 @@ modes_method compiled_modes::evaluate(const double* p, double* w2, double* w, do
     case modes_method::automatic: break;
     }
     modes_method used;
-    if (has_closed_ && closed_.algebraic())
+    bool distrusted = false;
+    if (has_closed_ && closed_.algebraic()) {
         used = closed_form(p, w2, w, error, modes);
-    else if (has_normalized_)
+        distrusted = out_of_range_;
+    } else if (has_normalized_) {
         used = normalized(p, w2, w, error, modes);
-    else
+    } else {
         used = generalized(p, w2, w, error, modes);
-    for (int digits = options_.digits; !acceptable(error, w2) && digits <= 4 * options_.digits; digits *= 2)
-        used = high_precision(p, w2, w, error, modes, digits);
-    return used;
+    }
+    return refine(p, used, distrusted, w2, w, error, modes);
+}
+
+modes_method compiled_modes::refine(const double* p, modes_method route, bool distrusted, double* w2, double* w,
+                                    double* error, double* modes)
+{
+    if (!distrusted) {
+        for (int digits = options_.digits; !acceptable(error, w2) && digits <= 4 * options_.digits; digits *= 2)
+            route = high_precision(p, w2, w, error, modes, digits);
+        return route;
+    }
+    const std::size_t n = size_;
+    std::vector<double> kept(w2, w2 + n);
+    kept.insert(kept.end(), w, w + n);
+    kept.insert(kept.end(), error, error + n);
+    if (modes)
+        kept.insert(kept.end(), modes, modes + n * n);
+    modes_method high = route;
+    for (int digits = options_.digits; digits <= 4 * options_.digits; digits *= 2) {
+        high = high_precision(p, w2, w, error, modes, digits);
+        if (acceptable(error, w2))
+            return high;
+    }
+    // high precision does not reach the tolerance either: the smaller of the two errors
+    auto worst = [&](const double* e) {
+        double largest = 0;
+        for (std::size_t k = 0; k < n; ++k)
+            largest = std::isfinite(e[k]) ? std::max(largest, e[k]) : HUGE_VAL;
+        return largest;
+    };
+    if (!(worst(kept.data() + 2 * n) < worst(error)))
+        return high;
+    std::copy(kept.begin(), kept.begin() + n, w2);
+    std::copy(kept.begin() + n, kept.begin() + 2 * n, w);
+    std::copy(kept.begin() + 2 * n, kept.begin() + 3 * n, error);
+    if (modes)
+        std::copy(kept.begin() + 3 * n, kept.end(), modes);
+    return route;
 }
 
 numeric_modes compiled_modes::evaluate(const double* p)
@@ -272,11 +340,20 @@ numeric_modes compiled_modes::evaluate(const double* p)
 
 modes_method compiled_modes::closed_form(const double* p, double* w2, double* w, double* error, double* modes)
 {
+    using status = expression_program::a_priori_status;
     std::size_t outputs = closed_.output_count();
     out_bounded_.resize(outputs);
     out_dd_.resize(outputs);
-    closed_.run(p, scratch_bounded_, out_bounded_.data());
     closed_.run(p, scratch_dd_, out_dd_.data());
+    status checked = a_priori_ ? closed_.check_a_priori(scratch_dd_) : status::not_positive;
+    bool a_priori = checked == status::holds;
+    if (a_priori) // as run_batch_a_priori leaves them
+        for (std::size_t k = 0; k < outputs; ++k) {
+            const a_priori_bound& b = closed_.output_bound(k);
+            out_bounded_[k] = {out_dd_[k].hi, b.known ? b.relative * std::abs(out_dd_[k].hi) : HUGE_VAL};
+        }
+    else
+        closed_.run(p, scratch_bounded_, out_bounded_.data());
     // the batch layout with one lane, so that one point and a batch run the same code
     double packed[4 * 16];
     for (std::size_t k = 0; k < outputs; ++k) {
@@ -285,7 +362,8 @@ modes_method compiled_modes::closed_form(const double* p, double* w2, double* w,
         packed[4 * k + 2] = out_bounded_[k].value;
         packed[4 * k + 3] = out_bounded_[k].error;
     }
-    closed_form_block(packed, 1, 1, w2, w, error, modes);
+    out_of_range_ = checked == status::out_of_range;
+    closed_form_block(packed, 1, 1, a_priori, nullptr, w2, w, error, modes);
     return modes_method::closed_form;
 }
 
@@ -303,18 +381,40 @@ void compiled_modes::evaluate_batch(std::size_t count, const double* p, std::siz
     }
     constexpr std::size_t B = expression_program::batch_size;
     batch_out_.resize(closed_.output_count() * 4 * B);
+    batch_status_.resize(B);
+    batch_use_.resize(B);
     for (std::size_t start = 0; start < count; start += B) {
         std::size_t block = std::min(B, count - start);
-        closed_.run_batch(p + start * stride, stride, block, batch_scratch_, batch_out_.data());
+        const double* p_block = p + start * stride;
         double* modes_block = modes ? modes + start * n * n : nullptr;
-        closed_form_block(batch_out_.data(), B, block, w2 + start * n, w + start * n, error + start * n, modes_block);
+        bool running_bounds = !a_priori_;
+        if (a_priori_) {
+            // a priori bounds where every parameter is positive (nearly always), the running
+            // bound on the other lanes, as closed_form() decides for one point
+            using status = expression_program::a_priori_status;
+            closed_.run_batch_a_priori(p_block, stride, block, batch_scratch_, batch_out_.data(),
+                                       batch_status_.data());
+            for (std::size_t j = 0; j < block; ++j) {
+                batch_use_[j] = batch_status_[j] == status::holds ? lane_use::use : lane_use::skip;
+                running_bounds = running_bounds || batch_status_[j] != status::holds;
+            }
+            closed_form_block(batch_out_.data(), B, block, true, batch_use_.data(), w2 + start * n,
+                              w + start * n, error + start * n, modes_block);
+            for (std::size_t j = 0; j < block; ++j)
+                batch_use_[j] = batch_status_[j] == status::holds ? lane_use::skip : lane_use::use;
+        }
+        if (running_bounds) {
+            closed_.run_batch(p_block, stride, block, batch_scratch_, batch_out_.data());
+            closed_form_block(batch_out_.data(), B, block, false, a_priori_ ? batch_use_.data() : nullptr,
+                              w2 + start * n, w + start * n, error + start * n, modes_block);
+        }
         for (std::size_t j = 0; j < block; ++j) {
             std::size_t point = start + j;
             double *w2_j = w2 + point * n, *w_j = w + point * n, *error_j = error + point * n;
             double* modes_j = modes ? modes + point * n * n : nullptr;
-            modes_method route = modes_method::closed_form;
-            for (int digits = options_.digits; !acceptable(error_j, w2_j) && digits <= 4 * options_.digits; digits *= 2)
-                route = high_precision(p + point * stride, w2_j, w_j, error_j, modes_j, digits);
+            bool distrusted = a_priori_ && batch_status_[j] == expression_program::a_priori_status::out_of_range;
+            modes_method route = refine(p + point * stride, modes_method::closed_form, distrusted, w2_j, w_j,
+                                        error_j, modes_j);
             if (used)
                 used[point] = route;
         }
@@ -362,33 +462,60 @@ LAGRANGE_ALWAYS_INLINE inline void pair_root(double_double W, bounded_double Wb,
     set_frequency_select(W.hi, dw, extra, omega.hi, w2, w, error);
 }
 
-template <bool fused, std::size_t B>
+/// The same with an a priori bound: ω's relative error is within `omega_bound` (plus its
+/// rounding to double); W = 0 only where it may be exactly, and then so is its error. (That
+/// W stayed in range is checked after the loop, which then vectorizes.)
+template <bool fused>
+LAGRANGE_ALWAYS_INLINE inline void pair_root_a_priori(double_double W, double omega_bound, double& w2, double& w,
+                                                      double& error)
+{
+    double_double magnitude = select(W.hi < 0, dd::neg(W), W);
+    double_double omega = dd::sqrt<fused>(magnitude);
+    double extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
+    bool zero = W.hi == 0;
+    w2 = zero ? 0.0 : W.hi;
+    w = zero ? 0.0 : std::copysign(omega.hi, W.hi);
+    error = zero ? 0.0 : (omega_bound + extra) * (1 + 1e-6);
+}
+
+/// The constants of the a priori route (see compiled_modes::set_a_priori_bounds).
+struct a_priori_constants {
+    double omega_bound = 0;
+    bool zero_root = false;
+};
+
+template <bool fused, std::size_t B, bool a_priori>
 LAGRANGE_ALWAYS_INLINE inline void pair_frequencies(const double* __restrict o, double scale,
-                                                    double* __restrict w2, double* __restrict w,
-                                                    double* __restrict error, double* __restrict root_hi,
-                                                    double* __restrict root_lo)
+                                                    a_priori_constants constants, double* __restrict w2,
+                                                    double* __restrict w, double* __restrict error,
+                                                    double* __restrict root_hi, double* __restrict root_lo)
 {
     for (std::size_t j = 0; j < B; ++j) {
         auto X = [&](std::size_t k) { return double_double{o[4 * k * B + j], o[4 * k * B + B + j]}; };
         auto Y = [&](std::size_t k) { return bounded_double{o[4 * k * B + 2 * B + j], o[4 * k * B + 3 * B + j]}; };
         double_double x0 = X(0), x1 = X(1), x2 = X(2), x3 = X(3);
-        bounded_double b0 = Y(0), b1 = Y(1), b2 = Y(2), b3 = Y(3);
         bool negative_b = x1.hi < 0;
         double_double root = dd::sqrt<fused>(select(x3.hi > 0, x3, double_double{}));
         double_double q = dd::add(x1, select(negative_b, dd::neg(root), root));
-        bounded_double root_b = running::sqrt(select(b3.value > 0, b3, bounded_double{0, b3.error}));
-        bounded_double q_b = running::add(b1, select(negative_b, running::neg(root_b), root_b));
-        double_double big = dd::div<fused>(q, dd::add(x0, x0));
-        bounded_double big_b = running::mul(q_b, running::recip(running::add(b0, b0)));
+        double_double big = dd::div<fused>(q, {2 * x0.hi, 2 * x0.lo}); // 2a, 2c: exact
         bool has_q = q.hi != 0;
-        double_double small = select(has_q, dd::div<fused>(dd::add(x2, x2), q), double_double{});
-        bounded_double small_b = select(has_q, running::mul(running::add(b2, b2), running::recip(q_b)),
-                                        bounded_double{0, big_b.error});
+        double_double small = select(has_q, dd::div<fused>({2 * x2.hi, 2 * x2.lo}, q), double_double{});
         bool swap = big.hi < small.hi;
         double_double first = select(swap, big, small), second = select(swap, small, big);
-        bounded_double first_b = select(swap, big_b, small_b), second_b = select(swap, small_b, big_b);
-        pair_root<fused>(first, first_b, scale, w2[2 * j], w[2 * j], error[2 * j]);
-        pair_root<fused>(second, second_b, scale, w2[2 * j + 1], w[2 * j + 1], error[2 * j + 1]);
+        if constexpr (a_priori) {
+            pair_root_a_priori<fused>(first, constants.omega_bound, w2[2 * j], w[2 * j], error[2 * j]);
+            pair_root_a_priori<fused>(second, constants.omega_bound, w2[2 * j + 1], w[2 * j + 1], error[2 * j + 1]);
+        } else {
+            bounded_double b0 = Y(0), b1 = Y(1), b2 = Y(2), b3 = Y(3);
+            bounded_double root_b = running::sqrt(select(b3.value > 0, b3, bounded_double{0, b3.error}));
+            bounded_double q_b = running::add(b1, select(negative_b, running::neg(root_b), root_b));
+            bounded_double big_b = running::mul(q_b, running::recip(running::add(b0, b0)));
+            bounded_double small_b = select(has_q, running::mul(running::add(b2, b2), running::recip(q_b)),
+                                            bounded_double{0, big_b.error});
+            bounded_double first_b = select(swap, big_b, small_b), second_b = select(swap, small_b, big_b);
+            pair_root<fused>(first, first_b, scale, w2[2 * j], w[2 * j], error[2 * j]);
+            pair_root<fused>(second, second_b, scale, w2[2 * j + 1], w[2 * j + 1], error[2 * j + 1]);
+        }
         root_hi[2 * j] = first.hi;
         root_lo[2 * j] = first.lo;
         root_hi[2 * j + 1] = second.hi;
@@ -439,62 +566,95 @@ LAGRANGE_ALWAYS_INLINE inline void pair_modes(const double* __restrict o, const 
     }
 }
 
-template <bool fused, std::size_t B>
-LAGRANGE_ALWAYS_INLINE inline void pair_block_kernel(const double* o, std::size_t count, double scale, double* w2,
-                                                     double* w, double* error, double* modes)
+/// Lane j's results go out where use[j] is not skip (use null: every lane).
+using lane_use = compiled_modes::lane_use;
+
+template <bool fused, std::size_t B, bool a_priori>
+LAGRANGE_ALWAYS_INLINE inline void pair_block_kernel(const double* o, std::size_t count, double scale,
+                                                     a_priori_constants constants, const lane_use* use,
+                                                     double* w2, double* w, double* error, double* modes)
 {
     alignas(32) double lane_w2[2 * B], lane_w[2 * B], lane_error[2 * B], root_hi[2 * B], root_lo[2 * B];
-    pair_frequencies<fused, B>(o, scale, lane_w2, lane_w, lane_error, root_hi, root_lo);
-    std::copy(lane_w2, lane_w2 + 2 * count, w2);
-    std::copy(lane_w, lane_w + 2 * count, w);
-    std::copy(lane_error, lane_error + 2 * count, error);
-    if (modes) {
-        alignas(32) double lane_modes[4 * B];
+    alignas(32) double lane_modes[4 * B];
+    pair_frequencies<fused, B, a_priori>(o, scale, constants, lane_w2, lane_w, lane_error, root_hi, root_lo);
+    if constexpr (a_priori)
+        for (std::size_t i = 0; i < 2 * count; ++i) { // a root out of range (NaN included): no bound
+            double m = std::abs(root_hi[i]);
+            if (!(m >= a_priori_smallest && m <= a_priori_largest) && !(m == 0 && constants.zero_root))
+                lane_error[i] = HUGE_VAL;
+        }
+    if (modes)
         pair_modes<fused, B>(o, root_hi, root_lo, lane_w2, lane_modes);
-        std::copy(lane_modes, lane_modes + 4 * count, modes);
+    for (std::size_t j = 0; j < count; ++j) {
+        if (use && use[j] == lane_use::skip)
+            continue;
+        for (std::size_t i = 0; i < 2; ++i) {
+            w2[2 * j + i] = lane_w2[2 * j + i];
+            w[2 * j + i] = lane_w[2 * j + i];
+            error[2 * j + i] = lane_error[2 * j + i];
+        }
+        if (modes)
+            for (std::size_t i = 0; i < 4; ++i)
+                modes[4 * j + i] = lane_modes[4 * j + i];
     }
 }
 
-template <bool fused>
+template <bool fused, bool a_priori>
 LAGRANGE_ALWAYS_INLINE inline void pair_block_any(const double* o, std::size_t B, std::size_t count, double scale,
-                                                  double* w2, double* w, double* error, double* modes)
+                                                  a_priori_constants constants, const lane_use* use, double* w2,
+                                                  double* w, double* error, double* modes)
 {
     // one point, or a whole batch: the same arithmetic per lane
     if (B == 1)
-        pair_block_kernel<fused, 1>(o, count, scale, w2, w, error, modes);
+        pair_block_kernel<fused, 1, a_priori>(o, count, scale, constants, use, w2, w, error, modes);
     else
-        pair_block_kernel<fused, expression_program::batch_size>(o, count, scale, w2, w, error, modes);
+        pair_block_kernel<fused, expression_program::batch_size, a_priori>(o, count, scale, constants, use, w2, w,
+                                                                            error, modes);
 }
 
-void pair_block_portable(const double* o, std::size_t B, std::size_t count, double scale, double* w2, double* w,
+void pair_block_portable(const double* o, std::size_t B, std::size_t count, double scale,
+                         const a_priori_constants* constants, const lane_use* use, double* w2, double* w,
                          double* error, double* modes)
 {
-    pair_block_any<false>(o, B, count, scale, w2, w, error, modes);
+    if (constants)
+        pair_block_any<false, true>(o, B, count, scale, *constants, use, w2, w, error, modes);
+    else
+        pair_block_any<false, false>(o, B, count, scale, {}, use, w2, w, error, modes);
 }
 
 #if LAGRANGE_HAVE_FMA_KERNELS
-LAGRANGE_FMA_TARGET void pair_block_fma(const double* o, std::size_t B, std::size_t count, double scale, double* w2,
+LAGRANGE_FMA_TARGET void pair_block_fma(const double* o, std::size_t B, std::size_t count, double scale,
+                                        const a_priori_constants* constants, const lane_use* use, double* w2,
                                         double* w, double* error, double* modes)
 {
-    pair_block_any<true>(o, B, count, scale, w2, w, error, modes);
+    if (constants)
+        pair_block_any<true, true>(o, B, count, scale, *constants, use, w2, w, error, modes);
+    else
+        pair_block_any<true, false>(o, B, count, scale, {}, use, w2, w, error, modes);
 }
 #endif
 
 } // namespace
 
-void compiled_modes::closed_form_block(const double* o, std::size_t B, std::size_t count, double* w2, double* w,
-                                       double* error, double* modes) const
+void compiled_modes::closed_form_block(const double* o, std::size_t B, std::size_t count, bool a_priori,
+                                       const lane_use* use, double* w2, double* w, double* error,
+                                       double* modes) const
 {
     const std::size_t n = size_;
-    const double scale = closed_.algebraic() ? double_double_scale : 1.0;
+    // the running bound is of the double run: double-double's is that scaled down
+    // (exactly: a priori bounds are of the double-double values themselves)
+    const double scale = a_priori ? 1.0 : closed_.algebraic() ? double_double_scale : 1.0;
     auto X = [&](std::size_t k, std::size_t j) { return double_double{o[4 * k * B + j], o[4 * k * B + B + j]}; };
     auto Y = [&](std::size_t k, std::size_t j) {
         return bounded_double{o[4 * k * B + 2 * B + j], o[4 * k * B + 3 * B + j]};
     };
     auto positive = [&](std::size_t k, std::size_t j) { return X(k, j).hi > Y(k, j).error * scale; };
+    auto checked = [&](std::size_t j) { return !use || use[j] == lane_use::use; };
 
     if (n == 1) {
         for (std::size_t j = 0; j < count; ++j) {
+            if (!checked(j))
+                continue;
             if (!positive(0, j))
                 not_positive_definite(0);
             double_double W = dd::div(X(1, j), X(0, j));
@@ -511,8 +671,10 @@ void compiled_modes::closed_form_block(const double* o, std::size_t B, std::size
         return;
     }
 
-    // det T = x0 > 0 iff positive definite (with x4 = T11 > 0).
+    // det T = x0 > 0 iff positive definite (with x4 = T11 > 0)
     for (std::size_t j = 0; j < count; ++j) {
+        if (!checked(j))
+            continue;
         if (!positive(4, j))
             not_positive_definite(0);
         if (!positive(6, j))
@@ -520,13 +682,15 @@ void compiled_modes::closed_form_block(const double* o, std::size_t B, std::size
         if (!positive(0, j))
             not_positive_definite(1);
     }
+    a_priori_constants constants{omega_bound_, zero_root_};
+    const a_priori_constants* with = a_priori ? &constants : nullptr;
 #if LAGRANGE_HAVE_FMA_KERNELS
     if (fma_kernels()) {
-        pair_block_fma(o, B, count, scale, w2, w, error, modes);
+        pair_block_fma(o, B, count, scale, with, use, w2, w, error, modes);
         return;
     }
 #endif
-    pair_block_portable(o, B, count, scale, w2, w, error, modes);
+    pair_block_portable(o, B, count, scale, with, use, w2, w, error, modes);
 }
 
 modes_method compiled_modes::normalized(const double* p, double* w2, double* w, double* error, double* modes)

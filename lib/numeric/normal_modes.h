@@ -72,15 +72,27 @@ public:
     void evaluate_batch(std::size_t count, const double* parameter_values, std::size_t stride, double* omega_squared,
                         double* omega, double* error, double* modes, modes_method* used = nullptr);
 
+    /// What the closed form does with one lane of a block (internal).
+    enum class lane_use : unsigned char {
+        skip, ///< nothing (another route computes it)
+        use,  ///< checks T, writes the results
+    };
+
 private:
+    void set_a_priori_bounds();
     modes_method closed_form(const double* p, double* w2, double* w, double* error, double* modes);
     /// The closed form on `count` lanes of the closed program's outputs laid out as
-    /// expression_program::run_batch leaves them (B lanes per row); results per lane.
-    void closed_form_block(const double* outputs, std::size_t B, std::size_t count, double* w2, double* w,
-                           double* error, double* modes) const;
+    /// expression_program::run_batch (`a_priori` false) or run_batch_a_priori (true) leaves
+    /// them (B lanes per row); results per lane. `use` may be null (every lane: use).
+    void closed_form_block(const double* outputs, std::size_t B, std::size_t count, bool a_priori,
+                           const lane_use* use, double* w2, double* w, double* error, double* modes) const;
     modes_method normalized(const double* p, double* w2, double* w, double* error, double* modes);
     modes_method generalized(const double* p, double* w2, double* w, double* error, double* modes);
     modes_method high_precision(const double* p, double* w2, double* w, double* error, double* modes, int digits);
+    /// High precision at growing digits where `route`'s result misses the tolerance, or where
+    /// its bound is `distrusted` (then the result stands only if high precision cannot do better).
+    modes_method refine(const double* p, modes_method route, bool distrusted, double* w2, double* w, double* error,
+                        double* modes);
     bool acceptable(const double* error, const double* w) const;
     [[noreturn]] void not_positive_definite(std::size_t coordinate) const;
 
@@ -94,6 +106,17 @@ private:
     expression_program normalized_; ///< [pivots of T = LLᵀ, K upper, L⁻¹ lower], if found
     expression_program entries_;    ///< [T upper, V upper]
     bool has_closed_ = false, has_normalized_ = false;
+    /// The two-coordinate closed form with a priori bounds (see a_priori_bound): its
+    /// coefficients a, b, c, b² − 4ac and T's diagonal have known signs, so every root W
+    /// has a relative error bound fixed in advance, and ω that of omega_bound_; zero_root_:
+    /// det V is identically 0, so a root may be exactly 0.
+    bool a_priori_ = false, zero_root_ = false;
+    double omega_bound_ = 0;
+    /// closed_form()'s last point left the range of a priori bounds (an under- or overflow
+    /// inside): its running bound is not to be trusted, high precision is tried first
+    bool out_of_range_ = false;
+    std::vector<expression_program::a_priori_status> batch_status_;
+    std::vector<lane_use> batch_use_;
     std::size_t singular_coordinate_ = static_cast<std::size_t>(-1); ///< T's pivot there is identically 0
     std::vector<double> scratch_double_;
     std::vector<bounded_double> scratch_bounded_, out_bounded_;
