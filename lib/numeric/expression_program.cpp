@@ -472,9 +472,9 @@ void interpret(const std::vector<instruction>& code, const std::vector<int>& out
 
 /// One instruction over a batch of points, structure of arrays: slot k holds
 /// [hi × B, lo × B, value × B, error × B] (`bounded`), or [hi × B, lo × B] (double-double
-/// only). All B lanes are computed (lanes past the batch's count hold zeros or harmless
-/// garbage, never read back), so the loops have a fixed trip count and no branches, and
-/// vectorize.
+/// only). All B lanes are computed (lanes past the batch's count read symbols of 1, and
+/// their results are never read back), so the loops have a fixed trip count and no
+/// branches, and vectorize.
 template <bool fused, bool bounded>
 LAGRANGE_ALWAYS_INLINE inline void step_batch(const instruction& i, std::size_t k, const double* symbols,
                                               std::size_t stride, std::size_t count, double* s)
@@ -518,7 +518,7 @@ LAGRANGE_ALWAYS_INLINE inline void step_batch(const instruction& i, std::size_t 
     }
     case op::symbol:
         for (std::size_t j = 0; j < B; ++j) {
-            double v = j < count ? symbols[j * stride + static_cast<std::size_t>(i.first)] : 0.0;
+            double v = j < count ? symbols[j * stride + static_cast<std::size_t>(i.first)] : 1.0;
             put(j, {v, 0}, {v, 0});
         }
         break;
@@ -668,7 +668,7 @@ void expression_program::run_batch(const double* symbols, std::size_t stride, st
 }
 
 void expression_program::run_batch_a_priori(const double* symbols, std::size_t stride, std::size_t count,
-                                            std::vector<double>& scratch, double* out,
+                                            std::vector<double>& scratch, const double** outputs,
                                             a_priori_status* status) const
 {
     constexpr std::size_t B = batch_size;
@@ -677,27 +677,19 @@ void expression_program::run_batch_a_priori(const double* symbols, std::size_t s
     double* s = scratch.data();
     run_batch_any<false>(code_, symbols, stride, count, s);
     // symbols in the range where no slot can leave its own (widest_safe_exponent): all hold
-    bool all_safe = true;
-    for (std::size_t j = 0; j < count; ++j)
-        for (int i : symbols_read_) {
-            double x = symbols[j * stride + static_cast<std::size_t>(i)];
-            all_safe = all_safe && x >= safe_symbols_.first && x <= safe_symbols_.second;
-        }
-    if (all_safe)
+    const double low = safe_symbols_.first, high = safe_symbols_.second;
+    double unsafe = 0;
+    for (std::size_t k : symbol_slots_) {
+        const double* __restrict x = s + k * 2 * B;
+        for (std::size_t j = 0; j < B; ++j) // lanes past count hold 1 (see step_batch)
+            unsafe += (x[j] >= low) & (x[j] <= high) ? 0.0 : 1.0;
+    }
+    if (unsafe == 0)
         std::fill(status, status + count, a_priori_status::holds);
     else
         check_block(s, count, status);
-    for (std::size_t k = 0; k < outputs_.size(); ++k) {
-        const double* from = s + static_cast<std::size_t>(outputs_[k]) * 2 * B;
-        double* to = out + k * 4 * B;
-        const a_priori_bound& b = output_bounds_[k];
-        for (std::size_t j = 0; j < B; ++j) {
-            to[j] = from[j];
-            to[B + j] = from[B + j];
-            to[2 * B + j] = from[j];
-            to[3 * B + j] = b.known ? b.relative * std::abs(from[j]) : HUGE_VAL;
-        }
-    }
+    for (std::size_t k = 0; k < outputs_.size(); ++k)
+        outputs[k] = s + static_cast<std::size_t>(outputs_[k]) * 2 * B;
 }
 
 void expression_program::check_block(const double* s, std::size_t count, a_priori_status* status) const
@@ -738,8 +730,8 @@ expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, co
     for (int slot : outputs_)
         output_bounds_.push_back(bounds_[static_cast<std::size_t>(slot)]);
     for (std::size_t k = 0; k < code_.size(); ++k)
-        if (code_[k].op == instruction::code::symbol && bounds_[k].known)
-            symbols_read_.push_back(code_[k].first);
+        if (code_[k].op == instruction::code::symbol)
+            symbol_slots_.push_back(k);
     double widest = widest_safe_exponent(code_, bounds_);
     safe_symbols_ = {std::exp2(-widest), std::exp2(widest)};
 }

@@ -130,12 +130,12 @@ public:
         not_positive, ///< a symbol the program reads is not positive (or not a number): no a priori bounds
         out_of_range, ///< a slot of known sign left [2^-968, 2^995]: under- or overflow, no bounds at all
     };
-    /// As run_batch, in double-double only: no running bound is computed. In its place
-    /// output k's bounded run holds hi and its a priori absolute bound,
-    /// output_bound(k).relative·|hi| (+inf where not known). status[j] says whether point
-    /// j's bounds hold.
+    /// As run_batch, in double-double only: no running bound is computed (the a priori
+    /// bound of output k is output_bound(k).relative·|value|). outputs[k] is set to output
+    /// k's lanes in `scratch`: hi at outputs[k][j], lo at outputs[k][batch_size + j].
+    /// status[j] says whether point j's bounds hold.
     void run_batch_a_priori(const double* symbols, std::size_t stride, std::size_t count,
-                            std::vector<double>& scratch, double* out, a_priori_status* status) const;
+                            std::vector<double>& scratch, const double** outputs, a_priori_status* status) const;
     /// The status of a point from the slots a double-double run() left in `scratch`.
     a_priori_status check_a_priori(const std::vector<double_double>& scratch) const;
 
@@ -145,7 +145,7 @@ private:
     bool algebraic_ = true;
     std::vector<a_priori_bound> bounds_;        ///< of each slot
     std::vector<a_priori_bound> output_bounds_; ///< of each output
-    std::vector<int> symbols_read_;             ///< by the program
+    std::vector<std::size_t> symbol_slots_;     ///< the slots that read a symbol
     /// Symbols all in this range: no slot of known sign can leave its range (a fast check).
     std::pair<double, double> safe_symbols_{HUGE_VAL, 0};
     /// status of each point from every slot of known sign (the full check)

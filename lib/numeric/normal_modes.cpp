@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -254,6 +255,23 @@ bool compiled_modes::acceptable(const double* error, const double* w2) const
     return true;
 }
 
+bool compiled_modes::all_acceptable(std::size_t count, const double* w2, const double* error) const
+{
+    // acceptable() on every point of two coordinates, as one loop that vectorizes
+    const double tolerance = options_.tolerance;
+    double misses = 0;
+    for (std::size_t j = 0; j < count; ++j) {
+        double largest = std::max(std::abs(w2[2 * j]), std::abs(w2[2 * j + 1]));
+        for (std::size_t i = 0; i < 2; ++i) {
+            double e = error[2 * j + i];
+            bool finite = std::abs(e) <= std::numeric_limits<double>::max();
+            bool within = w2[2 * j + i] == 0 ? e * e <= tolerance * largest : e <= tolerance;
+            misses += finite & within ? 0.0 : 1.0;
+        }
+    }
+    return misses == 0;
+}
+
 modes_method compiled_modes::evaluate(const double* p, double* w2, double* w, double* error, double* modes)
 {
     switch (options_.method) {
@@ -287,6 +305,8 @@ modes_method compiled_modes::evaluate(const double* p, double* w2, double* w, do
 modes_method compiled_modes::refine(const double* p, modes_method route, bool distrusted, double* w2, double* w,
                                     double* error, double* modes)
 {
+    if (!distrusted && acceptable(error, w2))
+        return route;
     if (!distrusted) {
         for (int digits = options_.digits; !acceptable(error, w2) && digits <= 4 * options_.digits; digits *= 2)
             route = high_precision(p, w2, w, error, modes, digits);
@@ -363,7 +383,10 @@ modes_method compiled_modes::closed_form(const double* p, double* w2, double* w,
         packed[4 * k + 3] = out_bounded_[k].error;
     }
     out_of_range_ = checked == status::out_of_range;
-    closed_form_block(packed, 1, 1, a_priori, nullptr, w2, w, error, modes);
+    const double* rows[16];
+    for (std::size_t k = 0; k < outputs; ++k)
+        rows[k] = packed + 4 * k;
+    closed_form_block(rows, 1, 1, a_priori, nullptr, w2, w, error, modes);
     return modes_method::closed_form;
 }
 
@@ -383,6 +406,7 @@ void compiled_modes::evaluate_batch(std::size_t count, const double* p, std::siz
     batch_out_.resize(closed_.output_count() * 4 * B);
     batch_status_.resize(B);
     batch_use_.resize(B);
+    const double* rows[16]; // of the closed program's outputs
     for (std::size_t start = 0; start < count; start += B) {
         std::size_t block = std::min(B, count - start);
         const double* p_block = p + start * stride;
@@ -392,21 +416,27 @@ void compiled_modes::evaluate_batch(std::size_t count, const double* p, std::siz
             // a priori bounds where every parameter is positive (nearly always), the running
             // bound on the other lanes, as closed_form() decides for one point
             using status = expression_program::a_priori_status;
-            closed_.run_batch_a_priori(p_block, stride, block, batch_scratch_, batch_out_.data(),
-                                       batch_status_.data());
+            closed_.run_batch_a_priori(p_block, stride, block, batch_scratch_, rows, batch_status_.data());
             for (std::size_t j = 0; j < block; ++j) {
                 batch_use_[j] = batch_status_[j] == status::holds ? lane_use::use : lane_use::skip;
                 running_bounds = running_bounds || batch_status_[j] != status::holds;
             }
-            closed_form_block(batch_out_.data(), B, block, true, batch_use_.data(), w2 + start * n,
+            closed_form_block(rows, B, block, true, batch_use_.data(), w2 + start * n,
                               w + start * n, error + start * n, modes_block);
             for (std::size_t j = 0; j < block; ++j)
                 batch_use_[j] = batch_status_[j] == status::holds ? lane_use::skip : lane_use::use;
         }
         if (running_bounds) {
             closed_.run_batch(p_block, stride, block, batch_scratch_, batch_out_.data());
-            closed_form_block(batch_out_.data(), B, block, false, a_priori_ ? batch_use_.data() : nullptr,
+            for (std::size_t k = 0; k < closed_.output_count(); ++k)
+                rows[k] = batch_out_.data() + 4 * k * B;
+            closed_form_block(rows, B, block, false, a_priori_ ? batch_use_.data() : nullptr,
                               w2 + start * n, w + start * n, error + start * n, modes_block);
+        }
+        if (!running_bounds && n == 2 && all_acceptable(block, w2 + start * n, error + start * n)) {
+            if (used)
+                std::fill(used + start, used + start + block, modes_method::closed_form);
+            continue;
         }
         for (std::size_t j = 0; j < block; ++j) {
             std::size_t point = start + j;
@@ -485,14 +515,15 @@ struct a_priori_constants {
 };
 
 template <bool fused, std::size_t B, bool a_priori>
-LAGRANGE_ALWAYS_INLINE inline void pair_frequencies(const double* __restrict o, double scale,
+LAGRANGE_ALWAYS_INLINE inline void pair_frequencies(const double* const* at, double scale,
                                                     a_priori_constants constants, double* __restrict w2,
                                                     double* __restrict w, double* __restrict error,
                                                     double* __restrict root_hi, double* __restrict root_lo)
 {
+    const double* o[4] = {at[0], at[1], at[2], at[3]};
     for (std::size_t j = 0; j < B; ++j) {
-        auto X = [&](std::size_t k) { return double_double{o[4 * k * B + j], o[4 * k * B + B + j]}; };
-        auto Y = [&](std::size_t k) { return bounded_double{o[4 * k * B + 2 * B + j], o[4 * k * B + 3 * B + j]}; };
+        auto X = [&](std::size_t k) { return double_double{o[k][j], o[k][B + j]}; };
+        auto Y = [&](std::size_t k) { return bounded_double{o[k][2 * B + j], o[k][3 * B + j]}; };
         double_double x0 = X(0), x1 = X(1), x2 = X(2), x3 = X(3);
         bool negative_b = x1.hi < 0;
         double_double root = dd::sqrt<fused>(select(x3.hi > 0, x3, double_double{}));
@@ -527,12 +558,13 @@ LAGRANGE_ALWAYS_INLINE inline void pair_frequencies(const double* __restrict o, 
 /// aᵀ T a = 1 (T = [[x4, x5], [x5, x6]], V = [[x7, x8], [x8, x9]]). Selects, no
 /// branches: the loop over lanes vectorizes. Modes of lane j at modes[4j…4j+3].
 template <bool fused, std::size_t B>
-LAGRANGE_ALWAYS_INLINE inline void pair_modes(const double* __restrict o, const double* __restrict root_hi,
+LAGRANGE_ALWAYS_INLINE inline void pair_modes(const double* const* at, const double* __restrict root_hi,
                                               const double* __restrict root_lo, const double* __restrict w2,
                                               double* __restrict modes)
 {
+    const double* o[10] = {at[0], at[1], at[2], at[3], at[4], at[5], at[6], at[7], at[8], at[9]};
     for (std::size_t j = 0; j < B; ++j) {
-        auto X = [&](std::size_t k) { return double_double{o[4 * k * B + j], o[4 * k * B + B + j]}; };
+        auto X = [&](std::size_t k) { return double_double{o[k][j], o[k][B + j]}; };
         bool equal = w2[2 * j] == w2[2 * j + 1];
         auto mode = [&](auto constant) LAGRANGE_ALWAYS_INLINE { // k = 0, 1 unrolled: the lane loop vectorizes
             constexpr int k = decltype(constant)::value;
@@ -570,7 +602,7 @@ LAGRANGE_ALWAYS_INLINE inline void pair_modes(const double* __restrict o, const 
 using lane_use = compiled_modes::lane_use;
 
 template <bool fused, std::size_t B, bool a_priori>
-LAGRANGE_ALWAYS_INLINE inline void pair_block_kernel(const double* o, std::size_t count, double scale,
+LAGRANGE_ALWAYS_INLINE inline void pair_block_kernel(const double* const* o, std::size_t count, double scale,
                                                      a_priori_constants constants, const lane_use* use,
                                                      double* w2, double* w, double* error, double* modes)
 {
@@ -600,7 +632,7 @@ LAGRANGE_ALWAYS_INLINE inline void pair_block_kernel(const double* o, std::size_
 }
 
 template <bool fused, bool a_priori>
-LAGRANGE_ALWAYS_INLINE inline void pair_block_any(const double* o, std::size_t B, std::size_t count, double scale,
+LAGRANGE_ALWAYS_INLINE inline void pair_block_any(const double* const* o, std::size_t B, std::size_t count, double scale,
                                                   a_priori_constants constants, const lane_use* use, double* w2,
                                                   double* w, double* error, double* modes)
 {
@@ -612,7 +644,7 @@ LAGRANGE_ALWAYS_INLINE inline void pair_block_any(const double* o, std::size_t B
                                                                             error, modes);
 }
 
-void pair_block_portable(const double* o, std::size_t B, std::size_t count, double scale,
+void pair_block_portable(const double* const* o, std::size_t B, std::size_t count, double scale,
                          const a_priori_constants* constants, const lane_use* use, double* w2, double* w,
                          double* error, double* modes)
 {
@@ -623,7 +655,7 @@ void pair_block_portable(const double* o, std::size_t B, std::size_t count, doub
 }
 
 #if LAGRANGE_HAVE_FMA_KERNELS
-LAGRANGE_FMA_TARGET void pair_block_fma(const double* o, std::size_t B, std::size_t count, double scale,
+LAGRANGE_FMA_TARGET void pair_block_fma(const double* const* o, std::size_t B, std::size_t count, double scale,
                                         const a_priori_constants* constants, const lane_use* use, double* w2,
                                         double* w, double* error, double* modes)
 {
@@ -636,7 +668,7 @@ LAGRANGE_FMA_TARGET void pair_block_fma(const double* o, std::size_t B, std::siz
 
 } // namespace
 
-void compiled_modes::closed_form_block(const double* o, std::size_t B, std::size_t count, bool a_priori,
+void compiled_modes::closed_form_block(const double* const* o, std::size_t B, std::size_t count, bool a_priori,
                                        const lane_use* use, double* w2, double* w, double* error,
                                        double* modes) const
 {
@@ -644,11 +676,13 @@ void compiled_modes::closed_form_block(const double* o, std::size_t B, std::size
     // the running bound is of the double run: double-double's is that scaled down
     // (exactly: a priori bounds are of the double-double values themselves)
     const double scale = a_priori ? 1.0 : closed_.algebraic() ? double_double_scale : 1.0;
-    auto X = [&](std::size_t k, std::size_t j) { return double_double{o[4 * k * B + j], o[4 * k * B + B + j]}; };
-    auto Y = [&](std::size_t k, std::size_t j) {
-        return bounded_double{o[4 * k * B + 2 * B + j], o[4 * k * B + 3 * B + j]};
+    auto X = [&](std::size_t k, std::size_t j) { return double_double{o[k][j], o[k][B + j]}; };
+    auto Y = [&](std::size_t k, std::size_t j) { return bounded_double{o[k][2 * B + j], o[k][3 * B + j]}; };
+    // a priori: the relative bounds of the signs checked here are below 1, so the computed
+    // sign is the exact one (and there are no bounded rows)
+    auto positive = [&](std::size_t k, std::size_t j) {
+        return a_priori ? X(k, j).hi > 0 : X(k, j).hi > Y(k, j).error * scale;
     };
-    auto positive = [&](std::size_t k, std::size_t j) { return X(k, j).hi > Y(k, j).error * scale; };
     auto checked = [&](std::size_t j) { return !use || use[j] == lane_use::use; };
 
     if (n == 1) {

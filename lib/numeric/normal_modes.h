@@ -81,10 +81,11 @@ public:
 private:
     void set_a_priori_bounds();
     modes_method closed_form(const double* p, double* w2, double* w, double* error, double* modes);
-    /// The closed form on `count` lanes of the closed program's outputs laid out as
-    /// expression_program::run_batch (`a_priori` false) or run_batch_a_priori (true) leaves
-    /// them (B lanes per row); results per lane. `use` may be null (every lane: use).
-    void closed_form_block(const double* outputs, std::size_t B, std::size_t count, bool a_priori,
+    /// The closed form on `count` lanes of the closed program's outputs: output k's hi at
+    /// outputs[k][j], lo at [B + j], and with running bounds (`a_priori` false) the bounded
+    /// run's value and error at [2B + j], [3B + j], as expression_program::run_batch or
+    /// run_batch_a_priori leave them; results per lane. `use` may be null (every lane: use).
+    void closed_form_block(const double* const* outputs, std::size_t B, std::size_t count, bool a_priori,
                            const lane_use* use, double* w2, double* w, double* error, double* modes) const;
     modes_method normalized(const double* p, double* w2, double* w, double* error, double* modes);
     modes_method generalized(const double* p, double* w2, double* w, double* error, double* modes);
@@ -94,6 +95,7 @@ private:
     modes_method refine(const double* p, modes_method route, bool distrusted, double* w2, double* w, double* error,
                         double* modes);
     bool acceptable(const double* error, const double* w) const;
+    bool all_acceptable(std::size_t count, const double* w2, const double* error) const;
     [[noreturn]] void not_positive_definite(std::size_t coordinate) const;
 
     std::size_t size_ = 0;
