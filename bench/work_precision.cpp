@@ -3,8 +3,11 @@
  *  peer script ../shared/peers/work_precision_scipy.py, with the same error measure
  *  (max over 1001 uniform times of ‖y − y_ref‖₂ / max ‖y_ref‖₂) and tolerances
  *  1e-3 … 1e-12. Timed as the peer times solve_ivp: without output (dopri5 and Bulirsch–Stoer
- *  then interpolate nothing; the other methods step to the 1001 output times regardless), the
- *  error from one more, untimed run that takes the same steps. Prints one JSON object (rows like the peer's) for bench/work_precision.py.
+ *  then interpolate nothing; BDF and implicit midpoint step to the 1001 output times
+ *  regardless), the error from one more, untimed run that takes the same steps. rkf78 has no
+ *  interpolant: it is timed on its own steps and its error measured at their ends (rows with
+ *  "err_at": "step ends"), against the exact solution there or rkf78 at 1e-14 to those times.
+ *  Prints one JSON object (rows like the peer's) for bench/work_precision.py.
  *    rigid     free asymmetric body, I = (1, 2, 3), ω0 = (1, 0.1, 0.5), t ∈ [0, 100]: the
  *              engine's Euler equations and Jacobi elliptic solution (free_body_motion.h)
  *    lindp     linearized double pendulum from a scene (ρ = 0.01, l = g = 1), q0 = (0.05, 0),
@@ -125,6 +128,23 @@ int main(int argc, char** argv)
             fine.tolerance = 1e-14;
             reference = lagrange::integrate(p.system, lagrange::ode_method::rkf78, p.x0, fine);
         }
+        // The reference at other times (rkf78's step ends): exact, or rkf78 at 1e-14 to them.
+        auto reference_at = [&](const std::vector<double>& times) {
+            lagrange::trajectory at;
+            if (p.system.exact) {
+                for (double t : times) {
+                    std::vector<double> x(p.system.dimension);
+                    p.system.exact(t, x.data());
+                    at.states.push_back(x);
+                }
+                return at;
+            }
+            lagrange::integration_options fine = options;
+            fine.tolerance = 1e-14;
+            fine.until = times.back();
+            fine.times = times;
+            return lagrange::integrate(p.system, lagrange::ode_method::rkf78, p.x0, fine);
+        };
         // Timed as the peer times solve_ivp: no states kept, no invariants evaluated; the
         // error and the energy drift come from one more, untimed run with the same steps.
         lagrange::ode_system timed = p.system;
@@ -160,7 +180,7 @@ int main(int argc, char** argv)
                     lagrange::trajectory run;
                     lagrange::integration_options quiet = options;
                     quiet.keep_states = false;
-                    quiet.outputs = false; // the dense-output methods: no interpolation, the same steps
+                    quiet.outputs = false; // dense output: no interpolation, the same steps; rkf78: its own
                     std::size_t timed_steps = 0;
                     for (int repeat = 0; repeat < 7 && (repeat == 0 || total < 0.2); ++repeat) {
                         run = lagrange::integrate(timed, method, p.x0, quiet);
@@ -168,14 +188,22 @@ int main(int argc, char** argv)
                         total += run.seconds;
                         timed_steps = run.steps;
                     }
-                    run = lagrange::integrate(measured, method, p.x0, options);
+                    // rkf78 has no interpolant: its own steps, as timed, and the error at their ends
+                    lagrange::integration_options measure = options;
+                    measure.outputs = method != lagrange::ode_method::rkf78;
+                    run = lagrange::integrate(measured, method, p.x0, measure);
                     if (run.steps != timed_steps) // the error below would not be the timed run's
                         throw std::runtime_error("the timed run took " + std::to_string(timed_steps) +
                                                  " steps, the measured one " + std::to_string(run.steps));
                     row["time_s"] = best;
                     row["steps"] = run.steps;
                     row["nfev"] = run.evaluations;
-                    row["err_traj"] = lagrange::trajectory_difference(run, reference);
+                    if (measure.outputs) {
+                        row["err_traj"] = lagrange::trajectory_difference(run, reference);
+                    } else {
+                        row["err_at"] = "step ends";
+                        row["err_traj"] = lagrange::trajectory_difference(run, reference_at(run.times));
+                    }
                     if (!run.invariant_drift.empty())
                         row["energy_drift"] = run.invariant_drift[0].second;
                     if (best > max_seconds / 3)

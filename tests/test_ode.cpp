@@ -103,6 +103,42 @@ TEST_CASE("integrate: without output times the dense-output methods take the sam
     }
 }
 
+TEST_CASE("integrate: rkf78 without output times takes its own steps, and explicit output times", "[ode]")
+{
+    // rkf78 has no interpolant: with 1000 output times it ends a step at each; without, its
+    // steps are as long as the tolerance allows. Its error at its own step ends stays within
+    // the tolerance's reach (harmonic oscillator over 3 periods, exact solution).
+    lagrange::ode_system s = harmonic(2.0);
+    lagrange::integration_options options;
+    options.until = 10;
+    options.tolerance = 1e-10;
+    lagrange::trajectory with = lagrange::integrate(s, lagrange::ode_method::rkf78, {1.0, 0.0}, options);
+    options.outputs = false;
+    lagrange::trajectory without = lagrange::integrate(s, lagrange::ode_method::rkf78, {1.0, 0.0}, options);
+    CHECK(with.steps >= 1000);
+    CHECK(without.steps < with.steps / 5);
+    CHECK(without.times.size() == without.steps + 1);
+    CHECK_THAT(without.times.back(), WithinAbs(10, 1e-12));
+    REQUIRE(without.exact_error);
+    CHECK(*without.exact_error < 1e-8);
+    CHECK(*with.exact_error < 1e-8);
+    // explicit output times: the states at exactly those, and a bad list is refused
+    lagrange::integration_options at;
+    at.until = 2;
+    at.tolerance = 1e-12;
+    at.times = {0, 0.25, 1.0, 1.5, 2};
+    lagrange::trajectory some = lagrange::integrate(s, lagrange::ode_method::dopri5, {1.0, 0.0}, at);
+    REQUIRE(some.times.size() == 5);
+    for (std::size_t k = 0; k < 5; ++k) {
+        CHECK(some.times[k] == at.times[k]);
+        CHECK_THAT(some.states[k][0], WithinAbs(std::cos(2 * at.times[k]), 1e-10));
+    }
+    at.times = {0, 1.5, 1.0, 2};
+    CHECK_THROWS_AS(lagrange::integrate(s, lagrange::ode_method::dopri5, {1.0, 0.0}, at), std::invalid_argument);
+    CHECK(lagrange::dense_output(lagrange::ode_method::dopri5));
+    CHECK_FALSE(lagrange::dense_output(lagrange::ode_method::rkf78));
+}
+
 TEST_CASE("integrate: implicit midpoint keeps the energy of a nonlinear pendulum over a long run", "[ode]")
 {
     lagrange::ode_system s = pendulum();

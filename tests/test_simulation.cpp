@@ -233,9 +233,45 @@ TEST_CASE("workprecision: the ladder on a linear scene, errors against the exact
         INFO(p.method << " " << p.tolerance << " " << p.failure);
         REQUIRE(p.failure.empty());
         REQUIRE(p.error);
-        CHECK(*p.error <= p.tolerance);
+        // rkf78 runs on its own steps here (no interpolant, no output times), and its local
+        // control lets the global error grow past the tolerance (measured: 4–8×) over 3 periods
+        CHECK(*p.error <= (p.method == "rkf78" ? 10 : 1) * p.tolerance);
         CHECK(p.seconds > 0);
     }
+}
+
+TEST_CASE("workprecision: against a reference, rkf78 measured at its own step ends", "[simulation][workprecision]")
+{
+    // The nonlinear pendulum θ'' = −sin θ at 2 rad: no exact solution, so the errors are
+    // against rkf78 at 1e-13; rkf78 itself is timed on its own steps (no interpolant) and its
+    // error taken at their ends, against the reference integrated to those very times.
+    lagrange::ode_system s;
+    s.dimension = 2;
+    s.rhs = [](double, const double* x, double* f) {
+        f[0] = x[1];
+        f[1] = -std::sin(x[0]);
+    };
+    s.jacobian = [](double, const double* x, double* j) {
+        j[0] = 0, j[1] = 1, j[2] = -std::cos(x[0]), j[3] = 0;
+    };
+    lagrange::workprecision_result w = lagrange::work_precision(s, {2.0, 0.0}, 20, 0, {1.0}, {1e-5, 1e-9}, 30);
+    CHECK_FALSE(w.exact);
+    CHECK(w.reference.find("not exact") != std::string::npos);
+    std::size_t rkf78 = 0;
+    for (const lagrange::workprecision_point& p : w.points) {
+        INFO(p.method << " " << p.tolerance << " " << p.failure);
+        if (p.method != "rkf78" && p.method != "dopri5")
+            continue;
+        REQUIRE(p.failure.empty());
+        REQUIRE(p.error);
+        CHECK(*p.error > 0);
+        CHECK(*p.error <= 100 * p.tolerance);
+        if (p.method == "rkf78") {
+            ++rkf78;
+            CHECK(p.steps < 200); // its own steps, not the 1000 output times
+        }
+    }
+    CHECK(rkf78 == 2);
 }
 
 TEST_CASE("compiled_motion: native code agrees with the interpreter and leaves no files", "[simulation][native]")

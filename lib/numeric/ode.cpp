@@ -39,6 +39,8 @@ std::string to_string(ode_method m)
     return "?";
 }
 
+bool dense_output(ode_method m) { return m == ode_method::dopri5 || m == ode_method::bulirsch_stoer; }
+
 const std::vector<ode_method>& all_ode_methods()
 {
     static const std::vector<ode_method> methods = {ode_method::dopri5, ode_method::rkf78,
@@ -171,6 +173,12 @@ private:
 
 std::vector<double> output_times(const integration_options& options)
 {
+    if (!options.times.empty()) {
+        if (options.times.front() != options.start || options.times.back() != options.until ||
+            !std::is_sorted(options.times.begin(), options.times.end()))
+            throw std::invalid_argument("output times must ascend from the start to the end time");
+        return options.times;
+    }
     double span = options.until - options.start;
     double step = options.output_step > 0 ? options.output_step : span / 1000;
     std::size_t count = static_cast<std::size_t>(std::ceil(span / step - 1e-9));
@@ -205,8 +213,10 @@ void run_odeint(ode_method method, const std::vector<double>& x0, const integrat
         }
         case ode_method::rkf78: {
             auto stepper = odeint::make_controlled(tol, tol, odeint::runge_kutta_fehlberg78<state_type>());
-            result.steps = odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(), first_step,
-                                                   observer, checker);
+            result.steps = options.outputs ? odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(),
+                                                                     first_step, observer, checker)
+                                           : odeint::integrate_adaptive(stepper, rhs, x, options.start,
+                                                                        options.until, first_step, observer);
             break;
         }
         case ode_method::bulirsch_stoer: {

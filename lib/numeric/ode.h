@@ -43,6 +43,9 @@ enum class ode_method {
 };
 
 std::string to_string(ode_method m); ///< "dopri5", "rkf78", "bulirsch-stoer", "bdf", "implicit-midpoint"
+/// Whether the method interpolates to output times without ending steps there (dopri5,
+/// Bulirsch–Stoer): with or without output times it takes the same steps.
+bool dense_output(ode_method m);
 std::optional<ode_method> ode_method_from_name(const std::string& name);
 const std::vector<ode_method>& all_ode_methods();
 
@@ -56,12 +59,17 @@ struct integration_options {
     std::size_t max_steps = 20'000'000; ///< stop with a message beyond this many steps
     double max_seconds = 120;     ///< stop with a message beyond this much run time
     bool keep_states = true;      ///< keep the states at the output times
-    /// false: no output times for the dense-output methods (dopri5, Bulirsch–Stoer), which
-    /// then observe the end of each step instead of interpolating. They take the same steps
-    /// either way, so a run without outputs times the integration alone (as SciPy's
-    /// solve_ivp without t_eval) and a run with them measures its error. The trajectory's
-    /// `times` are then the step ends. Other methods step to the output times regardless.
+    /// false: no output times for dopri5, Bulirsch–Stoer and rkf78, which then observe the
+    /// end of each step instead (the trajectory's `times` are the step ends). The dense-output
+    /// methods (dense_output()) take the same steps either way, so a run without outputs
+    /// times the integration alone (as SciPy's solve_ivp without t_eval) and a run with them
+    /// measures its error. rkf78 has no interpolant: with output times it ends a step at each
+    /// of them, without it takes its own steps (far fewer at tight tolerances); its error is
+    /// then measured at its step ends. BDF and implicit midpoint keep their output times.
     bool outputs = true;
+    /// Output times given explicitly (ascending, the first at `start`, the last at `until`);
+    /// empty: every `output_step`.
+    std::vector<double> times;
     /// Called now and then with the fraction done (for a progress bar); may be empty.
     std::function<void(double fraction)> progress;
 };

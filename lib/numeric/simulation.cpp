@@ -468,16 +468,17 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
     bool stiff = frequencies.size() >= 2 && frequencies.back() / frequencies.front() > stiffness_threshold;
 
     trajectory reference;
+    integration_options fine = options;
+    fine.tolerance = stiff ? 1e-12 : 1e-13;
+    fine.max_seconds = 4 * max_seconds;
+    const ode_method reference_method = stiff ? ode_method::bdf : ode_method::rkf78;
     if (measured.exact) {
         result.exact = true;
         result.reference = "exact: the normal-mode solution of the linear equations";
     } else {
-        integration_options fine = options;
-        fine.tolerance = stiff ? 1e-12 : 1e-13;
-        fine.max_seconds = 4 * max_seconds;
-        ode_method method = stiff ? ode_method::bdf : ode_method::rkf78;
-        reference = integrate(system, method, x0, fine);
-        result.reference = "reference (not exact): " + to_string(method) + " at tolerance " + number(fine.tolerance);
+        reference = integrate(system, reference_method, x0, fine);
+        result.reference = "reference (not exact): " + to_string(reference_method) + " at tolerance " +
+                           number(fine.tolerance);
     }
     std::vector<double> ladder = tolerances;
     if (ladder.empty())
@@ -508,10 +509,23 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
                     best = std::min(best, timed_run.seconds);
                     total += timed_run.seconds;
                 }
-                trajectory run = integrate(measured, method, x0, options);
+                // rkf78 has no interpolant: its own steps, as timed, and the error at their ends
+                // (against the exact solution there, or the reference integrated to them)
+                integration_options measure = options;
+                measure.outputs = method != ode_method::rkf78;
+                trajectory run = integrate(measured, method, x0, measure);
                 point.seconds = best;
                 point.steps = run.steps;
-                point.error = run.exact_error ? *run.exact_error : trajectory_difference(run, reference);
+                if (run.exact_error) {
+                    point.error = *run.exact_error;
+                } else if (measure.outputs) {
+                    point.error = trajectory_difference(run, reference);
+                } else {
+                    integration_options to_step_ends = fine;
+                    to_step_ends.until = run.times.back();
+                    to_step_ends.times = run.times;
+                    point.error = trajectory_difference(run, integrate(system, reference_method, x0, to_step_ends));
+                }
                 for (const auto& [name, drift] : run.invariant_drift)
                     if (name == "energy")
                         point.energy_drift = drift;
