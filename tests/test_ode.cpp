@@ -2,6 +2,7 @@
  *  The integrators on systems with exact solutions: each method within its tolerance,
  *  invariant drift, limits and messages. */
 #include "numeric/ode.h"
+#include "ode_helpers.h"
 #include "scene/source.h"
 
 #include <catch2/catch.hpp>
@@ -29,22 +30,6 @@ lagrange::ode_system harmonic(double omega)
         x[0] = std::cos(omega * t);
         x[1] = -omega * std::sin(omega * t);
     };
-    return s;
-}
-
-/// The nonlinear pendulum θ'' = −sin θ (energy ½θ'² − cos θ).
-lagrange::ode_system pendulum()
-{
-    lagrange::ode_system s;
-    s.dimension = 2;
-    s.rhs = [](double, const double* x, double* f) {
-        f[0] = x[1];
-        f[1] = -std::sin(x[0]);
-    };
-    s.jacobian = [](double, const double* x, double* j) {
-        j[0] = 0, j[1] = 1, j[2] = -std::cos(x[0]), j[3] = 0;
-    };
-    s.invariants.push_back({"energy", [](const double* x) { return 0.5 * x[1] * x[1] - std::cos(x[0]); }, 0});
     return s;
 }
 
@@ -76,7 +61,7 @@ TEST_CASE("integrate: without output times the dense-output methods take the sam
 {
     // What the work-precision benchmark relies on: the run it times (no outputs) and the one
     // it measures the error of (1001 interpolated outputs) are the same integration.
-    lagrange::ode_system s = pendulum();
+    lagrange::ode_system s = lagrange_test::pendulum_system();
     for (lagrange::ode_method method : {lagrange::ode_method::dopri5, lagrange::ode_method::bulirsch_stoer}) {
         for (double tolerance : {1e-4, 1e-9}) {
             lagrange::integration_options options;
@@ -141,7 +126,7 @@ TEST_CASE("integrate: rkf78 without output times takes its own steps, and explic
 
 TEST_CASE("integrate: implicit midpoint keeps the energy of a nonlinear pendulum over a long run", "[ode]")
 {
-    lagrange::ode_system s = pendulum();
+    lagrange::ode_system s = lagrange_test::pendulum_system();
     lagrange::integration_options options;
     options.until = 2000;
     options.fixed_step = 0.05;
@@ -200,7 +185,7 @@ TEST_CASE("integrate: runaway solutions and limits stop with a message", "[ode][
     options.max_steps = 1000;
     CHECK_THROWS_WITH(lagrange::integrate(stiff, lagrange::ode_method::dopri5, {1.0, 0.0}, options),
                       Catch::Contains("step limit") || Catch::Contains("made no progress"));
-    lagrange::ode_system no_jacobian = pendulum();
+    lagrange::ode_system no_jacobian = lagrange_test::pendulum_system();
     no_jacobian.jacobian = nullptr;
     CHECK_THROWS_AS(lagrange::integrate(no_jacobian, lagrange::ode_method::bdf, {1.0, 0.0}, {}), std::invalid_argument);
 }

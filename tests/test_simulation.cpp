@@ -5,6 +5,7 @@
  *  exact normal-mode errors, extreme mass ratios, and the messages. */
 #include "engine/analysis.h"
 #include "numeric/simulation.h"
+#include "ode_helpers.h"
 #include "scene_helpers.h"
 
 #include <catch2/catch.hpp>
@@ -245,15 +246,7 @@ TEST_CASE("workprecision: against a reference, rkf78 measured at its own step en
     // The nonlinear pendulum θ'' = −sin θ at 2 rad: no exact solution, so the errors are
     // against rkf78 at 1e-13; rkf78 itself is timed on its own steps (no interpolant) and its
     // error taken at their ends, against the reference integrated to those very times.
-    lagrange::ode_system s;
-    s.dimension = 2;
-    s.rhs = [](double, const double* x, double* f) {
-        f[0] = x[1];
-        f[1] = -std::sin(x[0]);
-    };
-    s.jacobian = [](double, const double* x, double* j) {
-        j[0] = 0, j[1] = 1, j[2] = -std::cos(x[0]), j[3] = 0;
-    };
+    lagrange::ode_system s = lagrange_test::pendulum_system();
     lagrange::workprecision_result w = lagrange::work_precision(s, {2.0, 0.0}, 20, 0, {1.0}, {1e-5, 1e-9}, 30);
     CHECK_FALSE(w.exact);
     CHECK(w.reference.find("not exact") != std::string::npos);
