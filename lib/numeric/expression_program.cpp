@@ -682,7 +682,7 @@ void expression_program::run_batch_a_priori(const double* symbols, std::size_t s
     for (std::size_t k : symbol_slots_) {
         const double* __restrict x = s + k * 2 * B;
         for (std::size_t j = 0; j < B; ++j) // lanes past count hold 1 (see step_batch)
-            unsafe += (x[j] >= low) & (x[j] <= high) ? 0.0 : 1.0;
+            unsafe += ((x[j] >= low) & (x[j] <= high)) ? 0.0 : 1.0;
     }
     if (unsafe == 0)
         std::fill(status, status + count, a_priori_status::holds);
@@ -711,7 +711,7 @@ void expression_program::check_block(const double* s, std::size_t count, a_prior
                 not_positive[j] = hi[j] > 0 ? not_positive[j] : 1.0;
         for (std::size_t j = 0; j < B; ++j) {
             double v = sign * hi[j];
-            out_of_range[j] = (v >= a_priori_smallest) & (v <= a_priori_largest) ? out_of_range[j] : 1.0;
+            out_of_range[j] = ((v >= a_priori_smallest) & (v <= a_priori_largest)) ? out_of_range[j] : 1.0;
         }
     }
     for (std::size_t j = 0; j < count; ++j)

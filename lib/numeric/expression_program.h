@@ -25,7 +25,11 @@ namespace lagrange {
 /// Kernels compiled for FMA (and so AVX) beside the portable ones, picked at run time.
 /// 128-bit vectors: on the development machine the 256-bit loops over the batch ran at
 /// half the speed of 128-bit ones (measured with bench/numeric_modes).
+#if defined(__clang__) // Clang ignores a target attribute with prefer-vector-width in it
+#define LAGRANGE_FMA_TARGET __attribute__((target("fma")))
+#else
 #define LAGRANGE_FMA_TARGET __attribute__((target("fma,prefer-vector-width=128")))
+#endif
 #else
 #define LAGRANGE_HAVE_FMA_KERNELS 0
 #define LAGRANGE_FMA_TARGET

@@ -266,7 +266,7 @@ bool compiled_modes::all_acceptable(std::size_t count, const double* w2, const d
             double e = error[2 * j + i];
             bool finite = std::abs(e) <= std::numeric_limits<double>::max();
             bool within = w2[2 * j + i] == 0 ? e * e <= tolerance * largest : e <= tolerance;
-            misses += finite & within ? 0.0 : 1.0;
+            misses += (finite & within) ? 0.0 : 1.0;
         }
     }
     return misses == 0;
