@@ -121,6 +121,30 @@ TEST_CASE("a priori bounds: known for subtraction-free programs only", "[express
     CHECK(fraction.sign == 1);
 }
 
+TEST_CASE("a priori bounds: constants, symbols and powers read no slot", "[expression_program]")
+{
+    // Found by the fuzzer (the molecule example under UBSan): the analysis took a constant's
+    // and a symbol's `first` (a symbol index) and a power's `second` (its exponent) for
+    // slots. A program that starts with a constant, reads the sixth of six symbols and
+    // raises to a power beyond its length must analyse without touching them.
+    GiNaC::possymbol a("a"), b("b"), c("c"), d("d"), e("e"), x("x");
+    std::vector<GiNaC::ex> symbols{a, b, c, d, e, x};
+    expression_program constant({GiNaC::numeric(3, 7)}, symbols);
+    CHECK(constant.output_bound(0).known);
+    CHECK(constant.output_bound(0).sign == 1);
+    expression_program power({pow(x, 9)}, symbols);
+    CHECK(power.instruction_count() == 2);
+    CHECK(power.output_bound(0).known);
+    CHECK(power.output_bound(0).relative > 0);
+    expression_program half({GiNaC::numeric(1, 2) * pow(x, 2) * e}, symbols);
+    CHECK(half.output_bound(0).known);
+    std::vector<double> values{1, 1, 1, 1, 3, 2};
+    std::vector<double_double> dd_scratch, out(1);
+    half.run(values.data(), dd_scratch, out.data());
+    CHECK(out[0].hi == 6);
+    CHECK(half.check_a_priori(dd_scratch) == status::holds);
+}
+
 TEST_CASE("a priori bounds bound the error of subtraction-free programs", "[expression_program]")
 {
     // Deep, badly scaled, subtraction-free expressions at random positive points over 2^-40…2^40:

@@ -305,10 +305,18 @@ double one_more_rounding(double r) { return up(r + double_double_step + r * doub
 
 a_priori_bound unknown_bound() { return {}; }
 
+/// Whether the instruction's `first` (and `second`) are slots, rather than a symbol's index,
+/// an exponent or nothing.
+bool reads_first_slot(instruction::code op)
+{
+    return op != instruction::code::constant && op != instruction::code::symbol;
+}
+bool reads_second_slot(instruction::code op) { return op == instruction::code::add || op == instruction::code::mul; }
+
 a_priori_bound bound_of(const instruction& i, const std::vector<a_priori_bound>& slots)
 {
     using op = instruction::code;
-    const a_priori_bound& a = slots[static_cast<std::size_t>(i.first)];
+    const a_priori_bound a = reads_first_slot(i.op) ? slots.at(static_cast<std::size_t>(i.first)) : a_priori_bound{};
     switch (i.op) {
     case op::constant:
         // value + value_low is within 2^-106 of the exact constant when value_low ≠ 0
@@ -316,13 +324,13 @@ a_priori_bound bound_of(const instruction& i, const std::vector<a_priori_bound>&
     case op::symbol: return {true, 1, 0};
     case op::neg: return a.known ? a_priori_bound{true, -a.sign, a.relative} : unknown_bound();
     case op::add: {
-        const a_priori_bound& b = slots[static_cast<std::size_t>(i.second)];
+        const a_priori_bound& b = slots.at(static_cast<std::size_t>(i.second));
         if (!a.known || !b.known || a.sign * b.sign < 0)
             return unknown_bound(); // terms of opposite sign may cancel
         return {true, a.sign != 0 ? a.sign : b.sign, one_more_rounding(std::max(a.relative, b.relative))};
     }
     case op::mul: {
-        const a_priori_bound& b = slots[static_cast<std::size_t>(i.second)];
+        const a_priori_bound& b = slots.at(static_cast<std::size_t>(i.second));
         if (!a.known || !b.known)
             return unknown_bound();
         if (a.sign == 0 || b.sign == 0)
@@ -388,8 +396,8 @@ double widest_safe_exponent(const std::vector<instruction>& code, const std::vec
         const instruction& i = code[k];
         if (!bounds[k].known || bounds[k].sign == 0)
             continue; // never checked (zeros are exact; unknown slots have no bound to keep)
-        const magnitude& a = m[static_cast<std::size_t>(i.first)];
-        const magnitude& b = m[static_cast<std::size_t>(i.second)];
+        const magnitude a = reads_first_slot(i.op) ? m.at(static_cast<std::size_t>(i.first)) : magnitude{};
+        const magnitude b = reads_second_slot(i.op) ? m.at(static_cast<std::size_t>(i.second)) : magnitude{};
         magnitude& r = m[k];
         switch (i.op) {
         case op::constant: r.low = r.high = std::log2(std::abs(i.value)); break;
@@ -397,8 +405,8 @@ double widest_safe_exponent(const std::vector<instruction>& code, const std::vec
         case op::neg: r = a; break;
         case op::add: {
             // terms of one sign: at least either term, at most twice the larger
-            const bool a_zero = bounds[static_cast<std::size_t>(i.first)].sign == 0;
-            const bool b_zero = bounds[static_cast<std::size_t>(i.second)].sign == 0;
+            const bool a_zero = bounds.at(static_cast<std::size_t>(i.first)).sign == 0;
+            const bool b_zero = bounds.at(static_cast<std::size_t>(i.second)).sign == 0;
             if (a_zero || b_zero) {
                 r = a_zero ? b : a;
                 break;
