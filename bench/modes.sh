@@ -5,7 +5,8 @@
 #     same T and V (the first 20000 of the same random points), and the ratio;
 #  2. error against run time for each numeric route over the double pendulum's sweep
 #     m/M = 1e-16 … 1e16 (321 points): ours against a 60-digit CLN reference, scipy's
-#     against a 50-digit mpmath one (as the peer ../shared/peers/dp_modes_accuracy_scipy.py).
+#     against a 50-digit mpmath one (as the peer ../shared/peers/dp_modes_accuracy_scipy.py);
+#  3. that peer script itself (a private copy), its own per-call times beside our batch's.
 # Times are thread CPU time (the machine is shared). Usage:
 #   bench/modes.sh [points] [runs]        (LAGRANGE_BUILD=dir for another build)
 # Needs Debian's python3-scipy and python3-mpmath (installed here if missing, as root
@@ -123,3 +124,21 @@ for name, err, bound, ns, fails in errors:
     print(f"{'lagrange ' + name:<34} {err:13.3g} {bound:10.3g} {ns:10.1f} {fails:7d}")
 print(f"{'scipy.linalg.eigh(V, T)':<34} {worst:13.3g} {'-':>10} {elapsed:10.1f} {failed:7d}")
 PY
+
+# 3. The peer script itself (../shared/peers/dp_modes_accuracy_scipy.py, in a private copy so
+#    that the shared folder is left alone), in the same run: its own timing of scipy's
+#    generalized solver on the double pendulum, against our batch time per point.
+peer=../shared/peers/dp_modes_accuracy_scipy.py
+if [ -f "$peer" ]; then
+    mkdir -p "$work/peer"
+    cp "$peer" "$(dirname "$peer")"/common.py "$work/peer/" 2>/dev/null || cp "$peer" "$work/peer/"
+    (cd "$work/peer" && OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 "$python" "$(basename "$peer")" >peer.txt 2>&1) || true
+    ours_ns=$(awk '$1 == "pendulum/batch" {print $(NF-1)}' "$work/ours.txt")
+    echo
+    echo "the peer script $(basename "$peer") (its own timing, wall time per call, median of 7), beside lagrange's batch:"
+    grep "time per call" "$work/peer/peer.txt" |
+        awk -v ours="$ours_ns" '{printf "  %-70s ratio %6.0f\n", $0, $(NF-1) * 1000 / ours}'
+else
+    echo
+    echo "(the peer script $peer is not here: its own timing left out)"
+fi
