@@ -190,7 +190,7 @@ int main(int argc, char** argv)
                     }
                     // rkf78 has no interpolant: its own steps, as timed, and the error at their ends
                     lagrange::integration_options measure = options;
-                    measure.outputs = method != lagrange::ode_method::rkf78;
+                    measure.outputs = !lagrange::steps_to_outputs(method);
                     run = lagrange::integrate(measured, method, p.x0, measure);
                     if (run.steps != timed_steps) // the error below would not be the timed run's
                         throw std::runtime_error("the timed run took " + std::to_string(timed_steps) +

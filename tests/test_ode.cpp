@@ -120,8 +120,9 @@ TEST_CASE("integrate: rkf78 without output times takes its own steps, and explic
     }
     at.times = {0, 1.5, 1.0, 2};
     CHECK_THROWS_AS(lagrange::integrate(s, lagrange::ode_method::dopri5, {1.0, 0.0}, at), std::invalid_argument);
-    CHECK(lagrange::dense_output(lagrange::ode_method::dopri5));
-    CHECK_FALSE(lagrange::dense_output(lagrange::ode_method::rkf78));
+    CHECK(lagrange::steps_to_outputs(lagrange::ode_method::rkf78));
+    CHECK_FALSE(lagrange::steps_to_outputs(lagrange::ode_method::dopri5));
+    CHECK_FALSE(lagrange::steps_to_outputs(lagrange::ode_method::bulirsch_stoer));
 }
 
 TEST_CASE("integrate: implicit midpoint keeps the energy of a nonlinear pendulum over a long run", "[ode]")

@@ -39,7 +39,7 @@ std::string to_string(ode_method m)
     return "?";
 }
 
-bool dense_output(ode_method m) { return m == ode_method::dopri5 || m == ode_method::bulirsch_stoer; }
+bool steps_to_outputs(ode_method m) { return m == ode_method::rkf78; }
 
 const std::vector<ode_method>& all_ode_methods()
 {

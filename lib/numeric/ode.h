@@ -43,9 +43,11 @@ enum class ode_method {
 };
 
 std::string to_string(ode_method m); ///< "dopri5", "rkf78", "bulirsch-stoer", "bdf", "implicit-midpoint"
-/// Whether the method interpolates to output times without ending steps there (dopri5,
-/// Bulirsch–Stoer): with or without output times it takes the same steps.
-bool dense_output(ode_method m);
+/// Whether the method, having no interpolant, ends a step at each output time, and so takes
+/// other (longer) steps without output times (`integration_options::outputs`): rkf78. The
+/// others take the same steps either way (dopri5, Bulirsch–Stoer: dense output; BDF,
+/// implicit midpoint: they keep their output times).
+bool steps_to_outputs(ode_method m);
 std::optional<ode_method> ode_method_from_name(const std::string& name);
 const std::vector<ode_method>& all_ode_methods();
 
@@ -61,7 +63,7 @@ struct integration_options {
     bool keep_states = true;      ///< keep the states at the output times
     /// false: no output times for dopri5, Bulirsch–Stoer and rkf78, which then observe the
     /// end of each step instead (the trajectory's `times` are the step ends). The dense-output
-    /// methods (dense_output()) take the same steps either way, so a run without outputs
+    /// methods take the same steps either way, so a run without outputs
     /// times the integration alone (as SciPy's solve_ivp without t_eval) and a run with them
     /// measures its error. rkf78 has no interpolant: with output times it ends a step at each
     /// of them, without it takes its own steps (far fewer at tight tolerances); its error is

@@ -512,7 +512,7 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
                 // rkf78 has no interpolant: its own steps, as timed, and the error at their ends
                 // (against the exact solution there, or the reference integrated to them)
                 integration_options measure = options;
-                measure.outputs = method != ode_method::rkf78;
+                measure.outputs = !steps_to_outputs(method);
                 trajectory run = integrate(measured, method, x0, measure);
                 point.seconds = best;
                 point.steps = run.steps;
