@@ -708,19 +708,14 @@ void expression_program::check_block(const double* s, std::size_t count, a_prior
     alignas(64) double not_positive[B], out_of_range[B];
     std::fill(not_positive, not_positive + B, 0.0);
     std::fill(out_of_range, out_of_range + B, 0.0);
-    for (std::size_t k = 0; k < code_.size(); ++k) {
-        const a_priori_bound& b = bounds_[k];
-        if (!b.known || b.sign == 0 || code_[k].op == instruction::code::constant)
-            continue;
+    for (std::size_t k : checked_slots_) {
         const double* __restrict hi = s + k * 2 * B;
-        const double sign = b.sign;
+        const double sign = bounds_[k].sign;
         if (code_[k].op == instruction::code::symbol)
             for (std::size_t j = 0; j < B; ++j)
                 not_positive[j] = hi[j] > 0 ? not_positive[j] : 1.0;
-        for (std::size_t j = 0; j < B; ++j) {
-            double v = sign * hi[j];
-            out_of_range[j] = ((v >= a_priori_smallest) & (v <= a_priori_largest)) ? out_of_range[j] : 1.0;
-        }
+        for (std::size_t j = 0; j < B; ++j)
+            out_of_range[j] = in_a_priori_range(sign * hi[j]) ? out_of_range[j] : 1.0;
     }
     for (std::size_t j = 0; j < count; ++j)
         status[j] = not_positive[j] != 0   ? a_priori_status::not_positive
@@ -737,9 +732,12 @@ expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, co
         bounds_.push_back(bound_of(i, bounds_));
     for (int slot : outputs_)
         output_bounds_.push_back(bounds_[static_cast<std::size_t>(slot)]);
-    for (std::size_t k = 0; k < code_.size(); ++k)
+    for (std::size_t k = 0; k < code_.size(); ++k) {
         if (code_[k].op == instruction::code::symbol)
             symbol_slots_.push_back(k);
+        if (bounds_[k].known && bounds_[k].sign != 0 && code_[k].op != instruction::code::constant)
+            checked_slots_.push_back(k);
+    }
     double widest = widest_safe_exponent(code_, bounds_);
     safe_symbols_ = {std::exp2(-widest), std::exp2(widest)};
 }
@@ -748,14 +746,13 @@ expression_program::a_priori_status expression_program::check_a_priori(
     const std::vector<double_double>& scratch) const
 {
     a_priori_status status = a_priori_status::holds;
-    for (std::size_t k = 0; k < code_.size() && k < scratch.size(); ++k) {
-        const a_priori_bound& b = bounds_[k];
-        if (!b.known || b.sign == 0 || code_[k].op == instruction::code::constant)
-            continue;
-        double v = b.sign * scratch[k].hi;
+    for (std::size_t k : checked_slots_) {
+        if (k >= scratch.size())
+            break;
+        double v = bounds_[k].sign * scratch[k].hi;
         if (code_[k].op == instruction::code::symbol && !(v > 0))
             return a_priori_status::not_positive;
-        if (!(v >= a_priori_smallest && v <= a_priori_largest))
+        if (!in_a_priori_range(v))
             status = a_priori_status::out_of_range;
     }
     return status;

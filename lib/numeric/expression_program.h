@@ -92,6 +92,11 @@ constexpr double double_double_step = 0x1p-99;
 /// splitting or a product overflows. A priori bounds need every value in between.
 constexpr double a_priori_smallest = 0x1p-968;
 constexpr double a_priori_largest = 0x1p995;
+/// Whether a magnitude lies in that range (false for NaN). Without branches, for vectorized loops.
+LAGRANGE_ALWAYS_INLINE inline bool in_a_priori_range(double magnitude)
+{
+    return (magnitude >= a_priori_smallest) & (magnitude <= a_priori_largest);
+}
 
 /// Compiled from `outputs`, a list of expressions in `symbols`; throws
 /// std::invalid_argument naming any other symbol or unsupported function.
@@ -150,6 +155,8 @@ private:
     std::vector<a_priori_bound> bounds_;        ///< of each slot
     std::vector<a_priori_bound> output_bounds_; ///< of each output
     std::vector<std::size_t> symbol_slots_;     ///< the slots that read a symbol
+    /// The slots the range check covers: of known, nonzero sign and not constant.
+    std::vector<std::size_t> checked_slots_;
     /// Symbols all in this range: no slot of known sign can leave its range (a fast check).
     std::pair<double, double> safe_symbols_{HUGE_VAL, 0};
     /// status of each point from every slot of known sign (the full check)
@@ -227,11 +234,10 @@ LAGRANGE_ALWAYS_INLINE inline double_double div(double_double a, double_double b
     return quick_two_sum(th, delta / b.hi);
 }
 
-/// √a; for a ≤ 0 the double √a.hi (+0 for ±0). Branch free, so that loops over points
-/// vectorize.
-/// SQRTDWtoDW (Lefèvre, Louvet, Muller, Picot, Rideau, IEEE TC 2023), relative error
+/// √a: SQRTDWtoDW (Lefèvre, Louvet, Muller, Picot, Rideau, IEEE TC 2023), relative error
 /// within 25/8 u²: a.hi − s² is exactly representable (s the rounded √a.hi), so both
-/// subtractions below are exact, with FMA or without.
+/// subtractions below are exact, with FMA or without. For a ≤ 0 the double √a.hi (+0 for
+/// ±0). Branch free, so that loops over points vectorize.
 template <bool fused = false>
 LAGRANGE_ALWAYS_INLINE inline double_double sqrt(double_double a)
 {

@@ -612,7 +612,7 @@ LAGRANGE_ALWAYS_INLINE inline void pair_block_kernel(const double* const* o, std
     if constexpr (a_priori)
         for (std::size_t i = 0; i < 2 * count; ++i) { // a root out of range (NaN included): no bound
             double m = std::abs(root_hi[i]);
-            if (!(m >= a_priori_smallest && m <= a_priori_largest) && !(m == 0 && constants.zero_root))
+            if (!in_a_priori_range(m) && !(m == 0 && constants.zero_root))
                 lane_error[i] = HUGE_VAL;
         }
     if (modes)
