@@ -50,6 +50,16 @@ GiNaC::ex tidy(const GiNaC::ex& e)
     }
 }
 
+/// Whether one mode's error bound `e` is within the tolerance: relative on ω, or for ω² = 0
+/// absolute on ω against the largest |ω²|; never for a bound that is not finite. Without
+/// branches, so that the block check vectorizes.
+inline bool mode_within(double e, double w2, double largest, double tolerance)
+{
+    bool finite = std::abs(e) <= std::numeric_limits<double>::max();
+    bool within = w2 == 0 ? e * e <= tolerance * largest : e <= tolerance;
+    return finite & within;
+}
+
 /// Relative error of √m given an absolute error `dw` of m > dw.
 double root_relative_error(double dw, double m)
 {
@@ -246,12 +256,9 @@ bool compiled_modes::acceptable(const double* error, const double* w2) const
     double largest = 0;
     for (std::size_t k = 0; k < size_; ++k)
         largest = std::max(largest, std::abs(w2[k]));
-    for (std::size_t k = 0; k < size_; ++k) {
-        if (!std::isfinite(error[k]))
+    for (std::size_t k = 0; k < size_; ++k)
+        if (!mode_within(error[k], w2[k], largest, options_.tolerance))
             return false;
-        if (w2[k] == 0 ? error[k] * error[k] > options_.tolerance * largest : error[k] > options_.tolerance)
-            return false;
-    }
     return true;
 }
 
@@ -262,12 +269,8 @@ bool compiled_modes::all_acceptable(std::size_t count, const double* w2, const d
     double misses = 0;
     for (std::size_t j = 0; j < count; ++j) {
         double largest = std::max(std::abs(w2[2 * j]), std::abs(w2[2 * j + 1]));
-        for (std::size_t i = 0; i < 2; ++i) {
-            double e = error[2 * j + i];
-            bool finite = std::abs(e) <= std::numeric_limits<double>::max();
-            bool within = w2[2 * j + i] == 0 ? e * e <= tolerance * largest : e <= tolerance;
-            misses += (finite & within) ? 0.0 : 1.0;
-        }
+        for (std::size_t i = 0; i < 2; ++i)
+            misses += mode_within(error[2 * j + i], w2[2 * j + i], largest, tolerance) ? 0.0 : 1.0;
     }
     return misses == 0;
 }
@@ -292,8 +295,7 @@ modes_method compiled_modes::evaluate(const double* p, double* w2, double* w, do
     modes_method used;
     bool distrusted = false;
     if (has_closed_ && closed_.algebraic()) {
-        used = closed_form(p, w2, w, error, modes);
-        distrusted = out_of_range_;
+        used = closed_form(p, w2, w, error, modes, &distrusted);
     } else if (has_normalized_) {
         used = normalized(p, w2, w, error, modes);
     } else {
@@ -358,7 +360,8 @@ numeric_modes compiled_modes::evaluate(const double* p)
     return result;
 }
 
-modes_method compiled_modes::closed_form(const double* p, double* w2, double* w, double* error, double* modes)
+modes_method compiled_modes::closed_form(const double* p, double* w2, double* w, double* error, double* modes,
+                                         bool* out_of_range)
 {
     using status = expression_program::a_priori_status;
     std::size_t outputs = closed_.output_count();
@@ -367,22 +370,20 @@ modes_method compiled_modes::closed_form(const double* p, double* w2, double* w,
     closed_.run(p, scratch_dd_, out_dd_.data());
     status checked = a_priori_ ? closed_.check_a_priori(scratch_dd_) : status::not_positive;
     bool a_priori = checked == status::holds;
-    if (a_priori) // as run_batch_a_priori leaves them
-        for (std::size_t k = 0; k < outputs; ++k) {
-            const a_priori_bound& b = closed_.output_bound(k);
-            out_bounded_[k] = {out_dd_[k].hi, b.known ? b.relative * std::abs(out_dd_[k].hi) : HUGE_VAL};
-        }
-    else
+    if (!a_priori) // a priori bounds need no bounded run
         closed_.run(p, scratch_bounded_, out_bounded_.data());
+    if (out_of_range)
+        *out_of_range = checked == status::out_of_range;
     // the batch layout with one lane, so that one point and a batch run the same code
-    double packed[4 * 16];
+    double packed[4 * 16] = {};
     for (std::size_t k = 0; k < outputs; ++k) {
         packed[4 * k] = out_dd_[k].hi;
         packed[4 * k + 1] = out_dd_[k].lo;
-        packed[4 * k + 2] = out_bounded_[k].value;
-        packed[4 * k + 3] = out_bounded_[k].error;
+        if (!a_priori) {
+            packed[4 * k + 2] = out_bounded_[k].value;
+            packed[4 * k + 3] = out_bounded_[k].error;
+        }
     }
-    out_of_range_ = checked == status::out_of_range;
     const double* rows[16];
     for (std::size_t k = 0; k < outputs; ++k)
         rows[k] = packed + 4 * k;
@@ -480,16 +481,24 @@ LAGRANGE_ALWAYS_INLINE inline bounded_double select(bool c, bounded_double a, bo
     return {c ? a.value : b.value, c ? a.error : b.error};
 }
 
+/// ω = √|W| in double-double; `extra` the relative error of ω rounded to double (plus the
+/// square root's own, within 2^-100).
+template <bool fused>
+LAGRANGE_ALWAYS_INLINE inline double_double root_of(double_double W, double& extra)
+{
+    double_double omega = dd::sqrt<fused>(select(W.hi < 0, dd::neg(W), W));
+    extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
+    return omega;
+}
+
 /// One root W (with bound) to ω², ω and the error bound of lane j's mode k.
 template <bool fused>
 LAGRANGE_ALWAYS_INLINE inline void pair_root(double_double W, bounded_double Wb, double scale, double& w2, double& w,
                                              double& error)
 {
-    double dw = Wb.error * scale;
-    double_double magnitude = select(W.hi < 0, dd::neg(W), W);
-    double_double omega = dd::sqrt<fused>(magnitude);
-    double extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
-    set_frequency_select(W.hi, dw, extra, omega.hi, w2, w, error);
+    double extra;
+    double_double omega = root_of<fused>(W, extra);
+    set_frequency_select(W.hi, Wb.error * scale, extra, omega.hi, w2, w, error);
 }
 
 /// The same with an a priori bound: ω's relative error is within `omega_bound` (plus its
@@ -499,9 +508,8 @@ template <bool fused>
 LAGRANGE_ALWAYS_INLINE inline void pair_root_a_priori(double_double W, double omega_bound, double& w2, double& w,
                                                       double& error)
 {
-    double_double magnitude = select(W.hi < 0, dd::neg(W), W);
-    double_double omega = dd::sqrt<fused>(magnitude);
-    double extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
+    double extra;
+    double_double omega = root_of<fused>(W, extra);
     bool zero = W.hi == 0;
     w2 = zero ? 0.0 : W.hi;
     w = zero ? 0.0 : std::copysign(omega.hi, W.hi);
@@ -694,8 +702,8 @@ void compiled_modes::closed_form_block(const double* const* o, std::size_t B, st
             double_double W = dd::div(X(1, j), X(0, j));
             bounded_double Wb = running::mul(Y(1, j), running::recip(Y(0, j)));
             double dw = Wb.error * scale;
-            double_double omega = dd::sqrt(W.hi < 0 ? dd::neg(W) : W);
-            double extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
+            double extra;
+            double_double omega = root_of<false>(W, extra);
             set_frequency(W.hi, dw, extra, w2[j], w[j], error[j]);
             if (w[j] != 0)
                 w[j] = std::copysign(omega.hi, W.hi);

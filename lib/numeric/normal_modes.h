@@ -80,7 +80,10 @@ public:
 
 private:
     void set_a_priori_bounds();
-    modes_method closed_form(const double* p, double* w2, double* w, double* error, double* modes);
+    /// `out_of_range` (may be null): whether a value left the range of a priori bounds (an
+    /// under- or overflow inside), so that the running bound is not to be trusted either.
+    modes_method closed_form(const double* p, double* w2, double* w, double* error, double* modes,
+                             bool* out_of_range = nullptr);
     /// The closed form on `count` lanes of the closed program's outputs: output k's hi at
     /// outputs[k][j], lo at [B + j], and with running bounds (`a_priori` false) the bounded
     /// run's value and error at [2B + j], [3B + j], as expression_program::run_batch or
@@ -114,9 +117,6 @@ private:
     /// det V is identically 0, so a root may be exactly 0.
     bool a_priori_ = false, zero_root_ = false;
     double omega_bound_ = 0;
-    /// closed_form()'s last point left the range of a priori bounds (an under- or overflow
-    /// inside): its running bound is not to be trusted, high precision is tried first
-    bool out_of_range_ = false;
     std::vector<expression_program::a_priori_status> batch_status_;
     std::vector<lane_use> batch_use_;
     std::size_t singular_coordinate_ = static_cast<std::size_t>(-1); ///< T's pivot there is identically 0
