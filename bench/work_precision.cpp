@@ -14,7 +14,7 @@
  *              t ∈ [0, 200]; exact: normal modes
  *    dp_small  double pendulum from a scene, M = m = l = g = 1, θ0 = φ0 = 0.05, t ∈ [0, 100]
  *    dp_large  the same at 1.5 rad, t ∈ [0, 20]; reference: rkf78 at 1e-14 (labelled)
- *  Usage: work_precision [max_seconds_per_run] */
+ *  Usage: work_precision [max_seconds_per_run [problem [method]]] (the last two: only those rows) */
 #include "engine/analysis.h"
 #include "numeric/compiled_motion.h"
 #include "numeric/free_body_motion.h"
@@ -94,6 +94,7 @@ const std::string pendulum = "parameters M m l g\ncoordinates theta phi\n"
 int main(int argc, char** argv)
 {
     double max_seconds = argc > 1 ? std::atof(argv[1]) : 10;
+    std::string only_problem = argc > 2 ? argv[2] : "", only_method = argc > 3 ? argv[3] : "";
     std::vector<problem> problems;
     problems.push_back(rigid_body());
     problems.push_back(from_scene("lindp",
@@ -109,6 +110,8 @@ int main(int argc, char** argv)
     out["problems"] = nlohmann::ordered_json::object();
     out["rows"] = nlohmann::ordered_json::array();
     for (problem& p : problems) {
+        if (!only_problem.empty() && p.name != only_problem)
+            continue;
         lagrange::integration_options options;
         options.until = p.until;
         options.max_seconds = max_seconds;
@@ -162,6 +165,8 @@ int main(int argc, char** argv)
         }
         out["problems"][p.name]["reference"] = p.reference_kind;
         for (lagrange::ode_method method : lagrange::all_ode_methods()) {
+            if (!only_method.empty() && lagrange::to_string(method) != only_method)
+                continue;
             bool give_up = false;
             for (int e = 3; e <= 12; ++e) {
                 double tol = std::pow(10.0, -e);
