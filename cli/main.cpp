@@ -365,8 +365,8 @@ int run(int argc, char** argv)
         sub->add_flag("--timings", o->timings, "show the run time and the stages' times");
     }
     simulate->add_option("--method", simulate_options.method,
-                         "auto, dopri5, rkf78, bulirsch-stoer, bdf or implicit-midpoint")
-        ->check(CLI::IsMember({"auto", "dopri5", "rkf78", "bulirsch-stoer", "bdf", "implicit-midpoint"}));
+                         "auto, dopri5, rkf78, dop853, bulirsch-stoer, bdf or implicit-midpoint")
+        ->check(CLI::IsMember({"auto", "dopri5", "rkf78", "dop853", "bulirsch-stoer", "bdf", "implicit-midpoint"}));
     simulate->add_option("--tolerance", simulate_options.tolerance, "relative and absolute tolerance per step")
         ->check(CLI::Range(1e-14, 0.5));
     simulate->add_option("--csv", simulate_options.csv, "write the trajectory as CSV");

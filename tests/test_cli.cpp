@@ -187,7 +187,7 @@ TEST_CASE("cli: simulate writes CSV, an SVG plot and the JSON simulation keys", 
     REQUIRE(r.exit_code == 0);
     nlohmann::json doc = nlohmann::json::parse(r.out);
     const nlohmann::json& s = doc["simulation"];
-    CHECK(s["method"] == "rkf78");
+    CHECK(s["method"] == "dop853");
     CHECK(s["steps"].get<int>() > 0);
     CHECK(s["t"].size() == s["states"]["phi"].size());
     CHECK(s["states"].contains("theta_dot"));

@@ -107,7 +107,7 @@ TEST_CASE("free body: compiled Euler equations against the textbook ones and fin
 TEST_CASE("simulate: free asymmetric body, every method against the elliptic solution", "[simulation][freebody]")
 {
     lagrange::model scene = load(asymmetric + "simulate until 20\n");
-    for (const char* method : {"dopri5", "rkf78", "bulirsch-stoer", "bdf", "implicit-midpoint"}) {
+    for (const char* method : {"dopri5", "rkf78", "dop853", "bulirsch-stoer", "bdf", "implicit-midpoint"}) {
         const bool explicit_method = std::string(method) != "bdf" && std::string(method) != "implicit-midpoint";
         lagrange::simulation_settings settings;
         settings.method = method;

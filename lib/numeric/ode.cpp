@@ -1,10 +1,12 @@
 /** @file ode.cpp
  *  The integrators: Boost.Odeint (Dormand–Prince 5(4), Fehlberg 7(8),
- *  Bulirsch–Stoer), SUNDIALS CVODE (BDF with the system's Jacobian), and implicit
- *  midpoint. Implicit midpoint is written here by hand: Odeint's symplectic steppers
+ *  Bulirsch–Stoer), DOP853 (numeric/dop853.h), SUNDIALS CVODE (BDF with the system's
+ *  Jacobian), and implicit midpoint. Implicit midpoint is written here by hand: Odeint's symplectic steppers
  *  need a separable Hamiltonian, which a pendulum's is not, and no Debian library
  *  has a symplectic implicit Runge–Kutta method with a user Jacobian. */
 #include "numeric/ode.h"
+
+#include "numeric/dop853.h"
 
 #include "scene/source.h"
 
@@ -32,6 +34,7 @@ std::string to_string(ode_method m)
     switch (m) {
     case ode_method::dopri5: return "dopri5";
     case ode_method::rkf78: return "rkf78";
+    case ode_method::dop853: return "dop853";
     case ode_method::bulirsch_stoer: return "bulirsch-stoer";
     case ode_method::bdf: return "bdf";
     case ode_method::implicit_midpoint: return "implicit-midpoint";
@@ -43,7 +46,7 @@ bool steps_to_outputs(ode_method m) { return m == ode_method::rkf78; }
 
 const std::vector<ode_method>& all_ode_methods()
 {
-    static const std::vector<ode_method> methods = {ode_method::dopri5, ode_method::rkf78,
+    static const std::vector<ode_method> methods = {ode_method::dopri5, ode_method::rkf78, ode_method::dop853,
                                                     ode_method::bulirsch_stoer, ode_method::bdf,
                                                     ode_method::implicit_midpoint};
     return methods;
@@ -240,6 +243,56 @@ void run_odeint(ode_method method, const std::vector<double>& x0, const integrat
     } catch (const std::overflow_error&) {
         throw computation_error("the step size of " + to_string(method) +
                                 " collapsed: the problem is too stiff for it at this tolerance");
+    }
+}
+
+// ---- DOP853 ----
+
+template <int Dim>
+void run_dop853_sized(const std::vector<double>& x0, const integration_options& options, run_state& run,
+                      trajectory& result)
+{
+    auto f = [&run](double t, const double* x, double* dxdt) { run.rhs(t, x, dxdt); };
+    dop853_stepper<Dim> stepper(x0.size(), options.tolerance);
+    stepper.start(f, options.start, x0.data(), options.until);
+    run.observe(options.start, x0.data());
+    auto advance = [&] {
+        if (!stepper.step(f, options.until))
+            throw computation_error("the step size of dop853 collapsed at t = " + number(stepper.time()) +
+                                    ": the problem is too stiff for it at this tolerance, or its solution runs away");
+        if (++result.steps > options.max_steps)
+            throw computation_error("dop853 made no progress within the step limit");
+    };
+    if (!options.outputs) {
+        while (stepper.time() < options.until) {
+            advance();
+            run.observe(stepper.time(), stepper.state());
+        }
+        return;
+    }
+    std::vector<double> times = output_times(options), at(x0.size());
+    for (std::size_t k = 1; k < times.size(); ++k) {
+        while (stepper.time() < times[k])
+            advance();
+        if (stepper.time() == times[k]) {
+            run.observe(times[k], stepper.state());
+        } else {
+            stepper.interpolate(f, times[k], at.data());
+            run.observe(times[k], at.data());
+        }
+    }
+}
+
+/// Fixed-size states for the common small dimensions (a pendulum's 2 and 4, a free body's 3).
+void run_dop853(const std::vector<double>& x0, const integration_options& options, run_state& run,
+                trajectory& result)
+{
+    switch (x0.size()) {
+    case 2: return run_dop853_sized<2>(x0, options, run, result);
+    case 3: return run_dop853_sized<3>(x0, options, run, result);
+    case 4: return run_dop853_sized<4>(x0, options, run, result);
+    case 6: return run_dop853_sized<6>(x0, options, run, result);
+    default: return run_dop853_sized<0>(x0, options, run, result);
     }
 }
 
@@ -445,6 +498,7 @@ trajectory integrate(const ode_system& system, ode_method method, const std::vec
     case ode_method::bulirsch_stoer: tightened.tolerance = std::max(options.tolerance / 100, 1e-15); break;
     case ode_method::bdf: tightened.tolerance = std::max(options.tolerance / 3000, 1e-14); break;
     case ode_method::implicit_midpoint: tightened.tolerance = options.tolerance / 4; break;
+    case ode_method::dop853: tightened.tolerance = std::max(options.tolerance / 10, 1e-15); break;
     case ode_method::rkf78:
         if (!options.outputs)
             tightened.tolerance = std::max(options.tolerance / 10, 1e-15);
@@ -458,6 +512,9 @@ trajectory integrate(const ode_system& system, ode_method method, const std::vec
         break;
     case ode_method::implicit_midpoint:
         run_implicit_midpoint(system, x0, options_used, run, result);
+        break;
+    case ode_method::dop853:
+        run_dop853(x0, options_used, run, result);
         break;
     default:
         run_odeint(method, x0, options_used, run, result);

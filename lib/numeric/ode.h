@@ -37,15 +37,16 @@ struct ode_system {
 enum class ode_method {
     dopri5,            ///< Dormand–Prince 5(4), Boost.Odeint, dense output
     rkf78,             ///< Fehlberg 7(8), Boost.Odeint
+    dop853,            ///< Hairer's DOP853, order 8 with a 7th-order dense output (numeric/dop853.h)
     bulirsch_stoer,    ///< Bulirsch–Stoer extrapolation, Boost.Odeint, dense output
     bdf,               ///< SUNDIALS CVODE, variable-order BDF, Newton with the given Jacobian
     implicit_midpoint, ///< symplectic, symmetric, order 2; fixed step, Newton with the given Jacobian
 };
 
-std::string to_string(ode_method m); ///< "dopri5", "rkf78", "bulirsch-stoer", "bdf", "implicit-midpoint"
+std::string to_string(ode_method m); ///< "dopri5", "rkf78", "dop853", "bulirsch-stoer", "bdf", "implicit-midpoint"
 /// Whether the method, having no interpolant, ends a step at each output time, and so takes
 /// other (longer) steps without output times (`integration_options::outputs`): rkf78. The
-/// others take the same steps either way (dopri5, Bulirsch–Stoer: dense output; BDF,
+/// others take the same steps either way (dopri5, DOP853, Bulirsch–Stoer: dense output; BDF,
 /// implicit midpoint: they keep their output times).
 bool steps_to_outputs(ode_method m);
 std::optional<ode_method> ode_method_from_name(const std::string& name);
@@ -61,7 +62,7 @@ struct integration_options {
     std::size_t max_steps = 20'000'000; ///< stop with a message beyond this many steps
     double max_seconds = 120;     ///< stop with a message beyond this much run time
     bool keep_states = true;      ///< keep the states at the output times
-    /// false: no output times for dopri5, Bulirsch–Stoer and rkf78, which then observe the
+    /// false: no output times for dopri5, DOP853, Bulirsch–Stoer and rkf78, which then observe the
     /// end of each step instead (the trajectory's `times` are the step ends). The dense-output
     /// methods take the same steps either way, so a run without outputs
     /// times the integration alone (as SciPy's solve_ivp without t_eval) and a run with them

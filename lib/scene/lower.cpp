@@ -650,12 +650,12 @@ private:
             r.tolerance = positive_constant(*s.tolerance, "the tolerance");
         if (s.method) {
             static const std::set<std::string> methods = {
-                "auto", "dopri5", "rkf78", "bulirsch-stoer", "bdf", "implicit-midpoint", "dp5", "rk45",
+                "auto", "dopri5", "rkf78", "dop853", "bulirsch-stoer", "bdf", "implicit-midpoint", "dp5", "rk45",
                 "dormand-prince", "fehlberg", "rk78", "bs", "bulirsch_stoer", "cvode", "stiff", "midpoint",
                 "implicit_midpoint", "symplectic"};
             if (!methods.count(s.method->name))
                 throw scene_error(s.method->where, "unknown method `" + s.method->name +
-                                                       "` (auto, dopri5, rkf78, bulirsch-stoer, bdf, implicit-midpoint)");
+                                                       "` (auto, dopri5, rkf78, dop853, bulirsch-stoer, bdf, implicit-midpoint)");
             r.method = s.method->name;
         }
         scene_.simulation = r;
