@@ -17,7 +17,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -132,8 +131,8 @@ public:
 
     /// One accepted step towards t_end (never past it). The next step size: PI control
     /// after an accepted step (grow ≤ 10×, none right after a rejection), 0.9 err^(−1/8)
-    /// (shrink ≥ 0.2×) after a rejected one. Returns false, with nothing changed, when the step size has fallen
-    /// below ten units in the last place of t (it collapsed).
+    /// (shrink ≥ 0.2×) after a rejected one. Returns false, with nothing changed, when the
+    /// step size has fallen below ten units in the last place of t (it collapsed).
     template <class F>
     bool step(F& f, double t_end)
     {
