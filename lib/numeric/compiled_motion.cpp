@@ -2,20 +2,14 @@
  *  Equations of motion compiled to straight-line code and solved per evaluation. */
 #include "numeric/compiled_motion.h"
 
+#include "numeric/values.h"
+
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 namespace lagrange {
 
 namespace {
-
-std::string number(double x)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", x);
-    return buffer;
-}
 
 /// Substitutes the parameter values; throws computation_error naming a parameter that L uses without one.
 GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values)
@@ -30,17 +24,6 @@ GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::
                                     "` (a `values` line or --values)");
     }
     return e.subs(substitutions);
-}
-
-double to_double(const GiNaC::ex& e, const std::string& what)
-{
-    GiNaC::ex value = e.evalf();
-    if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real())
-        throw computation_error(what + " is not a real number");
-    double d = GiNaC::ex_to<GiNaC::numeric>(value).to_double();
-    if (!std::isfinite(d))
-        throw computation_error(what + " is not a finite double");
-    return d;
 }
 
 /// LDLᵀ factor of the symmetric n × n matrix `m` (row-major) in place: L below the
@@ -158,7 +141,7 @@ void compiled_motion::solve(double t, const double* x, double* acceleration, boo
         const double* o = outputs_.data();
         double a = o[0], b = o[1], d = o[3], determinant = a * d - b * b;
         if (!(a > 0 && determinant > 0))
-            throw computation_error("the mass matrix is not positive definite at t = " + number(t) +
+            throw computation_error("the mass matrix is not positive definite at t = " + message_number(t) +
                                     " (a singular configuration of the coordinates)");
         double inverse = 1 / determinant;
         acceleration[0] = (d * o[4] - b * o[5]) * inverse;
@@ -168,7 +151,7 @@ void compiled_motion::solve(double t, const double* x, double* acceleration, boo
     std::copy(outputs_.begin(), outputs_.begin() + static_cast<std::ptrdiff_t>(n_ * n_), factor_.begin());
     std::copy(outputs_.begin() + static_cast<std::ptrdiff_t>(n_ * n_), outputs_.end(), acceleration);
     if (!factor_ldlt(factor_.data(), n_))
-        throw computation_error("the mass matrix is not positive definite at t = " + number(t) +
+        throw computation_error("the mass matrix is not positive definite at t = " + message_number(t) +
                                 " (a singular configuration of the coordinates)");
     ldlt_solve(factor_.data(), n_, acceleration);
 }
@@ -256,10 +239,10 @@ std::vector<double> initial_state_vector(const model& scene, const std::map<std:
         const std::string& name = scene.coordinates[i].name;
         auto p = scene.initial->positions.find(name);
         if (p != scene.initial->positions.end())
-            x[i] = to_double(at_values(p->second, scene, values), "the initial value of `" + name + "`");
+            x[i] = real_value(at_values(p->second, scene, values), "the initial value of `" + name + "`");
         auto v = scene.initial->velocities.find(name);
         if (v != scene.initial->velocities.end())
-            x[n + i] = to_double(at_values(v->second, scene, values), "the initial value of `" + name + "'`");
+            x[n + i] = real_value(at_values(v->second, scene, values), "the initial value of `" + name + "'`");
     }
     return x;
 }

@@ -2,6 +2,8 @@
  *  A free body's Euler equations compiled for time integration. */
 #include "numeric/free_body_motion.h"
 
+#include "numeric/values.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -27,17 +29,6 @@ void require_values(const GiNaC::ex& e, const model& scene)
         if (e.has(p.symbol))
             throw computation_error("the simulation needs a value for the parameter `" + p.name +
                                     "` (a `values` line or --values)");
-}
-
-double to_double(const GiNaC::ex& e, const std::string& what)
-{
-    GiNaC::ex value = e.evalf();
-    if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real())
-        throw computation_error(what + " is not a real number");
-    double d = GiNaC::ex_to<GiNaC::numeric>(value).to_double();
-    if (!std::isfinite(d))
-        throw computation_error(what + " is not a finite number");
-    return d;
 }
 
 } // namespace
@@ -84,7 +75,7 @@ free_body_motion::free_body_motion(const model& scene, const std::map<std::strin
         for (std::size_t j = 0; j < 3; ++j) {
             GiNaC::ex entry = inertia.tensor(i, j).subs(map);
             require_values(entry, scene);
-            tensor_[3 * i + j] = to_double(entry, "the inertia of `" + body_ + "`");
+            tensor_[3 * i + j] = real_value(entry, "the inertia of `" + body_ + "`");
         }
     for (const std::string& name : names_) {
         GiNaC::ex start = 0;
@@ -94,7 +85,7 @@ free_body_motion::free_body_motion(const model& scene, const std::map<std::strin
                 start = value->second.subs(map);
         }
         require_values(start, scene);
-        initial_.push_back(to_double(start, "the initial value of `" + name + "`"));
+        initial_.push_back(real_value(start, "the initial value of `" + name + "`"));
     }
 
     // ω̇ from the equations, linear in the rates with the constant matrix I at numbers.

@@ -7,6 +7,7 @@
 #include "numeric/ode.h"
 
 #include "numeric/dop853.h"
+#include "numeric/values.h"
 
 #include "scene/source.h"
 
@@ -20,7 +21,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 namespace lagrange {
@@ -72,13 +72,6 @@ std::optional<ode_method> ode_method_from_name(const std::string& name)
 
 namespace {
 
-std::string number(double x)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", x);
-    return buffer;
-}
-
 /// Counts evaluations and enforces the step and time limits; records the output.
 class run_state {
 public:
@@ -98,11 +91,11 @@ public:
     {
         std::chrono::duration<double> elapsed = clock_type::now() - start_;
         if (elapsed.count() > options_.max_seconds)
-            throw computation_error("the integration stopped at t = " + number(t) + " after " +
-                                    number(options_.max_seconds) + " s (the time limit); the problem needs a "
+            throw computation_error("the integration stopped at t = " + message_number(t) + " after " +
+                                    message_number(options_.max_seconds) + " s (the time limit); the problem needs a "
                                     "looser tolerance, another method or a shorter time span");
         if (result_.evaluations > 12 * options_.max_steps)
-            throw computation_error("the integration stopped at t = " + number(t) + " after " +
+            throw computation_error("the integration stopped at t = " + message_number(t) + " after " +
                                     std::to_string(result_.evaluations) + " evaluations (the step limit); "
                                     "the problem is too stiff or too long for this method and tolerance");
     }
@@ -112,7 +105,7 @@ public:
         std::size_t n = system_.dimension;
         for (std::size_t i = 0; i < n; ++i)
             if (!std::isfinite(x[i]))
-                throw computation_error("the solution stopped being finite at t = " + number(t) +
+                throw computation_error("the solution stopped being finite at t = " + message_number(t) +
                                         " (the motion runs away or the method is unstable at this tolerance)");
         if (!initialized_) {
             initialized_ = true;
@@ -186,7 +179,7 @@ std::vector<double> output_times(const integration_options& options)
     double step = options.output_step > 0 ? options.output_step : span / 1000;
     std::size_t count = static_cast<std::size_t>(std::ceil(span / step - 1e-9));
     if (count > 10'000'000)
-        throw computation_error("the output step " + number(step) + " gives more than 10^7 output times");
+        throw computation_error("the output step " + message_number(step) + " gives more than 10^7 output times");
     std::vector<double> times;
     for (std::size_t k = 0; k < count; ++k)
         times.push_back(options.start + static_cast<double>(k) * step);
@@ -258,7 +251,7 @@ void run_dop853_sized(const std::vector<double>& x0, const integration_options& 
     run.observe(options.start, x0.data());
     auto advance = [&] {
         if (!stepper.step(f, options.until))
-            throw computation_error("the step size of dop853 collapsed at t = " + number(stepper.time()) +
+            throw computation_error("the step size of dop853 collapsed at t = " + message_number(stepper.time()) +
                                     ": the problem is too stiff for it at this tolerance, or its solution runs away");
         if (++result.steps > options.max_steps)
             throw computation_error("dop853 made no progress within the step limit");
@@ -393,7 +386,7 @@ void run_cvode(const ode_system& system, const std::vector<double>& x0, const in
                               : flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE
                                   ? "its step size collapsed (a singularity or a runaway motion)"
                                   : "CVODE failed with code " + std::to_string(flag);
-            throw computation_error("the BDF integration stopped at t = " + number(reached) + ": " + why);
+            throw computation_error("the BDF integration stopped at t = " + message_number(reached) + ": " + why);
         }
         run.observe(times[k], N_VGetArrayPointer(s.y));
     }
@@ -420,8 +413,8 @@ void run_implicit_midpoint(const ode_system& system, const std::vector<double>& 
     h = std::min(h, max_spacing);
     double needed = span / h;
     if (needed > static_cast<double>(options.max_steps))
-        throw computation_error("implicit midpoint would need " + number(needed) + " steps at tolerance " +
-                                number(options.tolerance) + " (the limit is " + number(options.max_steps) +
+        throw computation_error("implicit midpoint would need " + message_number(needed) + " steps at tolerance " +
+                                message_number(options.tolerance) + " (the limit is " + message_number(options.max_steps) +
                                 "): use a looser tolerance or another method");
     Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(x0.data(), n);
     Eigen::VectorXd y(n), mid(n), f(n), residual(n);
@@ -463,7 +456,7 @@ void run_implicit_midpoint(const ode_system& system, const std::vector<double>& 
             }
             if (!converged || !fresh)
                 throw computation_error("implicit midpoint: Newton's method did not converge at t = " +
-                                        number(t) + " (the step " + number(step) + " is too large)");
+                                        message_number(t) + " (the step " + message_number(step) + " is too large)");
             x = y;
             t += step;
             ++result.steps;

@@ -3,6 +3,7 @@
 #include "numeric/simulation.h"
 
 #include "numeric/free_body_motion.h"
+#include "numeric/values.h"
 
 #include <Eigen/Dense>
 
@@ -11,26 +12,10 @@
 #include <cmath>
 #include <complex>
 #include <memory>
-#include <cstdio>
 
 namespace lagrange {
 
 namespace {
-
-double to_double(const GiNaC::ex& e)
-{
-    GiNaC::ex value = e.evalf();
-    if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real())
-        throw computation_error("a value needed by the simulation is not a real number");
-    return GiNaC::ex_to<GiNaC::numeric>(value).to_double();
-}
-
-std::string number(double x)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.3g", x);
-    return buffer;
-}
 
 /// Every `values` line overlaid in order: later points (and --values) override earlier ones.
 std::map<std::string, GiNaC::ex> merged_values(const model& scene)
@@ -186,14 +171,14 @@ struct prepared_motion {
 /// The end time and tolerance of the `simulate` line, or their overrides.
 void read_span(prepared_motion& p, const model& scene, const simulation_settings& settings)
 {
-    p.until = settings.until ? *settings.until : scene.simulation ? to_double(scene.simulation->until) : 0;
+    p.until = settings.until ? *settings.until : scene.simulation ? real_value(scene.simulation->until, "the end time") : 0;
     if (!(p.until > 0) || !std::isfinite(p.until))
         throw computation_error("the simulation needs an end time: a `simulate until T` line or --until");
     p.tolerance = settings.tolerance ? *settings.tolerance
-                  : scene.simulation && scene.simulation->tolerance ? to_double(*scene.simulation->tolerance)
+                  : scene.simulation && scene.simulation->tolerance ? real_value(*scene.simulation->tolerance, "the tolerance")
                                                                     : 1e-9;
     if (!(p.tolerance >= 1e-14 && p.tolerance < 1))
-        throw computation_error("the tolerance " + number(p.tolerance) + " is outside 1e-14 … 1");
+        throw computation_error("the tolerance " + message_number(p.tolerance, 3) + " is outside 1e-14 … 1");
 }
 
 prepared_motion prepare(const model& scene, const lagrangian_result& lagrangian,
@@ -217,7 +202,7 @@ prepared_motion prepare(const model& scene, const lagrangian_result& lagrangian,
     std::vector<double> reference_state(2 * n, 0.0);
     if (equilibrium && equilibrium->size() == n) {
         for (std::size_t i = 0; i < n; ++i)
-            reference_state[i] = to_double(substitute((*equilibrium)[i], scene, p.values));
+            reference_state[i] = real_value(substitute((*equilibrium)[i], scene, p.values), "the equilibrium");
     } else {
         std::copy(p.x0.begin(), p.x0.begin() + static_cast<std::ptrdiff_t>(n), reference_state.begin());
     }
@@ -279,12 +264,12 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
     if (method_name == "auto") {
         if (result.stiffness > stiffness_threshold) {
             method = ode_method::bdf;
-            result.choice = "auto: the linearized frequencies spread over a factor " + number(result.stiffness) +
-                            " (> " + number(stiffness_threshold) + "): stiff, implicit BDF";
+            result.choice = "auto: the linearized frequencies spread over a factor " + message_number(result.stiffness, 3) +
+                            " (> " + message_number(stiffness_threshold, 3) + "): stiff, implicit BDF";
         } else {
             method = ode_method::dop853; // our fastest at most levels of bench/work_precision; 7th-order dense output
-            result.choice = "auto: the linearized frequencies spread over a factor " + number(result.stiffness) +
-                            " (≤ " + number(stiffness_threshold) + "): not stiff, explicit " + to_string(method);
+            result.choice = "auto: the linearized frequencies spread over a factor " + message_number(result.stiffness, 3) +
+                            " (≤ " + message_number(stiffness_threshold, 3) + "): not stiff, explicit " + to_string(method);
         }
     } else {
         std::optional<ode_method> named = ode_method_from_name(method_name);
@@ -300,7 +285,7 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
     options.until = until;
     options.tolerance = result.tolerance;
     if (scene.simulation && scene.simulation->step)
-        options.output_step = to_double(*scene.simulation->step);
+        options.output_step = real_value(*scene.simulation->step, "the output step");
     options.frequency = prepared.rate > 0 ? prepared.rate : result.frequencies.empty() ? 1.0 : result.frequencies.back();
     options.max_seconds = settings.max_seconds;
     options.progress = settings.progress;
@@ -323,7 +308,7 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         if (!settings.estimate_error)
             return {};
         if (run.seconds > seconds_left / 4)
-            return {std::nullopt, "no estimate: the run took " + number(run.seconds) +
+            return {std::nullopt, "no estimate: the run took " + message_number(run.seconds, 3) +
                                       " s, and a reference run at a tighter tolerance would exceed the time limit"};
         integration_options fine = options;
         fine.progress = nullptr;
@@ -335,7 +320,7 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         try {
             trajectory check = integrate(system, reference, x0, fine);
             return {trajectory_difference(run, check),
-                    "against " + to_string(reference) + " at tolerance " + number(fine.tolerance)};
+                    "against " + to_string(reference) + " at tolerance " + message_number(fine.tolerance, 3)};
         } catch (const computation_error& error) {
             return {std::nullopt, std::string("no estimate: the reference run stopped: ") + error.what()};
         }
@@ -481,7 +466,7 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
     } else {
         reference = integrate(system, reference_method, x0, fine);
         result.reference = "reference (not exact): " + to_string(reference_method) + " at tolerance " +
-                           number(fine.tolerance);
+                           message_number(fine.tolerance, 3);
     }
     std::vector<double> ladder = tolerances;
     if (ladder.empty())
@@ -533,10 +518,10 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
                     if (name == "energy")
                         point.energy_drift = drift;
                 if (best > max_seconds / 4)
-                    skip = "left out: the looser tolerance " + number(tol) + " already took " + number(best) + " s";
+                    skip = "left out: the looser tolerance " + message_number(tol, 3) + " already took " + message_number(best, 3) + " s";
             } catch (const computation_error& error) {
                 point.failure = error.what();
-                skip = "left out: the looser tolerance " + number(tol) + " already failed";
+                skip = "left out: the looser tolerance " + message_number(tol, 3) + " already failed";
             }
             result.points.push_back(point);
         }
