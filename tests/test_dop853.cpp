@@ -161,3 +161,33 @@ TEST_CASE("dop853: adaptive, one equation, near the tolerance against the exact 
         CHECK(run.times.size() == 1001);
     }
 }
+
+TEST_CASE("dop853: the fixed-size and the run-time-size steppers take the same steps", "[ode][dop853]")
+{
+    // Kepler's problem in the plane (4 equations): a fixed-size instance in integrate().
+    auto kepler = [](double, const double* x, double* f) {
+        double r3 = std::pow(x[0] * x[0] + x[1] * x[1], 1.5);
+        f[0] = x[2], f[1] = x[3], f[2] = -x[0] / r3, f[3] = -x[1] / r3;
+    };
+    const double start[4] = {0.5, 0, 0, std::sqrt(3.0)}; // eccentricity 0.5
+    lagrange::dop853_stepper<4> fixed(4, 1e-10);
+    lagrange::dop853_stepper<0> sized(4, 1e-10);
+    fixed.start(kepler, 0.0, start, 20.0);
+    sized.start(kepler, 0.0, start, 20.0);
+    int steps = 0;
+    while (fixed.time() < 20.0) {
+        REQUIRE(fixed.step(kepler, 20.0));
+        REQUIRE(sized.step(kepler, 20.0));
+        ++steps;
+        REQUIRE(sized.time() == fixed.time());
+    }
+    CHECK(sized.time() == 20.0);
+    CHECK(steps > 50);
+    for (int i = 0; i < 4; ++i)
+        CHECK_THAT(sized.state()[i], WithinAbs(fixed.state()[i], 1e-14));
+    // and the orbit closes: period 2π a^(3/2) with a = 1, so t = 20 is 3.18 periods; the
+    // energy −1/(2a) = −0.5 is kept to the tolerance
+    const double* x = fixed.state();
+    double energy = 0.5 * (x[2] * x[2] + x[3] * x[3]) - 1 / std::hypot(x[0], x[1]);
+    CHECK_THAT(energy, WithinAbs(-0.5, 1e-8));
+}
