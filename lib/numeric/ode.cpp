@@ -414,8 +414,8 @@ void run_implicit_midpoint(const ode_system& system, const std::vector<double>& 
     double needed = span / h;
     if (needed > static_cast<double>(options.max_steps))
         throw computation_error("implicit midpoint would need " + message_number(needed) + " steps at tolerance " +
-                                message_number(options.tolerance) + " (the limit is " + message_number(options.max_steps) +
-                                "): use a looser tolerance or another method");
+                                message_number(options.tolerance) + " (the limit is " +
+                                message_number(options.max_steps) + "): use a looser tolerance or another method");
     Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(x0.data(), n);
     Eigen::VectorXd y(n), mid(n), f(n), residual(n);
     Eigen::MatrixXd jacobian(n, n);

@@ -171,12 +171,15 @@ struct prepared_motion {
 /// The end time and tolerance of the `simulate` line, or their overrides.
 void read_span(prepared_motion& p, const model& scene, const simulation_settings& settings)
 {
-    p.until = settings.until ? *settings.until : scene.simulation ? real_value(scene.simulation->until, "the end time") : 0;
+    p.until = settings.until     ? *settings.until
+              : scene.simulation ? real_value(scene.simulation->until, "the end time")
+                                 : 0;
     if (!(p.until > 0) || !std::isfinite(p.until))
         throw computation_error("the simulation needs an end time: a `simulate until T` line or --until");
     p.tolerance = settings.tolerance ? *settings.tolerance
-                  : scene.simulation && scene.simulation->tolerance ? real_value(*scene.simulation->tolerance, "the tolerance")
-                                                                    : 1e-9;
+                  : scene.simulation && scene.simulation->tolerance
+                      ? real_value(*scene.simulation->tolerance, "the tolerance")
+                      : 1e-9;
     if (!(p.tolerance >= 1e-14 && p.tolerance < 1))
         throw computation_error("the tolerance " + message_number(p.tolerance, 3) + " is outside 1e-14 … 1");
 }
@@ -264,12 +267,15 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
     if (method_name == "auto") {
         if (result.stiffness > stiffness_threshold) {
             method = ode_method::bdf;
-            result.choice = "auto: the linearized frequencies spread over a factor " + message_number(result.stiffness, 3) +
-                            " (> " + message_number(stiffness_threshold, 3) + "): stiff, implicit BDF";
+            result.choice = "auto: the linearized frequencies spread over a factor " +
+                            message_number(result.stiffness, 3) + " (> " + message_number(stiffness_threshold, 3) +
+                            "): stiff, implicit BDF";
         } else {
-            method = ode_method::dop853; // our fastest at most levels of bench/work_precision; 7th-order dense output
-            result.choice = "auto: the linearized frequencies spread over a factor " + message_number(result.stiffness, 3) +
-                            " (≤ " + message_number(stiffness_threshold, 3) + "): not stiff, explicit " + to_string(method);
+            // our fastest at most levels of bench/work_precision, with a 7th-order dense output
+            method = ode_method::dop853;
+            result.choice = "auto: the linearized frequencies spread over a factor " +
+                            message_number(result.stiffness, 3) + " (≤ " + message_number(stiffness_threshold, 3) +
+                            "): not stiff, explicit " + to_string(method);
         }
     } else {
         std::optional<ode_method> named = ode_method_from_name(method_name);
@@ -518,7 +524,8 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
                     if (name == "energy")
                         point.energy_drift = drift;
                 if (best > max_seconds / 4)
-                    skip = "left out: the looser tolerance " + message_number(tol, 3) + " already took " + message_number(best, 3) + " s";
+                    skip = "left out: the looser tolerance " + message_number(tol, 3) + " already took " +
+                           message_number(best, 3) + " s";
             } catch (const computation_error& error) {
                 point.failure = error.what();
                 skip = "left out: the looser tolerance " + message_number(tol, 3) + " already failed";
