@@ -80,7 +80,8 @@ def main():
     else:
         peer = json.load(open(a.peer_json)) if a.peer_json else run_peer()
     print("Work precision: fastest run whose max relative trajectory error (1001 samples) is within the level")
-    print("(lagrange: fastest of up to 7 repeats; scipy solve_ivp: its script's median; "
+    print("(both sides the median of repeated runs: lagrange of those filling 0.1 s, at least 7; "
+          "scipy solve_ivp of its script's 7, or 3 for runs of 0.2 s or more; "
           "method and tolerance setting in brackets)")
     for problem in ("rigid", "lindp", "dp_small", "dp_large"):
         print(f"\n{problem}: reference ours = {ours['problems'][problem]['reference']}; "
