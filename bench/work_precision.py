@@ -3,8 +3,9 @@
 
 Runs the peer ../shared/peers/work_precision_scipy.py (scipy.integrate.solve_ivp:
 RK45, DOP853, Radau, LSODA; in a private copy, so the shared folder is left
-alone) and build/bench/work_precision (ours: dopri5, rkf78, bulirsch-stoer, bdf,
-implicit-midpoint) on the same four problems with the same error measure, then
+alone) and build/bench/work_precision (ours: dopri5, rkf78, dop853, bulirsch-stoer, bdf,
+implicit-midpoint) on the same four problems with the same error measure, one problem
+at a time (ours, then the peer's), then
 prints for each accuracy level 1e-3 ... 1e-12 the fastest run of each side whose
 trajectory error is within that level, and the ratio.
 
@@ -22,7 +23,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PEERS = os.path.join(HERE, "..", "..", "shared", "peers")
 
 
-def run_peer():
+PROBLEMS = ("rigid", "lindp", "dp_small", "dp_large")
+
+
+def run_peer(problem):
+    """The peer's rows for one problem (its script with --problems PROBLEM)."""
     try:
         import scipy, mpmath, matplotlib  # noqa: F401  (the peer needs them)
     except ImportError:
@@ -31,12 +36,23 @@ def run_peer():
     try:
         for name in ("work_precision_scipy.py", "common.py"):
             shutil.copy(os.path.join(PEERS, name), folder)
-        subprocess.run([sys.executable, "work_precision_scipy.py"], cwd=folder, check=True,
-                       stdout=sys.stderr)
+        subprocess.run([sys.executable, "work_precision_scipy.py", "--problems", problem], cwd=folder,
+                       check=True, stdout=sys.stderr)
         with open(os.path.join(folder, "results", "work_precision.json")) as f:
             return json.load(f)
     finally:
         shutil.rmtree(folder, ignore_errors=True)
+
+
+def run_ours(build, problem):
+    out = subprocess.run([os.path.join(build, "bench", "work_precision"), "10", problem], check=True,
+                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL).stdout
+    return json.loads(out)
+
+
+def merge(into, part):
+    into.setdefault("problems", {}).update(part.get("problems", {}))
+    into.setdefault("rows", []).extend(part.get("rows", []))
 
 
 def parse_peer_log(path):
@@ -69,21 +85,23 @@ def main():
     ap.add_argument("--ours-json")
     ap.add_argument("--peer-log", help="the peer's printed progress, if its run was cut short")
     a = ap.parse_args()
-    if a.ours_json:
-        ours = json.load(open(a.ours_json))
-    else:
-        out = subprocess.run([os.path.join(a.build, "bench", "work_precision")], check=True,
-                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL).stdout
-        ours = json.loads(out)
+    # One problem at a time, ours and then the peer's, so that both sides of a problem are
+    # timed within a minute or two of each other: the host's load changes over minutes.
+    ours = json.load(open(a.ours_json)) if a.ours_json else {}
     if a.peer_log:
         peer = parse_peer_log(a.peer_log)
     else:
-        peer = json.load(open(a.peer_json)) if a.peer_json else run_peer()
+        peer = json.load(open(a.peer_json)) if a.peer_json else {}
+    for problem in PROBLEMS:
+        if not a.ours_json:
+            merge(ours, run_ours(a.build, problem))
+        if not a.peer_json and not a.peer_log:
+            merge(peer, run_peer(problem))
     print("Work precision: fastest run whose max relative trajectory error (1001 samples) is within the level")
     print("(both sides the median of repeated runs: lagrange of those filling 0.1 s, at least 7; "
           "scipy solve_ivp of its script's 7, or 3 for runs of 0.2 s or more; "
           "method and tolerance setting in brackets)")
-    for problem in ("rigid", "lindp", "dp_small", "dp_large"):
+    for problem in PROBLEMS:
         print(f"\n{problem}: reference ours = {ours['problems'][problem]['reference']}; "
               f"scipy = {peer['problems'].get(problem, {}).get('reference', 'see its docstring')}")
         print(f"  {'level':>6} {'lagrange_s':>11} {'':24} {'scipy_s':>9} {'':18} {'ratio':>7}")
