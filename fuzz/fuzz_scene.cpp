@@ -1,7 +1,9 @@
 /** @file fuzz_scene.cpp
  *  libFuzzer target over the whole path: scene text -> parse -> check -> derive ->
  *  linearize -> characteristic polynomial -> symbolic and numeric modes -> the three
- *  printers, with small budgets (fuzz/run.sh builds and runs it).
+ *  printers, with small budgets (fuzz/run.sh builds and runs it); and `--sweep`: a
+ *  comment line `#sweep SPEC` (SPEC as after --sweep, `;` between axes) sweeps the
+ *  numeric modes over at most 64 points through the sweep printers.
  *
  *  Allowed outcomes: scene_error (bad input, exit 2) or computation_error (exit 1,
  *  budget_exceeded included). Anything else that escapes — a GiNaC or CLN internal
@@ -9,8 +11,10 @@
  *  past libFuzzer's -timeout — is a bug. */
 #include "engine/analysis.h"
 #include "output/document.h"
+#include "output/sweep_output.h"
 #include "scene/lower.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +22,33 @@
 #include <sstream>
 #include <string>
 #include <typeinfo>
+#include <vector>
+
+namespace {
+
+/// The `#sweep SPEC` line's axes (as `lagrange --sweep` parses them), swept and printed
+/// as text and JSON when the grid has at most 64 points (larger grids are the same loop).
+void sweep(const std::string& text, const lagrange::model& scene, const lagrange::analysis& result,
+           std::ostream& out)
+{
+    std::size_t at = text.find("#sweep ");
+    if (at == std::string::npos || !result.linearization)
+        return;
+    std::size_t begin = at + 7, end = text.find('\n', begin);
+    std::string line = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    std::vector<lagrange::sweep_axis> axes;
+    for (std::size_t start = 0; start <= line.size() && axes.size() < 3;) {
+        std::size_t end = std::min(line.find(';', start), line.size());
+        axes.push_back(lagrange::parse_sweep_axis(line.substr(start, end - start), scene));
+        start = end + 1;
+    }
+    if (lagrange::sweep_size(axes) > 64)
+        return;
+    lagrange::write_sweep(out, scene, *result.linearization, axes, "text");
+    lagrange::write_sweep(out, scene, *result.linearization, axes, "json");
+}
+
+} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
@@ -46,6 +77,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         lagrange::write_text(out, result);
         lagrange::write_json(out, result);
         lagrange::write_latex(out, result);
+        sweep(text, scene, result, out);
     } catch (const lagrange::scene_error& error) {
         (void)lagrange::format_error(error);
     } catch (const lagrange::computation_error&) {

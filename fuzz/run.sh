@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer target with clang (ASan + UBSan) in build-fuzz/ and runs it.
 #   fuzz/run.sh [SECONDS]   (default 60); extra libFuzzer flags in FUZZ_FLAGS
-# The corpus is fuzz/corpus (kept between runs, not in git), seeded from examples/,
+# The corpus is fuzz/corpus (kept between runs, not in git), seeded on every run from examples/,
 # tests/seeds and fuzz/seeds. Crashes go to fuzz/crashes/. Runs under `nice -n 19`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,7 +16,10 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=
 nice -n 19 cmake --build build-fuzz -j "${FUZZ_JOBS:-2}" --target lagrange_fuzz >/dev/null
 
 mkdir -p fuzz/corpus fuzz/crashes
-if [ -z "$(ls -A fuzz/corpus)" ]; then cp examples/*.lag fuzz/seeds/*.lag fuzz/corpus/; fi
+# the seeds join the corpus on every run (new seeds too), never overwriting what is there
+for seed in examples/*.lag fuzz/seeds/*.lag; do
+  [ -e "fuzz/corpus/$(basename "$seed")" ] || cp "$seed" fuzz/corpus/
+done
 # Short allocation stacks: GiNaC allocates constantly, and deep stacks slow ASan down 2x.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1:malloc_context_size=5}"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/sanitizers/lsan.supp:print_suppressions=0"

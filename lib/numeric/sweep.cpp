@@ -52,8 +52,8 @@ double sweep_axis::at(std::size_t k) const
     if (k + 1 == count)
         return to;
     double t = static_cast<double>(k) / static_cast<double>(count - 1);
-    if (logarithmic)
-        return std::exp(std::log(from) + t * (std::log(to) - std::log(from)));
+    if (logarithmic) // in base 10, so that the grid's powers of ten come out exact (1e-3, not 0.0010000000000000002)
+        return std::pow(10.0, std::log10(from) + t * (std::log10(to) - std::log10(from)));
     return from + t * (to - from);
 }
 
