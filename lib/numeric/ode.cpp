@@ -518,6 +518,17 @@ trajectory integrate(const ode_system& system, ode_method method, const std::vec
     return result;
 }
 
+trajectory integrate_at(const ode_system& system, ode_method method, const std::vector<double>& x0,
+                        integration_options options, const std::vector<double>& times)
+{
+    if (times.empty())
+        throw std::invalid_argument("no output times");
+    options.until = times.back();
+    options.times = times;
+    options.outputs = true;
+    return integrate(system, method, x0, options);
+}
+
 double trajectory_difference(const trajectory& a, const trajectory& b)
 {
     if (a.states.size() != b.states.size())

@@ -98,6 +98,11 @@ struct trajectory {
 trajectory integrate(const ode_system& system, ode_method method, const std::vector<double>& x0,
                      const integration_options& options);
 
+/// `integrate` with its output at exactly `times` (ascending, from options.start; the last
+/// is the end): a reference at another run's step ends, as for rkf78, which has no interpolant.
+trajectory integrate_at(const ode_system& system, ode_method method, const std::vector<double>& x0,
+                        integration_options options, const std::vector<double>& times);
+
 /// Relative error between two trajectories at the same output times:
 /// max_k ‖a_k − b_k‖₂ / max_k ‖b_k‖₂.
 double trajectory_difference(const trajectory& a, const trajectory& b);

@@ -538,10 +538,7 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
                 } else if (measure.outputs) {
                     point.error = trajectory_difference(run, reference);
                 } else {
-                    integration_options to_step_ends = fine;
-                    to_step_ends.until = run.times.back();
-                    to_step_ends.times = run.times;
-                    point.error = trajectory_difference(run, integrate(system, reference_method, x0, to_step_ends));
+                    point.error = trajectory_difference(run, integrate_at(system, reference_method, x0, fine, run.times));
                 }
                 for (const auto& [name, drift] : run.invariant_drift)
                     if (name == "energy")
