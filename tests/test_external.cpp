@@ -1,6 +1,6 @@
 /** @file test_external.cpp
  *  Private temporary folders and running programs without a shell. */
-#include "output/external.h"
+#include "system/external.h"
 #include "scene/source.h"
 
 #include <catch2/catch.hpp>

@@ -351,12 +351,12 @@ TEST_CASE("numeric modes: a non-finite value is an error naming its cause", "[nu
     }
 }
 
-TEST_CASE("nothing runs a shell: no system or popen, and programs start only from the two runners", "[output]")
+TEST_CASE("nothing runs a shell: no system or popen, and programs start only from the one runner", "[output]")
 {
     // A guard over the sources: scene text must never reach a shell. External programs
     // (cc for native equations of motion; gnuplot and pdflatex) are started with an
-    // argument vector, and only from these two files.
-    const std::set<std::string> runners = {"lib/numeric/native_code.cpp", "lib/output/external.cpp"};
+    // argument vector, and only from this file (run_program).
+    const std::set<std::string> runners = {"lib/system/external.cpp"};
     std::size_t scanned = 0;
     std::set<std::string> starting;
     for (const char* folder : {"lib", "cli"})
@@ -378,10 +378,10 @@ TEST_CASE("nothing runs a shell: no system or popen, and programs start only fro
         }
     CHECK(scanned > 20);
     for (const std::string& path : starting) {
-        INFO(path << " starts a program but is not one of the two runners");
+        INFO(path << " starts a program but is not the runner");
         CHECK(runners.count(path) == 1);
     }
-    CHECK(starting.size() == 2);
+    CHECK(starting.size() == 1);
 }
 
 // Regressions from the fuzzer (tests/fuzz_regressions/, named after what they showed).

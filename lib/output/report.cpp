@@ -7,7 +7,7 @@
 #include "output/report.h"
 
 #include "mechanics/lagrangian.h"
-#include "output/external.h"
+#include "system/external.h"
 #include "output/latex_blocks.h"
 #include "output/print.h"
 #include "output/report_sections.h"

@@ -1,10 +1,10 @@
 /** @file simulation_output.cpp
  *  Simulation sections, CSV, and gnuplot plots. gnuplot runs through
- *  run_program (output/external.h: an argument vector, no shell) on a script file in
+ *  run_program (system/external.h: an argument vector, no shell) on a script file in
  *  a private temporary folder that is always removed. */
 #include "output/simulation_output.h"
 
-#include "output/external.h"
+#include "system/external.h"
 #include "output/print.h"
 #include "scene/source.h"
 

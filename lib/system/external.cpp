@@ -1,6 +1,6 @@
 /** @file external.cpp
- *  Private folders and fork/execvp for gnuplot and pdflatex. */
-#include "output/external.h"
+ *  Private folders and fork/execvp for cc, gnuplot and pdflatex. */
+#include "system/external.h"
 
 #include "scene/source.h"
 
@@ -22,10 +22,10 @@ extern char** environ;
 
 namespace lagrange {
 
-private_directory::private_directory()
+private_directory::private_directory(const std::string& prefix)
 {
     const char* base = std::getenv("TMPDIR");
-    std::string pattern = std::string(base && *base ? base : "/tmp") + "/lagrange-XXXXXX";
+    std::string pattern = std::string(base && *base ? base : "/tmp") + "/" + prefix + "-XXXXXX";
     std::vector<char> buffer(pattern.begin(), pattern.end());
     buffer.push_back('\0');
     if (!mkdtemp(buffer.data()))

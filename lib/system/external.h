@@ -1,7 +1,8 @@
 /** @file external.h
- *  Running the external programs of the report (gnuplot, pdflatex): a private
- *  temporary folder, and fork/execvp without a shell, so no scene text ever
- *  reaches a command line. */
+ *  Running external programs — the C compiler for native equations of motion,
+ *  gnuplot and pdflatex for plots and reports — the one way the library does: in a
+ *  private temporary folder, by fork/execvp without a shell, so no scene text ever
+ *  reaches a command line. Below the other modules: numeric/ and output/ both use it. */
 #pragma once
 
 #include <string>
@@ -13,7 +14,8 @@ namespace lagrange {
 /// content when the object goes away.
 class private_directory {
 public:
-    private_directory();
+    /// Named `PREFIX-XXXXXX` in $TMPDIR (or /tmp); throws computation_error if it cannot be made.
+    explicit private_directory(const std::string& prefix = "lagrange");
     ~private_directory();
     private_directory(const private_directory&) = delete;
     private_directory& operator=(const private_directory&) = delete;
