@@ -120,34 +120,32 @@ int main(int argc, char** argv)
         options.max_seconds = max_seconds;
         options.max_steps = 20'000'000;
         options.frequency = p.frequencies.empty() ? 1.0 : p.frequencies.back();
+        lagrange::integration_options fine = options;
+        fine.tolerance = 1e-14;
+        // The exact solution at `times`, where there is one.
+        auto exact_at = [&](const std::vector<double>& times) {
+            lagrange::trajectory at;
+            for (double t : times) {
+                std::vector<double> x(p.system.dimension);
+                p.system.exact(t, x.data());
+                at.states.push_back(x);
+            }
+            return at;
+        };
         // The reference at the 1001 output times, computed once (not inside the timed runs).
         lagrange::trajectory reference;
         if (p.system.exact) {
-            for (int k = 0; k <= 1000; ++k) {
-                double t = k == 1000 ? p.until : p.until * k / 1000.0;
-                std::vector<double> x(p.system.dimension);
-                p.system.exact(t, x.data());
-                reference.states.push_back(x);
-            }
+            std::vector<double> times;
+            for (int k = 0; k <= 1000; ++k)
+                times.push_back(k == 1000 ? p.until : p.until * k / 1000.0);
+            reference = exact_at(times);
         } else {
-            lagrange::integration_options fine = options;
-            fine.tolerance = 1e-14;
             reference = lagrange::integrate(p.system, lagrange::ode_method::rkf78, p.x0, fine);
         }
         // The reference at other times (rkf78's step ends): exact, or rkf78 at 1e-14 to them.
         auto reference_at = [&](const std::vector<double>& times) {
-            lagrange::trajectory at;
-            if (p.system.exact) {
-                for (double t : times) {
-                    std::vector<double> x(p.system.dimension);
-                    p.system.exact(t, x.data());
-                    at.states.push_back(x);
-                }
-                return at;
-            }
-            lagrange::integration_options fine = options;
-            fine.tolerance = 1e-14;
-            return lagrange::integrate_at(p.system, lagrange::ode_method::rkf78, p.x0, fine, times);
+            return p.system.exact ? exact_at(times)
+                                  : lagrange::integrate_at(p.system, lagrange::ode_method::rkf78, p.x0, fine, times);
         };
         // Timed as the peer times solve_ivp: no states kept, no invariants evaluated; the
         // error and the energy drift come from one more, untimed run with the same steps.

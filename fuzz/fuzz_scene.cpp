@@ -38,9 +38,9 @@ void sweep(const std::string& text, const lagrange::model& scene, const lagrange
     std::string line = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
     std::vector<lagrange::sweep_axis> axes;
     for (std::size_t start = 0; start <= line.size() && axes.size() < 3;) {
-        std::size_t end = std::min(line.find(';', start), line.size());
-        axes.push_back(lagrange::parse_sweep_axis(line.substr(start, end - start), scene));
-        start = end + 1;
+        std::size_t stop = std::min(line.find(';', start), line.size());
+        axes.push_back(lagrange::parse_sweep_axis(line.substr(start, stop - start), scene));
+        start = stop + 1;
     }
     if (lagrange::sweep_size(axes) > 64)
         return;

@@ -8,33 +8,30 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <optional>
+#include <sstream>
 
 namespace lagrange {
 
 std::shared_ptr<native_module> native_module::compile(const std::vector<const expression_program*>& programs)
 {
+    std::ostringstream code;
+    code << "#include <math.h>\n";
+    for (std::size_t k = 0; k < programs.size(); ++k)
+        code << programs[k]->c_source("program_" + std::to_string(k));
+    code << "void (*lagrange_programs[])(const double*, double*) = {";
+    for (std::size_t k = 0; k < programs.size(); ++k)
+        code << (k ? ", " : "") << "program_" << k;
+    code << "};\n";
     std::optional<private_directory> folder;
     try {
         folder.emplace("lagrange-native");
+        folder->write("programs.c", code.str());
     } catch (const computation_error&) {
-        return nullptr; // no temporary folder: the interpreter runs
+        return nullptr; // no temporary folder or file: the interpreter runs
     }
     std::string source = folder->path() + "/programs.c";
     std::string library = folder->path() + "/programs.so";
-    {
-        std::ofstream out(source);
-        out << "#include <math.h>\n";
-        for (std::size_t k = 0; k < programs.size(); ++k)
-            out << programs[k]->c_source("program_" + std::to_string(k));
-        out << "void (*lagrange_programs[])(const double*, double*) = {";
-        for (std::size_t k = 0; k < programs.size(); ++k)
-            out << (k ? ", " : "") << "program_" << k;
-        out << "};\n";
-        if (!out)
-            return nullptr;
-    }
     const char* compiler = std::getenv("LAGRANGE_CC");
     std::string cc = compiler && *compiler ? compiler : "cc";
     if (run_program({cc, "-O2", "-fno-math-errno", "-shared", "-fPIC", "-o", library, source, "-lm"}, folder->path(),

@@ -323,17 +323,17 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         ode_method reference = method == ode_method::implicit_midpoint
                                    ? (result.stiffness > stiffness_threshold ? ode_method::bdf : ode_method::rkf78)
                                    : method;
-        error_estimate result;
+        error_estimate found;
         trajectory check;
         try {
             check = integrate(system, reference, x0, fine);
-            result = {trajectory_difference(run, check),
-                      "against " + to_string(reference) + " at tolerance " + message_number(fine.tolerance, 3)};
+            found = {trajectory_difference(run, check),
+                     "against " + to_string(reference) + " at tolerance " + message_number(fine.tolerance, 3)};
         } catch (const computation_error& error) {
             return {std::nullopt, std::string("no estimate: the reference run stopped: ") + error.what()};
         }
         if (tolerance / 1000 >= 1e-14)
-            return result;
+            return found;
         // At the floor the reference is less than 1000 times tighter, and rounding may rule
         // both runs: two runs can then agree by chance far better than either agrees with the
         // motion (a pendulum 2.65e-6 rad below its separatrix: 3.6e-8 apart, 7e-6 off). The
@@ -345,14 +345,14 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         fine.max_seconds = std::max(1.0, seconds_left - run.seconds - check.seconds);
         try {
             double rounding = trajectory_difference(check, integrate(system, reference, moved, fine));
-            if (rounding > *result.value) {
-                result.value = rounding;
-                result.basis += " and from a start moved by one rounding: rounding rules the error";
+            if (rounding > *found.value) {
+                found.value = rounding;
+                found.basis += " and from a start moved by one rounding: rounding rules the error";
             }
         } catch (const computation_error& error) {
-            result.basis += "; rounding not checked: " + std::string(error.what());
+            found.basis += "; rounding not checked: " + std::string(error.what());
         }
-        return result;
+        return found;
     };
     const auto started = std::chrono::steady_clock::now();
     auto seconds_spent = [&] {
