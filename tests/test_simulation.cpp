@@ -119,7 +119,7 @@ TEST_CASE("simulate: `auto` picks the implicit method on a stiff elastic pendulu
 TEST_CASE("simulate: a run whose error estimate misses the tolerance is repeated tighter", "[simulation]")
 {
     // The main example: the per-step settings of dopri5 and of DOP853 (the automatic choice),
-    // derived from the tolerance on a model problem, give 8.6e-9 and 5.3e-9 over these 30
+    // derived from the tolerance on a model problem, give 8.6e-9 and 4.4e-9 over these 30
     // periods where 1e-9 was asked for.
     lagrange::model scene = load(double_pendulum + "values M = 1, m = 0.01, l = 1, g = 9.81\n"
                                                    "initial theta = 0, phi = 0.05\n"
