@@ -4,6 +4,7 @@
  *  closed-form frequencies, the automatic choice on a stiff scene, energy drift,
  *  exact normal-mode errors, extreme mass ratios, and the messages. */
 #include "engine/analysis.h"
+#include "numeric/free_body_motion.h"
 #include "numeric/simulation.h"
 #include "ode_helpers.h"
 #include "scene_helpers.h"
@@ -357,4 +358,102 @@ TEST_CASE("compiled_motion: native code agrees with the interpreter and leaves n
         CHECK_THAT(g[i], WithinAbs(f[i], 1e-14 * (1 + std::abs(f[i]))));
     for (int i = 0; i < 16; ++i)
         CHECK_THAT(k[i], WithinAbs(j[i], 1e-13 * (1 + std::abs(j[i]))));
+}
+
+TEST_CASE("dop853: the compiled right-hand side gives the numbers of the system's rhs", "[simulation][dop853][native]")
+{
+    // DOP853 calls ode_system::compiled directly; here each system runs with it and without it
+    // (then through `rhs`, std::function and the motion class): every state, the steps and the
+    // evaluations must be the same to the last bit. The scenes take each path of the direct
+    // evaluation: Cramer's rule (2 coordinates), LDLᵀ with a fixed size (3) and a run-time size
+    // (4: a state of 8), explicit time, and a first-order system (a free body).
+    auto chain = [](int links) {
+        std::string text = "parameters l g\ncoordinates";
+        for (int k = 1; k <= links; ++k)
+            text += " q" + std::to_string(k);
+        text += "\n";
+        std::string x = "0", y = "0";
+        for (int k = 1; k <= links; ++k) {
+            x += " + l*sin(q" + std::to_string(k) + ")";
+            y += " - l*cos(q" + std::to_string(k) + ")";
+            text += "point p" + std::to_string(k) + " mass " + std::to_string(k) + " at (" + x + ", " + y + ")\n";
+        }
+        text += "gravity g along (0, -1)\nvalues l = 1.2, g = 9.81\ninitial";
+        for (int k = 1; k <= links; ++k)
+            text += std::string(k > 1 ? "," : "") + " q" + std::to_string(k) + " = " + std::to_string(0.3 * k);
+        return text + "\n";
+    };
+    const std::vector<std::pair<std::string, std::string>> scenes = {
+        {"double pendulum", chain(2)},
+        {"triple pendulum", chain(3)},
+        {"quadruple pendulum", chain(4)},
+        {"driven oscillators", "coordinates x y\nT = 1/2*x'^2 + 1/2*(2 + sin(t))*y'^2 + 1/4*x'*y'\n"
+                               "V = 1/2*x^2 + 3/2*y^2 - x*cos(3*t)\ninitial x = 0.5, y = -0.2\n"},
+    };
+    lagrange::integration_options options;
+    options.until = 5;
+    options.tolerance = 1e-9;
+    auto same_run = [&](const lagrange::ode_system& system, const std::vector<double>& x0) {
+        REQUIRE(system.compiled);
+        lagrange::ode_system through_rhs = system;
+        through_rhs.compiled.reset();
+        lagrange::trajectory direct = lagrange::integrate(system, lagrange::ode_method::dop853, x0, options);
+        lagrange::trajectory generic = lagrange::integrate(through_rhs, lagrange::ode_method::dop853, x0, options);
+        CHECK(direct.steps == generic.steps);
+        CHECK(direct.evaluations == generic.evaluations);
+        CHECK(direct.evaluations > 12 * direct.steps);
+        CHECK(direct.states == generic.states); // doubles, bit for bit
+        CHECK(direct.final_state == generic.final_state);
+    };
+    for (const auto& [name, text] : scenes) {
+        INFO(name);
+        lagrange::model scene = load(text);
+        lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+        lagrange::compiled_motion motion(scene, *a.lagrangian, lagrange::first_value_point(scene));
+        if (!motion.compile_native()) {
+            WARN("no C compiler: the compiled path is not tested");
+            return;
+        }
+        CHECK(motion.conservative() == (name != "driven oscillators"));
+        same_run(motion.system(), lagrange::initial_state_vector(scene, lagrange::first_value_point(scene)));
+    }
+    lagrange::model body_scene = load("body X inertia (1, 2, 3) mass 1\nomega X (w1, w2, w3)\n"
+                                      "initial w1 = 1, w2 = 0.1, w3 = 0.5\n");
+    lagrange::free_body_motion body(body_scene, lagrange::first_value_point(body_scene));
+    REQUIRE(body.compile_native());
+    same_run(body.system(), body.initial());
+}
+
+TEST_CASE("dop853: a mass matrix that stops being positive definite is the same message on both paths",
+          "[simulation][dop853][errors]")
+{
+    // M = diag(1, 1 − t/2) is singular at t = 2 (y stays at rest, so nothing else gives way first): the
+    // run over [0, 3] must stop just past it with the message, whether DOP853 evaluates the compiled
+    // program directly or through the system's rhs.
+    lagrange::model scene = load("coordinates x y\nT = 1/2*x'^2 + 1/2*(1 - t/2)*y'^2\nV = 1/2*x^2\n"
+                                 "initial x = 1\n");
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    lagrange::compiled_motion motion(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    std::vector<double> x0 = lagrange::initial_state_vector(scene, lagrange::first_value_point(scene));
+    lagrange::integration_options options;
+    options.until = 3;
+    auto message = [&](const lagrange::ode_system& system) {
+        try {
+            lagrange::integrate(system, lagrange::ode_method::dop853, x0, options);
+        } catch (const lagrange::computation_error& error) {
+            return std::string(error.what());
+        }
+        return std::string("no error");
+    };
+    std::string interpreted = message(motion.system());
+    CHECK(interpreted.find("the mass matrix is not positive definite at t = 2") == 0);
+    if (!motion.compile_native()) {
+        WARN("no C compiler: the compiled path is not tested");
+        return;
+    }
+    lagrange::ode_system system = motion.system();
+    REQUIRE(system.compiled);
+    CHECK(message(system) == interpreted);
+    system.compiled.reset();
+    CHECK(message(system) == interpreted);
 }

@@ -2,6 +2,7 @@
  *  Equations of motion compiled to straight-line code and solved per evaluation. */
 #include "numeric/compiled_motion.h"
 
+#include "numeric/mass_matrix.h"
 #include "numeric/values.h"
 
 #include <cmath>
@@ -24,42 +25,6 @@ GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::
                                     "` (a `values` line or --values)");
     }
     return e.subs(substitutions);
-}
-
-/// LDLᵀ factor of the symmetric n × n matrix `m` (row-major) in place: L below the
-/// diagonal, D on it. Written by hand: for the 2–6 coordinates of a scene a plain
-/// loop without square roots beats a general library call, and it reports the failing
-/// pivot (a mass matrix that is not positive definite).
-bool factor_ldlt(double* m, std::size_t n)
-{
-    for (std::size_t j = 0; j < n; ++j) {
-        double d = m[j * n + j];
-        for (std::size_t k = 0; k < j; ++k)
-            d -= m[j * n + k] * m[j * n + k] * m[k * n + k];
-        if (!(d > 0))
-            return false;
-        m[j * n + j] = d;
-        for (std::size_t i = j + 1; i < n; ++i) {
-            double s = m[i * n + j];
-            for (std::size_t k = 0; k < j; ++k)
-                s -= m[i * n + k] * m[j * n + k] * m[k * n + k];
-            m[i * n + j] = s / d;
-        }
-    }
-    return true;
-}
-
-/// Solves L D Lᵀ y = b in place with the factor from factor_ldlt().
-void ldlt_solve(const double* l, std::size_t n, double* b)
-{
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t k = 0; k < i; ++k)
-            b[i] -= l[i * n + k] * b[k];
-    for (std::size_t i = 0; i < n; ++i)
-        b[i] /= l[i * n + i];
-    for (std::size_t i = n; i-- > 0;)
-        for (std::size_t k = i + 1; k < n; ++k)
-            b[i] -= l[k * n + i] * b[k];
 }
 
 } // namespace
@@ -136,24 +101,8 @@ void compiled_motion::solve(double t, const double* x, double* acceleration, boo
         native_.rhs(symbols, outputs_.data());
     else
         rhs_program_.run(symbols, scratch_, outputs_.data());
-    if (n_ == 2 && !keep_factor) {
-        // Two coordinates: Cramer's rule (the common case, without the factorization's loops).
-        const double* o = outputs_.data();
-        double a = o[0], b = o[1], d = o[3], determinant = a * d - b * b;
-        if (!(a > 0 && determinant > 0))
-            throw computation_error("the mass matrix is not positive definite at t = " + message_number(t) +
-                                    " (a singular configuration of the coordinates)");
-        double inverse = 1 / determinant;
-        acceleration[0] = (d * o[4] - b * o[5]) * inverse;
-        acceleration[1] = (a * o[5] - b * o[4]) * inverse;
-        return;
-    }
-    std::copy(outputs_.begin(), outputs_.begin() + static_cast<std::ptrdiff_t>(n_ * n_), factor_.begin());
-    std::copy(outputs_.begin() + static_cast<std::ptrdiff_t>(n_ * n_), outputs_.end(), acceleration);
-    if (!factor_ldlt(factor_.data(), n_))
-        throw computation_error("the mass matrix is not positive definite at t = " + message_number(t) +
-                                " (a singular configuration of the coordinates)");
-    ldlt_solve(factor_.data(), n_, acceleration);
+    if (!solve_mass_matrix(outputs_.data(), n_, factor_.data(), acceleration, keep_factor))
+        throw computation_error(singular_mass_matrix_message(t));
 }
 
 void compiled_motion::rhs(double t, const double* x, double* dxdt) const
@@ -217,6 +166,8 @@ ode_system compiled_motion::system(double energy_scale) const
     s.jacobian = [this](double t, const double* x, double* out) { jacobian(t, x, out); };
     if (conservative_)
         s.invariants.push_back({"energy", [this](const double* x) { return energy(x); }, energy_scale});
+    if (native_.rhs)
+        s.compiled = ode_system::compiled_rhs{native_.rhs, n_, !conservative_};
     return s;
 }
 

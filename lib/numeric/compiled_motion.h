@@ -46,7 +46,8 @@ public:
     bool native() const { return static_cast<bool>(native_); }
 
     /// The system for the integrators: rhs, Jacobian, and the energy as an invariant
-    /// (relative to `energy_scale`, 0 for its initial magnitude) when it is conserved.
+    /// (relative to `energy_scale`, 0 for its initial magnitude) when it is conserved; after
+    /// compile_native() also the native program as `compiled` (ode.h), which DOP853 calls directly.
     ode_system system(double energy_scale = 0) const;
 
 private:

@@ -182,6 +182,8 @@ ode_system free_body_motion::system() const
     s.dimension = 3;
     s.rhs = [this](double t, const double* x, double* dxdt) { rhs(t, x, dxdt); };
     s.jacobian = [this](double t, const double* x, double* out) { jacobian(t, x, out); };
+    if (native_.rhs)
+        s.compiled = ode_system::compiled_rhs{native_.rhs, 0, true};
     if (torque_free_) {
         s.invariants.push_back({"energy", [this](const double* w) {
                                     double e = 0;

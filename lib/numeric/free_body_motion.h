@@ -48,7 +48,8 @@ public:
 
     /// The system for the integrators (refers to this object, which must outlive it):
     /// rhs, Jacobian, the invariants "energy" (T) and "angular_momentum_squared" (|L|²)
-    /// when torque-free, and the exact solution when there is one.
+    /// when torque-free, the exact solution when there is one, and after compile_native()
+    /// the native program as `compiled` (ode.h), which DOP853 calls directly.
     ode_system system() const;
 
 private:

@@ -7,6 +7,7 @@
 #include "numeric/ode.h"
 
 #include "numeric/dop853.h"
+#include "numeric/mass_matrix.h"
 #include "numeric/values.h"
 
 #include "scene/source.h"
@@ -19,6 +20,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -82,10 +84,21 @@ public:
 
     void rhs(double t, const double* x, double* dxdt)
     {
-        if ((++result_.evaluations & 1023) == 0)
-            check_limits(t);
+        count(t);
         system_.rhs(t, x, dxdt);
     }
+
+    /// Counts one evaluation (at t) and checks the limits now and then.
+    void count(double t)
+    {
+        if ((++result_.evaluations & 1023) == 0)
+            check_limits(t);
+    }
+
+    /// Adds `evaluations` counted elsewhere (compiled_evaluation).
+    void add_evaluations(std::size_t evaluations) { result_.evaluations += evaluations; }
+
+    const ode_system& system() const { return system_; }
 
     void check_limits(double t) const
     {
@@ -241,11 +254,75 @@ void run_odeint(ode_method method, const std::vector<double>& x0, const integrat
 
 // ---- DOP853 ----
 
-template <int Dim>
-void run_dop853_sized(const std::vector<double>& x0, const integration_options& options, run_state& run,
-                      trajectory& result)
+/// The system's compiled right-hand side (ode_system::compiled) evaluated inline, counted
+/// as run_state::rhs counts: the same numbers as the system's rhs, without its out-of-line
+/// layers. `Coordinates` > 0: M q̈ = f with that many coordinates (its scratch on the stack);
+/// 0: any number, read at run time; −1: the program writes dxdt (a first-order system).
+template <int Coordinates>
+class compiled_evaluation {
+public:
+    compiled_evaluation(run_state& run, const ode_system::compiled_rhs& compiled, std::size_t dimension)
+        : run_(run), program_(compiled.program), time_(compiled.time), dimension_(dimension),
+          n_(Coordinates > 0 ? static_cast<std::size_t>(Coordinates) : compiled.coordinates)
+    {
+        if constexpr (Coordinates == 0) {
+            symbols_.resize(dimension_ + 1);
+            outputs_.resize(n_ * n_ + n_);
+            factor_.resize(n_ * n_);
+        } else if constexpr (Coordinates < 0) {
+            symbols_.resize(dimension_ + 1);
+        }
+    }
+
+    compiled_evaluation(const compiled_evaluation&) = delete;
+    compiled_evaluation& operator=(const compiled_evaluation&) = delete;
+    ~compiled_evaluation() { run_.add_evaluations(count_); }
+
+    void operator()(double t, const double* x, double* dxdt)
+    {
+        // Counted here, in a register, and added to the run's count every 1024 evaluations.
+        if (++count_ == 1024) {
+            run_.add_evaluations(count_);
+            count_ = 0;
+            run_.check_limits(t);
+        }
+        const double* symbols = x;
+        if (time_) {
+            std::copy(x, x + dimension(), symbols_.begin());
+            symbols_[dimension()] = t;
+            symbols = symbols_.data();
+        }
+        if constexpr (Coordinates < 0) {
+            program_(symbols, dxdt);
+        } else {
+            const std::size_t n = coordinates();
+            program_(symbols, outputs_.data());
+            std::copy(x + n, x + 2 * n, dxdt);
+            if (!solve_mass_matrix(outputs_.data(), n, factor_.data(), dxdt + n))
+                throw computation_error(singular_mass_matrix_message(t));
+        }
+    }
+
+private:
+    static constexpr std::size_t fixed = Coordinates > 0 ? static_cast<std::size_t>(Coordinates) : 0;
+    std::size_t coordinates() const { return Coordinates > 0 ? fixed : n_; }
+    std::size_t dimension() const { return Coordinates > 0 ? 2 * fixed : dimension_; }
+    template <std::size_t N>
+    using scratch = std::conditional_t<(Coordinates > 0), std::array<double, N>, std::vector<double>>;
+    run_state& run_;
+    std::size_t count_ = 0;
+    void (*program_)(const double*, double*);
+    bool time_;
+    std::size_t dimension_, n_;
+    scratch<2 * fixed + 1> symbols_{};
+    scratch<fixed * fixed + fixed> outputs_{};
+    scratch<fixed * fixed> factor_{};
+};
+
+template <int Dim, class F>
+void run_dop853_with(F& f, const std::vector<double>& x0, const integration_options& options, run_state& run,
+                     trajectory& result)
 {
-    auto f = [&run](double t, const double* x, double* dxdt) { run.rhs(t, x, dxdt); };
     dop853_stepper<Dim> stepper(x0.size(), options.tolerance);
     stepper.start(f, options.start, x0.data(), options.until);
     run.observe(options.start, x0.data());
@@ -274,6 +351,30 @@ void run_dop853_sized(const std::vector<double>& x0, const integration_options& 
             run.observe(times[k], at.data());
         }
     }
+}
+
+/// DOP853 on the compiled right-hand side when the system has one (and its coordinates fit
+/// the state), else through the system's rhs.
+template <int Dim>
+void run_dop853_sized(const std::vector<double>& x0, const integration_options& options, run_state& run,
+                      trajectory& result)
+{
+    const auto& compiled = run.system().compiled;
+    if (compiled && compiled->program && compiled->coordinates == 0) {
+        compiled_evaluation<-1> f(run, *compiled, x0.size());
+        return run_dop853_with<Dim>(f, x0, options, run, result);
+    }
+    if (compiled && compiled->program && 2 * compiled->coordinates == x0.size()) {
+        if constexpr (Dim > 0 && Dim % 2 == 0) {
+            compiled_evaluation<Dim / 2> f(run, *compiled, x0.size());
+            return run_dop853_with<Dim>(f, x0, options, run, result);
+        } else {
+            compiled_evaluation<0> f(run, *compiled, x0.size());
+            return run_dop853_with<Dim>(f, x0, options, run, result);
+        }
+    }
+    auto f = [&run](double t, const double* x, double* dxdt) { run.rhs(t, x, dxdt); };
+    run_dop853_with<Dim>(f, x0, options, run, result);
 }
 
 /// Fixed-size states for the common small dimensions (a pendulum's 2 and 4, a free body's 3).
