@@ -278,14 +278,13 @@ public:
     compiled_evaluation& operator=(const compiled_evaluation&) = delete;
     ~compiled_evaluation() { run_.add_evaluations(count_); }
 
-    void operator()(double t, const double* x, double* dxdt)
+    // Inlined into each of DOP853's stages (GCC calls it out of line otherwise, and the run then
+    // takes up to a tenth longer on a two-coordinate system).
+    [[gnu::always_inline]] void operator()(double t, const double* x, double* dxdt)
     {
         // Counted here, in a register, and added to the run's count every 1024 evaluations.
-        if (++count_ == 1024) {
-            run_.add_evaluations(count_);
-            count_ = 0;
-            run_.check_limits(t);
-        }
+        if (++count_ == 1024) [[unlikely]]
+            add_count(t);
         const double* symbols = x;
         if (time_) {
             std::copy(x, x + dimension(), symbols_.begin());
@@ -298,12 +297,22 @@ public:
             const std::size_t n = coordinates();
             program_(symbols, outputs_.data());
             std::copy(x + n, x + 2 * n, dxdt);
-            if (!solve_mass_matrix(outputs_.data(), n, factor_.data(), dxdt + n))
-                throw computation_error(singular_mass_matrix_message(t));
+            if (!solve_mass_matrix(outputs_.data(), n, factor_.data(), dxdt + n)) [[unlikely]]
+                singular(t);
         }
     }
 
 private:
+    [[gnu::noinline]] void add_count(double t)
+    {
+        run_.add_evaluations(count_);
+        count_ = 0;
+        run_.check_limits(t);
+    }
+    [[noreturn, gnu::noinline]] static void singular(double t)
+    {
+        throw computation_error(singular_mass_matrix_message(t));
+    }
     static constexpr std::size_t fixed = Coordinates > 0 ? static_cast<std::size_t>(Coordinates) : 0;
     std::size_t coordinates() const { return Coordinates > 0 ? fixed : n_; }
     std::size_t dimension() const { return Coordinates > 0 ? 2 * fixed : dimension_; }
@@ -368,7 +377,7 @@ void run_dop853_sized(const std::vector<double>& x0, const integration_options& 
         if constexpr (Dim > 0 && Dim % 2 == 0) {
             compiled_evaluation<Dim / 2> f(run, *compiled, x0.size());
             return run_dop853_with<Dim>(f, x0, options, run, result);
-        } else {
+        } else if constexpr (Dim == 0) {
             compiled_evaluation<0> f(run, *compiled, x0.size());
             return run_dop853_with<Dim>(f, x0, options, run, result);
         }
