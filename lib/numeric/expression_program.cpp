@@ -758,13 +758,20 @@ expression_program::a_priori_status expression_program::check_a_priori(
     return status;
 }
 
-std::string expression_program::c_source(const std::string& name) const
+bool expression_program::trigonometric() const
+{
+    return std::any_of(code_.begin(), code_.end(), [](const instruction& i) {
+        return i.op == instruction::code::sine || i.op == instruction::code::cosine;
+    });
+}
+
+std::string expression_program::c_source(const std::string& name, bool sleef_sincos) const
 {
     using op = instruction::code;
     std::ostringstream c;
     char number[40];
-    c << "static void " << name << "(const double* s, double* out)\n{\n";
-    for (std::size_t k = 0; k < code_.size(); ++k) {
+    auto is_trigonometric = [](const instruction& i) { return i.op == op::sine || i.op == op::cosine; };
+    auto emit = [&](std::size_t k) {
         const instruction& i = code_[k];
         c << "    const double v" << k << " = ";
         std::string a = "v" + std::to_string(i.first), b = "v" + std::to_string(i.second);
@@ -790,6 +797,59 @@ std::string expression_program::c_source(const std::string& name) const
         case op::logarithm: c << "log(" << a << ")"; break;
         }
         c << ";\n";
+    };
+    c << "static void " << name << "(const double* s, double* out)\n{\n";
+    if (!sleef_sincos) {
+        for (std::size_t k = 0; k < code_.size(); ++k)
+            emit(k);
+    } else {
+        // Depth of a slot: the most sines and cosines nested on any path to it. The slots of
+        // depth D − 1 are all known before any sine or cosine of depth D is needed.
+        std::vector<int> depth(code_.size(), 0);
+        int deepest = 0;
+        for (std::size_t k = 0; k < code_.size(); ++k) {
+            const instruction& i = code_[k];
+            int d = 0;
+            switch (i.op) {
+            case op::constant:
+            case op::symbol: break;
+            case op::add:
+            case op::mul: d = std::max(depth[static_cast<std::size_t>(i.first)], depth[static_cast<std::size_t>(i.second)]); break;
+            default: d = depth[static_cast<std::size_t>(i.first)]; break; // unary (integer_power: second is its exponent)
+            }
+            depth[k] = d + (is_trigonometric(i) ? 1 : 0);
+            deepest = std::max(deepest, depth[k]);
+        }
+        for (int d = 0; d <= deepest; ++d) {
+            // The sines and cosines of depth d: one sincos per distinct argument, four per call.
+            std::vector<int> arguments;
+            for (std::size_t k = 0; k < code_.size(); ++k)
+                if (depth[k] == d && is_trigonometric(code_[k]) &&
+                    std::find(arguments.begin(), arguments.end(), code_[k].first) == arguments.end())
+                    arguments.push_back(code_[k].first);
+            for (std::size_t call = 0; 4 * call < arguments.size(); ++call) {
+                std::string batch = "t" + std::to_string(d) + "_" + std::to_string(call);
+                c << "    const Sleef___m256d_2 " << batch << " = Sleef_sincosd4_u10avx2(_mm256_setr_pd(";
+                for (std::size_t lane = 0; lane < 4; ++lane) {
+                    std::size_t j = 4 * call + lane;
+                    c << (lane ? ", " : "") << (j < arguments.size() ? "v" + std::to_string(arguments[j]) : "0.0");
+                }
+                c << "));\n    double " << batch << "s[4], " << batch << "c[4];\n    _mm256_storeu_pd(" << batch
+                  << "s, " << batch << ".x);\n    _mm256_storeu_pd(" << batch << "c, " << batch << ".y);\n";
+            }
+            for (std::size_t k = 0; k < code_.size(); ++k) {
+                if (depth[k] != d)
+                    continue;
+                if (!is_trigonometric(code_[k])) {
+                    emit(k);
+                    continue;
+                }
+                std::size_t j = static_cast<std::size_t>(
+                    std::find(arguments.begin(), arguments.end(), code_[k].first) - arguments.begin());
+                c << "    const double v" << k << " = t" << d << "_" << j / 4 << (code_[k].op == op::sine ? "s[" : "c[")
+                  << j % 4 << "];\n";
+            }
+        }
     }
     for (std::size_t k = 0; k < outputs_.size(); ++k)
         c << "    out[" << k << "] = v" << outputs_[k] << ";\n";

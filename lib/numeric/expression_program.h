@@ -111,9 +111,16 @@ public:
     /// its ~32 digits and the bound scales with the unit roundoff.
     bool algebraic() const { return algebraic_; }
 
+    /// Whether the program takes any sine or cosine.
+    bool trigonometric() const;
+
     /// The program as a C function `static void NAME(const double* symbols, double* out)`
     /// (straight-line code, constants exact as hexadecimal floats), for native compilation.
-    std::string c_source(const std::string& name) const;
+    /// `sleef_sincos`: its sines and cosines four arguments at a time by SLEEF's AVX2
+    /// sincos (≤ 1 ulp, as libm's; the source then needs <immintrin.h>, <sleef.h>, AVX2
+    /// and -lsleef): arguments that need no sine or cosine are evaluated first, so each
+    /// batch holds all the arguments of its nesting depth. Without it, libm's sin and cos.
+    std::string c_source(const std::string& name, bool sleef_sincos = false) const;
 
     /// Runs the program on the symbol values; `scratch` is resized as needed.
     void run(const double* symbols, std::vector<double>& scratch, double* out) const;

@@ -7,36 +7,82 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <optional>
 #include <sstream>
 
 namespace lagrange {
 
+namespace {
+
+/// Whether sines and cosines go to SLEEF (see expression_program::c_source): on an x86-64
+/// CPU with AVX2 and FMA, unless LAGRANGE_SLEEF=0, and until compiling with it has failed
+/// once in this process (no libsleef-dev: then libm's, as without AVX2).
+std::atomic<bool> sleef_failed{false};
+
+bool sleef_wanted()
+{
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    const char* setting = std::getenv("LAGRANGE_SLEEF");
+    if (setting && std::string(setting) == "0")
+        return false;
+    return !sleef_failed && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+    return false;
+#endif
+}
+
+} // namespace
+
 std::shared_ptr<native_module> native_module::compile(const std::vector<const expression_program*>& programs)
 {
-    std::ostringstream code;
-    code << "#include <math.h>\n";
-    for (std::size_t k = 0; k < programs.size(); ++k)
-        code << programs[k]->c_source("program_" + std::to_string(k));
-    code << "void (*lagrange_programs[])(const double*, double*) = {";
-    for (std::size_t k = 0; k < programs.size(); ++k)
-        code << (k ? ", " : "") << "program_" << k;
-    code << "};\n";
+    bool sleef = sleef_wanted() &&
+                 std::any_of(programs.begin(), programs.end(), [](const auto* p) { return p->trigonometric(); });
     std::optional<private_directory> folder;
     try {
         folder.emplace("lagrange-native");
-        folder->write("programs.c", code.str());
     } catch (const computation_error&) {
-        return nullptr; // no temporary folder or file: the interpreter runs
+        return nullptr; // no temporary folder: the interpreter runs
     }
     std::string source = folder->path() + "/programs.c";
     std::string library = folder->path() + "/programs.so";
     const char* compiler = std::getenv("LAGRANGE_CC");
     std::string cc = compiler && *compiler ? compiler : "cc";
-    if (run_program({cc, "-O2", "-fno-math-errno", "-shared", "-fPIC", "-o", library, source, "-lm"}, folder->path(),
-                    "cc.log")
-            .exit_code != 0)
+    // -ffp-contract=off: no fused multiply-adds where the interpreter has none (with -mfma, or
+    // on a CPU where FMA is the baseline), so native code rounds as the interpreter does;
+    // only SLEEF's sines and cosines may differ from libm's, within an ulp.
+    auto build = [&](bool with_sleef) {
+        std::ostringstream code;
+        code << "#include <math.h>\n";
+        if (with_sleef)
+            code << "#include <immintrin.h>\n#include <sleef.h>\n";
+        for (std::size_t k = 0; k < programs.size(); ++k)
+            code << programs[k]->c_source("program_" + std::to_string(k), with_sleef);
+        code << "void (*lagrange_programs[])(const double*, double*) = {";
+        for (std::size_t k = 0; k < programs.size(); ++k)
+            code << (k ? ", " : "") << "program_" << k;
+        code << "};\n";
+        try {
+            folder->write("programs.c", code.str());
+        } catch (const computation_error&) {
+            return false;
+        }
+        std::vector<std::string> arguments = {cc, "-O2", "-fno-math-errno", "-ffp-contract=off", "-shared", "-fPIC"};
+        if (with_sleef)
+            arguments.insert(arguments.end(), {"-mavx2", "-mfma"});
+        arguments.insert(arguments.end(), {"-o", library, source});
+        if (with_sleef)
+            arguments.push_back("-lsleef");
+        arguments.push_back("-lm");
+        return run_program(arguments, folder->path(), "cc.log").exit_code == 0;
+    };
+    if (sleef && !build(true)) {
+        sleef_failed = true;
+        sleef = false;
+    }
+    if (!sleef && !build(false))
         return nullptr;
     std::shared_ptr<native_module> module(new native_module());
     module->handle_ = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -46,6 +92,7 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     if (!table)
         return nullptr;
     module->functions_.assign(table, table + programs.size());
+    module->sleef_ = sleef;
     return module; // the folder and its files go; the loaded library stays mapped
 }
 
