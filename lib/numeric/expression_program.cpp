@@ -765,6 +765,13 @@ bool expression_program::trigonometric() const
     });
 }
 
+const char* expression_program::sleef_declarations()
+{
+    return "typedef double lagrange_v4 __attribute__((vector_size(32)));\n"
+           "typedef struct { lagrange_v4 x, y; } lagrange_sincos4;\n"
+           "lagrange_sincos4 Sleef_sincosd4_u10avx2(lagrange_v4);\n";
+}
+
 std::string expression_program::c_source(const std::string& name, bool sleef_sincos) const
 {
     using op = instruction::code;
@@ -829,13 +836,12 @@ std::string expression_program::c_source(const std::string& name, bool sleef_sin
                     arguments.push_back(code_[k].first);
             for (std::size_t call = 0; 4 * call < arguments.size(); ++call) {
                 std::string batch = "t" + std::to_string(d) + "_" + std::to_string(call);
-                c << "    const Sleef___m256d_2 " << batch << " = Sleef_sincosd4_u10avx2(_mm256_setr_pd(";
+                c << "    const lagrange_sincos4 " << batch << " = Sleef_sincosd4_u10avx2((lagrange_v4){";
                 for (std::size_t lane = 0; lane < 4; ++lane) {
                     std::size_t j = 4 * call + lane;
                     c << (lane ? ", " : "") << (j < arguments.size() ? "v" + std::to_string(arguments[j]) : "0.0");
                 }
-                c << "));\n    double " << batch << "s[4], " << batch << "c[4];\n    _mm256_storeu_pd(" << batch
-                  << "s, " << batch << ".x);\n    _mm256_storeu_pd(" << batch << "c, " << batch << ".y);\n";
+                c << "});\n";
             }
             for (std::size_t k = 0; k < code_.size(); ++k) {
                 if (depth[k] != d)
@@ -846,7 +852,7 @@ std::string expression_program::c_source(const std::string& name, bool sleef_sin
                 }
                 std::size_t j = static_cast<std::size_t>(
                     std::find(arguments.begin(), arguments.end(), code_[k].first) - arguments.begin());
-                c << "    const double v" << k << " = t" << d << "_" << j / 4 << (code_[k].op == op::sine ? "s[" : "c[")
+                c << "    const double v" << k << " = t" << d << "_" << j / 4 << (code_[k].op == op::sine ? ".x[" : ".y[")
                   << j % 4 << "];\n";
             }
         }

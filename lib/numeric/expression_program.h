@@ -117,10 +117,14 @@ public:
     /// The program as a C function `static void NAME(const double* symbols, double* out)`
     /// (straight-line code, constants exact as hexadecimal floats), for native compilation.
     /// `sleef_sincos`: its sines and cosines four arguments at a time by SLEEF's AVX2
-    /// sincos (≤ 1 ulp, as libm's; the source then needs <immintrin.h>, <sleef.h>, AVX2
-    /// and -lsleef): arguments that need no sine or cosine are evaluated first, so each
-    /// batch holds all the arguments of its nesting depth. Without it, libm's sin and cos.
+    /// sincos (≤ 1 ulp, as libm's; the source then needs sleef_declarations, AVX2 and
+    /// -lsleef): arguments that need no sine or cosine are evaluated first, so each batch
+    /// holds all the arguments of its nesting depth. Without it, libm's sin and cos.
     std::string c_source(const std::string& name, bool sleef_sincos = false) const;
+    /// The C declarations that code from c_source(…, true) needs: SLEEF's function with its
+    /// types spelled as GCC vectors (the same ABI as <sleef.h>'s __m256d, without
+    /// <immintrin.h>, whose parsing alone took 0.5 s of each compilation).
+    static const char* sleef_declarations();
 
     /// Runs the program on the symbol values; `scratch` is resized as needed.
     void run(const double* symbols, std::vector<double>& scratch, double* out) const;

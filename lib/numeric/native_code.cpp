@@ -57,7 +57,7 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         std::ostringstream code;
         code << "#include <math.h>\n";
         if (with_sleef)
-            code << "#include <immintrin.h>\n#include <sleef.h>\n";
+            code << expression_program::sleef_declarations();
         for (std::size_t k = 0; k < programs.size(); ++k)
             code << programs[k]->c_source("program_" + std::to_string(k), with_sleef);
         code << "void (*lagrange_programs[])(const double*, double*) = {";
