@@ -38,7 +38,8 @@ TEST_CASE("external: programs run without a shell, with their exit code, output 
     CHECK(folder.read("out.log") == "a;b $(touch pwned)\n");
     CHECK(!std::filesystem::exists(folder.path() + "/pwned"));
     CHECK(lagrange::run_program({"false"}, folder.path(), "f.log").exit_code == 1);
-    CHECK(lagrange::run_program({"no-such-program-lagrange"}, folder.path(), "n.log").exit_code == 127);
+    CHECK(lagrange::run_program({"no-such-program-lagrange"}, folder.path(), "n.log").exit_code == -1);
+    CHECK(lagrange::run_program({"true"}, folder.path() + "/no-such-folder", "t.log").exit_code == -1);
     lagrange::program_result env =
         lagrange::run_program({"sh", "-c", "echo $LAGRANGE_PROBE; pwd"}, folder.path(), "e.log", {"LAGRANGE_PROBE=42"});
     CHECK(env.exit_code == 0);

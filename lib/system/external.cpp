@@ -1,5 +1,5 @@
 /** @file external.cpp
- *  Private folders and fork/execvp for cc, gnuplot and pdflatex. */
+ *  Private folders and posix_spawnp for cc, gnuplot and pdflatex. */
 #include "system/external.h"
 
 #include "scene/source.h"
@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <signal.h>
+#include <spawn.h>
 #include <sstream>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -83,8 +84,6 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
     program_result result;
     if (arguments.empty())
         return result;
-    // Everything the child needs is prepared before fork: after it, only
-    // async-signal-safe calls.
     std::vector<char*> argv;
     for (const std::string& a : arguments)
         argv.push_back(const_cast<char*>(a.c_str()));
@@ -106,25 +105,22 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
     envp.push_back(nullptr);
     std::string log_path = directory + "/" + log_name;
 
-    pid_t child = fork();
-    if (child < 0)
+    // posix_spawnp, not fork: no copy of this process's page tables (which a large process
+    // may not get under strict overcommit), the working folder and the redirections as
+    // file actions in the child (addchdir_np: glibc ≥ 2.29).
+    posix_spawn_file_actions_t actions;
+    if (posix_spawn_file_actions_init(&actions) != 0)
         return result;
-    if (child == 0) {
-        if (chdir(directory.c_str()) != 0)
-            _exit(127);
-        int input = open("/dev/null", O_RDONLY);
-        int output = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        if (input < 0 || output < 0)
-            _exit(127);
-        dup2(input, 0);
-        dup2(output, 1);
-        dup2(output, 2);
-        close(input);
-        close(output);
-        environ = envp.data();
-        execvp(argv[0], argv.data());
-        _exit(127);
-    }
+    bool prepared = posix_spawn_file_actions_addchdir_np(&actions, directory.c_str()) == 0 &&
+                    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0) == 0 &&
+                    posix_spawn_file_actions_addopen(&actions, 1, log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                                     0600) == 0 &&
+                    posix_spawn_file_actions_adddup2(&actions, 1, 2) == 0;
+    pid_t child = -1;
+    int started = prepared ? posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), envp.data()) : -1;
+    posix_spawn_file_actions_destroy(&actions);
+    if (started != 0)
+        return result; // not found, not executable, or no folder or log: it could not be started
     auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout_seconds);
     int status = 0;
     for (;;) {

@@ -1,7 +1,7 @@
 /** @file external.h
  *  Running external programs — the C compiler for native equations of motion,
  *  gnuplot and pdflatex for plots and reports — the one way the library does: in a
- *  private temporary folder, by fork/execvp without a shell, so no scene text ever
+ *  private temporary folder, by posix_spawnp without a shell, so no scene text ever
  *  reaches a command line. Below the other modules: numeric/ and output/ both use it. */
 #pragma once
 
