@@ -9,7 +9,10 @@ at a time (ours, then the peer's), then
 prints for each accuracy level 1e-3 ... 1e-12 the fastest run of each side whose
 trajectory error is within that level, and the ratio.
 
-Usage: bench/work_precision.py [--build DIR] [--peer-json FILE] [--ours-json FILE]
+Also prints the ratio of both sides' fastest repeats (each side's fastest run within the
+level by its minimum time), the best case of both.
+
+Usage: bench/work_precision.py [--build DIR] [--peer-json FILE] [--ours-json FILE] [--save-json PREFIX]
 """
 import argparse
 import json
@@ -84,6 +87,8 @@ def main():
     ap.add_argument("--peer-json")
     ap.add_argument("--ours-json")
     ap.add_argument("--peer-log", help="the peer's printed progress, if its run was cut short")
+    ap.add_argument("--save-json", metavar="PREFIX",
+                    help="also write both sides' rows to PREFIX-ours.json and PREFIX-peer.json")
     a = ap.parse_args()
     # One problem at a time, ours and then the peer's, so that both sides of a problem are
     # timed within a minute or two of each other: the host's load changes over minutes.
@@ -97,25 +102,33 @@ def main():
             merge(ours, run_ours(a.build, problem))
         if not a.peer_json and not a.peer_log:
             merge(peer, run_peer(problem))
+    if a.save_json:
+        for side, rows in (("ours", ours), ("peer", peer)):
+            with open(f"{a.save_json}-{side}.json", "w") as f:
+                json.dump(rows, f, indent=1)
     print("Work precision: fastest run whose max relative trajectory error (1001 samples) is within the level")
     print("(both sides the median of repeated runs: lagrange of those filling 0.1 s, at least 7; "
           "scipy solve_ivp of its script's 7, or 3 for runs of 0.2 s or more; "
-          "method and tolerance setting in brackets)")
+          "method and tolerance setting in brackets;")
+    print(" min ratio: the same with each side's fastest repeat instead of the median, "
+          "the best case of both)")
     for problem in PROBLEMS:
         print(f"\n{problem}: reference ours = {ours['problems'][problem]['reference']}; "
               f"scipy = {peer['problems'].get(problem, {}).get('reference', 'see its docstring')}")
-        print(f"  {'level':>6} {'lagrange_s':>11} {'':24} {'scipy_s':>9} {'':18} {'ratio':>7}")
+        print(f"  {'level':>6} {'lagrange_s':>11} {'':24} {'scipy_s':>9} {'':18} {'ratio':>7} {'min ratio':>9}")
         for e in range(3, 13):
             level = 10.0 ** -e
             o = fastest(ours["rows"], problem, level, "time_s")
             p = fastest(peer["rows"], problem, level, "time_s")
+            om = fastest(ours["rows"], problem, level, "time_min_s")
+            pm = fastest(peer["rows"], problem, level, "time_min_s")
             os_ = f"{o['time_s']:.2e}" if o else "-"
             ps = f"{p['time_s']:.2e}" if p else "-"
             on = f"[{o['method']} {o['tol']:.0e}]" if o else ""
             pn = f"[{p['method']} {p['tol']:.0e}]" if p else ""
             ratio = f"{p['time_s'] / o['time_s']:.0f}" if o and p else "-"
-            print(f"  {level:6.0e} {os_:>11} {on:24} {ps:>9} {pn:18} {ratio:>7}")
-
+            min_ratio = f"{pm['time_min_s'] / om['time_min_s']:.0f}" if om and pm else "-"
+            print(f"  {level:6.0e} {os_:>11} {on:24} {ps:>9} {pn:18} {ratio:>7} {min_ratio:>9}")
 
 if __name__ == "__main__":
     main()

@@ -4,6 +4,7 @@
  *  programs bounding the actual error, and the checks that say where they do not apply. */
 #include "numeric/expression_program.h"
 #include "numeric/native_code.h"
+#include "system/external.h"
 
 #include <catch2/catch.hpp>
 
@@ -11,6 +12,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <random>
 
 namespace {
@@ -294,4 +296,30 @@ TEST_CASE("native code: sines and cosines, by SLEEF four at a time or by libm, w
             }
         }
     }
+}
+
+TEST_CASE("native code: without SLEEF to link, libm's sines, and the same values", "[expression_program][native]")
+{
+    // A compiler that refuses -lsleef, as on a machine without libsleef-dev: the module is
+    // compiled again without SLEEF (and later ones in this process skip it), never refused.
+    lagrange::private_directory folder("lagrange-test");
+    folder.write("cc", "#!/bin/sh\nfor a in \"$@\"; do [ \"$a\" = -lsleef ] && exit 1; done\nexec cc \"$@\"\n");
+    std::filesystem::permissions(folder.path() + "/cc", std::filesystem::perms::owner_all);
+    GiNaC::symbol x("x"), y("y");
+    expression_program program({GiNaC::sin(x) * GiNaC::cos(y), GiNaC::cos(GiNaC::sin(x) + y)}, {x, y});
+    setenv("LAGRANGE_CC", (folder.path() + "/cc").c_str(), 1);
+    std::shared_ptr<lagrange::native_module> refused = lagrange::native_module::compile({&program});
+    std::shared_ptr<lagrange::native_module> later = lagrange::native_module::compile({&program});
+    unsetenv("LAGRANGE_CC");
+    if (!refused) {
+        WARN("no C compiler: the native path is not tested");
+        return;
+    }
+    REQUIRE(later);
+    CHECK(!refused->sleef());
+    CHECK(!later->sleef());
+    std::vector<double> at = {0.7, -2.3}, out(2), interpreted(2), scratch;
+    refused->get(0)(at.data(), out.data());
+    program.run(at.data(), scratch, interpreted.data());
+    CHECK(out == interpreted); // libm's sin and cos, and no contraction: the interpreter's numbers
 }
