@@ -276,8 +276,11 @@ TEST_CASE("workprecision: the ladder on a linear scene, errors against the exact
                                  "values k = 4\ninitial x = 1\nsimulate until 10\n");
     lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
     lagrange::compiled_motion motion(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    // A time limit of 120 s per run, not the default 20: under ASan implicit midpoint at 1e-9
+    // (fixed steps, about 10⁵ per time unit) takes about 20 s, and a busy CI host stopped it at
+    // t = 9.7 of 10 (in Release the whole test takes about 2 s).
     lagrange::workprecision_result w =
-        lagrange::work_precision(motion.system(), {1.0, 0.0}, 10, 1, {2.0}, {1e-3, 1e-6, 1e-9});
+        lagrange::work_precision(motion.system(), {1.0, 0.0}, 10, 1, {2.0}, {1e-3, 1e-6, 1e-9}, 120);
     CHECK(w.exact);
     CHECK(w.points.size() == 18); // six methods, three tolerances
     for (const lagrange::workprecision_point& p : w.points) {
