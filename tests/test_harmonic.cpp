@@ -6,6 +6,7 @@
 #include "mechanics/lagrangian.h"
 #include "mechanics/simplify.h"
 #include "scene/lower.h"
+#include "scene_helpers.h"
 
 #include <catch2/catch.hpp>
 
@@ -14,6 +15,7 @@
 #include <vector>
 
 using namespace lagrange;
+using lagrange_test::chain_scene;
 
 namespace {
 
@@ -75,20 +77,6 @@ struct symbols {
         return sum;
     }
 };
-
-std::string chain_scene(int links)
-{
-    std::string parameters = "parameters g", coordinates = "coordinates", points, x, y;
-    for (int k = 1; k <= links; ++k) {
-        const std::string i = std::to_string(k);
-        parameters += " m" + i + " l" + i;
-        coordinates += " q" + i;
-        x += (k > 1 ? " + " : "") + ("l" + i + "*sin(q" + i + ")");
-        y += " - l" + i + "*cos(q" + i + ")";
-        points += "point P" + i + " mass m" + i + " at (" + x + "," + y + ")\n";
-    }
-    return parameters + "\n" + coordinates + "\n" + points + "gravity g along (0, -1)\n";
-}
 
 /// The kinetic energy of a planar chain of `links` links, built from the point velocities.
 ex chain_kinetic_energy(int links, GiNaC::lst& angles)

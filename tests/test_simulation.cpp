@@ -372,20 +372,13 @@ TEST_CASE("dop853: the compiled right-hand side gives the numbers of the system'
     // evaluation: Cramer's rule (2 coordinates), LDLᵀ with a fixed size (3) and a run-time size
     // (4: a state of 8), explicit time, and a first-order system (a free body).
     auto chain = [](int links) {
-        std::string text = "parameters l g\ncoordinates";
-        for (int k = 1; k <= links; ++k)
-            text += " q" + std::to_string(k);
-        text += "\n";
-        std::string x = "0", y = "0";
+        std::string values = "values g = 9.81", initial = "initial";
         for (int k = 1; k <= links; ++k) {
-            x += " + l*sin(q" + std::to_string(k) + ")";
-            y += " - l*cos(q" + std::to_string(k) + ")";
-            text += "point p" + std::to_string(k) + " mass " + std::to_string(k) + " at (" + x + ", " + y + ")\n";
+            const std::string i = std::to_string(k);
+            values += ", m" + i + " = " + i + ", l" + i + " = 1.2";
+            initial += std::string(k > 1 ? "," : "") + " q" + i + " = " + std::to_string(0.3 * k);
         }
-        text += "gravity g along (0, -1)\nvalues l = 1.2, g = 9.81\ninitial";
-        for (int k = 1; k <= links; ++k)
-            text += std::string(k > 1 ? "," : "") + " q" + std::to_string(k) + " = " + std::to_string(0.3 * k);
-        return text + "\n";
+        return lagrange_test::chain_scene(links) + values + "\n" + initial + "\n";
     };
     const std::vector<std::pair<std::string, std::string>> scenes = {
         {"double pendulum", chain(2)},

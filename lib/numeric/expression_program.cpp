@@ -758,12 +758,16 @@ expression_program::a_priori_status expression_program::check_a_priori(
     return status;
 }
 
-bool expression_program::trigonometric() const
+namespace {
+
+bool sine_or_cosine(const instruction& i)
 {
-    return std::any_of(code_.begin(), code_.end(), [](const instruction& i) {
-        return i.op == instruction::code::sine || i.op == instruction::code::cosine;
-    });
+    return i.op == instruction::code::sine || i.op == instruction::code::cosine;
 }
+
+} // namespace
+
+bool expression_program::trigonometric() const { return std::any_of(code_.begin(), code_.end(), sine_or_cosine); }
 
 const char* expression_program::sleef_declarations()
 {
@@ -777,7 +781,6 @@ std::string expression_program::c_source(const std::string& name, bool sleef_sin
     using op = instruction::code;
     std::ostringstream c;
     char number[40];
-    auto is_trigonometric = [](const instruction& i) { return i.op == op::sine || i.op == op::cosine; };
     auto emit = [&](std::size_t k) {
         const instruction& i = code_[k];
         c << "    const double v" << k << " = ";
@@ -824,14 +827,14 @@ std::string expression_program::c_source(const std::string& name, bool sleef_sin
             case op::mul: d = std::max(depth[static_cast<std::size_t>(i.first)], depth[static_cast<std::size_t>(i.second)]); break;
             default: d = depth[static_cast<std::size_t>(i.first)]; break; // unary (integer_power: second is its exponent)
             }
-            depth[k] = d + (is_trigonometric(i) ? 1 : 0);
+            depth[k] = d + (sine_or_cosine(i) ? 1 : 0);
             deepest = std::max(deepest, depth[k]);
         }
         for (int d = 0; d <= deepest; ++d) {
             // The sines and cosines of depth d: one sincos per distinct argument, four per call.
             std::vector<int> arguments;
             for (std::size_t k = 0; k < code_.size(); ++k)
-                if (depth[k] == d && is_trigonometric(code_[k]) &&
+                if (depth[k] == d && sine_or_cosine(code_[k]) &&
                     std::find(arguments.begin(), arguments.end(), code_[k].first) == arguments.end())
                     arguments.push_back(code_[k].first);
             for (std::size_t call = 0; 4 * call < arguments.size(); ++call) {
@@ -846,7 +849,7 @@ std::string expression_program::c_source(const std::string& name, bool sleef_sin
             for (std::size_t k = 0; k < code_.size(); ++k) {
                 if (depth[k] != d)
                     continue;
-                if (!is_trigonometric(code_[k])) {
+                if (!sine_or_cosine(code_[k])) {
                     emit(k);
                     continue;
                 }
