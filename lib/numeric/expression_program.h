@@ -117,7 +117,7 @@ public:
     /// The program as a C function `static void NAME(const double* symbols, double* out)`
     /// (straight-line code, constants exact as hexadecimal floats), for native compilation.
     /// `sleef_sincos`: its sines and cosines four arguments at a time by SLEEF's AVX2
-    /// sincos (≤ 1 ulp, as libm's; the source then needs sleef_declarations, AVX2 and
+    /// sincos (its 3.5-ulp one; the source then needs sleef_declarations, AVX2 and
     /// -lsleef): arguments that need no sine or cosine are evaluated first, so each batch
     /// holds all the arguments of its nesting depth. Without it, libm's sin and cos.
     std::string c_source(const std::string& name, bool sleef_sincos = false) const;

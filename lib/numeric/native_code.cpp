@@ -52,7 +52,7 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     std::string cc = compiler && *compiler ? compiler : "cc";
     // -ffp-contract=off: no fused multiply-adds where the interpreter has none (with -mfma, or
     // on a CPU where FMA is the baseline), so native code rounds as the interpreter does;
-    // only SLEEF's sines and cosines may differ from libm's, within an ulp.
+    // only SLEEF's sines and cosines may differ from libm's, by an ulp or two.
     auto build = [&](bool with_sleef) {
         std::ostringstream code;
         code << "#include <math.h>\n";
