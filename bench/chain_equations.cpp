@@ -4,6 +4,7 @@
  *  derived from point positions and simplified to canonical trig form, N = 2..12.
  *  Prints N, the median wall time of the whole derivation (scene text to simplified
  *  equations), and the size of the result. Usage: chain_equations [max_N] [reps] */
+#include "chain_scene.h" // tests/chain_scene.h
 #include "engine/analysis.h"
 #include "scene/lower.h"
 
@@ -15,20 +16,6 @@
 #include <vector>
 
 namespace {
-
-std::string chain_scene(int links)
-{
-    std::string parameters = "parameters g", coordinates = "coordinates", points, x, y;
-    for (int k = 1; k <= links; ++k) {
-        std::string i = std::to_string(k);
-        parameters += " m" + i + " l" + i;
-        coordinates += " q" + i;
-        x += (k > 1 ? " + " : "") + ("l" + i + "*sin(q" + i + ")");
-        y += " - l" + i + "*cos(q" + i + ")";
-        points += "point P" + i + " mass m" + i + " at (" + x + "," + y + ")\n";
-    }
-    return parameters + "\n" + coordinates + "\n" + points + "gravity g along (0, -1)\nwant equations\n";
-}
 
 std::size_t term_count(const GiNaC::ex& e)
 {
@@ -44,7 +31,7 @@ int main(int argc, char** argv)
     int reps = argc > 2 ? std::atoi(argv[2]) : 7;
     std::printf("%4s %12s %12s %10s\n", "N", "median_ms", "min_ms", "terms");
     for (int links = 2; links <= max_links; ++links) {
-        std::string text = chain_scene(links);
+        std::string text = lagrange_test::chain_scene(links) + "want equations\n";
         std::vector<double> times;
         std::size_t terms = 0;
         for (int r = 0; r < reps; ++r) {

@@ -3,6 +3,7 @@
  *  a chain of pendulums, find a scene's symbol by name. */
 #pragma once
 
+#include "chain_scene.h"
 #include "scene/lower.h"
 
 #include <catch2/catch.hpp>
@@ -34,21 +35,6 @@ inline void require_error(const std::string& text, int line, int column, const s
 }
 
 const std::string header = "parameters m g l\ncoordinates q\n";
-
-/// A planar chain of `links` point masses on rods under gravity: parameters g, m1 l1 … (no values).
-inline std::string chain_scene(int links)
-{
-    std::string parameters = "parameters g", coordinates = "coordinates", points, x, y;
-    for (int k = 1; k <= links; ++k) {
-        const std::string i = std::to_string(k);
-        parameters += " m" + i + " l" + i;
-        coordinates += " q" + i;
-        x += (k > 1 ? " + " : "") + ("l" + i + "*sin(q" + i + ")");
-        y += " - l" + i + "*cos(q" + i + ")";
-        points += "point P" + i + " mass m" + i + " at (" + x + "," + y + ")\n";
-    }
-    return parameters + "\n" + coordinates + "\n" + points + "gravity g along (0, -1)\n";
-}
 
 /// The symbol of a parameter, coordinate (`q`, `q_dot`, `q_ddot`), the ratio or time `t`.
 inline GiNaC::ex symbol_of(const lagrange::model& scene, const std::string& name)

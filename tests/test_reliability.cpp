@@ -33,23 +33,17 @@ namespace {
 
 const std::string examples = std::string(LAGRANGE_SOURCE_DIR) + "/examples/";
 
-/// A planar chain of n links, every mass and length its own parameter, with values.
+/// A planar chain of n links (chain_scene) with values for every mass and length, and its
+/// hanging equilibrium.
 std::string chain(int n)
 {
-    std::string parameters = "parameters g", coordinates = "coordinates", points, x, y, values = "values g = 9.81",
-                equilibrium = "equilibrium ";
+    std::string values = "values g = 9.81", equilibrium = "equilibrium ";
     for (int k = 1; k <= n; ++k) {
         std::string i = std::to_string(k);
-        parameters += " m" + i + " l" + i;
-        coordinates += " q" + i;
-        x += (k > 1 ? " + " : "") + std::string("l") + i + "*sin(q" + i + ")";
-        y += (k > 1 ? " - " : "-") + std::string("l") + i + "*cos(q" + i + ")";
-        points += "point P" + i + " mass m" + i + " at (" + x + ", " + y + ")\n";
         values += ", m" + i + " = " + std::to_string(1 + k) + ", l" + i + " = 1";
         equilibrium += (k > 1 ? ", q" : "q") + i + " = 0";
     }
-    return parameters + "\n" + coordinates + "\n" + points + "gravity g along (0, -1)\n" + equilibrium + "\n" +
-           values + "\n";
+    return chain_scene(n) + equilibrium + "\n" + values + "\n";
 }
 
 std::vector<std::string> folder_entries(const std::string& folder)
