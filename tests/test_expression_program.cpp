@@ -293,9 +293,10 @@ TEST_CASE("native code: sines and cosines, by SLEEF four at a time or by libm, w
                 // a few roundings of quantities up to 10 in size (v·sin z with |v| ≤ 10), so the
                 // bound is absolute where the value is small (cos(v·sin z) near a zero).
                 CHECK(std::abs(out[k] - expected) <= 32 * 0x1p-53 * std::max(std::abs(expected), 1.0));
-                if (k < 2) { // sin x and cos x themselves: within SLEEF's documented 3.5 ulp
+                if (k < 2) { // sin x and cos x themselves: SLEEF's documented 3.5 ulp of the exact
+                             // value, and half an ulp for rounding the reference to a double
                     double unit = std::nextafter(std::abs(expected), HUGE_VAL) - std::abs(expected);
-                    CHECK(std::abs(out[k] - expected) <= 3.5 * unit);
+                    CHECK(std::abs(out[k] - expected) <= 4 * unit);
                 }
             }
         }
