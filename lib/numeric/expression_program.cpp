@@ -765,12 +765,6 @@ bool sine_or_cosine(const instruction& i)
     return i.op == instruction::code::sine || i.op == instruction::code::cosine;
 }
 
-} // namespace
-
-bool expression_program::trigonometric() const { return std::any_of(code_.begin(), code_.end(), sine_or_cosine); }
-
-namespace {
-
 /// SLEEF's AVX2 sincos of 3.5-ulp accuracy (measured here: at most 1.53 ulp on ±1000, against
 /// 0.87 for its 1-ulp one and 0.52 for libm's), not its 1-ulp one. An integrator's evaluations
 /// form a chain (each stage's arguments come from the last stage's result), so what counts is
@@ -780,6 +774,8 @@ namespace {
 constexpr const char* sleef_sincos_function = "Sleef_sincosd4_u35avx2";
 
 } // namespace
+
+bool expression_program::trigonometric() const { return std::any_of(code_.begin(), code_.end(), sine_or_cosine); }
 
 const char* expression_program::sleef_declarations()
 {
