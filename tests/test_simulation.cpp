@@ -418,7 +418,15 @@ TEST_CASE("dop853: the compiled right-hand side gives the numbers of the system'
                                       "initial w1 = 1, w2 = 0.1, w3 = 0.5\n");
     lagrange::free_body_motion body(body_scene, lagrange::first_value_point(body_scene));
     REQUIRE(body.compile_native());
+    CHECK_FALSE(body.system().compiled->time); // no torque: the program reads the state itself
     same_run(body.system(), body.initial());
+    // A torque that depends on time: the program reads (ω, t), from a copy of the state.
+    lagrange::model driven_scene = load("body X inertia (1, 2, 3) mass 1\nomega X (w1, w2, w3)\n"
+                                        "torque X (0, 0, cos(2*t))\ninitial w1 = 1, w2 = 0.1, w3 = 0.5\n");
+    lagrange::free_body_motion driven(driven_scene, lagrange::first_value_point(driven_scene));
+    REQUIRE(driven.compile_native());
+    CHECK(driven.system().compiled->time);
+    same_run(driven.system(), driven.initial());
 }
 
 TEST_CASE("dop853: a mass matrix that stops being positive definite is the same message on both paths",

@@ -182,8 +182,10 @@ ode_system free_body_motion::system() const
     s.dimension = 3;
     s.rhs = [this](double t, const double* x, double* dxdt) { rhs(t, x, dxdt); };
     s.jacobian = [this](double t, const double* x, double* out) { jacobian(t, x, out); };
+    // Without a time-dependent torque the program never reads t: DOP853 then passes it the state
+    // itself, not a copy of it with t appended.
     if (native_.rhs)
-        s.compiled = ode_system::compiled_rhs{native_.rhs, 0, true};
+        s.compiled = ode_system::compiled_rhs{native_.rhs, 0, time_dependent_};
     if (torque_free_) {
         s.invariants.push_back({"energy", [this](const double* w) {
                                     double e = 0;
