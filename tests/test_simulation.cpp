@@ -262,6 +262,10 @@ TEST_CASE("dop853: its tolerance holds on the linearized double pendulum over 32
     // Both versions of the integration, portable and FMA (where the CPU has it), hold it: at 1e-12
     // the rounding matters (before the time was summed with its rounding error kept, 1e-12 gave
     // 0.92e-12 portable and 1.29e-12 with FMA; now 0.83e-12 and 0.84e-12).
+    struct restore_fma { // as before the test, also when a REQUIRE ends it
+        bool had = lagrange::fma_kernels();
+        ~restore_fma() { lagrange::use_fma_kernels(had); }
+    } restore;
     for (bool fma : {false, true}) {
         lagrange::use_fma_kernels(fma);
         for (double tolerance : {1e-3, 1e-6, 1e-9, 1e-12}) {
@@ -276,7 +280,6 @@ TEST_CASE("dop853: its tolerance holds on the linearized double pendulum over 32
             CHECK(*run.exact_error > tolerance / 2); // not wastefully tight either
         }
     }
-    lagrange::use_fma_kernels(true); // back to what the CPU has
 }
 
 TEST_CASE("workprecision: the ladder on a linear scene, errors against the exact solution", "[simulation][workprecision]")

@@ -308,7 +308,6 @@ private:
         static constexpr double w(int j) { return dop853_tableau::d[R][j]; }
     };
 
-    /// x^(1/8) by three square roots (each correctly rounded; far cheaper than pow).
     /// a·b + c, fused or not (`Fused`).
     LAGRANGE_DOP853_INLINE static double madd(double a, double b, double c)
     {
@@ -318,6 +317,7 @@ private:
             return a * b + c;
     }
 
+    /// x^(1/8) by three square roots (each correctly rounded; far cheaper than pow).
     LAGRANGE_DOP853_INLINE static double eighth_root(double x) { return std::sqrt(std::sqrt(std::sqrt(x))); }
 
     /// Σ_j W::w(j) K[j][i] over the nonzero weights only: the tableau is sparse, and its zeros

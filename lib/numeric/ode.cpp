@@ -401,19 +401,14 @@ LAGRANGE_DOP853_INLINE void run_dop853_any_size(const std::vector<double>& x0, c
     }
 }
 
-void run_dop853_portable(const std::vector<double>& x0, const integration_options& options, run_state& run,
-                         trajectory& result)
-{
-    run_dop853_any_size<false>(x0, options, run, result);
-}
-
 #if LAGRANGE_HAVE_FMA_KERNELS
 /// The same integration compiled for CPUs with FMA (everything above inlines into it): the
-/// stages' sums contract into fused multiply-adds and their vectors take AVX's three-operand
-/// form, in 128-bit lanes. On the work-precision problems it takes 0.63-0.68 of the portable
-/// version's time on the free body, 0.84-0.97 on the pendulums (bench/work_precision, four
-/// alternating runs). Its numbers differ from the portable version's in the last bits (the
-/// fused products round once), as they do from CPU to CPU with SLEEF's sines against libm's.
+/// stepper's madd() is std::fma there (nothing else fuses: ode.cpp is compiled with
+/// -ffp-contract=off) and its vectors take AVX's three-operand form, in 128-bit lanes. On the
+/// work-precision problems it takes 0.53-0.67 of the portable version's time on the free body,
+/// 0.74-0.85 on the linearized pendulum, 0.93-1.0 on the nonlinear ones (bench/work_precision,
+/// four alternating runs). Its numbers differ from the portable version's in the last bits
+/// (the fused products round once), as they do from CPU to CPU with SLEEF's sines against libm's.
 LAGRANGE_FMA_TARGET void run_dop853_fma(const std::vector<double>& x0, const integration_options& options,
                                         run_state& run, trajectory& result)
 {
@@ -429,7 +424,7 @@ void run_dop853(const std::vector<double>& x0, const integration_options& option
     if (fma_kernels())
         return run_dop853_fma(x0, options, run, result);
 #endif
-    run_dop853_portable(x0, options, run, result);
+    run_dop853_any_size<false>(x0, options, run, result);
 }
 
 // ---- SUNDIALS CVODE ----
