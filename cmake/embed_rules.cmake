@@ -1,7 +1,7 @@
 # Writes a C++ file that holds every rules/*.rules file as a string:
 # the binary needs no files at run time.
 set(out "// Generated from rules/*.rules by cmake/embed_rules.cmake; do not edit.\n")
-string(APPEND out "#include \"mechanics/rules.h\"\n\nnamespace lagrange {\n\n")
+string(APPEND out "#include \"algebra/rules.h\"\n\nnamespace lagrange {\n\n")
 string(APPEND out "const std::vector<embedded_rule_file>& embedded_rule_files()\n{\n")
 string(APPEND out "    static const std::vector<embedded_rule_file> files = {\n")
 list(SORT INPUTS)

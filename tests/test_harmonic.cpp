@@ -2,9 +2,9 @@
  *  Tests of harmonic polynomials: conversion both ways, the product-to-sum formulas
  *  and the derivatives against numeric evaluation, and the shortcuts they give the
  *  canonical form, the grouping and the equations (the same expressions as before). */
-#include "mechanics/harmonic.h"
+#include "algebra/harmonic.h"
 #include "mechanics/lagrangian.h"
-#include "mechanics/simplify.h"
+#include "algebra/simplify.h"
 #include "scene/lower.h"
 #include "scene_helpers.h"
 

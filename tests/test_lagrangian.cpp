@@ -2,7 +2,7 @@
  *  L = T − V and the Euler–Lagrange equations against textbook closed forms and
  *  a finite-difference check. */
 #include "mechanics/lagrangian.h"
-#include "mechanics/simplify.h"
+#include "algebra/simplify.h"
 #include "scene/lower.h"
 #include "scene_helpers.h"
 

@@ -4,8 +4,8 @@
  *  folder, and regressions for what the fuzzer found (named after the bug). */
 #include "cli_runner.h"
 #include "engine/analysis.h"
-#include "mechanics/budget.h"
-#include "mechanics/factor.h"
+#include "algebra/budget.h"
+#include "algebra/factor.h"
 #include "scene_helpers.h"
 
 #include <catch2/catch.hpp>

@@ -2,8 +2,10 @@
  *  Inertia tensors derived by integration, against closed forms and against an
  *  independent numeric quadrature in Cartesian coordinates; Euler's equations and
  *  their solutions; bodies in a Lagrangian. */
+#include "scene/lower.h"
 #include "mechanics/lagrangian.h"
-#include "mechanics/rigid_body.h"
+#include "bodies/rigid_body.h"
+#include "mechanics/top.h"
 #include "scene_helpers.h"
 
 #include <Eigen/Dense>

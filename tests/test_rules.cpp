@@ -1,7 +1,7 @@
 /** @file test_rules.cpp
  *  Tests of the order-independent matcher and of rewriting with the shipped rules. */
-#include "mechanics/rules.h"
-#include "mechanics/simplify.h"
+#include "algebra/rules.h"
+#include "algebra/simplify.h"
 #include "scene/lower.h"
 
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
 /** @file test_simplify.cpp
  *  Tests of the canonical trigonometric form, the compact grouping and the simplifier. */
-#include "mechanics/simplify.h"
+#include "algebra/simplify.h"
 
 #include <catch2/catch.hpp>
 

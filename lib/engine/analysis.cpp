@@ -2,6 +2,8 @@
  *  The stage planner. */
 #include "engine/analysis.h"
 
+#include "scene/lower.h"
+
 #include "numeric/free_body_motion.h"
 
 #include <chrono>

@@ -3,13 +3,14 @@
  *  stage once, in order, and records its time. Stages that are not needed do not run. */
 #pragma once
 
-#include "mechanics/budget.h"
+#include "algebra/budget.h"
 #include "mechanics/lagrangian.h"
 #include "mechanics/oscillations.h"
-#include "mechanics/rigid_body.h"
+#include "bodies/rigid_body.h"
+#include "mechanics/top.h"
 #include "numeric/normal_modes.h"
 #include "numeric/simulation.h"
-#include "scene/model.h"
+#include "core/model.h"
 
 #include <optional>
 #include <set>
@@ -53,7 +54,7 @@ const std::set<product>& available_products();
 /// Throws computation_error for a product this version does not compute, or when
 /// a stage of an explicitly wanted product cannot be done.
 ///
-/// Each symbolic stage runs under `limits` (see mechanics/budget.h). A stage that exceeds
+/// Each symbolic stage runs under `limits` (see algebra/budget.h). A stage that exceeds
 /// its budget leaves out its products and those that depend on it, with a note naming
 /// the stage and the limit; the rest is still computed (numeric modes need only the
 /// linearization). Throws budget_exceeded only when none of the wanted products

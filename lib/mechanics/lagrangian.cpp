@@ -2,9 +2,8 @@
  *  L = T − V and the Euler–Lagrange equations. */
 #include "mechanics/lagrangian.h"
 
-#include "mechanics/harmonic.h"
-#include "mechanics/rigid_body.h"
-#include "scene/lower.h"
+#include "algebra/harmonic.h"
+#include "bodies/rigid_body.h"
 
 #include <map>
 #include <memory>
@@ -12,120 +11,7 @@
 
 namespace lagrange {
 
-simplifier make_simplifier(const model& scene)
-{
-    simplifier s;
-    s.angles = scene.positions();
-    for (const GiNaC::ex& a : scene.accelerations())
-        s.variables.append(a);
-    for (const GiNaC::ex& v : scene.velocities())
-        s.variables.append(v);
-    s.rules = embedded_rules();
-    s.rules.insert(s.rules.end(), scene.rules.begin(), scene.rules.end());
-    return s;
-}
 
-GiNaC::ex differentiate(const GiNaC::ex& e, const GiNaC::symbol& variable)
-{
-    // Written by hand because GiNaC's diff applies the sum and product rules to
-    // every operand, also those free of the variable, and builds the zeros; on the
-    // Lagrangian of a 10-link chain that made the equations ten times slower.
-    if (!e.has(variable))
-        return 0;
-    if (GiNaC::is_a<GiNaC::add>(e)) {
-        GiNaC::exvector terms;
-        for (const GiNaC::ex& term : e)
-            if (term.has(variable))
-                terms.push_back(differentiate(term, variable));
-        return GiNaC::add(terms);
-    }
-    if (GiNaC::is_a<GiNaC::mul>(e)) {
-        GiNaC::exvector terms;
-        for (std::size_t i = 0; i < e.nops(); ++i) {
-            if (!e.op(i).has(variable))
-                continue;
-            GiNaC::exvector factors;
-            factors.reserve(e.nops());
-            for (std::size_t j = 0; j < e.nops(); ++j)
-                factors.push_back(i == j ? differentiate(e.op(j), variable) : e.op(j));
-            terms.push_back(GiNaC::mul(factors));
-        }
-        return GiNaC::add(terms);
-    }
-    return e.diff(variable);
-}
-
-namespace {
-
-/// The total time derivative by structural recursion, one pass over the expression:
-/// q -> q', q' -> q'', t -> 1, parameters -> 0, and the chain rule.
-class time_differentiator {
-public:
-    explicit time_differentiator(const model& scene) : time_(scene.time)
-    {
-        for (const coordinate& c : scene.coordinates) {
-            rates_[c.position] = c.velocity;
-            rates_[c.velocity] = c.acceleration;
-        }
-    }
-
-    GiNaC::ex operator()(const GiNaC::ex& e) const
-    {
-        if (GiNaC::is_a<GiNaC::symbol>(e)) {
-            if (e.is_equal(time_))
-                return 1;
-            auto rate = rates_.find(e);
-            return rate == rates_.end() ? GiNaC::ex(0) : rate->second;
-        }
-        if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::constant>(e))
-            return 0;
-        if (GiNaC::is_a<GiNaC::add>(e)) {
-            GiNaC::exvector terms;
-            terms.reserve(e.nops());
-            for (const GiNaC::ex& term : e)
-                terms.push_back((*this)(term));
-            return GiNaC::add(terms);
-        }
-        if (GiNaC::is_a<GiNaC::mul>(e)) {
-            GiNaC::exvector terms;
-            for (std::size_t i = 0; i < e.nops(); ++i) {
-                GiNaC::ex rate = (*this)(e.op(i));
-                if (rate.is_zero())
-                    continue;
-                GiNaC::exvector factors;
-                factors.reserve(e.nops());
-                for (std::size_t j = 0; j < e.nops(); ++j)
-                    factors.push_back(i == j ? rate : e.op(j));
-                terms.push_back(GiNaC::mul(factors));
-            }
-            return GiNaC::add(terms);
-        }
-        if (GiNaC::is_a<GiNaC::power>(e)) {
-            const GiNaC::ex& base = e.op(0);
-            const GiNaC::ex& exponent = e.op(1);
-            GiNaC::ex base_rate = (*this)(base);
-            if (GiNaC::is_a<GiNaC::numeric>(exponent))
-                return base_rate.is_zero() ? GiNaC::ex(0) : exponent * GiNaC::pow(base, exponent - 1) * base_rate;
-            return e * ((*this)(exponent) * GiNaC::log(base) + exponent * base_rate / base);
-        }
-        // Functions and anything else: the chain rule over the symbols inside.
-        GiNaC::ex result = 0;
-        if (e.has(time_))
-            result += e.diff(GiNaC::ex_to<GiNaC::symbol>(time_));
-        for (const auto& [symbol, rate] : rates_)
-            if (e.has(symbol))
-                result += e.diff(GiNaC::ex_to<GiNaC::symbol>(symbol)) * rate;
-        return result;
-    }
-
-private:
-    GiNaC::ex time_;
-    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> rates_;
-};
-
-} // namespace
-
-GiNaC::ex time_derivative(const GiNaC::ex& e, const model& scene) { return time_differentiator(scene)(e); }
 
 namespace {
 
@@ -272,7 +158,7 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
         }
     }
     // Rigid bodies placed in the coordinates: ½ M v² of the centre of mass, ½ ωᵀ I ω with
-    // ω from the Euler-angle rates (mechanics/rigid_body.cpp), and gravity on the centre.
+    // ω from the Euler-angle rates (bodies/rigid_body.cpp), and gravity on the centre.
     for (const rigid_body& b : scene.bodies) {
         if (b.omega || (!b.position && !b.orientation))
             continue;

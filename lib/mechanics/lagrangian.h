@@ -3,8 +3,9 @@
  *  total time derivative with q, q̇, q̈ as plain symbols. */
 #pragma once
 
-#include "mechanics/simplify.h"
-#include "scene/model.h"
+#include "algebra/calculus.h"
+#include "algebra/simplify.h"
+#include "core/model.h"
 
 #include <ginac/ginac.h>
 
@@ -12,16 +13,6 @@
 #include <vector>
 
 namespace lagrange {
-
-/// The simplifier for a scene: canonical trig form in its coordinates, the
-/// embedded rules and the scene's own (`use`), grouping by accelerations and velocities.
-simplifier make_simplifier(const model& scene);
-
-/// ∂e/∂variable.
-GiNaC::ex differentiate(const GiNaC::ex& e, const GiNaC::symbol& variable);
-
-/// d/dt e = ∂e/∂t + Σ (∂e/∂q q̇ + ∂e/∂q̇ q̈).
-GiNaC::ex time_derivative(const GiNaC::ex& e, const model& scene);
 
 struct harmonic_lagrangian;
 

@@ -4,10 +4,10 @@
  *  polynomial det(V − ω²T), and the frequencies, mode vectors, normal
  *  coordinates and asymptotic limits in closed form where one exists. */
 #include "mechanics/oscillations.h"
-#include "mechanics/factor.h"
-#include "mechanics/budget.h"
+#include "algebra/factor.h"
+#include "algebra/budget.h"
 
-#include "scene/source.h"
+#include "core/errors.h"
 
 #include <algorithm>
 #include <functional>

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "mechanics/lagrangian.h"
-#include "scene/model.h"
+#include "core/model.h"
 
 #include <ginac/ginac.h>
 

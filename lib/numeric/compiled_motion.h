@@ -10,7 +10,7 @@
 #include "numeric/expression_program.h"
 #include "numeric/native_code.h"
 #include "numeric/ode.h"
-#include "scene/model.h"
+#include "core/model.h"
 
 #include <map>
 #include <memory>

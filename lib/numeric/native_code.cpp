@@ -2,7 +2,7 @@
  *  Run-time compilation of expression programs (C source, cc through run_program, dlopen). */
 #include "numeric/native_code.h"
 
-#include "scene/source.h"
+#include "core/errors.h"
 #include "system/external.h"
 
 #include <dlfcn.h>

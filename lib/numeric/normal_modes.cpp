@@ -7,9 +7,9 @@
  *  scalar type with numeric_limits and math functions that cl_F does not provide,
  *  and no multiprecision eigensolver is among the project's dependencies. */
 #include "numeric/normal_modes.h"
-#include "mechanics/factor.h"
+#include "algebra/factor.h"
 
-#include "scene/source.h"
+#include "core/errors.h"
 
 #include <cln/cln.h>
 

@@ -5,7 +5,7 @@
 
 #include "mechanics/oscillations.h"
 #include "numeric/expression_program.h"
-#include "scene/model.h"
+#include "core/model.h"
 
 #include <Eigen/Dense>
 

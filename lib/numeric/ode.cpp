@@ -11,7 +11,7 @@
 #include "numeric/mass_matrix.h"
 #include "numeric/values.h"
 
-#include "scene/source.h"
+#include "core/errors.h"
 
 #include <Eigen/Dense>
 #include <boost/numeric/odeint.hpp>

@@ -8,7 +8,7 @@
 #include "mechanics/lagrangian.h"
 #include "numeric/compiled_motion.h"
 #include "numeric/ode.h"
-#include "scene/model.h"
+#include "core/model.h"
 
 #include <functional>
 #include <optional>

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "mechanics/oscillations.h"
-#include "scene/model.h"
+#include "core/model.h"
 
 #include <cstddef>
 #include <functional>

@@ -2,7 +2,7 @@
  *  Expressions at the parameter values as doubles, and numbers for messages. */
 #include "numeric/values.h"
 
-#include "scene/source.h"
+#include "core/errors.h"
 
 #include <cmath>
 #include <cstdio>

@@ -6,7 +6,7 @@
 
 #include "system/external.h"
 #include "output/print.h"
-#include "scene/source.h"
+#include "core/errors.h"
 
 #include <cerrno>
 #include <cmath>

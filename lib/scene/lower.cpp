@@ -17,58 +17,6 @@
 
 namespace lagrange {
 
-const std::vector<std::pair<product, std::string>>& product_names()
-{
-    static const std::vector<std::pair<product, std::string>> names = {
-        {product::equations, "equations"},
-        {product::equilibrium, "equilibrium"},
-        {product::linearization, "linearization"},
-        {product::characteristic, "characteristic"},
-        {product::frequencies, "frequencies"},
-        {product::modes, "modes"},
-        {product::normal_coordinates, "normal_coordinates"},
-        {product::asymptotic, "asymptotic"},
-        {product::numeric, "numeric"},
-        {product::inertia, "inertia"},
-        {product::euler, "euler"},
-        {product::simulation, "simulation"},
-        {product::workprecision, "workprecision"},
-    };
-    return names;
-}
-
-std::optional<product> product_from_name(const std::string& name)
-{
-    for (const auto& [p, n] : product_names())
-        if (n == name)
-            return p;
-    return std::nullopt;
-}
-
-GiNaC::lst model::positions() const
-{
-    GiNaC::lst result;
-    for (const coordinate& c : coordinates)
-        result.append(c.position);
-    return result;
-}
-
-GiNaC::lst model::velocities() const
-{
-    GiNaC::lst result;
-    for (const coordinate& c : coordinates)
-        result.append(c.velocity);
-    return result;
-}
-
-GiNaC::lst model::accelerations() const
-{
-    GiNaC::lst result;
-    for (const coordinate& c : coordinates)
-        result.append(c.acceleration);
-    return result;
-}
-
 namespace {
 
 // ---- limits that keep exact arithmetic from hanging --------------------------
@@ -1062,6 +1010,19 @@ const std::vector<rewrite_rule>& embedded_rules()
         return all;
     }();
     return rules;
+}
+
+simplifier make_simplifier(const model& scene)
+{
+    simplifier s;
+    s.angles = scene.positions();
+    for (const GiNaC::ex& a : scene.accelerations())
+        s.variables.append(a);
+    for (const GiNaC::ex& v : scene.velocities())
+        s.variables.append(v);
+    s.rules = embedded_rules();
+    s.rules.insert(s.rules.end(), scene.rules.begin(), scene.rules.end());
+    return s;
 }
 
 } // namespace lagrange

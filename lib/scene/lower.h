@@ -3,7 +3,8 @@
  *  resolved here, in the order they are declared. */
 #pragma once
 
-#include "scene/model.h"
+#include "algebra/simplify.h"
+#include "core/model.h"
 #include "scene/source.h"
 
 #include <functional>
@@ -31,5 +32,10 @@ std::vector<rewrite_rule> load_rules(const source_text& source, const model* sce
 
 /// The rules embedded at build time (rules/*.rules), parsed once.
 const std::vector<rewrite_rule>& embedded_rules();
+
+
+/// The simplifier for a scene: canonical trig form in its coordinates, the
+/// embedded rules and the scene's own (`use`), grouping by accelerations and velocities.
+simplifier make_simplifier(const model& scene);
 
 } // namespace lagrange

@@ -2,7 +2,7 @@
  *  Private folders and posix_spawnp for cc, gnuplot and pdflatex. */
 #include "system/external.h"
 
-#include "scene/source.h"
+#include "core/errors.h"
 
 #include <cerrno>
 #include <chrono>

@@ -4,7 +4,7 @@
  *  compact grouping by velocities and accelerations). */
 #pragma once
 
-#include "mechanics/rules.h"
+#include "algebra/rules.h"
 
 #include <ginac/ginac.h>
 

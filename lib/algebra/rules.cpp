@@ -2,8 +2,9 @@
  *  A pattern matcher for rewrite rules that does not depend on GiNaC's term order:
  *  sums match any k of their terms, products match their factors in any order, and
  *  a wildcard factor takes the rest of a product (numeric coefficient included). */
-#include "mechanics/rules.h"
-#include "mechanics/budget.h"
+#include "algebra/rules.h"
+#include "algebra/expression.h"
+#include "algebra/budget.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -137,24 +138,6 @@ product_parts split_product(const ex& e)
         parts.factors.push_back(e);
     }
     return parts;
-}
-
-ex product_of(const exvector& factors)
-{
-    if (factors.empty())
-        return 1;
-    if (factors.size() == 1)
-        return factors.front();
-    return GiNaC::dynallocate<GiNaC::mul>(factors);
-}
-
-ex sum_of(const exvector& terms)
-{
-    if (terms.empty())
-        return 0;
-    if (terms.size() == 1)
-        return terms.front();
-    return GiNaC::dynallocate<GiNaC::add>(terms);
 }
 
 bool match_node(const ex& e, const ex& pattern, exmap& bindings, match_context& context);

@@ -6,7 +6,7 @@
  *  Poinsot's construction, and the angular velocity from z-x-z Euler angles. */
 #pragma once
 
-#include "scene/model.h"
+#include "core/model.h"
 
 #include <ginac/ginac.h>
 
@@ -134,30 +134,5 @@ struct euler_result {
 /// scene's initial ω as well).
 euler_result derive_euler(const rigid_body& body, const inertia_result& inertia,
                           const std::optional<initial_state>& initial, const GiNaC::exmap& values);
-
-struct lagrangian_result;
-struct simplifier;
-
-/// A top: a body turned by z-x-z Euler angles that are three coordinates (φ, θ, ψ), with
-/// φ and ψ cyclic. Routh's procedure with the cyclic momenta fixed at their sleeping
-/// values p_φ = p_ψ = I3 ω3 gives V_eff(θ); its curvature at θ = 0 decides whether the
-/// sleeping (vertical) top is stable.
-struct top_result {
-    std::string body;
-    GiNaC::ex nutation;            ///< θ, the angle from the vertical
-    GiNaC::ex pivot_moment;        ///< I1 about the fixed point: ∂²T/∂θ̇²
-    GiNaC::ex spin_moment;         ///< I3: ∂²T/∂ψ̇²
-    GiNaC::ex spin;                ///< the symbol ω3 = φ̇ cos θ + ψ̇ (conserved)
-    GiNaC::ex effective_potential; ///< V_eff(θ) at p_φ = p_ψ = I3 ω3
-    GiNaC::ex curvature;           ///< the coefficient of θ² in V_eff about θ = 0
-    GiNaC::ex condition;           ///< 8 I1 × curvature: the sleeping top is stable when it is > 0
-};
-
-/// The top analysis for every body that qualifies (none: empty).
-std::vector<top_result> analyze_tops(const model& scene, const lagrangian_result& lagrangian,
-                                     const simplifier& simplify);
-
-/// The values of a `values` line as a substitution.
-GiNaC::exmap value_map(const model& scene, const value_point& point);
 
 } // namespace lagrange

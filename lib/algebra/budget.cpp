@@ -1,6 +1,6 @@
 /** @file budget.cpp
  *  Size and time budgets of the symbolic stages (see budget.h). */
-#include "mechanics/budget.h"
+#include "algebra/budget.h"
 
 #include <limits>
 #include <sstream>

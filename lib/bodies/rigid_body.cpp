@@ -1,9 +1,9 @@
 /** @file rigid_body.cpp
  *  Inertia by integration, Euler's equations, torque-free motion, Poinsot. */
-#include "mechanics/rigid_body.h"
-#include "mechanics/factor.h"
+#include "bodies/rigid_body.h"
+#include "algebra/factor.h"
 
-#include "mechanics/lagrangian.h"
+#include "algebra/calculus.h"
 
 #include <Eigen/Eigenvalues>
 #include <boost/math/special_functions/ellint_1.hpp>
@@ -191,22 +191,12 @@ std::array<GiNaC::ex, 3> permuted(const std::array<GiNaC::ex, 3>& n, char axis)
     return n;
 }
 
-/// normal() or factor() of an expression with π: GiNaC's gcd wants polynomials over the
-/// rationals, so π goes through as a positive symbol.
-GiNaC::ex with_pi_as_symbol(const GiNaC::ex& e, GiNaC::ex (*f)(const GiNaC::ex&))
-{
-    static const GiNaC::possymbol pi("Pi");
-    return f(e.subs(GiNaC::Pi == pi)).subs(pi == GiNaC::Pi);
-}
-
-GiNaC::ex normal_of(const GiNaC::ex& e) { return e.normal(); }
-GiNaC::ex factor_of(const GiNaC::ex& e) { return factor_if_quick(e.normal()); }
 
 GiNaC::ex integrate_over(GiNaC::ex f, const std::vector<integration_limit>& limits)
 {
     for (const integration_limit& l : limits)
         f = integrate_exactly(f.expand(), l.variable, l.lower, l.upper);
-    return with_pi_as_symbol(f.expand(), normal_of);
+    return normal_with_pi(f.expand());
 }
 
 GiNaC::matrix diagonal_matrix(const std::vector<GiNaC::ex>& d)
@@ -230,7 +220,7 @@ bool is_constant(const GiNaC::ex& e)
 std::vector<GiNaC::ex> principal_moments(const GiNaC::matrix& tensor)
 {
     GiNaC::realsymbol lambda("lambda");
-    GiNaC::ex p = with_pi_as_symbol(tensor.charpoly(lambda).expand(), factor_of);
+    GiNaC::ex p = factor_with_pi(tensor.charpoly(lambda).expand());
     GiNaC::exvector factors;
     if (GiNaC::is_a<GiNaC::mul>(p))
         factors.assign(p.begin(), p.end());
@@ -249,12 +239,12 @@ std::vector<GiNaC::ex> principal_moments(const GiNaC::matrix& tensor)
         int degree = base.degree(lambda);
         std::vector<GiNaC::ex> found;
         if (degree == 1) {
-            found.push_back(with_pi_as_symbol(-base.coeff(lambda, 0) / base.coeff(lambda, 1), normal_of));
+            found.push_back(normal_with_pi(-base.coeff(lambda, 0) / base.coeff(lambda, 1)));
         } else if (degree == 2) {
             GiNaC::ex a = base.coeff(lambda, 2), b = base.coeff(lambda, 1), c = base.coeff(lambda, 0);
             GiNaC::ex root = GiNaC::sqrt((b * b - 4 * a * c).expand());
-            found.push_back(with_pi_as_symbol((-b - root) / (2 * a), normal_of));
-            found.push_back(with_pi_as_symbol((-b + root) / (2 * a), normal_of));
+            found.push_back(normal_with_pi((-b - root) / (2 * a)));
+            found.push_back(normal_with_pi((-b + root) / (2 * a)));
         } else {
             return {};
         }
@@ -273,7 +263,7 @@ std::optional<GiNaC::matrix> principal_directions(const GiNaC::matrix& tensor, c
     GiNaC::matrix axes(3, 3);
     for (unsigned k = 0; k < 3; ++k) {
         for (unsigned other = 0; other < 3; ++other)
-            if (other != k && with_pi_as_symbol(moments[k] - moments[other], normal_of).is_zero())
+            if (other != k && normal_with_pi(moments[k] - moments[other]).is_zero())
                 return std::nullopt; // a repeated moment: any axis of its plane is principal
         GiNaC::matrix shifted = tensor.sub(GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3)).mul_scalar(moments[k]));
         bool found = false;
@@ -285,13 +275,13 @@ std::optional<GiNaC::matrix> principal_directions(const GiNaC::matrix& tensor, c
                 shifted(a, 2) * shifted(b, 0) - shifted(a, 0) * shifted(b, 2),
                 shifted(a, 0) * shifted(b, 1) - shifted(a, 1) * shifted(b, 0)};
             for (GiNaC::ex& c : v)
-                c = with_pi_as_symbol(c.expand(), normal_of);
+                c = normal_with_pi(c.expand());
             if (v[0].is_zero() && v[1].is_zero() && v[2].is_zero())
                 continue;
             // Scaled so that the last nonzero component is 1, as the mode vectors are.
             GiNaC::ex scale = !v[2].is_zero() ? v[2] : !v[1].is_zero() ? v[1] : v[0];
             for (unsigned i = 0; i < 3; ++i)
-                axes(i, k) = with_pi_as_symbol(v[i] / scale, normal_of);
+                axes(i, k) = normal_with_pi(v[i] / scale);
             found = true;
             break;
         }
@@ -312,7 +302,7 @@ std::optional<double> number_of(const GiNaC::ex& e, const GiNaC::exmap& values)
 /// The sign of e: +1, −1, 0, or nothing if it cannot be told (also at `values`).
 std::optional<int> sign_of(const GiNaC::ex& e, const GiNaC::exmap& values)
 {
-    GiNaC::ex n = with_pi_as_symbol(e, factor_of);
+    GiNaC::ex n = factor_with_pi(e);
     if (n.is_zero())
         return 0;
     if (n.info(GiNaC::info_flags::positive))
@@ -348,7 +338,7 @@ GiNaC::matrix shifted_tensor(const GiNaC::matrix& tensor, const GiNaC::ex& mass,
     GiNaC::ex a2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
     for (unsigned i = 0; i < 3; ++i)
         for (unsigned j = 0; j < 3; ++j)
-            result(i, j) = with_pi_as_symbol((tensor(i, j) + mass * ((i == j ? a2 : GiNaC::ex(0)) - a[i] * a[j])).expand(), normal_of);
+            result(i, j) = normal_with_pi((tensor(i, j) + mass * ((i == j ? a2 : GiNaC::ex(0)) - a[i] * a[j])).expand());
     return result;
 }
 
@@ -425,7 +415,7 @@ inertia_result derive_inertia(const rigid_body& body)
         if (body.body_kind == rigid_body::kind::shape) {
             GiNaC::ex measure = integral("measure", 1, 1, at_point);
             result.mass = body.mass;
-            density = with_pi_as_symbol(body.mass / measure, normal_of);
+            density = normal_with_pi(body.mass / measure);
         } else {
             density = body.density;
             result.mass = integral("mass", density, 1, at_point);
@@ -437,7 +427,7 @@ inertia_result derive_inertia(const rigid_body& body)
         const std::array<GiNaC::ex, 3> body_xyz = {body.x, body.y, body.z};
         const char* names[] = {"x", "y", "z"};
         for (std::size_t k = 0; k < 3; ++k)
-            result.centre_of_mass[k] = with_pi_as_symbol(integral(names[k], density, body_xyz[k], at_point) / result.mass, normal_of);
+            result.centre_of_mass[k] = normal_with_pi(integral(names[k], density, body_xyz[k], at_point) / result.mass);
         GiNaC::exmap about_centre = at_point;
         for (std::size_t k = 0; k < 3; ++k)
             about_centre[body_xyz[k]] = placed[k] - result.centre_of_mass[k];
@@ -554,77 +544,6 @@ std::optional<euler_result::elliptic_solution> elliptic_motion(const std::array<
 
 } // namespace
 
-std::vector<top_result> analyze_tops(const model& scene, const lagrangian_result& lagrangian,
-                                     const simplifier& simplify)
-{
-    std::vector<top_result> tops;
-    if (!lagrangian.split)
-        return tops;
-    auto coordinate_of = [&](const GiNaC::ex& e) -> const coordinate* {
-        for (const coordinate& c : scene.coordinates)
-            if (e.is_equal(c.position))
-                return &c;
-        return nullptr;
-    };
-    for (const rigid_body& b : scene.bodies) {
-        if (!b.orientation)
-            continue;
-        const coordinate* phi = coordinate_of((*b.orientation)[0]);
-        const coordinate* theta = coordinate_of((*b.orientation)[1]);
-        const coordinate* psi = coordinate_of((*b.orientation)[2]);
-        if (!phi || !theta || !psi || phi == theta || theta == psi || phi == psi)
-            continue;
-        if (lagrangian.lagrangian.has(phi->position) || lagrangian.lagrangian.has(psi->position))
-            continue;
-        try {
-            top_result top;
-            top.body = b.name;
-            top.nutation = theta->position;
-            const GiNaC::ex& t = lagrangian.kinetic;
-            top.pivot_moment = simplify(t.diff(theta->velocity, 2));
-            top.spin_moment = simplify(t.diff(psi->velocity, 2));
-            if (top.pivot_moment.has(theta->position) || top.spin_moment.has(theta->position))
-                continue;
-            // The (φ̇, ψ̇) block of the kinetic matrix and V_eff = V + ½ pᵀ K⁻¹ p (Routh).
-            GiNaC::matrix block(2, 2);
-            const GiNaC::symbol* cyclic[] = {&phi->velocity, &psi->velocity};
-            for (int i = 0; i < 2; ++i)
-                for (int j = 0; j < 2; ++j)
-                    block(i, j) = t.diff(*cyclic[i]).diff(*cyclic[j]);
-            GiNaC::realsymbol spin("omega3");
-            top.spin = spin;
-            // pᵀ K⁻¹ p for p = (P, P) and the 2×2 block K: P² (K11 − 2 K12 + K22) / det K.
-            const GiNaC::ex momentum = top.spin_moment * spin;
-            const GiNaC::ex determinant = simplify.canonical(block(0, 0) * block(1, 1) - block(0, 1) * block(1, 0));
-            if (determinant.is_zero())
-                continue;
-            const GiNaC::ex routh = momentum * momentum *
-                                    simplify.canonical(block(0, 0) - 2 * block(0, 1) + block(1, 1)) / determinant;
-            top.effective_potential = lagrangian.potential + GiNaC::numeric(1, 2) * routh;
-            GiNaC::ex expansion =
-                GiNaC::series_to_poly(top.effective_potential.series(theta->position == 0, 3));
-            top.curvature = with_pi_as_symbol(expansion.expand().coeff(theta->position, 2), normal_of);
-            top.condition = with_pi_as_symbol((8 * top.pivot_moment * top.curvature).expand(), normal_of);
-            tops.push_back(top);
-        } catch (const computation_error&) {
-            throw;
-        } catch (const std::exception&) {
-            continue; // not a top this analysis can expand (a series GiNaC cannot do)
-        }
-    }
-    return tops;
-}
-
-GiNaC::exmap value_map(const model& scene, const value_point& point)
-{
-    GiNaC::exmap map;
-    for (const auto& [name, value] : point.values)
-        for (const parameter& p : scene.parameters)
-            if (p.name == name)
-                map[p.symbol] = value;
-    return map;
-}
-
 euler_result derive_euler(const rigid_body& body, const inertia_result& inertia,
                           const std::optional<initial_state>& initial, const GiNaC::exmap& values)
 {
@@ -691,14 +610,14 @@ euler_result derive_euler(const rigid_body& body, const inertia_result& inertia,
     // Symmetric body: two equal moments.
     std::optional<std::size_t> axis;
     for (std::size_t a = 0; a < 3 && !axis; ++a)
-        if (with_pi_as_symbol(I[(a + 1) % 3] - I[(a + 2) % 3], normal_of).is_zero())
+        if (normal_with_pi(I[(a + 1) % 3] - I[(a + 2) % 3]).is_zero())
             axis = a;
     if (axis) {
         euler_result::symmetric_solution s;
         const std::size_t a = *axis, b = (a + 1) % 3, c = (a + 2) % 3;
         s.axis = a;
         const GiNaC::ex transverse = I[b];
-        s.precession = with_pi_as_symbol((I[a] - transverse) * start[a] / transverse, normal_of);
+        s.precession = normal_with_pi((I[a] - transverse) * start[a] / transverse);
         s.constants = start;
         GiNaC::realsymbol t("t");
         s.time = t;

@@ -3,11 +3,12 @@
  *  sines and cosines of linear combinations of the angles linearized into sums of
  *  harmonics), a compact grouping by velocities and accelerations, and the
  *  simplifier that chains them with the rewrite rules. */
-#include "mechanics/simplify.h"
-#include "mechanics/factor.h"
-#include "mechanics/budget.h"
+#include "algebra/simplify.h"
+#include "algebra/expression.h"
+#include "algebra/factor.h"
+#include "algebra/budget.h"
 
-#include "mechanics/harmonic.h"
+#include "algebra/harmonic.h"
 
 #include <cln/integer.h>
 
@@ -207,24 +208,6 @@ exvector factors_of(const ex& e)
         factors.push_back(e);
     }
     return factors;
-}
-
-ex sum_of(const exvector& terms)
-{
-    if (terms.empty())
-        return 0;
-    if (terms.size() == 1)
-        return terms.front();
-    return GiNaC::dynallocate<GiNaC::add>(terms);
-}
-
-ex product_of(const exvector& factors)
-{
-    if (factors.empty())
-        return 1;
-    if (factors.size() == 1)
-        return factors.front();
-    return GiNaC::dynallocate<GiNaC::mul>(factors);
 }
 
 bool is_positive_integer(const ex& e)

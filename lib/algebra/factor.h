@@ -26,4 +26,9 @@ bool too_large_to_factor(const GiNaC::ex& e);
 /// budget_check(), then GiNaC::factor(e), or `e` itself when too_large_to_factor(e).
 GiNaC::ex factor_if_quick(const GiNaC::ex& e);
 
+/// e.normal() and factor_if_quick(e.normal()) of an expression with π: GiNaC's gcd wants
+/// polynomials over the rationals, so π goes through as a positive symbol.
+GiNaC::ex normal_with_pi(const GiNaC::ex& e);
+GiNaC::ex factor_with_pi(const GiNaC::ex& e);
+
 } // namespace lagrange

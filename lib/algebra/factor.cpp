@@ -1,8 +1,8 @@
 /** @file factor.cpp
  *  GiNaC's factor() where it is quick (see factor.h). */
-#include "mechanics/factor.h"
+#include "algebra/factor.h"
 
-#include "mechanics/budget.h"
+#include "algebra/budget.h"
 
 #include <cstdlib>
 
@@ -31,5 +31,21 @@ GiNaC::ex factor_if_quick(const GiNaC::ex& e)
         return e;
     return GiNaC::factor(e);
 }
+
+namespace {
+
+GiNaC::ex with_pi_as_symbol(const GiNaC::ex& e, GiNaC::ex (*f)(const GiNaC::ex&))
+{
+    static const GiNaC::possymbol pi("Pi");
+    return f(e.subs(GiNaC::Pi == pi)).subs(pi == GiNaC::Pi);
+}
+
+GiNaC::ex normal_of(const GiNaC::ex& e) { return e.normal(); }
+GiNaC::ex factor_of(const GiNaC::ex& e) { return factor_if_quick(e.normal()); }
+
+} // namespace
+
+GiNaC::ex normal_with_pi(const GiNaC::ex& e) { return with_pi_as_symbol(e, normal_of); }
+GiNaC::ex factor_with_pi(const GiNaC::ex& e) { return with_pi_as_symbol(e, factor_of); }
 
 } // namespace lagrange

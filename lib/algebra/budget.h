@@ -29,7 +29,7 @@
  *  The budget is per thread (thread_local), so parallel analyses do not interfere. */
 #pragma once
 
-#include "scene/source.h"
+#include "core/errors.h"
 
 #include <ginac/ginac.h>
 

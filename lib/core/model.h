@@ -3,8 +3,8 @@
  *  It knows nothing of printing or of the command line. */
 #pragma once
 
-#include "mechanics/rules.h"
-#include "scene/source.h"
+#include "core/errors.h"
+#include "core/rule.h"
 
 #include <ginac/ginac.h>
 
@@ -53,7 +53,7 @@ struct spring {
     GiNaC::ex rest_length; ///< 0 if omitted
 };
 
-/// A rigid body (§2 of the spec). Its inertia is derived later (mechanics/rigid_body.h);
+/// A rigid body (§2 of the spec). Its inertia is derived later (bodies/rigid_body.h);
 /// the model keeps what the scene said.
 struct rigid_body {
     enum class kind { shape, region, inertia };
@@ -159,5 +159,8 @@ struct model {
     GiNaC::lst velocities() const;
     GiNaC::lst accelerations() const;
 };
+
+/// The values of a `values` line as a substitution.
+GiNaC::exmap value_map(const model& scene, const value_point& point);
 
 } // namespace lagrange

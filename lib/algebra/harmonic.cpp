@@ -3,10 +3,11 @@
  *  because GiNaC builds, evaluates and hashes a tree object for every intermediate
  *  term (which dominated the derivation of the equations of motion), and neither
  *  GiNaC nor CLN has a sparse polynomial type whose monomials carry harmonics. */
-#include "mechanics/harmonic.h"
-#include "mechanics/budget.h"
+#include "algebra/harmonic.h"
+#include "algebra/expression.h"
+#include "algebra/budget.h"
 
-#include "mechanics/rules.h"
+#include "algebra/rules.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -42,24 +43,6 @@ int leading_sign(const std::int32_t* n, std::size_t count)
         if (n[i] != 0)
             return n[i] < 0 ? -1 : 1;
     return 0;
-}
-
-ex sum_of(const exvector& terms)
-{
-    if (terms.empty())
-        return 0;
-    if (terms.size() == 1)
-        return terms.front();
-    return GiNaC::dynallocate<GiNaC::add>(terms);
-}
-
-ex product_of(const exvector& factors)
-{
-    if (factors.empty())
-        return 1;
-    if (factors.size() == 1)
-        return factors.front();
-    return GiNaC::dynallocate<GiNaC::mul>(factors);
 }
 
 bool is_sin_or_cos(const ex& e)

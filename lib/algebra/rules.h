@@ -3,6 +3,8 @@
  *  independently of GiNaC's term order. */
 #pragma once
 
+#include "core/rule.h"
+
 #include <ginac/ginac.h>
 
 #include <memory>
@@ -10,13 +12,6 @@
 #include <vector>
 
 namespace lagrange {
-
-/// One rule: every match of `pattern` (with GiNaC wildcards) is replaced by `replacement`.
-struct rewrite_rule {
-    GiNaC::ex pattern;
-    GiNaC::ex replacement;
-    std::string origin; ///< "file:line", for messages
-};
 
 /// A rules file compiled into the program (generated from rules/*.rules).
 struct embedded_rule_file {

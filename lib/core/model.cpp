@@ -1,0 +1,69 @@
+/** @file model.cpp
+ *  Product names and the model's symbol lists. */
+#include "core/model.h"
+
+namespace lagrange {
+
+const std::vector<std::pair<product, std::string>>& product_names()
+{
+    static const std::vector<std::pair<product, std::string>> names = {
+        {product::equations, "equations"},
+        {product::equilibrium, "equilibrium"},
+        {product::linearization, "linearization"},
+        {product::characteristic, "characteristic"},
+        {product::frequencies, "frequencies"},
+        {product::modes, "modes"},
+        {product::normal_coordinates, "normal_coordinates"},
+        {product::asymptotic, "asymptotic"},
+        {product::numeric, "numeric"},
+        {product::inertia, "inertia"},
+        {product::euler, "euler"},
+        {product::simulation, "simulation"},
+        {product::workprecision, "workprecision"},
+    };
+    return names;
+}
+
+std::optional<product> product_from_name(const std::string& name)
+{
+    for (const auto& [p, n] : product_names())
+        if (n == name)
+            return p;
+    return std::nullopt;
+}
+
+GiNaC::lst model::positions() const
+{
+    GiNaC::lst result;
+    for (const coordinate& c : coordinates)
+        result.append(c.position);
+    return result;
+}
+
+GiNaC::lst model::velocities() const
+{
+    GiNaC::lst result;
+    for (const coordinate& c : coordinates)
+        result.append(c.velocity);
+    return result;
+}
+
+GiNaC::lst model::accelerations() const
+{
+    GiNaC::lst result;
+    for (const coordinate& c : coordinates)
+        result.append(c.acceleration);
+    return result;
+}
+
+GiNaC::exmap value_map(const model& scene, const value_point& point)
+{
+    GiNaC::exmap map;
+    for (const auto& [name, value] : point.values)
+        for (const parameter& p : scene.parameters)
+            if (p.name == name)
+                map[p.symbol] = value;
+    return map;
+}
+
+} // namespace lagrange

@@ -1,0 +1,36 @@
+/** @file top.h
+ *  The heavy symmetric top: Routh's reduction of its two cyclic angles and the
+ *  sleeping-top criterion. */
+#pragma once
+
+#include "algebra/simplify.h"
+#include "core/model.h"
+#include "mechanics/lagrangian.h"
+
+#include <ginac/ginac.h>
+
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+/// A top: a body turned by z-x-z Euler angles that are three coordinates (φ, θ, ψ), with
+/// φ and ψ cyclic. Routh's procedure with the cyclic momenta fixed at their sleeping
+/// values p_φ = p_ψ = I3 ω3 gives V_eff(θ); its curvature at θ = 0 decides whether the
+/// sleeping (vertical) top is stable.
+struct top_result {
+    std::string body;
+    GiNaC::ex nutation;            ///< θ, the angle from the vertical
+    GiNaC::ex pivot_moment;        ///< I1 about the fixed point: ∂²T/∂θ̇²
+    GiNaC::ex spin_moment;         ///< I3: ∂²T/∂ψ̇²
+    GiNaC::ex spin;                ///< the symbol ω3 = φ̇ cos θ + ψ̇ (conserved)
+    GiNaC::ex effective_potential; ///< V_eff(θ) at p_φ = p_ψ = I3 ω3
+    GiNaC::ex curvature;           ///< the coefficient of θ² in V_eff about θ = 0
+    GiNaC::ex condition;           ///< 8 I1 × curvature: the sleeping top is stable when it is > 0
+};
+
+/// The top analysis for every body that qualifies (none: empty).
+std::vector<top_result> analyze_tops(const model& scene, const lagrangian_result& lagrangian,
+                                     const simplifier& simplify);
+
+} // namespace lagrange

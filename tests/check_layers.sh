@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Fails on an include that points up the layers (docs/architecture.md):
+#   core ← algebra, system ← scene (front end) | bodies ← mechanics ← numeric ← engine ← output ← cli
+# A folder may include its own headers and those of the folders listed for it below.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+# The folders each folder may include besides its own.
+declare -A below=(
+    [core]=""
+    [algebra]="core"
+    [system]="core"
+    [scene]="core algebra"
+    [bodies]="core algebra"
+    [mechanics]="core algebra bodies"
+    [numeric]="core algebra bodies mechanics system"
+    [engine]="core algebra bodies mechanics numeric system scene"
+    [output]="core algebra bodies mechanics numeric system scene engine"
+    [cli]="core algebra bodies mechanics numeric system scene engine output"
+)
+bad=0
+while IFS= read -r file; do
+    if [[ $file == cli/* ]]; then from=cli; else from=$(cut -d/ -f2 <<<"$file"); fi
+    if [[ -z ${below[$from]+x} ]]; then
+        echo "$file: folder '$from' has no layer in tests/check_layers.sh"; bad=1; continue
+    fi
+    while IFS= read -r line; do
+        to=${line#*\"}; to=${to%%/*}
+        [[ $to == "$from" ]] && continue
+        if [[ " ${below[$from]} " != *" $to "* ]]; then
+            echo "$file: includes ${line}\" from layer '$to', which '$from' may not include"; bad=1
+        fi
+    done < <(grep -E '^\s*#\s*include\s+"[a-z_]+/' "$file" | sed -E 's/^[^"]*"([^"]*)".*/"\1/')
+done < <(find lib cli -name '*.h' -o -name '*.cpp' | sort)
+if (( bad )); then exit 1; fi
+echo "check_layers: every include points down"
