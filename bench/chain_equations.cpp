@@ -41,7 +41,7 @@ int main(int argc, char** argv)
             std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
             times.push_back(elapsed.count());
             terms = 0;
-            for (const GiNaC::ex& e : *result.equations)
+            for (const GiNaC::ex& e : *result.equations->residuals)
                 terms += term_count(e);
         }
         std::sort(times.begin(), times.end());

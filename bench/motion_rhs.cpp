@@ -60,7 +60,7 @@ int main(int argc, char** argv)
                              "gravity g along (0, -1)\nvalues M = 1, m = 0.01, l = 1, g = 9.81\n";
     lagrange::model scene = lagrange::load_model(lagrange::source_text("bench.lag", scene_text));
     lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::equations});
-    lagrange::compiled_motion motion(scene, *result.lagrangian, lagrange::first_value_point(scene));
+    lagrange::compiled_motion motion(scene, *result.equations, lagrange::first_value_point(scene));
 
     std::vector<double> x{0.3, -0.2, 0.1, 0.4}, out(4), reference(4);
     motion.rhs(0, x.data(), out.data());

@@ -73,7 +73,7 @@ problem from_scene(const std::string& name, const std::string& text, double unti
     p.until = until;
     p.scene = std::make_shared<lagrange::model>(lagrange::load_model(lagrange::source_text(name + ".lag", text)));
     lagrange::analysis a = lagrange::analyze(*p.scene, {lagrange::product::equations});
-    p.motion = std::make_shared<lagrange::compiled_motion>(*p.scene, *a.lagrangian,
+    p.motion = std::make_shared<lagrange::compiled_motion>(*p.scene, *a.equations,
                                                            lagrange::first_value_point(*p.scene));
     if (!p.motion->compile_native())
         std::cerr << "work_precision: no C compiler, the interpreter evaluates the equations\n";

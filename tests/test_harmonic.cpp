@@ -3,6 +3,7 @@
  *  and the derivatives against numeric evaluation, and the shortcuts they give the
  *  canonical form, the grouping and the equations (the same expressions as before). */
 #include "algebra/harmonic.h"
+#include "mechanics/equations_of_motion.h"
 #include "mechanics/lagrangian.h"
 #include "algebra/simplify.h"
 #include "scene/lower.h"

@@ -1,6 +1,7 @@
 /** @file test_lagrangian.cpp
  *  L = T − V and the Euler–Lagrange equations against textbook closed forms and
  *  a finite-difference check. */
+#include "mechanics/equations_of_motion.h"
 #include "mechanics/lagrangian.h"
 #include "algebra/simplify.h"
 #include "scene/lower.h"

@@ -3,6 +3,7 @@
  *  independent numeric quadrature in Cartesian coordinates; Euler's equations and
  *  their solutions; bodies in a Lagrangian. */
 #include "scene/lower.h"
+#include "mechanics/equations_of_motion.h"
 #include "mechanics/lagrangian.h"
 #include "bodies/rigid_body.h"
 #include "mechanics/top.h"

@@ -41,7 +41,7 @@ TEST_CASE("compiled_motion: double pendulum against the hand-solved equations an
 {
     lagrange::model scene = load(double_pendulum + "values M = 2, m = 0.7, l = 1.3, g = 9.81\n");
     lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
-    lagrange::compiled_motion motion(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    lagrange::compiled_motion motion(scene, *a.equations, lagrange::first_value_point(scene));
     const double M = 2, m = 0.7, l = 1.3, g = 9.81;
     std::vector<double> x{0.4, -1.1, 0.7, -0.3}, f(4), j(16);
     motion.rhs(0, x.data(), f.data());
@@ -254,7 +254,7 @@ TEST_CASE("dop853: its tolerance holds on the linearized double pendulum over 32
                                  "V = 1/2*(M+m)*g*l*theta^2 + 1/2*m*g*l*phi^2\n"
                                  "values M = 1, m = 0.01, l = 1, g = 1\ninitial theta = 0.05\n");
     lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
-    lagrange::compiled_motion motion(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    lagrange::compiled_motion motion(scene, *a.equations, lagrange::first_value_point(scene));
     std::vector<double> x0 = lagrange::initial_state_vector(scene, lagrange::first_value_point(scene));
     lagrange::ode_system system = motion.system();
     system.exact = lagrange::normal_mode_solution(system, motion.coordinates(), x0);
@@ -287,7 +287,7 @@ TEST_CASE("workprecision: the ladder on a linear scene, errors against the exact
     lagrange::model scene = load("parameters k\ncoordinates x\nT = 1/2*x'^2\nV = 1/2*k*x^2\n"
                                  "values k = 4\ninitial x = 1\nsimulate until 10\n");
     lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
-    lagrange::compiled_motion motion(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    lagrange::compiled_motion motion(scene, *a.equations, lagrange::first_value_point(scene));
     // A time limit of 120 s per run, not the default 20: under ASan implicit midpoint at 1e-9
     // (fixed steps, about 10⁵ per time unit) takes about 20 s, and a busy CI host stopped it at
     // t = 9.7 of 10 (in Release the whole test takes about 2 s).
@@ -334,8 +334,8 @@ TEST_CASE("compiled_motion: native code agrees with the interpreter and leaves n
 {
     lagrange::model scene = load(double_pendulum + "values M = 2, m = 0.7, l = 1.3, g = 9.81\n");
     lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
-    lagrange::compiled_motion interpreted(scene, *a.lagrangian, lagrange::first_value_point(scene));
-    lagrange::compiled_motion native(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    lagrange::compiled_motion interpreted(scene, *a.equations, lagrange::first_value_point(scene));
+    lagrange::compiled_motion native(scene, *a.equations, lagrange::first_value_point(scene));
     // A private TMPDIR, so that native code compiled by other processes at the same time is not counted.
     std::string private_tmp = (std::filesystem::temp_directory_path() / "lagrange-test-XXXXXX").string();
     REQUIRE(mkdtemp(private_tmp.data()) != nullptr);
@@ -418,7 +418,7 @@ TEST_CASE("dop853: the compiled right-hand side gives the numbers of the system'
         INFO(name);
         lagrange::model scene = load(text);
         lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
-        lagrange::compiled_motion motion(scene, *a.lagrangian, lagrange::first_value_point(scene));
+        lagrange::compiled_motion motion(scene, *a.equations, lagrange::first_value_point(scene));
         if (!motion.compile_native()) {
             WARN("no C compiler: the compiled path is not tested");
             return;
@@ -450,7 +450,7 @@ TEST_CASE("dop853: a mass matrix that stops being positive definite is the same 
     lagrange::model scene = load("coordinates x y\nT = 1/2*x'^2 + 1/2*(1 - t/2)*y'^2\nV = 1/2*x^2\n"
                                  "initial x = 1\n");
     lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
-    lagrange::compiled_motion motion(scene, *a.lagrangian, lagrange::first_value_point(scene));
+    lagrange::compiled_motion motion(scene, *a.equations, lagrange::first_value_point(scene));
     std::vector<double> x0 = lagrange::initial_state_vector(scene, lagrange::first_value_point(scene));
     lagrange::integration_options options;
     options.until = 3;

@@ -92,7 +92,7 @@ bool computed_any(const analysis& result)
 {
     for (product p : result.wanted) {
         switch (p) {
-        case product::equations: if (result.equations) return true; break;
+        case product::equations: if (result.equations && result.equations->residuals) return true; break;
         case product::equilibrium: if (result.equilibria) return true; break;
         case product::linearization: if (result.linearization) return true; break;
         case product::characteristic: if (result.characteristic) return true; break;
@@ -131,6 +131,7 @@ analysis analyze_within(const model& scene, const std::set<product>& wanted, con
     bool need_linearization = need_characteristic || need_numeric || w.count(product::linearization) > 0;
     bool need_equilibria = need_linearization || w.count(product::equilibrium) > 0;
     bool need_equations = w.count(product::equations) > 0;
+    bool need_motion = wants_any(w, {product::simulation, product::workprecision});
 
     // Rigid bodies: inertia by integration, then Euler's equations of the free ones.
     bool need_euler = w.count(product::euler) > 0;
@@ -169,10 +170,11 @@ analysis analyze_within(const model& scene, const std::set<product>& wanted, con
 
     simplifier simplify = make_simplifier(scene);
     run_stage(result, "lagrangian", [&] { result.lagrangian = derive_lagrangian(scene, simplify); }, limits);
-    if (need_equations) {
+    if (need_equations || need_motion) {
         try {
-            run_stage(result, "equations",
-                      [&] { result.equations = derive_equations(scene, *result.lagrangian, simplify); }, limits);
+            run_stage(result, "equations", [&] {
+                result.equations = derive_equations_of_motion(scene, *result.lagrangian, simplify, need_equations);
+            }, limits);
         } catch (const budget_exceeded& error) {
             result.notes.push_back(std::string("equations not computed: ") + error.what());
             exceeded = error;
@@ -258,13 +260,15 @@ void run_motion_stages(analysis& result, const model& scene, bool by_default, co
                           [&] { result.workprecision = free_body_work_precision(scene, settings); }, limits);
             return;
         }
+        if (!result.equations)
+            return;
         if (w.count(product::simulation))
             run_stage(result, "simulation", [&] {
-                result.simulation = simulate(scene, *result.lagrangian, equilibrium, settings);
+                result.simulation = simulate(scene, *result.equations, equilibrium, settings);
             }, limits);
         if (w.count(product::workprecision))
             run_stage(result, "workprecision", [&] {
-                result.workprecision = scene_work_precision(scene, *result.lagrangian, equilibrium, settings);
+                result.workprecision = scene_work_precision(scene, *result.equations, equilibrium, settings);
             }, limits);
     } catch (const computation_error& error) {
         if (!by_default)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "algebra/budget.h"
+#include "mechanics/equations_of_motion.h"
 #include "mechanics/lagrangian.h"
 #include "mechanics/oscillations.h"
 #include "bodies/rigid_body.h"
@@ -31,7 +32,7 @@ struct analysis {
     std::vector<stage_time> stages;      ///< the stages that ran, in order, with their times
     std::vector<std::string> notes;      ///< products left out of a default run, and why
     std::optional<lagrangian_result> lagrangian;
-    std::optional<std::vector<GiNaC::ex>> equations;
+    std::optional<equations_of_motion> equations;
     std::optional<equilibria_result> equilibria;
     std::optional<linearization_result> linearization;
     std::optional<characteristic_result> characteristic;

@@ -2,7 +2,7 @@
  *  L = T − V and the Euler–Lagrange equations. */
 #include "mechanics/lagrangian.h"
 
-#include "algebra/harmonic.h"
+#include "mechanics/harmonic_lagrangian.h"
 #include "bodies/rigid_body.h"
 
 #include <map>
@@ -23,38 +23,6 @@ GiNaC::ex squared_length(const std::vector<GiNaC::ex>& v)
     return sum;
 }
 
-/// True if `e` is a polynomial in sin/cos (of any argument), the coordinates,
-/// velocities and time, with coefficients that may divide by parameters only.
-bool is_harmonic_polynomial(const GiNaC::ex& e, const model& scene)
-{
-    auto moves = [&](const GiNaC::ex& x) {
-        if (x.has(scene.time))
-            return true;
-        for (const coordinate& c : scene.coordinates)
-            if (x.has(c.position) || x.has(c.velocity) || x.has(c.acceleration))
-                return true;
-        return false;
-    };
-    if (GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::constant>(e))
-        return true;
-    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
-        for (const GiNaC::ex& operand : e)
-            if (!is_harmonic_polynomial(operand, scene))
-                return false;
-        return true;
-    }
-    if (GiNaC::is_a<GiNaC::power>(e)) {
-        if (!moves(e))
-            return true;
-        return e.op(1).info(GiNaC::info_flags::nonnegint) && is_harmonic_polynomial(e.op(0), scene);
-    }
-    if (GiNaC::is_a<GiNaC::function>(e)) {
-        const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
-        return !moves(e) || name == "sin" || name == "cos";
-    }
-    return false;
-}
-
 /// Splits L by its degree in the velocities: L = L2 + L1 + L0, T = L2, V = −L0.
 void split_by_velocity_degree(const model& scene, lagrangian_result& result)
 {
@@ -71,72 +39,6 @@ void split_by_velocity_degree(const model& scene, lagrangian_result& result)
     result.gyroscopic = l.coeff(scale, 1);
     result.potential = -l.coeff(scale, 0);
 }
-
-/// True if every entry of `list` is a symbol (harmonic spaces need symbols as angles).
-bool all_symbols(const GiNaC::lst& list)
-{
-    for (const GiNaC::ex& e : list)
-        if (!GiNaC::is_a<GiNaC::symbol>(e))
-            return false;
-    return true;
-}
-
-} // namespace
-
-/// L as a harmonic polynomial over the symbols of a scene, with the index pairs
-/// (q, q̇), (q̇, q̈) and the index of t for the total time derivative.
-struct harmonic_lagrangian {
-    harmonic_lagrangian(const model& scene, const GiNaC::lst& angles) : space(angles), lagrangian(space)
-    {
-        time = space.add_symbol(scene.time);
-        for (const coordinate& c : scene.coordinates) {
-            const std::size_t velocity = space.add_symbol(c.velocity);
-            rates.emplace_back(space.add_symbol(c.position), velocity);
-            rates.emplace_back(velocity, space.add_symbol(c.acceleration));
-        }
-        for (const parameter& p : scene.parameters)
-            space.add_symbol(p.symbol);
-    }
-
-    /// L in harmonic form if `l` converts, else nullptr.
-    static std::shared_ptr<harmonic_lagrangian> of(const model& scene, const GiNaC::lst& angles, const GiNaC::ex& l)
-    {
-        if (!all_symbols(angles))
-            return nullptr;
-        auto h = std::make_shared<harmonic_lagrangian>(scene, angles);
-        if (!h->space.add_symbols_of(l))
-            return nullptr;
-        std::optional<harmonic_polynomial> p = to_harmonic(l, h->space);
-        if (!p)
-            return nullptr;
-        h->lagrangian = std::move(*p);
-        return h;
-    }
-
-    /// True if no term has a negative power of t, a coordinate, velocity or acceleration
-    /// (the condition under which the expanded derivatives stay in canonical form).
-    bool is_polynomial_in_motion() const
-    {
-        std::vector<bool> moves(space.symbol_count(), false);
-        moves[time] = true;
-        for (const auto& [variable, rate] : rates)
-            moves[variable] = moves[rate] = true;
-        for (std::size_t i = 0; i < lagrangian.size(); ++i) {
-            const harmonic_term t = lagrangian.term(i);
-            for (std::size_t s = 0; s < lagrangian.symbol_count(); ++s)
-                if (moves[s] && t.exponents[s] < 0)
-                    return false;
-        }
-        return true;
-    }
-
-    harmonic_space space;
-    std::vector<std::pair<std::size_t, std::size_t>> rates;
-    std::size_t time = 0;
-    harmonic_polynomial lagrangian;
-};
-
-namespace {
 
 } // namespace
 
@@ -240,38 +142,6 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
     // grouping joins the two, so the compact L is the compact T minus the compact V.
     result.lagrangian = result.kinetic - result.potential;
     return result;
-}
-
-std::vector<GiNaC::ex> derive_equations(const model& scene, const lagrangian_result& lagrangian,
-                                        const simplifier& simplify)
-{
-    std::vector<GiNaC::ex> equations;
-    const GiNaC::ex& l = lagrangian.lagrangian_canonical;
-    // Derivatives of a polynomial in sines and cosines of single harmonics stay in
-    // that form once expanded; anything else goes through the canonical form again.
-    std::shared_ptr<const harmonic_lagrangian> harmonic = lagrangian.harmonic;
-    if (!harmonic)
-        harmonic = harmonic_lagrangian::of(scene, simplify.angles, l);
-    if (harmonic && harmonic->is_polynomial_in_motion()) {
-        // The same expanded derivatives as below, in harmonic polynomial arithmetic.
-        const harmonic_space& space = harmonic->space;
-        const harmonic_polynomial& h = harmonic->lagrangian;
-        std::vector<harmonic_polynomial> expanded;
-        for (const coordinate& c : scene.coordinates) {
-            harmonic_polynomial equation =
-                h.derivative(*space.index_of(c.velocity)).total_derivative(harmonic->rates, harmonic->time);
-            equation -= h.derivative(*space.index_of(c.position));
-            expanded.push_back(std::move(equation));
-        }
-        return simplify.compact(expanded);
-    }
-    bool stays_canonical = is_harmonic_polynomial(l, scene);
-    for (const coordinate& c : scene.coordinates) {
-        GiNaC::ex momentum = differentiate(l, c.velocity);
-        GiNaC::ex equation = time_derivative(momentum, scene) - differentiate(l, c.position);
-        equations.push_back(simplify.compact(stays_canonical ? equation.expand() : simplify.canonical(equation)));
-    }
-    return equations;
 }
 
 } // namespace lagrange

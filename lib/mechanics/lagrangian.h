@@ -33,9 +33,4 @@ struct lagrangian_result {
 /// length has no value (coincident fixed ends).
 lagrangian_result derive_lagrangian(const model& scene, const simplifier& simplify);
 
-/// The Euler–Lagrange equations d/dt(∂L/∂q̇) − ∂L/∂q, one per coordinate, each
-/// meaning `expr = 0`, simplified and grouped by accelerations and velocities.
-std::vector<GiNaC::ex> derive_equations(const model& scene, const lagrangian_result& lagrangian,
-                                        const simplifier& simplify);
-
 } // namespace lagrange

@@ -29,14 +29,13 @@ GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::
 
 } // namespace
 
-compiled_motion::compiled_motion(const model& scene, const lagrangian_result& lagrangian,
+compiled_motion::compiled_motion(const model& scene, const equations_of_motion& equations,
                                  const std::map<std::string, GiNaC::ex>& values)
 {
     n_ = scene.coordinates.size();
     if (n_ == 0)
         throw computation_error("the scene has no coordinates to simulate");
-    GiNaC::ex lag = at_values(lagrangian.lagrangian, scene, values);
-    conservative_ = !lag.has(scene.time);
+    conservative_ = !at_values(equations.lagrangian, scene, values).has(scene.time);
 
     // Symbols in the state's order, time last: without explicit time the programs read x directly.
     std::vector<GiNaC::ex> symbols;
@@ -46,17 +45,14 @@ compiled_motion::compiled_motion(const model& scene, const lagrangian_result& la
         symbols.push_back(c.velocity);
     symbols.push_back(scene.time);
 
-    // M_ij = ∂²L/∂q̇i∂q̇j; f_i = ∂L/∂q_i − Σ_j ∂²L/∂q̇i∂q_j q̇_j − ∂²L/∂q̇i∂t.
-    std::vector<GiNaC::ex> momentum, mass(n_ * n_), force(n_);
-    for (const coordinate& c : scene.coordinates)
-        momentum.push_back(differentiate(lag, c.velocity));
+    // M q̈ = f at the parameter values (M row-major).
+    std::vector<GiNaC::ex> mass(n_ * n_), force(n_);
     for (std::size_t i = 0; i < n_; ++i) {
         for (std::size_t j = 0; j < n_; ++j)
-            mass[i * n_ + j] = j < i ? mass[j * n_ + i] : differentiate(momentum[i], scene.coordinates[j].velocity);
-        GiNaC::ex f = differentiate(lag, scene.coordinates[i].position) - differentiate(momentum[i], scene.time);
-        for (const coordinate& c : scene.coordinates)
-            f -= differentiate(momentum[i], c.position) * c.velocity;
-        force[i] = f;
+            mass[i * n_ + j] = j < i ? mass[j * n_ + i]
+                                     : at_values(equations.mass(static_cast<unsigned>(i), static_cast<unsigned>(j)),
+                                                 scene, values);
+        force[i] = at_values(equations.forcing[i], scene, values);
     }
     std::vector<GiNaC::ex> rhs_outputs = mass;
     rhs_outputs.insert(rhs_outputs.end(), force.begin(), force.end());
@@ -72,9 +68,7 @@ compiled_motion::compiled_motion(const model& scene, const lagrangian_result& la
         for (const coordinate& c : scene.coordinates)
             jacobian_outputs.push_back(differentiate(f, c.velocity));
 
-    GiNaC::ex energy = -lag;
-    for (std::size_t i = 0; i < n_; ++i)
-        energy += scene.coordinates[i].velocity * momentum[i];
+    const GiNaC::ex energy = at_values(equations.energy, scene, values);
 
     try {
         rhs_program_ = expression_program(rhs_outputs, symbols);

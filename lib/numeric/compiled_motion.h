@@ -6,7 +6,7 @@
  *  State layout: x = (q1 … qn, q̇1 … q̇n). */
 #pragma once
 
-#include "mechanics/lagrangian.h"
+#include "mechanics/equations_of_motion.h"
 #include "numeric/expression_program.h"
 #include "numeric/native_code.h"
 #include "numeric/ode.h"
@@ -24,7 +24,7 @@ public:
     /// `values`: a value for every parameter that L uses (exact or floating); throws
     /// computation_error naming a parameter without one, or an expression that cannot
     /// be evaluated.
-    compiled_motion(const model& scene, const lagrangian_result& lagrangian,
+    compiled_motion(const model& scene, const equations_of_motion& equations,
                     const std::map<std::string, GiNaC::ex>& values);
 
     std::size_t coordinates() const { return n_; }

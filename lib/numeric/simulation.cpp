@@ -184,12 +184,12 @@ void read_span(prepared_motion& p, const model& scene, const simulation_settings
         throw computation_error("the tolerance " + message_number(p.tolerance, 3) + " is outside 1e-14 … 1");
 }
 
-prepared_motion prepare(const model& scene, const lagrangian_result& lagrangian,
+prepared_motion prepare(const model& scene, const equations_of_motion& equations,
                         const std::optional<std::vector<GiNaC::ex>>& equilibrium, const simulation_settings& settings)
 {
     prepared_motion p;
     p.values = merged_values(scene);
-    p.motion = std::make_unique<compiled_motion>(scene, lagrangian, p.values);
+    p.motion = std::make_unique<compiled_motion>(scene, equations, p.values);
     if (!settings.native)
         p.evaluation = "interpreted (as asked)";
     else if (!p.motion->compile_native()) // falls back to the interpreter without a compiler
@@ -440,11 +440,11 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
 
 } // namespace
 
-simulation_result simulate(const model& scene, const lagrangian_result& lagrangian,
+simulation_result simulate(const model& scene, const equations_of_motion& equations,
                            const std::optional<std::vector<GiNaC::ex>>& equilibrium,
                            const simulation_settings& settings)
 {
-    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, settings);
+    prepared_motion prepared = prepare(scene, equations, equilibrium, settings);
     return run_simulation(scene, prepared, settings);
 }
 
@@ -465,11 +465,11 @@ workprecision_result free_body_work_precision(const model& scene, const simulati
     return result;
 }
 
-workprecision_result scene_work_precision(const model& scene, const lagrangian_result& lagrangian,
+workprecision_result scene_work_precision(const model& scene, const equations_of_motion& equations,
                                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
                                           const simulation_settings& settings)
 {
-    prepared_motion prepared = prepare(scene, lagrangian, equilibrium, settings);
+    prepared_motion prepared = prepare(scene, equations, equilibrium, settings);
     workprecision_result result = work_precision(prepared.system, prepared.x0, prepared.until,
                                                  prepared.motion->coordinates(), prepared.frequencies, {},
                                                  settings.max_seconds / 6);

@@ -5,7 +5,7 @@
  *  the work-precision table of every method over a ladder of tolerances. */
 #pragma once
 
-#include "mechanics/lagrangian.h"
+#include "mechanics/equations_of_motion.h"
 #include "numeric/compiled_motion.h"
 #include "numeric/ode.h"
 #include "core/model.h"
@@ -65,7 +65,7 @@ constexpr double stiffness_threshold = 1e3;
 /// Runs the simulation the scene's `simulate` line (and `settings`) ask for.
 /// `equilibrium`: numeric coordinates of the equilibrium to linearize about for the
 /// automatic choice (else the initial position).
-simulation_result simulate(const model& scene, const lagrangian_result& lagrangian,
+simulation_result simulate(const model& scene, const equations_of_motion& equations,
                            const std::optional<std::vector<GiNaC::ex>>& equilibrium,
                            const simulation_settings& settings = {});
 
@@ -107,7 +107,7 @@ struct workprecision_result {
 
 /// `work_precision` on the scene's equations of motion at its parameter point, from
 /// its initial state over the `simulate` time span (or settings.until).
-workprecision_result scene_work_precision(const model& scene, const lagrangian_result& lagrangian,
+workprecision_result scene_work_precision(const model& scene, const equations_of_motion& equations,
                                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
                                           const simulation_settings& settings = {});
 

@@ -372,11 +372,11 @@ void write_text(std::ostream& out, const analysis& result, const document_option
         }
         out << "  L = " << print(l.lagrangian, syntax::text, velocity_order(scene)) << '\n';
     }
-    if (result.equations) {
+    if (result.equations && result.equations->residuals) {
         out << "\nEquations of motion\n";
         for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
             out << "  " << print_name(scene.coordinates[i].name, syntax::text) << ":  "
-                << print((*result.equations)[i], syntax::text, equation_order(scene)) << " = 0\n";
+                << print((*result.equations->residuals)[i], syntax::text, equation_order(scene)) << " = 0\n";
     }
     write_oscillations_text(out, result);
     write_bodies_text(out, result);
@@ -491,10 +491,10 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
         }
         out << latex_display("L", print_terms(l.lagrangian, syntax::latex, velocity_order(scene)), "");
     }
-    if (result.equations) {
+    if (result.equations && result.equations->residuals) {
         out << "\\subsection*{Equations of motion}\n";
         for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
-            out << latex_display("", print_terms((*result.equations)[i], syntax::latex, equation_order(scene)), " = 0");
+            out << latex_display("", print_terms((*result.equations->residuals)[i], syntax::latex, equation_order(scene)), " = 0");
     }
     write_oscillations_latex(out, result);
     write_bodies_latex(out, result);
@@ -643,9 +643,9 @@ void write_json(std::ostream& out, const analysis& result, const document_option
             doc["potential_energy"] = print(l.potential, syntax::plain);
         }
     }
-    if (result.equations) {
+    if (result.equations && result.equations->residuals) {
         doc["equations"] = nlohmann::json::array();
-        for (const GiNaC::ex& e : *result.equations)
+        for (const GiNaC::ex& e : *result.equations->residuals)
             doc["equations"].push_back(print(e, syntax::plain, equation_order(scene)));
     }
     write_oscillations_json(doc, result);

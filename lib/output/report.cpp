@@ -246,7 +246,7 @@ void write_lagrangian(report_writer& w)
 void write_equations(report_writer& w)
 {
     const model& scene = w.scene();
-    const std::vector<GiNaC::ex>& equations = *w.result().equations;
+    const std::vector<GiNaC::ex>& equations = *w.result().equations->residuals;
     const std::size_t n = scene.coordinates.size();
     w.latex("\\section{Equations of motion}\n");
     w.text("The Euler--Lagrange equations");
@@ -257,7 +257,7 @@ void write_equations(report_writer& w)
         w.latex("\n\\noindent For $" + report_writer::name(scene.coordinates[i].name) + "$:");
         w.display_terms("", print_terms(equations[i], syntax::latex, equation_order(scene)), " = 0");
     }
-    std::optional<acceleration_form> grouped = group_by_accelerations(scene, equations);
+    const std::optional<acceleration_form>& grouped = w.result().equations->grouped;
     if (!grouped)
         return;
     const GiNaC::matrix& mass = grouped->mass;
@@ -505,26 +505,6 @@ void write_notes(report_writer& w)
 
 } // namespace
 
-std::optional<acceleration_form> group_by_accelerations(const model& scene, const std::vector<GiNaC::ex>& equations)
-{
-    const std::size_t n = scene.coordinates.size();
-    GiNaC::exmap no_acceleration;
-    for (const coordinate& c : scene.coordinates)
-        no_acceleration[c.acceleration] = 0;
-    acceleration_form form{GiNaC::matrix(static_cast<unsigned>(n), static_cast<unsigned>(n)), {}};
-    for (std::size_t i = 0; i < n && i < equations.size(); ++i) {
-        for (std::size_t j = 0; j < n; ++j) {
-            GiNaC::ex coefficient = equations[i].diff(scene.coordinates[j].acceleration);
-            for (const coordinate& c : scene.coordinates)
-                if (coefficient.has(c.acceleration))
-                    return std::nullopt;
-            form.mass(static_cast<unsigned>(i), static_cast<unsigned>(j)) = coefficient;
-        }
-        form.rest.push_back(equations[i].subs(no_acceleration));
-    }
-    return form;
-}
-
 // ---------------------------------------------------------------------------
 // report_writer
 
@@ -687,7 +667,7 @@ const std::vector<report_section>& report_sections()
         {"title", [](const analysis&) { return true; }, write_title},
         {"coordinates", [](const analysis&) { return true; }, write_coordinates},
         {"lagrangian", [](const analysis& r) { return r.lagrangian.has_value(); }, write_lagrangian},
-        {"equations", [](const analysis& r) { return r.equations.has_value(); }, write_equations},
+        {"equations", [](const analysis& r) { return r.equations && r.equations->residuals; }, write_equations},
         {"equilibrium", [](const analysis& r) { return r.equilibria.has_value(); }, write_equilibria},
         {"linearization",
          [](const analysis& r) {

@@ -102,15 +102,6 @@ private:
     int gnuplot_state_ = 0; ///< 0 unknown, 1 available, -1 missing
 };
 
-/// The equations grouped as 𝓜(q) q̈ + f(q, q̇) = 0: 𝓜_ij is the coefficient of
-/// q̈_j in equation i, f_i what is left. Nothing if an equation is not linear in
-/// the accelerations.
-struct acceleration_form {
-    GiNaC::matrix mass;
-    std::vector<GiNaC::ex> rest;
-};
-std::optional<acceleration_form> group_by_accelerations(const model& scene, const std::vector<GiNaC::ex>& equations);
-
 /// The sections in document order. The rigid-body (inertia, Euler's equations)
 /// and simulation (beats, polhode, work-precision) sections are added here as
 /// further entries by their own files.

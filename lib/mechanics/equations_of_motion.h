@@ -1,0 +1,53 @@
+/** @file equations_of_motion.h
+ *  The equations of motion, derived once from L and read by everyone who needs them:
+ *  the printers and the report (the Euler–Lagrange residuals, simplified, and their
+ *  grouping by accelerations) and the compiled right-hand side (M(q) q̈ = f). */
+#pragma once
+
+#include "algebra/simplify.h"
+#include "core/model.h"
+#include "mechanics/lagrangian.h"
+
+#include <ginac/ginac.h>
+
+#include <optional>
+#include <vector>
+
+namespace lagrange {
+
+/// The equations grouped as 𝓜(q) q̈ + f(q, q̇) = 0: 𝓜_ij is the coefficient of
+/// q̈_j in equation i, f_i what is left. Nothing if an equation is not linear in
+/// the accelerations.
+struct acceleration_form {
+    GiNaC::matrix mass;
+    std::vector<GiNaC::ex> rest;
+};
+std::optional<acceleration_form> group_by_accelerations(const model& scene, const std::vector<GiNaC::ex>& equations);
+
+/// The equations of motion of a scene. The form M q̈ = f is what the integrators solve; the
+/// residuals are what is printed. Both come from the same L here and nowhere else. Later
+/// terms (generalized forces, constraint multipliers) are added here, to both forms.
+struct equations_of_motion {
+    GiNaC::ex lagrangian;                ///< the L they come from (lagrangian_result::lagrangian)
+    std::vector<GiNaC::ex> momenta;      ///< p_i = ∂L/∂q̇_i
+    GiNaC::matrix mass;                  ///< M_ij = ∂p_i/∂q̇_j (n × n)
+    std::vector<GiNaC::ex> forcing;      ///< f_i = ∂L/∂q_i − Σ_j ∂p_i/∂q_j q̇_j − ∂p_i/∂t
+    GiNaC::ex energy;                    ///< the energy function h = Σ q̇_i p_i − L
+    /// d/dt ∂L/∂q̇ − ∂L/∂q, each meaning `expr = 0`, simplified: set when they are printed.
+    std::optional<std::vector<GiNaC::ex>> residuals;
+    /// The residuals as 𝓜(q) q̈ + f = 0, when they are linear in the accelerations.
+    std::optional<acceleration_form> grouped;
+};
+
+/// M, f, the momenta and the energy function of L (unsimplified: what the compiled
+/// right-hand side evaluates), and with `printed` also the simplified residuals and
+/// their grouping by accelerations.
+equations_of_motion derive_equations_of_motion(const model& scene, const lagrangian_result& lagrangian,
+                                               const simplifier& simplify, bool printed);
+
+/// The Euler–Lagrange equations d/dt(∂L/∂q̇) − ∂L/∂q, one per coordinate, each
+/// meaning `expr = 0`, simplified and grouped by accelerations and velocities.
+std::vector<GiNaC::ex> derive_equations(const model& scene, const lagrangian_result& lagrangian,
+                                        const simplifier& simplify);
+
+} // namespace lagrange
