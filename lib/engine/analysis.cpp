@@ -8,17 +8,187 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
 
 namespace lagrange {
 
+namespace {
+
+/// What the stages share while they run.
+struct stage_context {
+    const model& scene;
+    analysis& result;
+    const simulation_settings& simulation;
+    bool by_default; ///< no product was named: what cannot be done is a note
+    std::optional<simplifier> simplify;
+
+    const simplifier& simplifier_for_scene()
+    {
+        if (!simplify)
+            simplify = make_simplifier(scene);
+        return *simplify;
+    }
+    bool wants(product p) const { return result.wanted.count(p) > 0; }
+};
+
+/// One stage: its name (in `stages` and --timings), the products it computes, the
+/// products it is shown with, the stages whose results it reads, whether it applies to
+/// a scene, and how a failure is reported. A stage runs when a product it computes or
+/// is shown with is wanted, or when a stage that runs needs it.
+struct stage_definition {
+    std::string name;
+    std::vector<product> produces;
+    std::vector<product> shown_with;
+    std::vector<std::string> needs;
+    bool (*applies)(const model&);
+    std::function<void(stage_context&)> run;
+    /// A stage of a group ("small oscillations", "simulation") that fails in a default
+    /// run leaves out the rest of its group with the note "GROUP not computed: why";
+    /// empty: the failure is an error.
+    std::string group;
+    /// A budget overrun leaves out this stage and those that need it, with the note
+    /// "BUDGET_NOTE not computed: why"; empty: as any other failure.
+    std::string budget_note;
+};
+
+/// The equilibrium a simulation linearizes about to choose its method: the one found,
+/// else the scene's `equilibrium` line.
+std::optional<std::vector<GiNaC::ex>> equilibrium_of(const stage_context& c)
+{
+    if (c.result.equilibria)
+        return c.result.equilibria->points.at(c.result.equilibria->chosen).position;
+    return c.scene.equilibrium;
+}
+
+bool has_coordinates(const model& scene) { return !scene.coordinates.empty(); }
+bool any_scene(const model&) { return true; }
+bool has_top(const model& scene)
+{
+    if (scene.coordinates.empty())
+        return false;
+    for (const rigid_body& b : scene.bodies)
+        if (b.orientation)
+            return true;
+    return false;
+}
+
+const std::vector<product> coordinate_products = {
+    product::equations, product::equilibrium, product::linearization, product::characteristic,
+    product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric};
+
+const std::vector<product> every_product = {
+    product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
+    product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
+    product::euler,      product::simulation, product::workprecision};
+
+/// The stages in the order they run. Adding a product is one row here, one result
+/// field in `analysis`, and one writer per output family.
+const std::vector<stage_definition>& stage_table()
+{
+    static const std::vector<stage_definition> table = {
+        {"inertia", {product::inertia}, {}, {}, any_scene,
+         [](stage_context& c) {
+             if (c.scene.bodies.empty())
+                 throw computation_error("`inertia` and `euler` need a rigid body (`body B disk(R) mass M`)");
+             c.result.inertia.emplace();
+             for (const rigid_body& b : c.scene.bodies)
+                 c.result.inertia->push_back(derive_inertia(b));
+         }, "", ""},
+        {"euler", {product::euler}, {}, {"inertia"}, any_scene,
+         [](stage_context& c) {
+             if (!has_free_body(c.scene))
+                 throw computation_error("`euler` needs a free body: name its angular velocity with "
+                                         "`omega B (w1, w2, w3)`");
+             GiNaC::exmap values =
+                 c.scene.values.empty() ? GiNaC::exmap{} : value_map(c.scene, c.scene.values.front());
+             c.result.euler.emplace();
+             for (std::size_t i = 0; i < c.scene.bodies.size(); ++i)
+                 if (c.scene.bodies[i].omega)
+                     c.result.euler->push_back(
+                         derive_euler(c.scene.bodies[i], c.result.inertia->at(i), c.scene.initial, values));
+         }, "", ""},
+        // Every product of a scene with coordinates shows its Lagrangian.
+        {"lagrangian", {}, every_product, {}, has_coordinates,
+         [](stage_context& c) { c.result.lagrangian = derive_lagrangian(c.scene, c.simplifier_for_scene()); },
+         "", ""},
+        {"equations", {product::equations}, {}, {"lagrangian"},
+         has_coordinates,
+         [](stage_context& c) {
+             c.result.equations = derive_equations_of_motion(c.scene, *c.result.lagrangian, c.simplifier_for_scene(),
+                                                             c.wants(product::equations));
+         }, "", "equations"},
+        {"top", {}, {product::equations, product::inertia}, {"lagrangian"}, has_top,
+         [](stage_context& c) { c.result.tops = analyze_tops(c.scene, *c.result.lagrangian, c.simplifier_for_scene()); },
+         "", ""},
+        {"equilibrium", {product::equilibrium}, {}, {"lagrangian"}, has_coordinates,
+         [](stage_context& c) {
+             if (!c.result.lagrangian->split)
+                 throw computation_error("the Lagrangian is not quadratic in the velocities, so it has no "
+                                         "kinetic and potential energy to linearize");
+             if (c.wants(product::asymptotic) && !c.scene.limit)
+                 throw computation_error("`asymptotic` needs a `limit` line, such as `limit rho -> 0`");
+             if (c.wants(product::numeric) && c.scene.values.empty())
+                 throw computation_error("`numeric` needs a `values` line or --values");
+             c.result.equilibria = find_equilibria(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
+         }, "small oscillations", "small oscillations"},
+        {"linearization", {product::linearization}, {}, {"equilibrium"}, has_coordinates,
+         [](stage_context& c) {
+             const equilibrium_point& point = c.result.equilibria->points.at(c.result.equilibria->chosen);
+             c.result.linearization =
+                 linearize(c.scene, *c.result.lagrangian, point.position, c.simplifier_for_scene());
+         }, "small oscillations", "small oscillations"},
+        {"characteristic", {product::characteristic}, {}, {"linearization"}, has_coordinates,
+         [](stage_context& c) { c.result.characteristic = characteristic_polynomial(c.scene, *c.result.linearization); },
+         "small oscillations", "symbolic modes"},
+        {"modes", {product::frequencies, product::modes, product::normal_coordinates}, {}, {"characteristic"},
+         has_coordinates,
+         [](stage_context& c) {
+             c.result.modes = symbolic_modes(c.scene, *c.result.linearization, *c.result.characteristic);
+         }, "small oscillations", "symbolic modes"},
+        {"asymptotic", {product::asymptotic}, {}, {"modes"}, has_coordinates,
+         [](stage_context& c) { c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes); },
+         "small oscillations", "symbolic modes"},
+        {"numeric", {product::numeric}, {}, {"linearization"}, has_coordinates,
+         [](stage_context& c) { c.result.numeric = numeric_normal_modes(c.scene, *c.result.linearization); },
+         "small oscillations", "small oscillations"},
+        {"simulation", {product::simulation}, {}, {"equations"}, any_scene,
+         [](stage_context& c) {
+             if (!c.result.lagrangian) {
+                 if (!has_free_body(c.scene))
+                     throw computation_error("the scene has no coordinates to simulate");
+                 c.result.simulation = simulate_free_body(c.scene, c.simulation);
+             } else {
+                 c.result.simulation = simulate(c.scene, *c.result.equations, equilibrium_of(c), c.simulation);
+             }
+         }, "simulation", ""},
+        {"workprecision", {product::workprecision}, {}, {"equations"}, any_scene,
+         [](stage_context& c) {
+             if (!c.result.lagrangian) {
+                 if (!has_free_body(c.scene))
+                     throw computation_error("the scene has no coordinates to simulate");
+                 c.result.workprecision = free_body_work_precision(c.scene, c.simulation);
+             } else {
+                 c.result.workprecision =
+                     scene_work_precision(c.scene, *c.result.equations, equilibrium_of(c), c.simulation);
+             }
+         }, "simulation", ""},
+    };
+    return table;
+}
+
+} // namespace
+
 const std::set<product>& available_products()
 {
-    static const std::set<product> products = {
-        product::equations,       product::equilibrium, product::linearization,      product::characteristic,
-        product::frequencies,     product::modes,       product::normal_coordinates, product::asymptotic,
-        product::numeric,         product::inertia,     product::euler,
-        product::simulation,      product::workprecision,
-    };
+    static const std::set<product> products = [] {
+        std::set<product> all;
+        for (const stage_definition& stage : stage_table())
+            all.insert(stage.produces.begin(), stage.produces.end());
+        return all;
+    }();
     return products;
 }
 
@@ -30,37 +200,6 @@ std::string name_of(product p)
         if (q == p)
             return name;
     return "?";
-}
-
-/// Times one stage and records it. A failure inside the algebra (GiNaC throws
-/// plain std::exceptions with internal messages) becomes a computation_error
-/// that names the stage.
-void run_stage(analysis& result, const std::string& name, const std::function<void()>& stage,
-               const budget_limits& limits = {})
-{
-    auto start = std::chrono::steady_clock::now();
-    try {
-        budget_scope budget(name, limits);
-        stage();
-    } catch (const computation_error&) {
-        throw;
-    } catch (const scene_error&) {
-        throw;
-    } catch (const std::bad_alloc&) {
-        throw;
-    } catch (const std::exception&) {
-        throw computation_error("the `" + name + "` stage could not be done for this scene symbolically");
-    }
-    std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-    result.stages.push_back({name, elapsed.count()});
-}
-
-bool wants_any(const std::set<product>& wanted, std::initializer_list<product> products)
-{
-    for (product p : products)
-        if (wanted.count(p))
-            return true;
-    return false;
 }
 
 /// The products a scene supports when it has no `want` line.
@@ -87,32 +226,66 @@ std::set<product> default_products(const model& scene)
     return products;
 }
 
-/// True if any of the wanted products was computed.
-bool computed_any(const analysis& result)
+bool wants_any(const std::set<product>& wanted, const std::vector<product>& products)
 {
-    for (product p : result.wanted) {
-        switch (p) {
-        case product::equations: if (result.equations && result.equations->residuals) return true; break;
-        case product::equilibrium: if (result.equilibria) return true; break;
-        case product::linearization: if (result.linearization) return true; break;
-        case product::characteristic: if (result.characteristic) return true; break;
-        case product::frequencies:
-        case product::modes:
-        case product::normal_coordinates: if (result.modes) return true; break;
-        case product::asymptotic: if (result.asymptotic) return true; break;
-        case product::numeric: if (result.numeric) return true; break;
-        case product::inertia: if (result.inertia) return true; break;
-        case product::euler: if (result.euler) return true; break;
-        case product::simulation: if (result.simulation) return true; break;
-        case product::workprecision: if (result.workprecision) return true; break;
-        default: break;
-        }
-    }
+    for (product p : products)
+        if (wanted.count(p))
+            return true;
     return false;
 }
 
-analysis analyze_within(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
-                        std::optional<budget_exceeded>& exceeded)
+const stage_definition* find_stage(const std::string& name)
+{
+    for (const stage_definition& stage : stage_table())
+        if (stage.name == name)
+            return &stage;
+    return nullptr;
+}
+
+/// The stages to run for `wanted`: those that apply to the scene and compute or are shown
+/// with a wanted product, and, walking back, what they need.
+std::set<std::string> plan(const model& scene, const std::set<product>& wanted)
+{
+    std::set<std::string> chosen;
+    std::function<void(const stage_definition&)> choose = [&](const stage_definition& stage) {
+        if (!stage.applies(scene) || !chosen.insert(stage.name).second)
+            return;
+        for (const std::string& need : stage.needs)
+            choose(*find_stage(need));
+    };
+    for (const stage_definition& stage : stage_table())
+        if (wants_any(wanted, stage.produces) || wants_any(wanted, stage.shown_with))
+            choose(stage);
+    return chosen;
+}
+
+/// Times one stage and records it. A failure inside the algebra (GiNaC throws
+/// plain std::exceptions with internal messages) becomes a computation_error
+/// that names the stage.
+void run_stage(stage_context& context, const stage_definition& stage, const budget_limits& limits)
+{
+    auto start = std::chrono::steady_clock::now();
+    try {
+        budget_scope budget(stage.name, limits);
+        stage.run(context);
+    } catch (const computation_error&) {
+        throw;
+    } catch (const scene_error&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception&) {
+        throw computation_error("the `" + stage.name + "` stage could not be done for this scene symbolically");
+    }
+    std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    context.result.stages.push_back({stage.name, elapsed.count()});
+}
+
+/// Runs the planned stages in table order. A stage runs once all that it needs has
+/// run; a budget overrun leaves out the stage (and so what needs it) with a note, and
+/// in a default run a failure leaves out the rest of the stage's group with a note.
+analysis run_stages(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
+                    const simulation_settings& simulation, std::optional<budget_exceeded>& exceeded)
 {
     analysis result;
     result.scene = &scene;
@@ -121,160 +294,55 @@ analysis analyze_within(const model& scene, const std::set<product>& wanted, con
     for (product p : result.wanted)
         if (!available_products().count(p))
             throw computation_error("`" + name_of(p) + "` is not computed by this version of lagrange yet");
+    if (scene.coordinates.empty() && wants_any(result.wanted, coordinate_products))
+        throw computation_error("the scene has no coordinates, so it has no equations of motion "
+                                "(only `inertia` and `euler`)");
 
-    const std::set<product>& w = result.wanted;
-    bool need_numeric = w.count(product::numeric) > 0;
-    bool need_asymptotic = w.count(product::asymptotic) > 0;
-    bool need_modes = need_asymptotic ||
-                      wants_any(w, {product::frequencies, product::modes, product::normal_coordinates});
-    bool need_characteristic = need_modes || w.count(product::characteristic) > 0;
-    bool need_linearization = need_characteristic || need_numeric || w.count(product::linearization) > 0;
-    bool need_equilibria = need_linearization || w.count(product::equilibrium) > 0;
-    bool need_equations = w.count(product::equations) > 0;
-    bool need_motion = wants_any(w, {product::simulation, product::workprecision});
-
-    // Rigid bodies: inertia by integration, then Euler's equations of the free ones.
-    bool need_euler = w.count(product::euler) > 0;
-    if (need_euler || w.count(product::inertia)) {
-        if (scene.bodies.empty())
-            throw computation_error("`inertia` and `euler` need a rigid body (`body B disk(R) mass M`)");
-        run_stage(result, "inertia", [&] {
-            result.inertia.emplace();
-            for (const rigid_body& b : scene.bodies)
-                result.inertia->push_back(derive_inertia(b));
-        }, limits);
-    }
-    if (need_euler) {
-        bool free_body = false;
-        for (const rigid_body& b : scene.bodies)
-            free_body = free_body || b.omega.has_value();
-        if (!free_body)
-            throw computation_error("`euler` needs a free body: name its angular velocity with "
-                                    "`omega B (w1, w2, w3)`");
-        GiNaC::exmap values = scene.values.empty() ? GiNaC::exmap{} : value_map(scene, scene.values.front());
-        run_stage(result, "euler", [&] {
-            result.euler.emplace();
-            for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-                if (scene.bodies[i].omega)
-                    result.euler->push_back(derive_euler(scene.bodies[i], result.inertia->at(i), scene.initial, values));
-        }, limits);
-    }
-    if (scene.coordinates.empty()) {
-        if (wants_any(w, {product::equations, product::equilibrium, product::linearization, product::characteristic,
-                          product::frequencies, product::modes, product::normal_coordinates, product::asymptotic,
-                          product::numeric}))
-            throw computation_error("the scene has no coordinates, so it has no equations of motion "
-                                    "(only `inertia` and `euler`)");
-        return result;
-    }
-
-    simplifier simplify = make_simplifier(scene);
-    run_stage(result, "lagrangian", [&] { result.lagrangian = derive_lagrangian(scene, simplify); }, limits);
-    if (need_equations || need_motion) {
+    stage_context context{scene, result, simulation, by_default, std::nullopt};
+    const std::set<std::string> planned = plan(scene, result.wanted);
+    std::set<std::string> done, failed_groups;
+    for (const stage_definition& stage : stage_table()) {
+        if (!planned.count(stage.name) || failed_groups.count(stage.group))
+            continue;
+        bool ready = true;
+        for (const std::string& need : stage.needs)
+            ready = ready && (done.count(need) || !find_stage(need)->applies(scene));
+        if (!ready)
+            continue;
         try {
-            run_stage(result, "equations", [&] {
-                result.equations = derive_equations_of_motion(scene, *result.lagrangian, simplify, need_equations);
-            }, limits);
+            run_stage(context, stage, limits);
+            done.insert(stage.name);
         } catch (const budget_exceeded& error) {
-            result.notes.push_back(std::string("equations not computed: ") + error.what());
+            if (stage.budget_note.empty()) {
+                if (stage.group.empty() || !by_default)
+                    throw;
+                result.notes.push_back(stage.group + " not computed: " + error.what());
+                failed_groups.insert(stage.group);
+                continue;
+            }
+            std::string note = stage.budget_note + " not computed: " + error.what();
+            if (stage.budget_note == "symbolic modes" && result.wanted.count(product::numeric))
+                note += "; the numeric modes are still computed";
+            result.notes.push_back(note);
             exceeded = error;
+        } catch (const computation_error& error) {
+            if (stage.group.empty() || !by_default)
+                throw;
+            result.notes.push_back(stage.group + " not computed: " + error.what());
+            failed_groups.insert(stage.group);
         }
-    }
-    bool has_top = false;
-    for (const rigid_body& b : scene.bodies)
-        has_top = has_top || b.orientation.has_value();
-    if (has_top && (need_equations || w.count(product::inertia)))
-        run_stage(result, "top", [&] { result.tops = analyze_tops(scene, *result.lagrangian, simplify); }, limits);
-    if (!need_equilibria)
-        return result;
-
-    // The small-oscillation stages. In a default run, what cannot be done is a note.
-    try {
-        if (!result.lagrangian->split)
-            throw computation_error("the Lagrangian is not quadratic in the velocities, so it has no "
-                                    "kinetic and potential energy to linearize");
-        if (need_asymptotic && !scene.limit)
-            throw computation_error("`asymptotic` needs a `limit` line, such as `limit rho -> 0`");
-        if (need_numeric && scene.values.empty())
-            throw computation_error("`numeric` needs a `values` line or --values");
-        run_stage(result, "equilibrium",
-                  [&] { result.equilibria = find_equilibria(scene, *result.lagrangian, simplify); }, limits);
-        if (!need_linearization)
-            return result;
-        const equilibrium_point& point = result.equilibria->points.at(result.equilibria->chosen);
-        run_stage(result, "linearization",
-                  [&] { result.linearization = linearize(scene, *result.lagrangian, point.position, simplify); },
-                  limits);
-        // Budgets: a symbolic stage that swells leaves out its products (with a note)
-        // and those after it, but not the numeric modes, which need only the linearization.
-        try {
-            if (need_characteristic)
-                run_stage(result, "characteristic",
-                          [&] { result.characteristic = characteristic_polynomial(scene, *result.linearization); },
-                          limits);
-            if (need_modes)
-                run_stage(result, "modes", [&] {
-                    result.modes = symbolic_modes(scene, *result.linearization, *result.characteristic);
-                }, limits);
-            if (need_asymptotic)
-                run_stage(result, "asymptotic", [&] { result.asymptotic = asymptotic_limit(scene, *result.modes); },
-                          limits);
-        } catch (const budget_exceeded& error) {
-            result.notes.push_back(std::string("symbolic modes not computed: ") + error.what() +
-                                   (need_numeric ? "; the numeric modes are still computed" : ""));
-            exceeded = error;
-        }
-        if (need_numeric)
-            run_stage(result, "numeric",
-                      [&] { result.numeric = numeric_normal_modes(scene, *result.linearization); }, limits);
-    } catch (const budget_exceeded& error) {
-        result.notes.push_back(std::string("small oscillations not computed: ") + error.what());
-        exceeded = error;
-    } catch (const computation_error& error) {
-        if (!by_default)
-            throw;
-        result.notes.push_back(std::string("small oscillations not computed: ") + error.what());
     }
     return result;
 }
 
-/// The numeric time-integration stages: `simulation` and `workprecision`.
-void run_motion_stages(analysis& result, const model& scene, bool by_default, const simulation_settings& settings,
-                       const budget_limits& limits)
+/// True if any stage that computes a wanted product has run.
+bool computed_any(const analysis& result)
 {
-    const std::set<product>& w = result.wanted;
-    if (!wants_any(w, {product::simulation, product::workprecision}))
-        return;
-    std::optional<std::vector<GiNaC::ex>> equilibrium = scene.equilibrium;
-    if (result.equilibria)
-        equilibrium = result.equilibria->points.at(result.equilibria->chosen).position;
-    try {
-        if (!result.lagrangian) {
-            // A free body (no coordinates): Euler's equations.
-            if (!has_free_body(scene))
-                throw computation_error("the scene has no coordinates to simulate");
-            if (w.count(product::simulation))
-                run_stage(result, "simulation", [&] { result.simulation = simulate_free_body(scene, settings); }, limits);
-            if (w.count(product::workprecision))
-                run_stage(result, "workprecision",
-                          [&] { result.workprecision = free_body_work_precision(scene, settings); }, limits);
-            return;
-        }
-        if (!result.equations)
-            return;
-        if (w.count(product::simulation))
-            run_stage(result, "simulation", [&] {
-                result.simulation = simulate(scene, *result.equations, equilibrium, settings);
-            }, limits);
-        if (w.count(product::workprecision))
-            run_stage(result, "workprecision", [&] {
-                result.workprecision = scene_work_precision(scene, *result.equations, equilibrium, settings);
-            }, limits);
-    } catch (const computation_error& error) {
-        if (!by_default)
-            throw;
-        result.notes.push_back(std::string("simulation not computed: ") + error.what());
-    }
+    for (const stage_time& ran : result.stages)
+        if (const stage_definition* stage = find_stage(ran.stage))
+            if (wants_any(result.wanted, stage->produces))
+                return true;
+    return false;
 }
 
 } // namespace
@@ -283,8 +351,7 @@ analysis analyze(const model& scene, const std::set<product>& wanted, const budg
                  const simulation_settings& simulation)
 {
     std::optional<budget_exceeded> exceeded;
-    analysis result = analyze_within(scene, wanted, limits, exceeded);
-    run_motion_stages(result, scene, wanted.empty() && scene.wanted.empty(), simulation, limits);
+    analysis result = run_stages(scene, wanted, limits, simulation, exceeded);
     if (exceeded && !computed_any(result))
         throw *exceeded;
     return result;
