@@ -7,6 +7,7 @@
 #include "output/simulation_output.h"
 #include "output/sweep_output.h"
 #include "scene/lower.h"
+#include "system/address_layout.h"
 
 #include <CLI/CLI.hpp>
 
@@ -399,6 +400,8 @@ int run(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
+    // Byte-identical output in every run: see system/address_layout.h.
+    lagrange::use_fixed_address_layout(argv);
     try {
         return run(argc, argv);
     } catch (const lagrange::scene_error& error) {
