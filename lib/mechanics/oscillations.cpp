@@ -4,9 +4,10 @@
  *  polynomial det(V − ω²T), and the frequencies, mode vectors, normal
  *  coordinates and asymptotic limits in closed form where one exists. */
 #include "mechanics/oscillations.h"
-#include "algebra/factor.h"
-#include "algebra/budget.h"
 
+#include "algebra/budget.h"
+#include "algebra/expression.h"
+#include "algebra/factor.h"
 #include "core/errors.h"
 
 #include <algorithm>
@@ -36,13 +37,6 @@ using GiNaC::is_a;
 
 /// The most angle coordinates whose combinations of 0 and π are tried as equilibria.
 constexpr std::size_t max_enumerated_angles = 10;
-
-/// A map_function that applies a callable to every operand.
-struct map_each : GiNaC::map_function {
-    explicit map_each(std::function<ex(const ex&)> f) : apply(std::move(f)) {}
-    ex operator()(const ex& e) override { return apply(e); }
-    std::function<ex(const ex&)> apply;
-};
 
 std::string print(const ex& e)
 {
