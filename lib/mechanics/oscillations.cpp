@@ -9,6 +9,7 @@
 #include "algebra/exact_matrix.h"
 #include "algebra/expression.h"
 #include "algebra/factor.h"
+#include "algebra/message_text.h"
 #include "algebra/sign.h"
 #include "algebra/surd.h"
 #include "core/errors.h"
@@ -16,7 +17,6 @@
 #include <algorithm>
 #include <functional>
 #include <map>
-#include <sstream>
 
 namespace lagrange {
 
@@ -40,43 +40,6 @@ using GiNaC::is_a;
 
 /// The most angle coordinates whose combinations of 0 and π are tried as equilibria.
 constexpr std::size_t max_enumerated_angles = 10;
-
-std::string print(const ex& e)
-{
-    std::ostringstream out;
-    out << e;
-    return out.str();
-}
-
-/// e as text for messages, the same whatever GiNaC's internal term order: the
-/// operands of sums and products are printed recursively and sorted (the full
-/// printer lives in lib/output, which this layer may not use).
-std::string message_text(const ex& e)
-{
-    auto wrapped = [](const ex& x) {
-        std::string text = message_text(x);
-        return is_a<GiNaC::add>(x) || is_a<GiNaC::mul>(x) ? "(" + text + ")" : text;
-    };
-    if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
-        std::vector<std::string> parts;
-        for (const ex& operand : e)
-            parts.push_back(is_a<GiNaC::add>(e) ? message_text(operand) : wrapped(operand));
-        std::sort(parts.begin(), parts.end());
-        std::string out;
-        for (const std::string& part : parts)
-            out += (out.empty() ? "" : (is_a<GiNaC::add>(e) ? (part.rfind('-', 0) == 0 ? "" : "+") : "*")) + part;
-        return out;
-    }
-    if (is_a<GiNaC::power>(e))
-        return wrapped(e.op(0)) + "^" + wrapped(e.op(1));
-    if (is_a<GiNaC::function>(e)) {
-        std::string out = ex_to<GiNaC::function>(e).get_name() + "(";
-        for (std::size_t i = 0; i < e.nops(); ++i)
-            out += (i ? "," : "") + message_text(e.op(i));
-        return out + ")";
-    }
-    return print(e);
-}
 
 /// sin and cos of integer combinations of the coordinates (plus a constant) written
 /// through sin q and cos q of each coordinate: cos(n q + c) = Re((cos q + i sin q)ⁿ e^{ic}).
