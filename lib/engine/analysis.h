@@ -5,7 +5,10 @@
 
 #include "algebra/budget.h"
 #include "mechanics/lagrangian.h"
-#include "mechanics/oscillations.h"
+#include "mechanics/asymptotic.h"
+#include "mechanics/equilibrium.h"
+#include "mechanics/linearization.h"
+#include "mechanics/modes.h"
 #include "bodies/rigid_body.h"
 #include "mechanics/top.h"
 #include "numeric/normal_modes.h"
