@@ -1,8 +1,11 @@
 /** @file test_oscillations.cpp
  *  Equilibria, linearization, characteristic polynomial and symbolic modes against
  *  textbook closed forms, with numeric checks of Aᵀ T A = I and V a = ω² T a. */
-#include "mechanics/oscillations.h"
+#include "mechanics/asymptotic.h"
+#include "mechanics/equilibrium.h"
 #include "mechanics/lagrangian.h"
+#include "mechanics/linearization.h"
+#include "mechanics/modes.h"
 #include "scene/lower.h"
 #include "scene_helpers.h"
 

@@ -1,9 +1,12 @@
 /** @file expression.h
  *  Small expression helpers shared by the algebra: a sum or product of many
- *  operands built in one allocation. */
+ *  operands built in one allocation, and a map over the operands by a callable. */
 #pragma once
 
 #include <ginac/ginac.h>
+
+#include <functional>
+#include <utility>
 
 namespace lagrange {
 
@@ -26,5 +29,12 @@ inline GiNaC::ex product_of(const GiNaC::exvector& factors)
         return factors.front();
     return GiNaC::dynallocate<GiNaC::mul>(factors);
 }
+
+/// A map_function that applies a callable to every operand.
+struct map_each : GiNaC::map_function {
+    explicit map_each(std::function<GiNaC::ex(const GiNaC::ex&)> f) : apply(std::move(f)) {}
+    GiNaC::ex operator()(const GiNaC::ex& e) override { return apply(e); }
+    std::function<GiNaC::ex(const GiNaC::ex&)> apply;
+};
 
 } // namespace lagrange

@@ -3,7 +3,7 @@
  *  Aᵀ T A = I, and an error estimate per frequency that bounds the error. */
 #pragma once
 
-#include "mechanics/oscillations.h"
+#include "mechanics/linearization.h"
 #include "numeric/expression_program.h"
 #include "core/model.h"
 

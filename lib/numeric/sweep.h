@@ -4,7 +4,7 @@
  *  length runs in constant memory. */
 #pragma once
 
-#include "mechanics/oscillations.h"
+#include "mechanics/linearization.h"
 #include "core/model.h"
 
 #include <cstddef>

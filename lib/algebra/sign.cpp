@@ -1,0 +1,144 @@
+/** @file sign.cpp
+ *  Zero tests, signs and tidy forms of expressions in positive parameters (see sign.h). */
+#include "algebra/sign.h"
+
+#include "algebra/budget.h"
+#include "algebra/factor.h"
+
+namespace lagrange {
+
+namespace {
+
+using GiNaC::ex;
+using GiNaC::ex_to;
+using GiNaC::is_a;
+
+/// The sign of a product, power or sum of terms of known sign; nothing if unknown.
+std::optional<int> sign_by_structure(const ex& e)
+{
+    if (is_a<GiNaC::numeric>(e)) {
+        const GiNaC::numeric& n = ex_to<GiNaC::numeric>(e);
+        if (!n.is_real())
+            return std::nullopt;
+        return n.is_zero() ? 0 : (n.is_positive() ? 1 : -1);
+    }
+    if (is_a<GiNaC::symbol>(e))
+        return e.info(GiNaC::info_flags::positive) ? std::optional<int>(1) : std::nullopt;
+    if (is_a<GiNaC::mul>(e)) {
+        int sign = 1;
+        for (const ex& factor : e) {
+            std::optional<int> s = sign_by_structure(factor);
+            if (!s)
+                return std::nullopt;
+            sign *= *s;
+        }
+        return sign;
+    }
+    if (is_a<GiNaC::power>(e)) {
+        const ex& exponent = e.op(1);
+        if (!is_a<GiNaC::numeric>(exponent))
+            return std::nullopt;
+        std::optional<int> base = sign_by_structure(e.op(0));
+        const GiNaC::numeric& k = ex_to<GiNaC::numeric>(exponent);
+        if (k.is_even())
+            return base ? std::optional<int>(*base == 0 ? 0 : 1) : std::nullopt;
+        if (!base)
+            return std::nullopt;
+        if (k.is_integer())
+            return *base;
+        return *base > 0 ? std::optional<int>(1) : std::nullopt;
+    }
+    if (is_a<GiNaC::add>(e)) {
+        bool all_nonnegative = true, all_nonpositive = true, any_nonzero = false;
+        for (const ex& term : e) {
+            std::optional<int> s = sign_by_structure(term);
+            if (!s)
+                return std::nullopt;
+            all_nonnegative = all_nonnegative && *s >= 0;
+            all_nonpositive = all_nonpositive && *s <= 0;
+            any_nonzero = any_nonzero || *s != 0;
+        }
+        if (!any_nonzero)
+            return 0;
+        if (all_nonnegative)
+            return 1;
+        if (all_nonpositive)
+            return -1;
+        return std::nullopt;
+    }
+    if (e.info(GiNaC::info_flags::positive))
+        return 1;
+    // A constant expression (π, √2, cos(1)): its value decides.
+    bool has_symbol = false;
+    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
+        if (is_a<GiNaC::symbol>(*i))
+            has_symbol = true;
+    if (!has_symbol) {
+        ex value = e.evalf();
+        if (is_a<GiNaC::numeric>(value) && ex_to<GiNaC::numeric>(value).is_real() && !value.is_zero())
+            return ex_to<GiNaC::numeric>(value).is_positive() ? 1 : -1;
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+bool vanishes(const ex& e)
+{
+    if (e.is_zero())
+        return true;
+    ex expanded = e.expand();
+    return expanded.is_zero() || expanded.normal().is_zero();
+}
+
+ex tidy(const ex& e)
+{
+    try {
+        budget_check(); // GiNaC's normal and factor can take long: a checkpoint before each
+        ex fraction = e.normal().numer_denom();
+        budget_check();
+        ex numerator = factor_if_quick(fraction.op(0));
+        budget_check();
+        return numerator / factor_if_quick(fraction.op(1));
+    } catch (const budget_exceeded&) {
+        throw; // out of budget: the stage stops, no fallback
+    } catch (const std::exception&) {
+        return e;
+    }
+}
+
+std::optional<int> sign_of(const ex& e)
+{
+    if (vanishes(e))
+        return 0;
+    if (std::optional<int> s = sign_by_structure(e))
+        return s;
+    ex fraction = e.normal().numer_denom();
+    std::optional<int> denominator = sign_by_structure(fraction.op(1));
+    if (!denominator) {
+        try {
+            denominator = sign_by_structure(factor_if_quick(fraction.op(1)));
+        } catch (const budget_exceeded&) {
+            throw; // out of budget: the stage stops, no fallback
+        } catch (const std::exception&) {
+        }
+    }
+    if (!denominator || *denominator == 0)
+        return std::nullopt;
+    std::optional<int> numerator = sign_by_structure(fraction.op(0));
+    if (!numerator)
+        numerator = sign_by_structure(fraction.op(0).expand());
+    if (!numerator) {
+        try {
+            numerator = sign_by_structure(factor_if_quick(fraction.op(0)));
+        } catch (const budget_exceeded&) {
+            throw; // out of budget: the stage stops, no fallback
+        } catch (const std::exception&) {
+        }
+    }
+    if (!numerator)
+        return std::nullopt;
+    return *numerator * *denominator;
+}
+
+} // namespace lagrange

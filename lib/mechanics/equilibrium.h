@@ -1,0 +1,47 @@
+/** @file equilibrium.h
+ *  The equilibria of V and their stability: the scene's `equilibrium` line
+ *  checked, or the solutions of ∂V/∂q = 0 found symbolically, each classified
+ *  by the Hessian of V there. */
+#pragma once
+
+#include "algebra/simplify.h"
+#include "core/model.h"
+#include "mechanics/lagrangian.h"
+
+#include <ginac/ginac.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+enum class stability { stable, unstable, marginal, unknown };
+std::string to_string(stability s); ///< "stable", "unstable", "marginal", "unknown"
+
+struct equilibrium_point {
+    std::vector<GiNaC::ex> position; ///< one value per coordinate
+    stability kind = stability::unknown;
+};
+
+struct equilibria_result {
+    std::vector<equilibrium_point> points; ///< every equilibrium found (or the one given)
+    std::size_t chosen = 0;                ///< the one to linearize about (the stable one by default)
+    bool given = false;                    ///< from the scene's `equilibrium` line
+};
+
+/// The `equilibrium` line if there is one (checked: ∂V/∂q = 0 there, else
+/// computation_error), otherwise the solutions of ∂V/∂q = 0 found symbolically.
+/// Throws computation_error when none is found.
+equilibria_result find_equilibria(const model& scene, const lagrangian_result& lagrangian,
+                                  const simplifier& simplify);
+
+/// e with the coordinates at `at` and the velocities at zero. Where a value is not
+/// a rational multiple of π, sines and cosines of multiple angles are first written
+/// through sin q and cos q, so that q = acos(x) substitutes to exact roots.
+GiNaC::ex evaluate_at(const GiNaC::ex& e, const model& scene, const std::vector<GiNaC::ex>& at);
+
+/// ∂²V/∂qi∂qj at a point, each entry tidied (the V matrix of the linearization).
+GiNaC::matrix potential_hessian(const model& scene, const GiNaC::ex& potential, const std::vector<GiNaC::ex>& at);
+
+} // namespace lagrange

@@ -1,0 +1,125 @@
+/** @file linearization.cpp
+ *  T and V at an equilibrium (with a check that T is positive definite there),
+ *  and the primitive characteristic polynomial det(V − ω²T). */
+#include "mechanics/linearization.h"
+
+#include "algebra/calculus.h"
+#include "algebra/exact_matrix.h"
+#include "algebra/factor.h"
+#include "algebra/message_text.h"
+#include "algebra/sign.h"
+#include "core/errors.h"
+#include "mechanics/equilibrium.h"
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace lagrange {
+
+namespace {
+
+using GiNaC::ex;
+
+/// A symbol named `base` (or base_, base__, …) that no parameter or coordinate uses.
+std::string free_name(const model& scene, std::string base)
+{
+    auto taken = [&](const std::string& name) {
+        for (const parameter& p : scene.parameters)
+            if (p.name == name)
+                return true;
+        for (const coordinate& c : scene.coordinates)
+            if (c.name == name)
+                return true;
+        return scene.ratio && scene.ratio->name == name;
+    };
+    while (taken(base))
+        base += "_";
+    return base;
+}
+
+} // namespace
+
+std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
+                                            const GiNaC::symbol& w)
+{
+    std::size_t n = kinetic.rows();
+    GiNaC::matrix pencil(n, n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            pencil(i, j) = potential(i, j) - w * kinetic(i, j);
+    ex det = fraction_free_determinant(pencil).normal();
+    ex fraction = det.numer_denom();
+    ex numerator = fraction.op(0).expand();
+    std::optional<int> denominator_sign = sign_of(fraction.op(1));
+    std::vector<ex> coefficients;
+    for (int k = 0; k <= numerator.degree(w); ++k)
+        coefficients.push_back(numerator.coeff(w, k).expand());
+    ex content = 0;
+    for (const ex& c : coefficients)
+        if (!c.is_zero())
+            content = content.is_zero() ? c : GiNaC::gcd(content, c);
+    if (content.is_zero())
+        return coefficients;
+    int flip = (denominator_sign && *denominator_sign < 0) ? -1 : 1;
+    std::optional<int> leading = sign_of(coefficients.back() / content);
+    if (leading && *leading < 0)
+        flip = -flip;
+    for (ex& c : coefficients) {
+        ex quotient;
+        if (!GiNaC::divide(c, content, quotient))
+            quotient = (c / content).normal();
+        c = factor_if_quick(flip * quotient);
+    }
+    return coefficients;
+}
+
+linearization_result linearize(const model& scene, const lagrangian_result& lagrangian, const std::vector<ex>& at,
+                               const simplifier& simplify)
+{
+    if (!lagrangian.split)
+        throw computation_error("the Lagrangian is not quadratic in the velocities: no small-oscillation analysis");
+    std::size_t n = scene.coordinates.size();
+    if (at.size() != n)
+        throw std::invalid_argument("linearize: the equilibrium has " + std::to_string(at.size()) +
+                                    " values for " + std::to_string(n) + " coordinates");
+    linearization_result result{at, GiNaC::matrix(n, n), GiNaC::matrix(n, n)};
+    ex kinetic = simplify.canonical(lagrangian.kinetic);
+    ex potential = simplify.canonical(lagrangian.potential);
+    for (std::size_t i = 0; i < n; ++i) {
+        ex kinetic_row = differentiate(kinetic, scene.coordinates[i].velocity);
+        for (std::size_t j = i; j < n; ++j) {
+            ex entry = tidy(evaluate_at(differentiate(kinetic_row, scene.coordinates[j].velocity), scene, at));
+            result.kinetic(i, j) = entry;
+            result.kinetic(j, i) = entry;
+        }
+    }
+    result.potential = potential_hessian(scene, potential, at);
+    for (std::size_t i = 0; i < n; ++i)
+        if (vanishes(result.kinetic(i, i)))
+            throw computation_error("coordinate `" + scene.coordinates[i].name +
+                                    "` has no kinetic energy at the equilibrium");
+    std::vector<ex> minors = leading_minors(result.kinetic);
+    for (std::size_t k = 0; k < minors.size(); ++k) {
+        std::optional<int> sign = sign_of(minors[k]);
+        if (sign && *sign <= 0)
+            throw computation_error("the kinetic matrix is not positive definite at the equilibrium: the kinetic energy "
+                                    "of " + scene.coordinates[0].name + " … " + scene.coordinates[k].name +
+                                    " can vanish (leading minor " + message_text(minors[k].expand()) + ")");
+    }
+    return result;
+}
+
+characteristic_result characteristic_polynomial(const model& scene, const linearization_result& linear)
+{
+    characteristic_result result{GiNaC::possymbol(free_name(scene, "omega")), 0};
+    GiNaC::possymbol w("W");
+    std::vector<ex> coefficients = characteristic_coefficients(linear.kinetic, linear.potential, w);
+    ex polynomial = 0;
+    for (std::size_t k = 0; k < coefficients.size(); ++k)
+        polynomial += coefficients[k] * GiNaC::pow(result.omega, static_cast<int>(2 * k));
+    result.polynomial = polynomial;
+    return result;
+}
+
+} // namespace lagrange

@@ -1,0 +1,32 @@
+/** @file modes.h
+ *  The normal modes in closed form: the frequencies ω² as roots of the
+ *  characteristic polynomial, a mode vector for each, and the normal coordinates. */
+#pragma once
+
+#include "core/model.h"
+#include "mechanics/linearization.h"
+
+#include <ginac/ginac.h>
+
+#include <vector>
+
+namespace lagrange {
+
+struct modes_result {
+    bool closed_form = false;                 ///< false: no closed form found (numeric only)
+    std::vector<GiNaC::ex> frequencies;       ///< ω², ascending where the order is known
+    std::vector<std::vector<GiNaC::ex>> modes;///< one mode vector per frequency
+    std::vector<GiNaC::ex> normal_coordinates;///< ζ_k = (Aᵀ T q)_k with Aᵀ T A = I
+    /// The same with the scene's `ratio` substituted (m -> rho*M), if it has one.
+    std::vector<GiNaC::ex> frequencies_in_ratio;
+    std::vector<std::vector<GiNaC::ex>> modes_in_ratio;
+    std::vector<GiNaC::ex> normal_coordinates_in_ratio;
+};
+
+/// The roots ω² of the characteristic polynomial in closed form (every factor of
+/// degree ≤ 3 in ω²), a mode vector for each and the normal coordinates; not
+/// closed_form when some factor has a higher degree.
+modes_result symbolic_modes(const model& scene, const linearization_result& linear,
+                            const characteristic_result& characteristic);
+
+} // namespace lagrange
