@@ -184,32 +184,6 @@ fourier_series multiply(const fourier_series& a, const fourier_series& b)
     return product;
 }
 
-exvector terms_of(const ex& e)
-{
-    exvector terms;
-    if (ex_kind_of(e) == ex_kind::sum) {
-        terms.reserve(e.nops());
-        for (size_t i = 0; i < e.nops(); ++i)
-            terms.push_back(e.op(i));
-    } else if (!e.is_zero()) {
-        terms.push_back(e);
-    }
-    return terms;
-}
-
-exvector factors_of(const ex& e)
-{
-    exvector factors;
-    if (ex_kind_of(e) == ex_kind::product) {
-        factors.reserve(e.nops());
-        for (size_t i = 0; i < e.nops(); ++i)
-            factors.push_back(e.op(i));
-    } else {
-        factors.push_back(e);
-    }
-    return factors;
-}
-
 bool is_positive_integer(const ex& e)
 {
     return e.info(GiNaC::info_flags::posint);
@@ -223,21 +197,6 @@ bool is_negative_integer(const ex& e)
 bool is_sin_or_cos(const ex& e)
 {
     return GiNaC::is_the_function<GiNaC::sin_SERIAL>(e) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(e);
-}
-
-/// True if a sum of products has a negative power of something other than a symbol
-/// (a denominator that only normal() can combine).
-bool has_compound_denominator(const ex& e)
-{
-    if (ex_kind_of(e) == ex_kind::sum || ex_kind_of(e) == ex_kind::product) {
-        for (size_t i = 0; i < e.nops(); ++i)
-            if (has_compound_denominator(e.op(i)))
-                return true;
-        return false;
-    }
-    if (ex_kind_of(e) == ex_kind::power)
-        return is_negative_integer(e.op(1)) && ex_kind_of(e.op(0)) != ex_kind::symbol;
-    return false;
 }
 
 /// The canonical form for one list of angles.
