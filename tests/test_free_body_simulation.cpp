@@ -185,7 +185,7 @@ TEST_CASE("workprecision: a free body is measured against its exact solution", "
             continue;
         ++measured;
         INFO(p.method << " " << p.tolerance << ": " << *p.error);
-        if (p.method != "bdf") // (BDF misses its tolerance at the tightest levels, as the README says)
+        if (p.method != "bdf") // (BDF misses its tolerance at the tightest levels, as docs/simulation.md says)
             CHECK(*p.error <= p.tolerance);
     }
     CHECK(measured >= 30);

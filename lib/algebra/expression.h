@@ -1,6 +1,7 @@
 /** @file expression.h
- *  Small expression helpers shared by the algebra: a sum or product of many
- *  operands built in one allocation, and a map over the operands by a callable. */
+ *  Small expression helpers shared by the algebra: what an expression is at its top
+ *  node, its terms and factors, a sum or product of many operands built in one
+ *  allocation, and a map over the operands by a callable. */
 #pragma once
 
 #include <ginac/ginac.h>
@@ -9,6 +10,23 @@
 #include <utility>
 
 namespace lagrange {
+
+/// What an expression is at its top node. GiNaC's is_a<> is a dynamic_cast, and
+/// with libstdc++ every failed one compares type names as strings; the matcher and
+/// the canonical form ask this very often, so they use ex_kind_of instead.
+enum class ex_kind { number, symbol, constant, sum, product, power, function, wildcard, other };
+
+ex_kind ex_kind_of(const GiNaC::ex& e);
+
+/// The terms of a sum (a non-sum is a one-term sum; zero has no terms).
+GiNaC::exvector terms_of(const GiNaC::ex& e);
+
+/// The factors of a product (a non-product is a one-factor product).
+GiNaC::exvector factors_of(const GiNaC::ex& e);
+
+/// True if a sum of products has a negative power of something other than a symbol
+/// (a denominator that only normal() can combine).
+bool has_compound_denominator(const GiNaC::ex& e);
 
 /// The sum of `terms` (0 if none, the term itself if one).
 inline GiNaC::ex sum_of(const GiNaC::exvector& terms)

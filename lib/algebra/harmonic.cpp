@@ -4,10 +4,9 @@
  *  term (which dominated the derivation of the equations of motion), and neither
  *  GiNaC nor CLN has a sparse polynomial type whose monomials carry harmonics. */
 #include "algebra/harmonic.h"
-#include "algebra/expression.h"
-#include "algebra/budget.h"
 
-#include "algebra/rules.h"
+#include "algebra/budget.h"
+#include "algebra/expression.h"
 
 #include <algorithm>
 #include <cstdlib>

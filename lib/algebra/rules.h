@@ -3,6 +3,7 @@
  *  independently of GiNaC's term order. */
 #pragma once
 
+#include "algebra/expression.h"
 #include "core/rule.h"
 
 #include <ginac/ginac.h>
@@ -19,13 +20,6 @@ struct embedded_rule_file {
     const char* text;
 };
 const std::vector<embedded_rule_file>& embedded_rule_files();
-
-/// What an expression is at its top node. GiNaC's is_a<> is a dynamic_cast, and
-/// with libstdc++ every failed one compares type names as strings; the matcher and
-/// the canonical form ask this very often, so they use ex_kind_of instead.
-enum class ex_kind { number, symbol, constant, sum, product, power, function, wildcard, other };
-
-ex_kind ex_kind_of(const GiNaC::ex& e);
 
 /// Matches `pattern` against `e`, extending `bindings` (wildcard -> expression).
 /// Sums and products match independently of operand order: a sum pattern of k

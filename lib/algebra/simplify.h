@@ -1,10 +1,11 @@
 /** @file simplify.h
- *  Exact canonical form of trigonometric polynomials in the coordinates, and the
- *  simplifier that the mechanics stages use (canonical form, then rules, then a
- *  compact grouping by velocities and accelerations). */
+ *  The simplifier that the mechanics stages use: the exact canonical form of
+ *  trigonometric polynomials in the coordinates (trig_canonical.h), then the rules,
+ *  then a compact grouping by velocities and accelerations. */
 #pragma once
 
 #include "algebra/rules.h"
+#include "algebra/trig_canonical.h"
 
 #include <ginac/ginac.h>
 
@@ -13,23 +14,6 @@
 namespace lagrange {
 
 class harmonic_polynomial;
-
-/// Canonical form of `e` as a trigonometric polynomial in `angles`: every sin/cos
-/// whose argument is a linear combination of the angles (rational coefficients,
-/// plus a constant) is written as a sum of c·cos(n·q + ...) and c·sin(n·q) with
-/// integer vectors n whose first nonzero entry is positive, products linearized,
-/// and the result expanded. Two expressions are equal as functions of the angles
-/// iff their canonical forms are equal (given canonical coefficients).
-/// Other subexpressions (sqrt, exp, sin of non-linear arguments) are kept as atoms,
-/// their arguments canonicalized recursively.
-GiNaC::ex trig_canonical(const GiNaC::ex& e, const GiNaC::lst& angles);
-
-/// trig_canonical by the general path only, without the shortcut through harmonic
-/// polynomials (the two agree exactly where the shortcut applies; tests compare them).
-GiNaC::ex trig_canonical_general(const GiNaC::ex& e, const GiNaC::lst& angles);
-
-/// True if a and b are equal as trigonometric polynomials in `angles`.
-bool trig_equal(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::lst& angles);
 
 /// Writes `e` as a sum over the distinct monomials in `variables` (e.g. the
 /// accelerations and velocities) and in the functions of `angles` (cos(theta-phi)),

@@ -1,8 +1,6 @@
 /** @file main.cpp
  *  Derives a harmonic oscillator's equation through the installed library. */
-#include <engine/analysis.h>
-#include <output/print.h>
-#include <scene/lower.h>
+#include <lagrange/lagrange.h>
 
 #include <iostream>
 

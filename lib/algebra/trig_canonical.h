@@ -1,0 +1,27 @@
+/** @file trig_canonical.h
+ *  Exact canonical form of trigonometric polynomials in the coordinates: equal as
+ *  functions of the angles exactly when the forms are equal. */
+#pragma once
+
+#include <ginac/ginac.h>
+
+namespace lagrange {
+
+/// Canonical form of `e` as a trigonometric polynomial in `angles`: every sin/cos
+/// whose argument is a linear combination of the angles (rational coefficients,
+/// plus a constant) is written as a sum of c·cos(n·q + ...) and c·sin(n·q) with
+/// integer vectors n whose first nonzero entry is positive, products linearized,
+/// and the result expanded. Two expressions are equal as functions of the angles
+/// iff their canonical forms are equal (given canonical coefficients).
+/// Other subexpressions (sqrt, exp, sin of non-linear arguments) are kept as atoms,
+/// their arguments canonicalized recursively.
+GiNaC::ex trig_canonical(const GiNaC::ex& e, const GiNaC::lst& angles);
+
+/// trig_canonical by the general path only, without the shortcut through harmonic
+/// polynomials (the two agree exactly where the shortcut applies; tests compare them).
+GiNaC::ex trig_canonical_general(const GiNaC::ex& e, const GiNaC::lst& angles);
+
+/// True if a and b are equal as trigonometric polynomials in `angles`.
+bool trig_equal(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::lst& angles);
+
+} // namespace lagrange
