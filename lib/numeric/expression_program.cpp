@@ -9,7 +9,6 @@
 #include <cln/cln.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <cmath>
 #include <limits>
@@ -627,22 +626,6 @@ LAGRANGE_FMA_TARGET void run_batch_fma(const std::vector<instruction>& code, con
 }
 #endif
 
-bool cpu_has_fma()
-{
-#if LAGRANGE_HAVE_FMA_KERNELS
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("fma");
-#else
-    return false;
-#endif
-}
-
-std::atomic<bool>& fma_switch()
-{
-    static std::atomic<bool> on{cpu_has_fma()};
-    return on;
-}
-
 template <bool bounded>
 void run_batch_any(const std::vector<instruction>& code, const double* symbols, std::size_t stride,
                    std::size_t count, double* s)
@@ -657,9 +640,6 @@ void run_batch_any(const std::vector<instruction>& code, const double* symbols, 
 }
 
 } // namespace
-
-bool fma_kernels() { return fma_switch().load(std::memory_order_relaxed); }
-void use_fma_kernels(bool on) { fma_switch().store(on && cpu_has_fma(), std::memory_order_relaxed); }
 
 void expression_program::run_batch(const double* symbols, std::size_t stride, std::size_t count,
                                    std::vector<double>& scratch, double* out) const
