@@ -8,7 +8,7 @@
 #include "mechanics/oscillations.h"
 #include "bodies/rigid_body.h"
 #include "mechanics/top.h"
-#include "numeric/normal_modes.h"
+#include "numeric/compiled_modes.h"
 #include "numeric/simulation.h"
 #include "core/model.h"
 

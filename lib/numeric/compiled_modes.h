@@ -1,4 +1,4 @@
-/** @file normal_modes.h
+/** @file compiled_modes.h
  *  Numeric normal modes at each `values` point: ω ascending, the mode matrix with
  *  Aᵀ T A = I, and an error estimate per frequency that bounds the error. */
 #pragma once

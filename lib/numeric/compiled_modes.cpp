@@ -1,4 +1,4 @@
-/** @file normal_modes.cpp
+/** @file compiled_modes.cpp
  *  Numeric normal modes: T and V simplified and compiled once, then per point the
  *  closed form (two coordinates), the symbolically mass-normalized symmetric problem,
  *  or Eigen's generalized solver, each with a running error bound, and a CLN route
@@ -6,7 +6,7 @@
  *  The Jacobi iteration in cln::cl_F is written by hand: Eigen's solvers need a
  *  scalar type with numeric_limits and math functions that cl_F does not provide,
  *  and no multiprecision eigensolver is among the project's dependencies. */
-#include "numeric/normal_modes.h"
+#include "numeric/compiled_modes.h"
 #include "algebra/factor.h"
 
 #include "core/errors.h"
