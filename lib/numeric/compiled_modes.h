@@ -37,6 +37,9 @@ enum class modes_method {
 };
 std::string to_string(modes_method m); ///< "closed form", "symbolic normalization", ...
 
+/// What the closed form does with one lane of a block (numeric/pair_kernels.h).
+enum class lane_use : unsigned char;
+
 struct compiled_modes_options {
     modes_method method = modes_method::automatic;
     double tolerance = 1e-13; ///< automatic: relative error bound above which high precision is used
@@ -71,12 +74,6 @@ public:
     /// runs its compiled program on a block of points at a time.
     void evaluate_batch(std::size_t count, const double* parameter_values, std::size_t stride, double* omega_squared,
                         double* omega, double* error, double* modes, modes_method* used = nullptr);
-
-    /// What the closed form does with one lane of a block (internal).
-    enum class lane_use : unsigned char {
-        skip, ///< nothing (another route computes it)
-        use,  ///< checks T, writes the results
-    };
 
 private:
     void set_a_priori_bounds();
