@@ -1,15 +1,14 @@
 /** @file compiled_modes.cpp
  *  Numeric normal modes: T and V simplified and compiled once, then per point the
- *  closed form (two coordinates), the symbolically mass-normalized symmetric problem,
- *  or Eigen's generalized solver, each with a running error bound, and a CLN route
- *  at high precision when that bound is above the tolerance.
- *  The Jacobi iteration in cln::cl_F is written by hand: Eigen's solvers need a
- *  scalar type with numeric_limits and math functions that cl_F does not provide,
- *  and no multiprecision eigensolver is among the project's dependencies. */
+ *  closed form (one or two coordinates, numeric/pair_kernels.h), the symbolically
+ *  mass-normalized symmetric problem, or Eigen's generalized solver, each with a
+ *  running error bound, and a CLN route at high precision (numeric/cln_eigen.h) when
+ *  that bound is above the tolerance. */
 #include "numeric/compiled_modes.h"
 
 #include "algebra/factor.h"
 #include "core/errors.h"
+#include "numeric/cln_eigen.h"
 #include "numeric/pair_kernels.h"
 
 #include <cln/cln.h>
@@ -17,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -580,7 +578,7 @@ modes_method compiled_modes::high_precision(const double* p, double* w2, double*
             point[parameters_[k].symbol] = GiNaC::numeric(cln::rational(cln::cl_DF(p[k])));
     int saved = GiNaC::Digits;
     GiNaC::Digits = digits + 10;
-    std::vector<std::vector<cl_F>> T(n, std::vector<cl_F>(n)), V = T, L = T, K = T, Y = T;
+    cln_matrix T(n, std::vector<cl_F>(n)), V = T;
     try {
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = 0; j < n; ++j) {
@@ -592,120 +590,20 @@ modes_method compiled_modes::high_precision(const double* p, double* w2, double*
         throw;
     }
     GiNaC::Digits = saved;
-    const cl_F zero = cln::cl_float(0, format), one = cln::cl_float(1, format);
-    const cl_F epsilon = cln::float_epsilon(format);
-
-    // T = L Lᵀ; a pivot at the level of rounding means T is singular.
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-            L[i][j] = zero;
-    for (std::size_t i = 0; i < n; ++i) {
-        cl_F d = T[i][i];
-        for (std::size_t k = 0; k < i; ++k)
-            d = d - L[i][k] * L[i][k];
-        if (!(d > cln::abs(T[i][i]) * epsilon * 64 * n))
-            not_positive_definite(i);
-        L[i][i] = cln::sqrt(d);
-        for (std::size_t j = i + 1; j < n; ++j) {
-            cl_F s = T[j][i];
-            for (std::size_t k = 0; k < i; ++k)
-                s = s - L[j][k] * L[i][k];
-            L[j][i] = s / L[i][i];
-        }
-    }
-    // K = L⁻¹ V L⁻ᵀ by two forward substitutions (V symmetric).
-    auto forward = [&](const std::vector<std::vector<cl_F>>& B) {
-        std::vector<std::vector<cl_F>> X = B;
-        for (std::size_t c = 0; c < n; ++c)
-            for (std::size_t i = 0; i < n; ++i) {
-                cl_F s = B[i][c];
-                for (std::size_t k = 0; k < i; ++k)
-                    s = s - L[i][k] * X[k][c];
-                X[i][c] = s / L[i][i];
-            }
-        return X;
-    };
-    std::vector<std::vector<cl_F>> X = forward(V), Xt = X;
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-            Xt[i][j] = X[j][i];
-    K = forward(Xt);
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-            Y[i][j] = i == j ? one : zero;
-
-    // Cyclic Jacobi rotations until the off-diagonal part is below rounding.
-    cl_F frobenius = zero;
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-            frobenius = frobenius + K[i][j] * K[i][j];
-    frobenius = cln::sqrt(frobenius);
-    for (int sweep = 0; sweep < 100; ++sweep) {
-        cl_F off = zero;
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = i + 1; j < n; ++j)
-                off = off + K[i][j] * K[i][j];
-        if (cln::sqrt(off) <= frobenius * epsilon)
-            break;
-        for (std::size_t a = 0; a < n; ++a)
-            for (std::size_t b = a + 1; b < n; ++b) {
-                if (cln::zerop(K[a][b]))
-                    continue;
-                cl_F tau = (K[b][b] - K[a][a]) / (2 * K[a][b]);
-                cl_F t = one / (cln::abs(tau) + cln::sqrt(one + tau * tau));
-                if (cln::minusp(tau))
-                    t = -t;
-                cl_F c = one / cln::sqrt(one + t * t), s = t * c;
-                for (std::size_t k = 0; k < n; ++k) {
-                    cl_F ka = K[k][a], kb = K[k][b];
-                    K[k][a] = c * ka - s * kb;
-                    K[k][b] = s * ka + c * kb;
-                }
-                for (std::size_t k = 0; k < n; ++k) {
-                    cl_F ak = K[a][k], bk = K[b][k];
-                    K[a][k] = c * ak - s * bk;
-                    K[b][k] = s * ak + c * bk;
-                    cl_F ya = Y[k][a], yb = Y[k][b];
-                    Y[k][a] = c * ya - s * yb;
-                    Y[k][b] = s * ya + c * yb;
-                }
-            }
-    }
-    std::vector<std::size_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return K[i][i] < K[j][j]; });
-
-    // Error: rounding at this precision, amplified by the conditioning of T.
-    cl_F smallest = L[0][0], largest = L[0][0];
-    for (std::size_t i = 1; i < n; ++i) {
-        smallest = cln::min(smallest, L[i][i]);
-        largest = cln::max(largest, L[i][i]);
-    }
-    double conditioning = cln::double_approx(largest / smallest);
-    double eps = cln::double_approx(epsilon);
-    double dw_relative = 64.0 * n * eps * conditioning * conditioning;
+    const cln_eigen_result eigen = cln_generalized_eigen(T, V, format, modes != nullptr);
+    if (eigen.failed_pivot < n)
+        not_positive_definite(eigen.failed_pivot);
     for (std::size_t k = 0; k < n; ++k) {
-        const cl_F& W = K[order[k]][order[k]];
-        double dw = dw_relative * cln::double_approx(frobenius);
+        const cl_F& W = eigen.eigenvalues[k];
         cl_F root = cln::sqrt(cln::abs(W));
         double rounded = cln::double_approx(root);
         double extra = rounded != 0 ? cln::double_approx(cln::abs(root - cln::cl_float(rounded, format))) / rounded : 0;
-        set_frequency(cln::double_approx(W), dw, extra, w2[k], w[k], error[k]);
+        set_frequency(cln::double_approx(W), eigen.error, extra, w2[k], w[k], error[k]);
         if (w[k] != 0)
             w[k] = std::copysign(rounded, w[k]);
-        if (modes) {
-            // a = L⁻ᵀ y by back substitution.
-            std::vector<cl_F> a(n, zero);
-            for (std::size_t i = n; i-- > 0;) {
-                cl_F s = Y[i][order[k]];
-                for (std::size_t j = i + 1; j < n; ++j)
-                    s = s - L[j][i] * a[j];
-                a[i] = s / L[i][i];
-            }
-            for (std::size_t i = 0; i < n; ++i)
-                modes[k * n + i] = cln::double_approx(a[i]);
-        }
     }
+    if (modes)
+        std::copy(eigen.modes.begin(), eigen.modes.end(), modes);
     return modes_method::high_precision;
 }
 
