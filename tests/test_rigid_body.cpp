@@ -4,7 +4,8 @@
  *  their solutions; bodies in a Lagrangian. */
 #include "scene/lower.h"
 #include "mechanics/lagrangian.h"
-#include "bodies/rigid_body.h"
+#include "bodies/euler.h"
+#include "bodies/inertia.h"
 #include "mechanics/top.h"
 #include "scene_helpers.h"
 
