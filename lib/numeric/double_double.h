@@ -17,9 +17,8 @@ namespace lagrange {
 
 #if defined(__GNUC__) && defined(__x86_64__)
 #define LAGRANGE_HAVE_FMA_KERNELS 1
-/// Kernels compiled for FMA (and so AVX) beside the portable ones, picked at run time.
-/// 128-bit vectors: on the development machine the 256-bit loops over the batch ran at
-/// half the speed of 128-bit ones (measured with bench/numeric_modes).
+/// Kernels compiled for FMA (and so AVX) beside the portable ones, picked at run time,
+/// with 128-bit vectors, which suit the loops over the batch better than 256-bit ones.
 #if defined(__clang__) // Clang ignores a target attribute with prefer-vector-width in it
 #define LAGRANGE_FMA_TARGET __attribute__((target("fma")))
 #else

@@ -2,9 +2,9 @@
  *  Compiling GiNaC expressions to a postfix instruction list and running it (its C
  *  source for native compilation: c_source.cpp).
  *  Written by hand: GiNaC's own evaluation (subs + evalf) walks the tree with
- *  arbitrary-precision numbers (about 250 µs per call), and the JIT libraries that
- *  compile expressions need a compiler or LLVM at run time; a few dozen
- *  instructions run in a switch loop take nanoseconds. */
+ *  arbitrary-precision numbers, and the JIT libraries that compile expressions need a
+ *  compiler or LLVM at run time; a program here is a few dozen instructions run in a
+ *  switch loop. */
 #include "numeric/expression_program.h"
 
 #include <cln/cln.h>

@@ -78,8 +78,8 @@ public:
     /// holds all the arguments of its nesting depth. Without it, libm's sin and cos.
     std::string c_source(const std::string& name, bool sleef_sincos = false) const;
     /// The C declarations that code from c_source(…, true) needs: SLEEF's function with its
-    /// types spelled as GCC vectors (the same ABI as <sleef.h>'s __m256d, without
-    /// <immintrin.h>, whose parsing alone took 0.5 s of each compilation).
+    /// types spelled as GCC vectors (the same ABI as <sleef.h>'s __m256d), so that no
+    /// compilation has to parse <immintrin.h>, a large header.
     static const char* sleef_declarations();
 
     /// Runs the program on the symbol values; `scratch` is resized as needed.
