@@ -1,6 +1,8 @@
 /** @file compiled_modes.h
  *  Numeric normal modes at each `values` point: ω ascending, the mode matrix with
- *  Aᵀ T A = I, and an error estimate per frequency that bounds the error. */
+ *  Aᵀ T A = I, and an error estimate per frequency that bounds the error. T and V are
+ *  compiled once (compiled_modes) and evaluated per point by the route that meets the
+ *  tolerance; numeric_normal_modes is the stage over the scene's points. */
 #pragma once
 
 #include "mechanics/oscillations.h"
