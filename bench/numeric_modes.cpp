@@ -4,7 +4,8 @@
  *  for each numeric route the maximum relative error of ω on the double pendulum's
  *  sweep m/M = 1e-16 … 1e16 against a 60-digit reference, and the time per point.
  *  Usage: numeric_modes [points] [runs] */
-#include "numeric/normal_modes.h"
+#include "numeric/compiled_modes.h"
+#include "numeric/double_double.h"
 
 #include <cln/cln.h>
 

@@ -1,7 +1,8 @@
 /** @file test_normal_modes.cpp
  *  Numeric normal modes: the double pendulum over 32 decades of mass ratio against
  *  a 50-digit CLN reference, a stiff spring chain, zero and unstable modes, errors. */
-#include "numeric/normal_modes.h"
+#include "numeric/compiled_modes.h"
+#include "numeric/double_double.h"
 #include "scene/lower.h"
 
 #include <catch2/catch.hpp>

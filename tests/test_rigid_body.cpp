@@ -5,7 +5,8 @@
 #include "scene/lower.h"
 #include "mechanics/equations_of_motion.h"
 #include "mechanics/lagrangian.h"
-#include "bodies/rigid_body.h"
+#include "bodies/euler.h"
+#include "bodies/inertia.h"
 #include "mechanics/top.h"
 #include "scene_helpers.h"
 

@@ -23,8 +23,8 @@
  *
  *  The limits come from the command line (`--max-terms`, `--max-seconds`); the
  *  defaults below are generous for every example and small enough that a
- *  12-link chain with distinct masses gives up on its symbolic determinant in
- *  seconds instead of hours.
+ *  12-link chain with distinct masses gives up on its symbolic determinant
+ *  rather than hang.
  *
  *  The budget is per thread (thread_local), so parallel analyses do not interfere. */
 #pragma once

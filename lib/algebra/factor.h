@@ -3,12 +3,10 @@
  *
  *  GiNaC factors a multivariate polynomial by Hensel lifting from random evaluation
  *  points, so the run time of one call varies from draw to draw, and at high degree
- *  some draws take seconds — one call that the stage's time budget cannot interrupt.
- *  Measured here (Release): m(R^20 w^4 − g^2) 6 ms or 150 ms; m(R^32 w^4 − g^2) 18 ms
- *  or 660 ms; the fuzzer's bead on a hoop with R^22 (its Hessian has R^42 w^4 − g^2)
- *  0.05 s or 3.8 s in the equilibrium stage, run to run. Every stage factors through
- *  here: above `factor_max_degree` in some symbol (or a power of a sum above it) the
- *  expression is returned as it is — exact, only not factored. */
+ *  an unlucky draw is slow — one call that the stage's time budget cannot interrupt.
+ *  Every stage factors through here: above `factor_max_degree` in some symbol (or a
+ *  power of a sum above it) the expression is returned as it is — exact, only not
+ *  factored. */
 #pragma once
 
 #include <ginac/ginac.h>

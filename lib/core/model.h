@@ -53,7 +53,7 @@ struct spring {
     GiNaC::ex rest_length; ///< 0 if omitted
 };
 
-/// A rigid body (§2 of the spec). Its inertia is derived later (bodies/rigid_body.h);
+/// A rigid body (§2 of the spec). Its inertia is derived later (bodies/inertia.h);
 /// the model keeps what the scene said.
 struct rigid_body {
     enum class kind { shape, region, inertia };

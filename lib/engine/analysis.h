@@ -10,9 +10,10 @@
 #include "mechanics/equilibrium.h"
 #include "mechanics/linearization.h"
 #include "mechanics/modes.h"
-#include "bodies/rigid_body.h"
+#include "bodies/euler.h"
+#include "bodies/inertia.h"
 #include "mechanics/top.h"
-#include "numeric/normal_modes.h"
+#include "numeric/compiled_modes.h"
 #include "numeric/simulation.h"
 #include "core/model.h"
 

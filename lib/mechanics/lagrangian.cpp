@@ -3,7 +3,7 @@
 #include "mechanics/lagrangian.h"
 
 #include "mechanics/harmonic_lagrangian.h"
-#include "bodies/rigid_body.h"
+#include "bodies/inertia.h"
 
 #include <map>
 #include <memory>
@@ -60,7 +60,7 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
         }
     }
     // Rigid bodies placed in the coordinates: ½ M v² of the centre of mass, ½ ωᵀ I ω with
-    // ω from the Euler-angle rates (bodies/rigid_body.cpp), and gravity on the centre.
+    // ω from the Euler-angle rates (bodies/inertia.cpp), and gravity on the centre.
     for (const rigid_body& b : scene.bodies) {
         if (b.omega || (!b.position && !b.orientation))
             continue;

@@ -9,8 +9,8 @@
  *  8th-order stepper is Fehlberg 7(8) (13 stages, no interpolant), GSL's rk8pd has no
  *  dense output, SUNDIALS 6.4's ARKODE has neither this pair nor its interpolant — and
  *  its per-step work over a small state (2–6 entries here) is most of a step's cost when
- *  the right-hand side takes 5–50 ns, so the state is a fixed-size array when the
- *  dimension is known at compile time (`Dim` > 0; 0: any dimension at run time). */
+ *  the right-hand side is compiled straight-line code, so the state is a fixed-size array
+ *  when the dimension is known at compile time (`Dim` > 0; 0: any dimension at run time). */
 #pragma once
 
 #include <algorithm>
@@ -229,9 +229,9 @@ public:
                 h = remaining;
             double error = attempt(f, h);
             if (error < 1) {
-                // PI control (Gustafsson): 0.9 err^(−0.7/8) err_previous^(0.4/8); on the four
-                // work-precision problems it needs 0–18 % fewer evaluations for the same error
-                // than SciPy's 0.9 err^(−1/8), with fewer rejected steps.
+                // PI control (Gustafsson): 0.9 err^(−0.7/8) err_previous^(0.4/8) rather than
+                // SciPy's 0.9 err^(−1/8): fewer evaluations for the same error, with fewer
+                // rejected steps.
                 double log_error = std::log(std::max(error, 1e-4));
                 double factor =
                     std::min(10.0, 0.9 * std::exp((0.4 * log_previous_error_ - 0.7 * log_error) / 8));

@@ -1,16 +1,15 @@
 /** @file expression_program.cpp
- *  Compiling GiNaC expressions to a postfix instruction list and running it.
+ *  Compiling GiNaC expressions to a postfix instruction list and running it (its C
+ *  source for native compilation: c_source.cpp).
  *  Written by hand: GiNaC's own evaluation (subs + evalf) walks the tree with
- *  arbitrary-precision numbers (about 250 µs per call), and the JIT libraries that
- *  compile expressions need a compiler or LLVM at run time; a few dozen
- *  instructions run in a switch loop take nanoseconds. */
+ *  arbitrary-precision numbers, and the JIT libraries that compile expressions need a
+ *  compiler or LLVM at run time; a program here is a few dozen instructions run in a
+ *  switch loop. */
 #include "numeric/expression_program.h"
 
 #include <cln/cln.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -627,22 +626,6 @@ LAGRANGE_FMA_TARGET void run_batch_fma(const std::vector<instruction>& code, con
 }
 #endif
 
-bool cpu_has_fma()
-{
-#if LAGRANGE_HAVE_FMA_KERNELS
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("fma");
-#else
-    return false;
-#endif
-}
-
-std::atomic<bool>& fma_switch()
-{
-    static std::atomic<bool> on{cpu_has_fma()};
-    return on;
-}
-
 template <bool bounded>
 void run_batch_any(const std::vector<instruction>& code, const double* symbols, std::size_t stride,
                    std::size_t count, double* s)
@@ -657,9 +640,6 @@ void run_batch_any(const std::vector<instruction>& code, const double* symbols, 
 }
 
 } // namespace
-
-bool fma_kernels() { return fma_switch().load(std::memory_order_relaxed); }
-void use_fma_kernels(bool on) { fma_switch().store(on && cpu_has_fma(), std::memory_order_relaxed); }
 
 void expression_program::run_batch(const double* symbols, std::size_t stride, std::size_t count,
                                    std::vector<double>& scratch, double* out) const
@@ -756,124 +736,6 @@ expression_program::a_priori_status expression_program::check_a_priori(
             status = a_priori_status::out_of_range;
     }
     return status;
-}
-
-namespace {
-
-bool sine_or_cosine(const instruction& i)
-{
-    return i.op == instruction::code::sine || i.op == instruction::code::cosine;
-}
-
-/// SLEEF's AVX2 sincos of 3.5-ulp accuracy (measured here: at most 1.53 ulp on ±1000, against
-/// 0.87 for its 1-ulp one and 0.52 for libm's), not its 1-ulp one. An integrator's evaluations
-/// form a chain (each stage's arguments come from the last stage's result), so what counts is
-/// how soon the sines are back: about 29 ns against 38 ns for the 1-ulp function, and dop853
-/// runs on the double pendulum take 0.84–0.93 of the time. An error of one or two units in
-/// the last place of a sine is of the size of the roundings an evaluation makes anyway.
-constexpr const char* sleef_sincos_function = "Sleef_sincosd4_u35avx2";
-
-} // namespace
-
-bool expression_program::trigonometric() const { return std::any_of(code_.begin(), code_.end(), sine_or_cosine); }
-
-const char* expression_program::sleef_declarations()
-{
-    static const std::string declarations = std::string("typedef double lagrange_v4 __attribute__((vector_size(32)));\n"
-                                                        "typedef struct { lagrange_v4 x, y; } lagrange_sincos4;\n"
-                                                        "lagrange_sincos4 ") +
-                                            sleef_sincos_function + "(lagrange_v4);\n";
-    return declarations.c_str();
-}
-
-std::string expression_program::c_source(const std::string& name, bool sleef_sincos) const
-{
-    using op = instruction::code;
-    std::ostringstream c;
-    char number[40];
-    auto emit = [&](std::size_t k) {
-        const instruction& i = code_[k];
-        c << "    const double v" << k << " = ";
-        std::string a = "v" + std::to_string(i.first), b = "v" + std::to_string(i.second);
-        switch (i.op) {
-        case op::constant:
-            std::snprintf(number, sizeof number, "%a", i.value);
-            c << number;
-            break;
-        case op::symbol: c << "s[" << i.first << "]"; break;
-        case op::add: c << a << " + " << b; break;
-        case op::mul: c << a << " * " << b; break;
-        case op::neg: c << "-" << a; break;
-        case op::recip: c << "1.0 / " << a; break;
-        case op::square_root: c << "sqrt(" << a << ")"; break;
-        case op::integer_power: c << "__builtin_powi(" << a << ", " << i.second << ")"; break;
-        case op::real_power:
-            std::snprintf(number, sizeof number, "%a", i.value);
-            c << "pow(" << a << ", " << number << ")";
-            break;
-        case op::sine: c << "sin(" << a << ")"; break;
-        case op::cosine: c << "cos(" << a << ")"; break;
-        case op::exponential: c << "exp(" << a << ")"; break;
-        case op::logarithm: c << "log(" << a << ")"; break;
-        }
-        c << ";\n";
-    };
-    c << "static void " << name << "(const double* s, double* out)\n{\n";
-    if (!sleef_sincos) {
-        for (std::size_t k = 0; k < code_.size(); ++k)
-            emit(k);
-    } else {
-        // Depth of a slot: the most sines and cosines nested on any path to it. The slots of
-        // depth D − 1 are all known before any sine or cosine of depth D is needed.
-        std::vector<int> depth(code_.size(), 0);
-        int deepest = 0;
-        for (std::size_t k = 0; k < code_.size(); ++k) {
-            const instruction& i = code_[k];
-            int d = 0;
-            switch (i.op) {
-            case op::constant:
-            case op::symbol: break;
-            case op::add:
-            case op::mul: d = std::max(depth[static_cast<std::size_t>(i.first)], depth[static_cast<std::size_t>(i.second)]); break;
-            default: d = depth[static_cast<std::size_t>(i.first)]; break; // unary (integer_power: second is its exponent)
-            }
-            depth[k] = d + (sine_or_cosine(i) ? 1 : 0);
-            deepest = std::max(deepest, depth[k]);
-        }
-        for (int d = 0; d <= deepest; ++d) {
-            // The sines and cosines of depth d: one sincos per distinct argument, four per call.
-            std::vector<int> arguments;
-            for (std::size_t k = 0; k < code_.size(); ++k)
-                if (depth[k] == d && sine_or_cosine(code_[k]) &&
-                    std::find(arguments.begin(), arguments.end(), code_[k].first) == arguments.end())
-                    arguments.push_back(code_[k].first);
-            for (std::size_t call = 0; 4 * call < arguments.size(); ++call) {
-                std::string batch = "t" + std::to_string(d) + "_" + std::to_string(call);
-                c << "    const lagrange_sincos4 " << batch << " = " << sleef_sincos_function << "((lagrange_v4){";
-                for (std::size_t lane = 0; lane < 4; ++lane) {
-                    std::size_t j = 4 * call + lane;
-                    c << (lane ? ", " : "") << (j < arguments.size() ? "v" + std::to_string(arguments[j]) : "0.0");
-                }
-                c << "});\n";
-            }
-            for (std::size_t k = 0; k < code_.size(); ++k) {
-                if (depth[k] != d)
-                    continue;
-                if (!sine_or_cosine(code_[k])) {
-                    emit(k);
-                    continue;
-                }
-                std::size_t j = static_cast<std::size_t>(
-                    std::find(arguments.begin(), arguments.end(), code_[k].first) - arguments.begin());
-                c << "    const double v" << k << " = t" << d << "_" << j / 4 << (code_[k].op == op::sine ? ".x[" : ".y[")
-                  << j % 4 << "];\n";
-            }
-        }
-    }
-    for (std::size_t k = 0; k < outputs_.size(); ++k)
-        c << "    out[" << k << "] = v" << outputs_[k] << ";\n";
-    c << "}\n";
-    return c.str();
 }
 
 void expression_program::run(const double* symbols, std::vector<double>& scratch, double* out) const

@@ -1,5 +1,5 @@
 /** @file free_body_motion.h
- *  A free rigid body's Euler equations I ω̇ + ω × I ω = N (from bodies/rigid_body)
+ *  A free rigid body's Euler equations I ω̇ + ω × I ω = N (from bodies/euler)
  *  at one parameter point, solved for ω̇ once (I is a constant matrix of numbers there)
  *  and compiled into straight-line code with their symbolic Jacobian ∂ω̇/∂ω, as a
  *  first-order ode_system with state x = (ω1, ω2, ω3). Torque-free bodies carry their
@@ -7,7 +7,7 @@
  *  the closed form of a symmetric body, the Jacobi elliptic solution of an asymmetric one. */
 #pragma once
 
-#include "bodies/rigid_body.h"
+#include "bodies/euler.h"
 #include "numeric/expression_program.h"
 #include "numeric/native_code.h"
 #include "numeric/ode.h"

@@ -7,7 +7,7 @@
 #include "numeric/ode.h"
 
 #include "numeric/dop853.h"
-#include "numeric/expression_program.h"
+#include "numeric/double_double.h"
 #include "numeric/mass_matrix.h"
 #include "numeric/values.h"
 
@@ -404,11 +404,10 @@ LAGRANGE_DOP853_INLINE void run_dop853_any_size(const std::vector<double>& x0, c
 #if LAGRANGE_HAVE_FMA_KERNELS
 /// The same integration compiled for CPUs with FMA (everything above inlines into it): the
 /// stepper's madd() is std::fma there (nothing else fuses: ode.cpp is compiled with
-/// -ffp-contract=off) and its vectors take AVX's three-operand form, in 128-bit lanes. On the
-/// work-precision problems it takes 0.53-0.67 of the portable version's time on the free body,
-/// 0.74-0.85 on the linearized pendulum, 0.93-1.0 on the nonlinear ones (bench/work_precision,
-/// four alternating runs). Its numbers differ from the portable version's in the last bits
-/// (the fused products round once), as they do from CPU to CPU with SLEEF's sines against libm's.
+/// -ffp-contract=off) and its vectors take AVX's three-operand form, in 128-bit lanes: faster,
+/// most of all where the right-hand side is cheap. Its numbers differ from the portable
+/// version's in the last bits (the fused products round once), as they do from CPU to CPU with
+/// SLEEF's sines against libm's.
 LAGRANGE_FMA_TARGET void run_dop853_fma(const std::vector<double>& x0, const integration_options& options,
                                         run_state& run, trajectory& result)
 {
@@ -416,7 +415,7 @@ LAGRANGE_FMA_TARGET void run_dop853_fma(const std::vector<double>& x0, const int
 }
 #endif
 
-/// DOP853, in its FMA version where the CPU has FMA (fma_kernels(), numeric/expression_program.h).
+/// DOP853, in its FMA version where the CPU has FMA (fma_kernels(), numeric/double_double.h).
 void run_dop853(const std::vector<double>& x0, const integration_options& options, run_state& run,
                 trajectory& result)
 {
@@ -619,12 +618,11 @@ trajectory integrate(const ode_system& system, ode_method method, const std::vec
     trajectory result;
     result.method = to_string(method);
     // The tolerance asked for is a target for the global relative error; each method's
-    // per-step tolerance is tightened by the factor its global error exceeded the
-    // per-step tolerance by on the harmonic oscillator over ten periods (measured:
-    // dopri5 12–70, Bulirsch–Stoer 3–54, BDF 40–4500; Fehlberg 7(8) below 1 when it ends
-    // a step at each of 1000 output times, 4–8 on its own steps). DOP853's ÷12 comes from
-    // a longer run, the linearized double pendulum over 32 periods (error 0.78–0.92 of the
-    // tolerance; at ÷10 it missed by 2–3.5 %; on the oscillator it is 0.08–0.15 of it).
+    // per-step tolerance is tightened by the factor its global error was found to exceed
+    // the per-step tolerance by on the harmonic oscillator over ten periods (Fehlberg 7(8)
+    // only on its own steps: ending a step at each output time keeps it within the
+    // tolerance). DOP853's ÷12 comes from a longer run, the linearized double pendulum over
+    // 32 periods, where ÷10 missed the tolerance.
     integration_options tightened = options;
     switch (method) {
     case ode_method::dopri5:

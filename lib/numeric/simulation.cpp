@@ -336,13 +336,12 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
             return found;
         // At the floor the reference is less than 1000 times tighter, and rounding may rule
         // both runs: two runs can then agree by chance far better than either agrees with the
-        // motion (a pendulum 2.65e-6 rad below its separatrix: 3.6e-8 apart, 7e-6 off). The
-        // reference twice more, from the start moved by one rounding up and down, gives three
-        // runs that rounding alone sets apart, each off the motion by about the same random
-        // amount σ. Their largest difference (the range of three samples, about 1.7σ on average)
-        // is one sample of that spread: once it came out at 0.67 of the run's true error. Twice
-        // it is the estimate when that is larger (3.4σ on average; measured there, 1.3 times the
-        // run's true error with SLEEF's sines and 4.2 times with libm's).
+        // motion (a pendulum just below its separatrix). The reference twice more, from the
+        // start moved by one rounding up and down, gives three runs that rounding alone sets
+        // apart, each off the motion by about the same random amount σ. Their largest
+        // difference (the range of three samples, about 1.7σ on average) is one sample of that
+        // spread and may fall short of the run's true error; twice it is the estimate when that
+        // is larger (3.4σ on average).
         fine.max_seconds = std::max(1.0, seconds_left - run.seconds - check.seconds);
         try {
             std::vector<trajectory> moved_runs;
@@ -377,14 +376,15 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
     result.error_basis = first.basis;
 
     // The tolerance is a target for the global error, and each method's per-step setting
-    // is derived from it by a factor measured on a model problem (ode.cpp). When the
+    // is derived from it by a factor found on a model problem (ode.cpp). When the
     // estimate says a run missed it (long runs collect more error), run again tighter by
     // the factor it missed by, twice over, at most twice, while the time limit allows a
-    // run and its reference at the tighter setting (about 5 times the first). The tightest
-    // run is at 1e-13, whose reference (at the floor 1e-14) is still 10 times tighter: an
-    // unstable motion (a pendulum near its separatrix, where errors grow like e^t while it
-    // lingers at the top) can miss by 10⁸ and gets the most accurate run there is, with
-    // its estimate. A tighter run without an estimate of its own leaves the last one standing.
+    // run and its reference at the tighter setting (reckoned at 5 times the time spent so
+    // far). The tightest run is at 1e-13, whose reference (at the floor 1e-14) is still 10
+    // times tighter: an unstable motion (a pendulum near its separatrix, where errors grow
+    // like e^t while it lingers at the top) can miss by 10⁸ and gets the most accurate run
+    // there is, with its estimate. A tighter run without an estimate of its own leaves the
+    // last one standing.
     for (int retry = 0; retry < 2; ++retry) {
         if (!result.error_estimate || *result.error_estimate <= result.tolerance)
             break;

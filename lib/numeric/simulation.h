@@ -23,8 +23,8 @@ struct simulation_settings {
     std::optional<double> tolerance;  ///< overrides the scene's tolerance (default 1e-9)
     bool estimate_error = true;       ///< also run at tolerance/1000 to estimate the error
     double max_seconds = 120;
-    /// Compile the equations to machine code with the system's C compiler (about 0.1–0.3 s,
-    /// then 2–3× faster evaluations than the interpreter); the default. Without a
+    /// Compile the equations to machine code with the system's C compiler (one compilation,
+    /// then faster evaluations than the interpreter's); the default. Without a
     /// compiler, or when false (`--interpret`), the interpreter evaluates them.
     bool native = true;
     std::function<void(double fraction)> progress;

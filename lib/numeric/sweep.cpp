@@ -2,7 +2,7 @@
  *  Streamed numeric sweeps (see sweep.h). */
 #include "numeric/sweep.h"
 
-#include "numeric/normal_modes.h"
+#include "numeric/compiled_modes.h"
 
 #include <cmath>
 #include <cstdlib>

@@ -1,25 +1,23 @@
-/** @file normal_modes.cpp
+/** @file compiled_modes.cpp
  *  Numeric normal modes: T and V simplified and compiled once, then per point the
- *  closed form (two coordinates), the symbolically mass-normalized symmetric problem,
- *  or Eigen's generalized solver, each with a running error bound, and a CLN route
- *  at high precision when that bound is above the tolerance.
- *  The Jacobi iteration in cln::cl_F is written by hand: Eigen's solvers need a
- *  scalar type with numeric_limits and math functions that cl_F does not provide,
- *  and no multiprecision eigensolver is among the project's dependencies. */
-#include "numeric/normal_modes.h"
-#include "algebra/factor.h"
+ *  closed form (one or two coordinates, numeric/pair_kernels.h), the symbolically
+ *  mass-normalized symmetric problem, or Eigen's generalized solver, each with a
+ *  running error bound, and a CLN route at high precision (numeric/cln_eigen.h) when
+ *  that bound is above the tolerance. */
+#include "numeric/compiled_modes.h"
 
+#include "algebra/factor.h"
 #include "core/errors.h"
+#include "numeric/cln_eigen.h"
+#include "numeric/pair_kernels.h"
 
 #include <cln/cln.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <sstream>
 #include <stdexcept>
-#include <type_traits>
 
 namespace lagrange {
 
@@ -58,29 +56,6 @@ inline bool mode_within(double e, double w2, double largest, double tolerance)
     bool finite = std::abs(e) <= std::numeric_limits<double>::max();
     bool within = w2 == 0 ? e * e <= tolerance * largest : e <= tolerance;
     return finite & within;
-}
-
-/// Relative error of √m given an absolute error `dw` of m > dw.
-double root_relative_error(double dw, double m)
-{
-    double x = dw / m;
-    return x / (1 + std::sqrt(std::max(0.0, 1 - x)));
-}
-
-/// Fills ω², ω and the error of one mode from ω² = w (rounded to double) with absolute
-/// error bound dw; `extra` is added to a relative error (rounding of the root).
-void set_frequency(double w, double dw, double extra, double& w2, double& omega, double& error)
-{
-    double m = std::abs(w);
-    if (m <= dw || m == 0) {
-        w2 = 0;
-        omega = 0;
-        error = std::sqrt(dw);
-        return;
-    }
-    w2 = w;
-    omega = std::copysign(std::sqrt(m), w);
-    error = (root_relative_error(dw, m) + extra) * (1 + 1e-6);
 }
 
 cln::cl_F to_cl(const GiNaC::ex& e, const cln::float_format_t& format)
@@ -452,230 +427,6 @@ void compiled_modes::evaluate_batch(std::size_t count, const double* p, std::siz
     }
 }
 
-namespace {
-
-/// set_frequency without branches (selects), for the vectorized closed form; the same
-/// numbers. ω is the double-double √|w| rounded, `extra` its rounding.
-LAGRANGE_ALWAYS_INLINE inline void set_frequency_select(double w, double dw, double extra, double omega_hi,
-                                                        double& w2, double& omega, double& error)
-{
-    double m = std::abs(w);
-    bool zero = m <= (dw > 0 ? dw : 0.0); // m <= dw || m == 0, in a form that vectorizes
-    w2 = zero ? 0.0 : w;
-    omega = zero ? 0.0 : std::copysign(omega_hi, w);
-    error = zero ? std::sqrt(dw) : (root_relative_error(dw, m) + extra) * (1 + 1e-6);
-}
-
-/// The two-coordinate closed form on the lanes of a block laid out as expression_program::
-/// run_batch leaves it (output k, lane j: hi at o[4kB + j], lo at +B, the bounded run's
-/// value at +2B and its error bound at +3B). Outputs: [k·2 + i] for lane k. All B lanes are
-/// computed (fixed trip count, no branches: the loop vectorizes).
-/// a W² − b W + c = 0 (outputs a, b, c, b² − 4ac): the root of larger magnitude without
-/// cancellation, the other by Vieta, in double-double; the error bound runs beside.
-LAGRANGE_ALWAYS_INLINE inline double_double select(bool c, double_double a, double_double b)
-{
-    return {c ? a.hi : b.hi, c ? a.lo : b.lo};
-}
-LAGRANGE_ALWAYS_INLINE inline bounded_double select(bool c, bounded_double a, bounded_double b)
-{
-    return {c ? a.value : b.value, c ? a.error : b.error};
-}
-
-/// ω = √|W| in double-double; `extra` the relative error of ω rounded to double (plus the
-/// square root's own, within 2^-100).
-template <bool fused>
-LAGRANGE_ALWAYS_INLINE inline double_double root_of(double_double W, double& extra)
-{
-    double_double omega = dd::sqrt<fused>(select(W.hi < 0, dd::neg(W), W));
-    extra = omega.hi != 0 ? std::abs(omega.lo) / omega.hi + 0x1p-100 : 0;
-    return omega;
-}
-
-/// One root W (with bound) to ω², ω and the error bound of lane j's mode k.
-template <bool fused>
-LAGRANGE_ALWAYS_INLINE inline void pair_root(double_double W, bounded_double Wb, double scale, double& w2, double& w,
-                                             double& error)
-{
-    double extra;
-    double_double omega = root_of<fused>(W, extra);
-    set_frequency_select(W.hi, Wb.error * scale, extra, omega.hi, w2, w, error);
-}
-
-/// The same with an a priori bound: ω's relative error is within `omega_bound` (plus its
-/// rounding to double); W = 0 only where it may be exactly, and then so is its error. (That
-/// W stayed in range is checked after the loop, which then vectorizes.)
-template <bool fused>
-LAGRANGE_ALWAYS_INLINE inline void pair_root_a_priori(double_double W, double omega_bound, double& w2, double& w,
-                                                      double& error)
-{
-    double extra;
-    double_double omega = root_of<fused>(W, extra);
-    bool zero = W.hi == 0;
-    w2 = zero ? 0.0 : W.hi;
-    w = zero ? 0.0 : std::copysign(omega.hi, W.hi);
-    error = zero ? 0.0 : (omega_bound + extra) * (1 + 1e-6);
-}
-
-/// The constants of the a priori route (see compiled_modes::set_a_priori_bounds).
-struct a_priori_constants {
-    double omega_bound = 0;
-    bool zero_root = false;
-};
-
-template <bool fused, std::size_t B, bool a_priori>
-LAGRANGE_ALWAYS_INLINE inline void pair_frequencies(const double* const* at, double scale,
-                                                    a_priori_constants constants, double* __restrict w2,
-                                                    double* __restrict w, double* __restrict error,
-                                                    double* __restrict root_hi, double* __restrict root_lo)
-{
-    const double* o[4] = {at[0], at[1], at[2], at[3]};
-    for (std::size_t j = 0; j < B; ++j) {
-        auto X = [&](std::size_t k) { return double_double{o[k][j], o[k][B + j]}; };
-        auto Y = [&](std::size_t k) { return bounded_double{o[k][2 * B + j], o[k][3 * B + j]}; };
-        double_double x0 = X(0), x1 = X(1), x2 = X(2), x3 = X(3);
-        bool negative_b = x1.hi < 0;
-        double_double root = dd::sqrt<fused>(select(x3.hi > 0, x3, double_double{}));
-        double_double q = dd::add(x1, select(negative_b, dd::neg(root), root));
-        double_double big = dd::div<fused>(q, {2 * x0.hi, 2 * x0.lo}); // 2a, 2c: exact
-        bool has_q = q.hi != 0;
-        double_double small = select(has_q, dd::div<fused>({2 * x2.hi, 2 * x2.lo}, q), double_double{});
-        bool swap = big.hi < small.hi;
-        double_double first = select(swap, big, small), second = select(swap, small, big);
-        if constexpr (a_priori) {
-            pair_root_a_priori<fused>(first, constants.omega_bound, w2[2 * j], w[2 * j], error[2 * j]);
-            pair_root_a_priori<fused>(second, constants.omega_bound, w2[2 * j + 1], w[2 * j + 1], error[2 * j + 1]);
-        } else {
-            bounded_double b0 = Y(0), b1 = Y(1), b2 = Y(2), b3 = Y(3);
-            bounded_double root_b = running::sqrt(select(b3.value > 0, b3, bounded_double{0, b3.error}));
-            bounded_double q_b = running::add(b1, select(negative_b, running::neg(root_b), root_b));
-            bounded_double big_b = running::mul(q_b, running::recip(running::add(b0, b0)));
-            bounded_double small_b = select(has_q, running::mul(running::add(b2, b2), running::recip(q_b)),
-                                            bounded_double{0, big_b.error});
-            bounded_double first_b = select(swap, big_b, small_b), second_b = select(swap, small_b, big_b);
-            pair_root<fused>(first, first_b, scale, w2[2 * j], w[2 * j], error[2 * j]);
-            pair_root<fused>(second, second_b, scale, w2[2 * j + 1], w[2 * j + 1], error[2 * j + 1]);
-        }
-        root_hi[2 * j] = first.hi;
-        root_lo[2 * j] = first.lo;
-        root_hi[2 * j + 1] = second.hi;
-        root_lo[2 * j + 1] = second.lo;
-    }
-}
-
-/// Mode k of each lane is orthogonal to the larger row of V − W T, then scaled so that
-/// aᵀ T a = 1 (T = [[x4, x5], [x5, x6]], V = [[x7, x8], [x8, x9]]). Selects, no
-/// branches: the loop over lanes vectorizes. Modes of lane j at modes[4j…4j+3].
-template <bool fused, std::size_t B>
-LAGRANGE_ALWAYS_INLINE inline void pair_modes(const double* const* at, const double* __restrict root_hi,
-                                              const double* __restrict root_lo, const double* __restrict w2,
-                                              double* __restrict modes)
-{
-    const double* o[10] = {at[0], at[1], at[2], at[3], at[4], at[5], at[6], at[7], at[8], at[9]};
-    for (std::size_t j = 0; j < B; ++j) {
-        auto X = [&](std::size_t k) { return double_double{o[k][j], o[k][B + j]}; };
-        bool equal = w2[2 * j] == w2[2 * j + 1];
-        auto mode = [&](auto constant) LAGRANGE_ALWAYS_INLINE { // k = 0, 1 unrolled: the lane loop vectorizes
-            constexpr int k = decltype(constant)::value;
-            double_double W{root_hi[2 * j + k], root_lo[2 * j + k]};
-            auto entry = [&](std::size_t v, std::size_t t) { return dd::sub(X(v), dd::mul<fused>(W, X(t))); };
-            double_double r11 = entry(7, 4), r12 = entry(8, 5), r22 = entry(9, 6);
-            double n1 = std::max(std::abs(r11.hi), std::abs(r12.hi)), n2 = std::max(std::abs(r12.hi), std::abs(r22.hi));
-            // V = W T (both rows zero, or a double root): any T-orthonormal pair
-            bool degenerate = std::max(n1, n2) == 0;
-            if constexpr (k == 1)
-                degenerate = degenerate | equal;
-            bool first_row = n1 >= n2;
-            double_double a0 = select(first_row, dd::neg(r12), dd::neg(r22));
-            double_double a1 = select(first_row, r11, r12);
-            if constexpr (k == 0) {
-                a0 = select(degenerate, dd::from(1), a0);
-                a1 = select(degenerate, dd::from(0), a1);
-            } else {
-                a0 = select(degenerate, dd::neg(dd::div<fused>(X(5), X(4))), a0);
-                a1 = select(degenerate, dd::from(1), a1);
-            }
-            double_double norm = dd::add(dd::add(dd::mul<fused>(dd::mul<fused>(a0, a0), X(4)),
-                                                 dd::mul<fused>(dd::mul<fused>(a1, a1), X(6))),
-                                         dd::mul<fused>(dd::mul<fused>(dd::add(a0, a0), a1), X(5)));
-            double_double scale_by = dd::div<fused>(dd::from(1), dd::sqrt<fused>(norm));
-            modes[4 * j + 2 * k] = dd::mul<fused>(a0, scale_by).hi;
-            modes[4 * j + 2 * k + 1] = dd::mul<fused>(a1, scale_by).hi;
-        };
-        mode(std::integral_constant<int, 0>{});
-        mode(std::integral_constant<int, 1>{});
-    }
-}
-
-/// Lane j's results go out where use[j] is not skip (use null: every lane).
-using lane_use = compiled_modes::lane_use;
-
-template <bool fused, std::size_t B, bool a_priori>
-LAGRANGE_ALWAYS_INLINE inline void pair_block_kernel(const double* const* o, std::size_t count, double scale,
-                                                     a_priori_constants constants, const lane_use* use,
-                                                     double* w2, double* w, double* error, double* modes)
-{
-    alignas(32) double lane_w2[2 * B], lane_w[2 * B], lane_error[2 * B], root_hi[2 * B], root_lo[2 * B];
-    alignas(32) double lane_modes[4 * B];
-    pair_frequencies<fused, B, a_priori>(o, scale, constants, lane_w2, lane_w, lane_error, root_hi, root_lo);
-    if constexpr (a_priori)
-        for (std::size_t i = 0; i < 2 * count; ++i) { // a root out of range (NaN included): no bound
-            double m = std::abs(root_hi[i]);
-            if (!in_a_priori_range(m) && !(m == 0 && constants.zero_root))
-                lane_error[i] = HUGE_VAL;
-        }
-    if (modes)
-        pair_modes<fused, B>(o, root_hi, root_lo, lane_w2, lane_modes);
-    for (std::size_t j = 0; j < count; ++j) {
-        if (use && use[j] == lane_use::skip)
-            continue;
-        for (std::size_t i = 0; i < 2; ++i) {
-            w2[2 * j + i] = lane_w2[2 * j + i];
-            w[2 * j + i] = lane_w[2 * j + i];
-            error[2 * j + i] = lane_error[2 * j + i];
-        }
-        if (modes)
-            for (std::size_t i = 0; i < 4; ++i)
-                modes[4 * j + i] = lane_modes[4 * j + i];
-    }
-}
-
-template <bool fused, bool a_priori>
-LAGRANGE_ALWAYS_INLINE inline void pair_block_any(const double* const* o, std::size_t B, std::size_t count, double scale,
-                                                  a_priori_constants constants, const lane_use* use, double* w2,
-                                                  double* w, double* error, double* modes)
-{
-    // one point, or a whole batch: the same arithmetic per lane
-    if (B == 1)
-        pair_block_kernel<fused, 1, a_priori>(o, count, scale, constants, use, w2, w, error, modes);
-    else
-        pair_block_kernel<fused, expression_program::batch_size, a_priori>(o, count, scale, constants, use, w2, w,
-                                                                            error, modes);
-}
-
-void pair_block_portable(const double* const* o, std::size_t B, std::size_t count, double scale,
-                         const a_priori_constants* constants, const lane_use* use, double* w2, double* w,
-                         double* error, double* modes)
-{
-    if (constants)
-        pair_block_any<false, true>(o, B, count, scale, *constants, use, w2, w, error, modes);
-    else
-        pair_block_any<false, false>(o, B, count, scale, {}, use, w2, w, error, modes);
-}
-
-#if LAGRANGE_HAVE_FMA_KERNELS
-LAGRANGE_FMA_TARGET void pair_block_fma(const double* const* o, std::size_t B, std::size_t count, double scale,
-                                        const a_priori_constants* constants, const lane_use* use, double* w2,
-                                        double* w, double* error, double* modes)
-{
-    if (constants)
-        pair_block_any<true, true>(o, B, count, scale, *constants, use, w2, w, error, modes);
-    else
-        pair_block_any<true, false>(o, B, count, scale, {}, use, w2, w, error, modes);
-}
-#endif
-
-} // namespace
-
 void compiled_modes::closed_form_block(const double* const* o, std::size_t B, std::size_t count, bool a_priori,
                                        const lane_use* use, double* w2, double* w, double* error,
                                        double* modes) const
@@ -699,16 +450,8 @@ void compiled_modes::closed_form_block(const double* const* o, std::size_t B, st
                 continue;
             if (!positive(0, j))
                 not_positive_definite(0);
-            double_double W = dd::div(X(1, j), X(0, j));
-            bounded_double Wb = running::mul(Y(1, j), running::recip(Y(0, j)));
-            double dw = Wb.error * scale;
-            double extra;
-            double_double omega = root_of<false>(W, extra);
-            set_frequency(W.hi, dw, extra, w2[j], w[j], error[j]);
-            if (w[j] != 0)
-                w[j] = std::copysign(omega.hi, W.hi);
-            if (modes)
-                modes[j] = 1 / dd::sqrt(X(0, j)).hi;
+            single_lane(X(0, j), X(1, j), Y(0, j), Y(1, j), scale, w2[j], w[j], error[j],
+                        modes ? &modes[j] : nullptr);
         }
         return;
     }
@@ -725,14 +468,7 @@ void compiled_modes::closed_form_block(const double* const* o, std::size_t B, st
             not_positive_definite(1);
     }
     a_priori_constants constants{omega_bound_, zero_root_};
-    const a_priori_constants* with = a_priori ? &constants : nullptr;
-#if LAGRANGE_HAVE_FMA_KERNELS
-    if (fma_kernels()) {
-        pair_block_fma(o, B, count, scale, with, use, w2, w, error, modes);
-        return;
-    }
-#endif
-    pair_block_portable(o, B, count, scale, with, use, w2, w, error, modes);
+    pair_block(o, B, count, scale, a_priori ? &constants : nullptr, use, w2, w, error, modes);
 }
 
 modes_method compiled_modes::normalized(const double* p, double* w2, double* w, double* error, double* modes)
@@ -842,7 +578,7 @@ modes_method compiled_modes::high_precision(const double* p, double* w2, double*
             point[parameters_[k].symbol] = GiNaC::numeric(cln::rational(cln::cl_DF(p[k])));
     int saved = GiNaC::Digits;
     GiNaC::Digits = digits + 10;
-    std::vector<std::vector<cl_F>> T(n, std::vector<cl_F>(n)), V = T, L = T, K = T, Y = T;
+    cln_matrix T(n, std::vector<cl_F>(n)), V = T;
     try {
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = 0; j < n; ++j) {
@@ -854,120 +590,20 @@ modes_method compiled_modes::high_precision(const double* p, double* w2, double*
         throw;
     }
     GiNaC::Digits = saved;
-    const cl_F zero = cln::cl_float(0, format), one = cln::cl_float(1, format);
-    const cl_F epsilon = cln::float_epsilon(format);
-
-    // T = L Lᵀ; a pivot at the level of rounding means T is singular.
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-            L[i][j] = zero;
-    for (std::size_t i = 0; i < n; ++i) {
-        cl_F d = T[i][i];
-        for (std::size_t k = 0; k < i; ++k)
-            d = d - L[i][k] * L[i][k];
-        if (!(d > cln::abs(T[i][i]) * epsilon * 64 * n))
-            not_positive_definite(i);
-        L[i][i] = cln::sqrt(d);
-        for (std::size_t j = i + 1; j < n; ++j) {
-            cl_F s = T[j][i];
-            for (std::size_t k = 0; k < i; ++k)
-                s = s - L[j][k] * L[i][k];
-            L[j][i] = s / L[i][i];
-        }
-    }
-    // K = L⁻¹ V L⁻ᵀ by two forward substitutions (V symmetric).
-    auto forward = [&](const std::vector<std::vector<cl_F>>& B) {
-        std::vector<std::vector<cl_F>> X = B;
-        for (std::size_t c = 0; c < n; ++c)
-            for (std::size_t i = 0; i < n; ++i) {
-                cl_F s = B[i][c];
-                for (std::size_t k = 0; k < i; ++k)
-                    s = s - L[i][k] * X[k][c];
-                X[i][c] = s / L[i][i];
-            }
-        return X;
-    };
-    std::vector<std::vector<cl_F>> X = forward(V), Xt = X;
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-            Xt[i][j] = X[j][i];
-    K = forward(Xt);
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-            Y[i][j] = i == j ? one : zero;
-
-    // Cyclic Jacobi rotations until the off-diagonal part is below rounding.
-    cl_F frobenius = zero;
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-            frobenius = frobenius + K[i][j] * K[i][j];
-    frobenius = cln::sqrt(frobenius);
-    for (int sweep = 0; sweep < 100; ++sweep) {
-        cl_F off = zero;
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = i + 1; j < n; ++j)
-                off = off + K[i][j] * K[i][j];
-        if (cln::sqrt(off) <= frobenius * epsilon)
-            break;
-        for (std::size_t a = 0; a < n; ++a)
-            for (std::size_t b = a + 1; b < n; ++b) {
-                if (cln::zerop(K[a][b]))
-                    continue;
-                cl_F tau = (K[b][b] - K[a][a]) / (2 * K[a][b]);
-                cl_F t = one / (cln::abs(tau) + cln::sqrt(one + tau * tau));
-                if (cln::minusp(tau))
-                    t = -t;
-                cl_F c = one / cln::sqrt(one + t * t), s = t * c;
-                for (std::size_t k = 0; k < n; ++k) {
-                    cl_F ka = K[k][a], kb = K[k][b];
-                    K[k][a] = c * ka - s * kb;
-                    K[k][b] = s * ka + c * kb;
-                }
-                for (std::size_t k = 0; k < n; ++k) {
-                    cl_F ak = K[a][k], bk = K[b][k];
-                    K[a][k] = c * ak - s * bk;
-                    K[b][k] = s * ak + c * bk;
-                    cl_F ya = Y[k][a], yb = Y[k][b];
-                    Y[k][a] = c * ya - s * yb;
-                    Y[k][b] = s * ya + c * yb;
-                }
-            }
-    }
-    std::vector<std::size_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return K[i][i] < K[j][j]; });
-
-    // Error: rounding at this precision, amplified by the conditioning of T.
-    cl_F smallest = L[0][0], largest = L[0][0];
-    for (std::size_t i = 1; i < n; ++i) {
-        smallest = cln::min(smallest, L[i][i]);
-        largest = cln::max(largest, L[i][i]);
-    }
-    double conditioning = cln::double_approx(largest / smallest);
-    double eps = cln::double_approx(epsilon);
-    double dw_relative = 64.0 * n * eps * conditioning * conditioning;
+    const cln_eigen_result eigen = cln_generalized_eigen(T, V, format, modes != nullptr);
+    if (eigen.failed_pivot < n)
+        not_positive_definite(eigen.failed_pivot);
     for (std::size_t k = 0; k < n; ++k) {
-        const cl_F& W = K[order[k]][order[k]];
-        double dw = dw_relative * cln::double_approx(frobenius);
+        const cl_F& W = eigen.eigenvalues[k];
         cl_F root = cln::sqrt(cln::abs(W));
         double rounded = cln::double_approx(root);
         double extra = rounded != 0 ? cln::double_approx(cln::abs(root - cln::cl_float(rounded, format))) / rounded : 0;
-        set_frequency(cln::double_approx(W), dw, extra, w2[k], w[k], error[k]);
+        set_frequency(cln::double_approx(W), eigen.error, extra, w2[k], w[k], error[k]);
         if (w[k] != 0)
             w[k] = std::copysign(rounded, w[k]);
-        if (modes) {
-            // a = L⁻ᵀ y by back substitution.
-            std::vector<cl_F> a(n, zero);
-            for (std::size_t i = n; i-- > 0;) {
-                cl_F s = Y[i][order[k]];
-                for (std::size_t j = i + 1; j < n; ++j)
-                    s = s - L[j][i] * a[j];
-                a[i] = s / L[i][i];
-            }
-            for (std::size_t i = 0; i < n; ++i)
-                modes[k * n + i] = cln::double_approx(a[i]);
-        }
     }
+    if (modes)
+        std::copy(eigen.modes.begin(), eigen.modes.end(), modes);
     return modes_method::high_precision;
 }
 

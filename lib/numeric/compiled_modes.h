@@ -1,6 +1,8 @@
-/** @file normal_modes.h
+/** @file compiled_modes.h
  *  Numeric normal modes at each `values` point: ω ascending, the mode matrix with
- *  Aᵀ T A = I, and an error estimate per frequency that bounds the error. */
+ *  Aᵀ T A = I, and an error estimate per frequency that bounds the error. T and V are
+ *  compiled once (compiled_modes) and evaluated per point by the route that meets the
+ *  tolerance; numeric_normal_modes is the stage over the scene's points. */
 #pragma once
 
 #include "mechanics/linearization.h"
@@ -37,6 +39,9 @@ enum class modes_method {
 };
 std::string to_string(modes_method m); ///< "closed form", "symbolic normalization", ...
 
+/// What the closed form does with one lane of a block (numeric/pair_kernels.h).
+enum class lane_use : unsigned char;
+
 struct compiled_modes_options {
     modes_method method = modes_method::automatic;
     double tolerance = 1e-13; ///< automatic: relative error bound above which high precision is used
@@ -71,12 +76,6 @@ public:
     /// runs its compiled program on a block of points at a time.
     void evaluate_batch(std::size_t count, const double* parameter_values, std::size_t stride, double* omega_squared,
                         double* omega, double* error, double* modes, modes_method* used = nullptr);
-
-    /// What the closed form does with one lane of a block (internal).
-    enum class lane_use : unsigned char {
-        skip, ///< nothing (another route computes it)
-        use,  ///< checks T, writes the results
-    };
 
 private:
     void set_a_priori_bounds();
