@@ -194,7 +194,7 @@ std::size_t distinct_outputs(const std::string& path)
 } // namespace
 
 TEST_CASE("determinism: 200 generated scenes and the fuzz seeds print the same bytes in 3 processes",
-          "[determinism][cli]")
+          "[determinism][cli][generated]")
 {
     scene_generator generator(20261124);
     std::vector<std::string> scenes;

@@ -2,10 +2,11 @@
  *  Turning off address-space randomization for the process, by personality(2) and a re-exec. */
 #include "system/address_layout.h"
 
+#include "system/external.h"
+
 #include <cstdlib>
 
 #include <sys/personality.h>
-#include <unistd.h>
 
 namespace lagrange {
 
@@ -31,7 +32,7 @@ void use_fixed_address_layout(char** argv)
     if (personality(static_cast<unsigned long>(current) | ADDR_NO_RANDOMIZE) == -1)
         return;
     setenv(tried_variable, "1", 1);
-    execv("/proc/self/exe", argv);
+    execute_self_again(argv);
     // The exec was refused: go on with the layout this process has.
     personality(static_cast<unsigned long>(current));
     unsetenv(tried_variable);
