@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <random>
 #include <sstream>
@@ -179,11 +180,11 @@ private:
 };
 
 /// Runs `scene` in three processes and returns the distinct outputs (one when deterministic).
-std::size_t distinct_outputs(const std::string& path)
+std::size_t distinct_outputs(const std::string& path, const std::string& format = "json")
 {
     std::vector<std::string> outputs;
     for (int run = 0; run < 3; ++run) {
-        cli_result r = run_cli("'" + path + "' --format json", "", 30);
+        cli_result r = run_cli("'" + path + "' --format " + format, "", 60);
         const std::string output = std::to_string(r.exit_code) + "\n" + r.out + r.err;
         if (std::find(outputs.begin(), outputs.end(), output) == outputs.end())
             outputs.push_back(output);
@@ -208,4 +209,25 @@ TEST_CASE("determinism: 200 generated scenes and the fuzz seeds print the same b
         INFO(scene << ":\n" << read_file(scene));
         CHECK(distinct_outputs(scene) == 1);
     }
+}
+
+TEST_CASE("determinism: every example and test scene prints the same bytes in 3 processes, in every format",
+          "[determinism][cli][generated]")
+{
+    std::vector<std::string> scenes;
+    for (const char* folder : {"/examples", "/tests/scenes"}) {
+        const std::filesystem::path path = std::string(LAGRANGE_SOURCE_DIR) + folder;
+        if (!std::filesystem::exists(path))
+            continue;
+        for (const auto& entry : std::filesystem::directory_iterator(path))
+            if (entry.path().extension() == ".lag")
+                scenes.push_back(entry.path().string());
+    }
+    std::sort(scenes.begin(), scenes.end());
+    REQUIRE(scenes.size() >= 19);
+    for (const std::string& scene : scenes)
+        for (const char* format : {"text", "latex", "json"}) {
+            INFO(scene << " --format " << format);
+            CHECK(distinct_outputs(scene, format) == 1);
+        }
 }
