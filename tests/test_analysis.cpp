@@ -26,7 +26,7 @@ TEST_CASE("analysis: equations run the lagrangian stage, then the equations", "[
 {
     model scene = load(oscillator);
     analysis a = analyze(scene, {product::equations});
-    CHECK(stage_names(a) == std::vector<std::string>{"lagrangian", "equations"});
+    CHECK(stage_names(a) == std::vector<std::string>{"lagrangian", "equations", "verification"});
     REQUIRE(a.equations);
     REQUIRE(a.equations->residuals);
     CHECK(a.equations->residuals->size() == 1);
@@ -62,9 +62,9 @@ TEST_CASE("analysis: only the stages a product needs run", "[analysis]")
 {
     model scene = load(oscillator + "values m = 1, k = 4\n");
     CHECK(stage_names(analyze(scene, {product::characteristic})) ==
-          std::vector<std::string>{"lagrangian", "equilibrium", "linearization", "characteristic"});
+          std::vector<std::string>{"lagrangian", "equilibrium", "linearization", "characteristic", "verification"});
     CHECK(stage_names(analyze(scene, {product::numeric})) ==
-          std::vector<std::string>{"lagrangian", "equilibrium", "linearization", "numeric"});
+          std::vector<std::string>{"lagrangian", "equilibrium", "linearization", "numeric", "verification"});
 }
 
 TEST_CASE("analysis: a wanted product that cannot be done is an error; by default it is a note", "[analysis]")

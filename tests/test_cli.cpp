@@ -100,8 +100,9 @@ TEST_CASE("cli: the double pendulum's equations as JSON", "[cli]")
     CHECK(doc["scene"] == "Double pendulum: equal lengths, unequal masses");
     CHECK(doc["coordinates"] == nlohmann::json::array({"theta", "phi"}));
     CHECK(doc["parameters"] == nlohmann::json::array({"M", "m", "l", "g"}));
-    CHECK(doc["stages"] == nlohmann::json::array({"lagrangian", "equations"}));
+    CHECK(doc["stages"] == nlohmann::json::array({"lagrangian", "equations", "verification"}));
     CHECK(doc["timings"].contains("equations"));
+    CHECK(doc["verification"]["equations"].get<std::string>().find("Euler–Lagrange") != std::string::npos);
     REQUIRE(doc["equations"].size() == 2);
     // The strings are checked by meaning in test_lagrangian.cpp; here: the compact form.
     std::string theta = doc["equations"][0];

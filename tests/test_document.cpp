@@ -28,7 +28,7 @@ TEST_CASE("document: JSON has the spec's keys, with stages always present", "[do
     CHECK(doc["scene"] == "Pendulum & co");
     CHECK(doc["coordinates"] == nlohmann::json::array({"theta"}));
     CHECK(doc["parameters"] == nlohmann::json::array({"m", "l", "g"}));
-    CHECK(doc["stages"] == nlohmann::json::array({"lagrangian", "equations"}));
+    CHECK(doc["stages"] == nlohmann::json::array({"lagrangian", "equations", "verification"}));
     CHECK_FALSE(doc.contains("timings"));
     CHECK(doc["equations"] == nlohmann::json::array({"l^2*m*theta_ddot+g*l*m*sin(theta)"}));
     CHECK(doc["kinetic_energy"] == "1/2*l^2*m*theta_dot^2");

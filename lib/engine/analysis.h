@@ -15,6 +15,7 @@
 #include "mechanics/top.h"
 #include "numeric/compiled_modes.h"
 #include "numeric/simulation.h"
+#include "numeric/verification.h"
 #include "core/model.h"
 
 #include <optional>
@@ -48,6 +49,8 @@ struct analysis {
     std::optional<std::vector<top_result>> tops;        ///< bodies turned by three coordinates (heavy tops)
     std::optional<simulation_result> simulation;
     std::optional<workprecision_result> workprecision;
+    /// How each symbolic result was checked numerically before it is printed.
+    std::optional<verification_result> verification;
 };
 
 /// The products this version computes.

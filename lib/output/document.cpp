@@ -654,6 +654,12 @@ void write_json(std::ostream& out, const analysis& result, const document_option
         doc["simulation"] = simulation_json(*result.simulation, options.timings);
     if (result.workprecision)
         doc["workprecision"] = workprecision_json(*result.workprecision);
+    if (result.verification && !result.verification->entries.empty()) {
+        nlohmann::ordered_json checks = nlohmann::ordered_json::object();
+        for (const verification_entry& entry : result.verification->entries)
+            checks[entry.item] = entry.how;
+        doc["verification"] = checks;
+    }
     if (!result.notes.empty())
         doc["notes"] = result.notes;
     out << doc.dump(2) << '\n';

@@ -1,0 +1,672 @@
+/** @file verification.cpp
+ *  Numeric checks of the symbolic results against the Lagrangian as built. */
+#include "numeric/verification.h"
+
+#include "numeric/double_double.h"
+#include "numeric/expression_program.h"
+#include "numeric/values.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <stdexcept>
+
+namespace lagrange {
+
+namespace {
+
+using GiNaC::ex;
+
+/// Agreement asked of a symbolic result and its reference, relative to the size of the
+/// terms compared: the references reach about 1e-14 (fourth-order differences in
+/// double-double with step 2⁻¹²), so a real disagreement is many orders above this.
+constexpr double tolerance = 1e-7;
+/// Parameter points tried per check, and how many must be usable.
+constexpr int attempts = 10;
+constexpr int points_wanted = 2;
+/// The finite-difference step: a power of two, so that the points stay exact.
+constexpr double step = 0x1p-12;
+
+/// SplitMix64: the same sequence on every platform and standard library, so that the
+/// points, and so every message, are the same on every run.
+class sampler {
+public:
+    std::uint64_t next()
+    {
+        std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return z ^ (z >> 31);
+    }
+    /// A multiple of 1/64 in [lo, hi]: exact in double.
+    double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() % 65) / 64; }
+
+private:
+    std::uint64_t state_ = 0x6c616772616e6765ULL; // "lagrange"
+};
+
+double value_of(double_double x) { return x.hi + x.lo; }
+
+/// Parameter values: a `values` line's, else seeded ones in [1/2, 2].
+struct parameter_point {
+    std::vector<double> values; ///< in scene.parameters order
+    GiNaC::exmap map;           ///< the same values, exactly, for GiNaC
+    std::string text;           ///< "a = 1.25, g = 0.75"
+};
+
+std::vector<parameter_point> parameter_points(const model& scene)
+{
+    sampler random;
+    std::vector<parameter_point> points;
+    for (int attempt = 0; attempt < attempts; ++attempt) {
+        GiNaC::exmap given;
+        if (attempt < static_cast<int>(scene.values.size()))
+            given = value_map(scene, scene.values[static_cast<std::size_t>(attempt)]);
+        parameter_point p;
+        for (const parameter& parameter : scene.parameters) {
+            double x = random.uniform(0.5, 2);
+            auto found = given.find(parameter.symbol);
+            if (found != given.end()) {
+                ex v = found->second.evalf();
+                if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real())
+                    x = GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+            }
+            p.values.push_back(x);
+            p.map[parameter.symbol] = GiNaC::numeric(x);
+            p.text += (p.text.empty() ? "" : ", ") + parameter.name + " = " + message_number(x);
+        }
+        points.push_back(std::move(p));
+    }
+    return points;
+}
+
+/// e at the parameter point (and `more`), as a complex number; nothing if a symbol is left.
+std::optional<std::complex<double>> complex_at(const ex& e, const GiNaC::exmap& at)
+{
+    ex value;
+    try {
+        value = e.subs(at).evalf();
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    if (!GiNaC::is_a<GiNaC::numeric>(value))
+        return std::nullopt;
+    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(value);
+    std::complex<double> z(GiNaC::real(n).to_double(), GiNaC::imag(n).to_double());
+    if (!std::isfinite(z.real()) || !std::isfinite(z.imag()))
+        return std::nullopt;
+    return z;
+}
+
+/// A real value at the point; nothing if complex (beyond rounding) or not a number.
+std::optional<double> real_at(const ex& e, const GiNaC::exmap& at)
+{
+    std::optional<std::complex<double>> z = complex_at(e, at);
+    if (!z || std::abs(z->imag()) > 1e-12 * (1 + std::abs(z->real())))
+        return std::nullopt;
+    return z->real();
+}
+
+std::optional<Eigen::MatrixXd> matrix_at(const GiNaC::matrix& m, const GiNaC::exmap& at)
+{
+    Eigen::MatrixXd result(m.rows(), m.cols());
+    for (unsigned i = 0; i < m.rows(); ++i)
+        for (unsigned j = 0; j < m.cols(); ++j) {
+            std::optional<double> x = real_at(m(i, j), at);
+            if (!x)
+                return std::nullopt;
+            result(i, j) = *x;
+        }
+    return result;
+}
+
+/// The symbols of a state, in the order the programs read them.
+struct state_layout {
+    std::vector<ex> symbols; ///< q…, q'…, q''…, t, parameters…
+    std::size_t n = 0;
+    std::size_t time() const { return 3 * n; }
+    std::size_t parameter(std::size_t k) const { return 3 * n + 1 + k; }
+};
+
+state_layout layout_of(const model& scene)
+{
+    state_layout layout;
+    layout.n = scene.coordinates.size();
+    for (const coordinate& c : scene.coordinates)
+        layout.symbols.push_back(c.position);
+    for (const coordinate& c : scene.coordinates)
+        layout.symbols.push_back(c.velocity);
+    for (const coordinate& c : scene.coordinates)
+        layout.symbols.push_back(c.acceleration);
+    layout.symbols.push_back(scene.time);
+    for (const parameter& p : scene.parameters)
+        layout.symbols.push_back(p.symbol);
+    return layout;
+}
+
+/// Compiled expressions run in double-double on a state.
+class probe {
+public:
+    probe(const std::vector<ex>& outputs, const state_layout& layout) : program_(outputs, layout.symbols) {}
+    std::vector<double_double> operator()(const std::vector<double>& state) const
+    {
+        std::vector<double_double> out(program_.output_count());
+        program_.run(state.data(), scratch_, out.data());
+        return out;
+    }
+
+private:
+    expression_program program_;
+    mutable std::vector<double_double> scratch_;
+};
+
+/// Σ weights·values / divisor in double-double (a finite-difference stencil).
+double_double stencil(const double* weights, const double_double* values, std::size_t count, double divisor)
+{
+    double_double sum;
+    for (std::size_t k = 0; k < count; ++k)
+        sum = dd::add(sum, dd::mul(values[k], double_double{weights[k], 0}));
+    return dd::div(sum, double_double{divisor, 0});
+}
+
+/// Fourth-order central differences: offsets −2h … 2h.
+constexpr double offsets[4] = {-2, -1, 1, 2};
+constexpr double first_weights[4] = {1, -8, 8, -1}; // / 12h
+constexpr double second_offsets[5] = {-2, -1, 0, 1, 2};
+constexpr double second_weights[5] = {-1, 16, -30, 16, -1}; // / 12h²
+
+/// d/dx of f(x) at 0 by fourth-order differences.
+template <class F> double_double first_derivative(F&& f)
+{
+    double_double values[4];
+    for (int k = 0; k < 4; ++k)
+        values[k] = f(offsets[k] * step);
+    return stencil(first_weights, values, 4, 12 * step);
+}
+
+template <class F> double_double second_derivative(F&& f)
+{
+    double_double values[5];
+    for (int k = 0; k < 5; ++k)
+        values[k] = f(second_offsets[k] * step);
+    return stencil(second_weights, values, 5, 12 * step * step);
+}
+
+std::string state_text(const model& scene, const std::vector<double>& state, bool accelerations)
+{
+    std::string text;
+    const std::size_t n = scene.coordinates.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::string& name = scene.coordinates[i].name;
+        text += (i ? ", " : "") + name + " = " + message_number(state[i]) + ", " + name +
+                "' = " + message_number(state[n + i]);
+        if (accelerations)
+            text += ", " + name + "'' = " + message_number(state[2 * n + i]);
+    }
+    return text;
+}
+
+[[noreturn]] void not_real(const std::string& product, const std::string& what, const std::string& where)
+{
+    throw computation_error("verification failed: " + product + ": " + what + " is not a real number at " + where +
+                            "; the result is not printed");
+}
+
+[[noreturn]] void fail(const std::string& product, const std::string& what, const std::string& where, double here,
+                       double reference)
+{
+    throw computation_error("verification failed: " + product + ": " + what + " at " + where + " is " +
+                            message_number(here, 10) + ", but " + message_number(reference, 10) +
+                            " by the independent check; the result is not printed");
+}
+
+bool close(double a, double b, double scale) { return std::abs(a - b) <= tolerance * scale; }
+
+/// The Lagrangian as built, before any simplification: the reference of every check.
+ex built_lagrangian(const model& scene, const lagrangian_result& lagrangian)
+{
+    ex l = lagrangian.kinetic_built - lagrangian.potential_built;
+    if (scene.lagrangian_terms)
+        l += *scene.lagrangian_terms;
+    return l;
+}
+
+/// What the checks share: the layout, the compiled reference L, the parameter points.
+struct checker {
+    const model& scene;
+    state_layout layout;
+    std::optional<probe> lagrangian;
+    std::string why_not; ///< why L could not be compiled
+    std::vector<parameter_point> points;
+    sampler random;
+
+    checker(const model& s, const lagrangian_result& l) : scene(s), layout(layout_of(s)), points(parameter_points(s))
+    {
+        try {
+            lagrangian.emplace(std::vector<ex>{built_lagrangian(s, l)}, layout);
+        } catch (const std::invalid_argument& error) {
+            why_not = std::string("L cannot be evaluated numerically (") + error.what() + ")";
+        }
+    }
+    double_double l_at(const std::vector<double>& state) const { return (*lagrangian)(state)[0]; }
+
+    /// A state at the parameter point: coordinates, velocities and accelerations in [−1, 1],
+    /// t in [0, 1].
+    std::vector<double> random_state(const parameter_point& p)
+    {
+        std::vector<double> state(layout.symbols.size());
+        for (std::size_t i = 0; i < 3 * layout.n; ++i)
+            state[i] = random.uniform(-1, 1);
+        state[layout.time()] = random.uniform(0, 1);
+        for (std::size_t k = 0; k < p.values.size(); ++k)
+            state[layout.parameter(k)] = p.values[k];
+        return state;
+    }
+};
+
+// ---- the equations of motion ----
+
+/// The Euler–Lagrange operator d/dt ∂L/∂q̇ − ∂L/∂q of the built L at a state, by nested
+/// differences along the path q + q̇τ + q̈τ²/2: each term, and their scale.
+struct euler_lagrange_values {
+    std::vector<double> residual, scale;
+    std::vector<double> momenta; ///< ∂L/∂q̇
+    double lagrangian = 0;
+};
+
+euler_lagrange_values euler_lagrange(const checker& c, const std::vector<double>& state)
+{
+    const std::size_t n = c.layout.n;
+    euler_lagrange_values result;
+    result.lagrangian = value_of(c.l_at(state));
+    auto along_path = [&](double tau) {
+        std::vector<double> s = state;
+        for (std::size_t j = 0; j < n; ++j) {
+            s[j] = state[j] + state[n + j] * tau + state[2 * n + j] * tau * tau / 2;
+            s[n + j] = state[n + j] + state[2 * n + j] * tau;
+        }
+        s[c.layout.time()] = state[c.layout.time()] + tau;
+        return s;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        auto momentum_at = [&](const std::vector<double>& s) {
+            return first_derivative([&](double h) {
+                std::vector<double> moved = s;
+                moved[n + i] += h;
+                return c.l_at(moved);
+            });
+        };
+        double_double rate = first_derivative([&](double tau) { return momentum_at(along_path(tau)); });
+        double_double force = first_derivative([&](double h) {
+            std::vector<double> moved = state;
+            moved[i] += h;
+            return c.l_at(moved);
+        });
+        result.residual.push_back(value_of(dd::sub(rate, force)));
+        result.scale.push_back(std::abs(value_of(rate)) + std::abs(value_of(force)));
+        result.momenta.push_back(value_of(momentum_at(state)));
+    }
+    return result;
+}
+
+verification_entry check_equations(checker& c, const equations_of_motion& equations)
+{
+    const std::string how = "the Euler–Lagrange operator of L as built, by finite differences in double-double";
+    const std::size_t n = c.layout.n;
+    std::vector<ex> outputs;
+    if (equations.residuals)
+        outputs = *equations.residuals;
+    for (std::size_t i = 0; i < n; ++i) {
+        ex ma = 0;
+        for (std::size_t j = 0; j < n; ++j)
+            ma += equations.mass(static_cast<unsigned>(i), static_cast<unsigned>(j)) *
+                  c.scene.coordinates[j].acceleration;
+        outputs.push_back(ma - equations.forcing[i]);
+    }
+    outputs.push_back(equations.energy);
+    std::optional<probe> symbolic;
+    try {
+        symbolic.emplace(outputs, c.layout);
+    } catch (const std::invalid_argument& error) {
+        return {"equations", std::string("not checked: the equations cannot be evaluated numerically (") +
+                                 error.what() + ")", false};
+    }
+    int used = 0;
+    for (const parameter_point& p : c.points) {
+        std::vector<double> state = c.random_state(p);
+        euler_lagrange_values reference = euler_lagrange(c, state);
+        std::vector<double_double> here = (*symbolic)(state);
+        bool finite = std::isfinite(reference.lagrangian);
+        for (const double_double& x : here)
+            finite = finite && std::isfinite(value_of(x));
+        for (double x : reference.residual)
+            finite = finite && std::isfinite(x);
+        if (!finite)
+            continue;
+        const std::string where = state_text(c.scene, state, true) + (p.text.empty() ? "" : " and " + p.text);
+        double largest = 0;
+        for (double s : reference.scale)
+            largest = std::max(largest, s);
+        const std::size_t forms = equations.residuals ? 2 : 1;
+        for (std::size_t form = 0; form < forms; ++form)
+            for (std::size_t i = 0; i < n; ++i) {
+                double value = value_of(here[form * n + i]);
+                double scale = reference.scale[i] + 1e-6 * largest + 1e-300;
+                if (!close(value, reference.residual[i], scale))
+                    fail("the equations of motion",
+                         std::string(forms == 2 && form == 0 ? "the equation" : "M q'' − f in the row") + " of " +
+                             c.scene.coordinates[i].name,
+                         where, value, reference.residual[i]);
+            }
+        double energy = -reference.lagrangian, energy_scale = std::abs(reference.lagrangian);
+        for (std::size_t i = 0; i < n; ++i) {
+            energy += state[n + i] * reference.momenta[i];
+            energy_scale += std::abs(state[n + i] * reference.momenta[i]);
+        }
+        double energy_here = value_of(here.back());
+        if (!close(energy_here, energy, energy_scale + 1e-300))
+            fail("the energy function", "h", where, energy_here, energy);
+        if (++used == points_wanted)
+            break;
+    }
+    if (used == 0)
+        return {"equations", "not checked: L is not a finite real number at any point tried", false};
+    return {"equations", how + " at " + std::to_string(used) + " seeded random states", true};
+}
+
+// ---- the equilibrium and the linearization ----
+
+/// The equilibrium at a parameter point, rounded to doubles; nothing if not real.
+std::optional<std::vector<double>> equilibrium_at(const std::vector<ex>& at, const parameter_point& p)
+{
+    std::vector<double> q;
+    for (const ex& x : at) {
+        std::optional<double> v = real_at(x, p.map);
+        if (!v)
+            return std::nullopt;
+        q.push_back(*v);
+    }
+    return q;
+}
+
+std::vector<double> resting_state(const checker& c, const std::vector<double>& q, const parameter_point& p)
+{
+    std::vector<double> state(c.layout.symbols.size(), 0.0);
+    for (std::size_t i = 0; i < q.size(); ++i)
+        state[i] = q[i];
+    for (std::size_t k = 0; k < p.values.size(); ++k)
+        state[c.layout.parameter(k)] = p.values[k];
+    return state;
+}
+
+double quadratic_form(const Eigen::MatrixXd& m, const Eigen::VectorXd& v) { return v.dot(m * v); }
+
+/// The linearization at the parameter points: ∂U/∂q = 0 along every coordinate, and the
+/// quadratic forms of T and V along random directions against second differences of
+/// L(q₀, εv) and −L(q₀ + εv, 0).
+void check_linearization(checker& c, const linearization_result& linear, bool check_point,
+                         std::vector<verification_entry>& entries)
+{
+    const std::size_t n = c.layout.n;
+    int used = 0;
+    for (const parameter_point& p : c.points) {
+        std::optional<std::vector<double>> q = equilibrium_at(linear.at, p);
+        std::optional<Eigen::MatrixXd> kinetic = matrix_at(linear.kinetic, p.map);
+        std::optional<Eigen::MatrixXd> potential = matrix_at(linear.potential, p.map);
+        if (!q || !kinetic || !potential)
+            continue;
+        const std::vector<double> rest = resting_state(c, *q, p);
+        if (!std::isfinite(value_of(c.l_at(rest))))
+            continue;
+        std::string where = "the equilibrium";
+        for (std::size_t i = 0; i < n; ++i)
+            where += (i ? ", " : " ") + c.scene.coordinates[i].name + " = " + message_number((*q)[i]);
+        if (!p.text.empty())
+            where += " with " + p.text;
+        auto potential_along = [&](const Eigen::VectorXd& v, double eps) {
+            std::vector<double> s = rest;
+            for (std::size_t i = 0; i < n; ++i)
+                s[i] += eps * v[static_cast<Eigen::Index>(i)];
+            return dd::neg(c.l_at(s));
+        };
+        auto kinetic_along = [&](const Eigen::VectorXd& v, double eps) {
+            std::vector<double> s = rest;
+            for (std::size_t i = 0; i < n; ++i)
+                s[n + i] = eps * v[static_cast<Eigen::Index>(i)];
+            return c.l_at(s);
+        };
+        const double size = kinetic->cwiseAbs().sum() + potential->cwiseAbs().sum() + 1e-300;
+        if (check_point) {
+            for (std::size_t i = 0; i < n; ++i) {
+                Eigen::VectorXd e = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+                e[static_cast<Eigen::Index>(i)] = 1;
+                double slope = value_of(first_derivative([&](double h) { return potential_along(e, h); }));
+                if (!close(slope, 0, potential->cwiseAbs().sum() + 1e-300))
+                    fail("the equilibrium", "∂U/∂" + c.scene.coordinates[i].name, where, slope, 0);
+            }
+        }
+        for (int direction = 0; direction < 2; ++direction) {
+            Eigen::VectorXd v(static_cast<Eigen::Index>(n));
+            for (std::size_t i = 0; i < n; ++i)
+                v[static_cast<Eigen::Index>(i)] = c.random.uniform(-1, 1);
+            double t_form = value_of(second_derivative([&](double eps) { return kinetic_along(v, eps); }));
+            double v_form = value_of(second_derivative([&](double eps) { return potential_along(v, eps); }));
+            const double scale = size * v.squaredNorm();
+            if (!close(quadratic_form(*kinetic, v), t_form, scale))
+                fail("the linearization", "vᵀTv along a random v", where, quadratic_form(*kinetic, v), t_form);
+            if (!close(quadratic_form(*potential, v), v_form, scale))
+                fail("the linearization", "vᵀVv along a random v", where, quadratic_form(*potential, v), v_form);
+        }
+        if (++used == points_wanted)
+            break;
+    }
+    const std::string points = " at " + std::to_string(used) + " parameter points";
+    if (used == 0) {
+        const std::string why = "not checked: the equilibrium is not real at any parameter point tried";
+        if (check_point)
+            entries.push_back({"equilibrium", why, false});
+        entries.push_back({"linearization", why, false});
+        return;
+    }
+    if (check_point)
+        entries.push_back({"equilibrium", "∂U/∂q = 0 by finite differences of L as built" + points, true});
+    entries.push_back({"linearization",
+                       "quadratic forms of T and V along random directions against second differences of "
+                       "L as built" + points, true});
+}
+
+// ---- the characteristic polynomial, the frequencies, the modes ----
+
+/// The parameter points where T and V are real, with them as numbers.
+struct numeric_pencil {
+    const parameter_point* point;
+    Eigen::MatrixXd kinetic, potential;
+};
+
+std::vector<numeric_pencil> pencils(const checker& c, const linearization_result& linear)
+{
+    std::vector<numeric_pencil> result;
+    for (const parameter_point& p : c.points) {
+        std::optional<Eigen::MatrixXd> kinetic = matrix_at(linear.kinetic, p.map);
+        std::optional<Eigen::MatrixXd> potential = matrix_at(linear.potential, p.map);
+        if (!kinetic || !potential || kinetic->ldlt().info() != Eigen::Success ||
+            kinetic->llt().info() != Eigen::Success)
+            continue;
+        result.push_back({&p, *kinetic, *potential});
+        if (result.size() == points_wanted)
+            break;
+    }
+    return result;
+}
+
+std::string at_point(const parameter_point& p) { return p.text.empty() ? "the check" : p.text; }
+
+verification_entry check_characteristic(const model& scene, const linearization_result& linear,
+                                        const characteristic_result& characteristic,
+                                        const std::vector<numeric_pencil>& pencils)
+{
+    const std::size_t n = scene.coordinates.size();
+    const ex& p = characteristic.polynomial;
+    if (!p.is_polynomial(characteristic.omega) || p.degree(characteristic.omega) != static_cast<int>(2 * n))
+        throw computation_error("verification failed: the characteristic polynomial is not of degree " +
+                                std::to_string(2 * n) + " in " + characteristic.omega.get_name());
+    (void)linear;
+    for (const numeric_pencil& pencil : pencils) {
+        // p(ω)/det(V − ω²T) is the same at every ω (the factor removed to make p primitive).
+        std::optional<double> ratio;
+        int compared = 0;
+        for (int k = 0; compared < static_cast<int>(n) + 2 && k < 4 * static_cast<int>(n) + 8; ++k) {
+            const double omega = 0.375 + 0.25 * k;
+            const double w = omega * omega;
+            Eigen::MatrixXd pencil_at = pencil.potential - w * pencil.kinetic;
+            const double det = pencil_at.partialPivLu().determinant();
+            const double size = std::pow(pencil.potential.norm() + w * pencil.kinetic.norm(), static_cast<double>(n));
+            if (std::abs(det) < 1e-6 * size)
+                continue; // too near a root for the ratio to be well conditioned
+            GiNaC::exmap at = pencil.point->map;
+            at[characteristic.omega] = GiNaC::numeric(omega);
+            std::optional<double> value = real_at(p, at);
+            if (!value)
+                break;
+            const double r = *value / det;
+            if (!ratio) {
+                ratio = r;
+                if (r == 0 || !std::isfinite(r))
+                    break;
+            } else if (!close(r, *ratio, std::abs(*ratio))) {
+                fail("the characteristic polynomial", "p(ω)/det(V − ω²T) at ω = " + message_number(omega),
+                     at_point(*pencil.point), r, *ratio);
+            }
+            ++compared;
+        }
+    }
+    if (pencils.empty())
+        return {"characteristic", "not checked: T and V are not real at any parameter point tried", false};
+    return {"characteristic", "against det(V − ω²T) (LU) at " + std::to_string(n + 2) +
+                                  " frequencies and " + std::to_string(pencils.size()) + " parameter points",
+            true};
+}
+
+void check_modes(const model& scene, const modes_result& modes, const std::vector<numeric_pencil>& pencils,
+                 const std::set<product>& shown, std::vector<verification_entry>& entries)
+{
+    const std::size_t n = scene.coordinates.size();
+    if (!modes.closed_form)
+        return;
+    for (const numeric_pencil& pencil : pencils) {
+        const parameter_point& p = *pencil.point;
+        Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(pencil.potential, pencil.kinetic);
+        if (solver.info() != Eigen::Success)
+            continue;
+        std::vector<double> eigenvalues(solver.eigenvalues().data(), solver.eigenvalues().data() + n);
+        const double scale = std::max(std::abs(eigenvalues.front()), std::abs(eigenvalues.back())) + 1e-300;
+        std::vector<double> frequencies;
+        for (const ex& f : modes.frequencies) {
+            std::optional<double> value = real_at(f, p.map);
+            if (!value)
+                not_real("the frequencies", "an ω²", at_point(p));
+            frequencies.push_back(*value);
+        }
+        std::vector<double> sorted = frequencies;
+        std::sort(sorted.begin(), sorted.end());
+        if (sorted.size() != eigenvalues.size())
+            throw computation_error("verification failed: the frequencies: " + std::to_string(sorted.size()) +
+                                    " listed for " + std::to_string(n) + " coordinates");
+        for (std::size_t k = 0; k < n; ++k)
+            if (!close(sorted[k], eigenvalues[k], scale))
+                fail("the frequencies", "ω² number " + std::to_string(k + 1) + " in ascending order", at_point(p),
+                     sorted[k], eigenvalues[k]);
+        const double pencil_size = pencil.potential.norm() + pencil.kinetic.norm() * scale;
+        for (std::size_t k = 0; k < modes.modes.size() && k < n; ++k) {
+            Eigen::VectorXd a(static_cast<Eigen::Index>(n));
+            for (std::size_t i = 0; i < n; ++i) {
+                std::optional<double> x = real_at(modes.modes[k][i], p.map);
+                if (!x)
+                    not_real("the modes", "a component of mode " + std::to_string(k + 1), at_point(p));
+                a[static_cast<Eigen::Index>(i)] = *x;
+            }
+            const double residual =
+                ((pencil.potential - frequencies[k] * pencil.kinetic) * a).norm();
+            if (a.norm() == 0 || residual > tolerance * pencil_size * a.norm())
+                fail("the modes", "|(V − ω²T) a| for mode " + std::to_string(k + 1), at_point(p), residual, 0);
+        }
+        if (modes.normal_coordinates.size() == n) {
+            // ζ = C (q − q₀) with C = Aᵀ T and Aᵀ T A = I, so C T⁻¹ Cᵀ = I and
+            // Aᵀ V A = diag(ω²), with A = T⁻¹ Cᵀ.
+            Eigen::MatrixXd rows(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+            for (std::size_t k = 0; k < n; ++k)
+                for (std::size_t j = 0; j < n; ++j) {
+                    std::optional<double> x =
+                        real_at(modes.normal_coordinates[k].diff(scene.coordinates[j].position), p.map);
+                    if (!x)
+                        not_real("the normal coordinates", "a coefficient of ζ" + std::to_string(k + 1), at_point(p));
+                    rows(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(j)) = *x;
+                }
+            const Eigen::MatrixXd a = pencil.kinetic.ldlt().solve(rows.transpose());
+            const Eigen::MatrixXd unit = rows * a;
+            const Eigen::MatrixXd diagonal = a.transpose() * pencil.potential * a;
+            for (std::size_t k = 0; k < n; ++k)
+                for (std::size_t j = 0; j < n; ++j) {
+                    const auto r = static_cast<Eigen::Index>(k), s = static_cast<Eigen::Index>(j);
+                    const double expected_unit = k == j ? 1 : 0;
+                    const double expected_diagonal = k == j ? frequencies[k] : 0;
+                    if (!close(unit(r, s), expected_unit, 1))
+                        fail("the normal coordinates", "(C T⁻¹ Cᵀ)" + std::to_string(k + 1) + std::to_string(j + 1),
+                             at_point(p), unit(r, s), expected_unit);
+                    if (!close(diagonal(r, s), expected_diagonal, scale))
+                        fail("the normal coordinates", "(Aᵀ V A)" + std::to_string(k + 1) + std::to_string(j + 1),
+                             at_point(p), diagonal(r, s), expected_diagonal);
+                }
+        }
+    }
+    const std::string points = " at " + std::to_string(pencils.size()) + " parameter points";
+    if (pencils.empty())
+        return;
+    if (shown.count(product::frequencies))
+        entries.push_back({"frequencies", "against the eigenvalues of the pencil (V, T) (Eigen)" + points, true});
+    if (shown.count(product::modes))
+        entries.push_back({"modes", "(V − ω²T) a = 0" + points, true});
+    if (shown.count(product::normal_coordinates) && modes.normal_coordinates.size() == n)
+        entries.push_back({"normal_coordinates", "C T⁻¹ Cᵀ = I and Aᵀ V A = diag(ω²)" + points, true});
+}
+
+} // namespace
+
+verification_result verify_results(const model& scene, const verification_input& input,
+                                   const std::set<product>& shown)
+{
+    verification_result result;
+    if (!input.lagrangian || scene.coordinates.empty())
+        return result;
+    checker c(scene, *input.lagrangian);
+    auto not_checked = [&](const std::string& item) { result.entries.push_back({item, "not checked: " + c.why_not, false}); };
+    if (input.equations) {
+        if (c.lagrangian)
+            result.entries.push_back(check_equations(c, *input.equations));
+        else
+            not_checked("equations");
+    }
+    if (input.linearization) {
+        const bool point = input.equilibria != nullptr;
+        if (c.lagrangian) {
+            check_linearization(c, *input.linearization, point, result.entries);
+        } else {
+            if (point)
+                not_checked("equilibrium");
+            not_checked("linearization");
+        }
+        const std::vector<numeric_pencil> numeric = pencils(c, *input.linearization);
+        if (input.characteristic)
+            result.entries.push_back(check_characteristic(scene, *input.linearization, *input.characteristic, numeric));
+        if (input.modes)
+            check_modes(scene, *input.modes, numeric, shown, result.entries);
+    }
+    return result;
+}
+
+} // namespace lagrange

@@ -1,0 +1,51 @@
+/** @file verification.h
+ *  Self-verification: every symbolic result is checked numerically, by a route that
+ *  does not share the symbolic derivation, before it is printed. The reference is the
+ *  Lagrangian as built (before simplification), compiled once and evaluated in
+ *  double-double; derivatives of it are taken by finite differences. The points are
+ *  seeded, so the checks (and their messages) are the same on every run. */
+#pragma once
+
+#include "core/model.h"
+#include "mechanics/equations_of_motion.h"
+#include "mechanics/equilibrium.h"
+#include "mechanics/lagrangian.h"
+#include "mechanics/linearization.h"
+#include "mechanics/modes.h"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+/// One checked (or uncheckable) product: `item` is its JSON key, `how` says how it was
+/// checked, or, when `checked` is false, why it could not be.
+struct verification_entry {
+    std::string item;
+    std::string how;
+    bool checked = true;
+};
+
+struct verification_result {
+    std::vector<verification_entry> entries; ///< in product order
+};
+
+/// What the checks read; a null pointer is a product that was not computed.
+struct verification_input {
+    const lagrangian_result* lagrangian = nullptr;
+    const equations_of_motion* equations = nullptr;
+    const equilibria_result* equilibria = nullptr;
+    const linearization_result* linearization = nullptr;
+    const characteristic_result* characteristic = nullptr;
+    const modes_result* modes = nullptr;
+};
+
+/// Checks every result given (`shown`: the products printed, which name the entries of
+/// the frequencies, modes and normal coordinates). Throws computation_error
+/// "verification failed: …" naming the product and the point when a result disagrees
+/// with its numeric reference.
+verification_result verify_results(const model& scene, const verification_input& input,
+                                   const std::set<product>& shown);
+
+} // namespace lagrange
