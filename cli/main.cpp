@@ -402,6 +402,8 @@ int main(int argc, char** argv)
 {
     // Byte-identical output in every run: see system/address_layout.h.
     lagrange::use_fixed_address_layout(argv);
+    // --max-seconds holds even inside a GiNaC call that cannot be interrupted.
+    lagrange::start_budget_watchdog("lagrange: error: ", exit_failed);
     try {
         return run(argc, argv);
     } catch (const lagrange::scene_error& error) {

@@ -194,6 +194,42 @@ TEST_CASE("budget: --max-seconds trips with a message naming the stage and exit 
     CHECK(r.err.find("stage exceeded its time budget of 0.001 s (--max-seconds)") != std::string::npos);
 }
 
+namespace {
+
+/// The 3-link chain with every mass and length distinct, whose closed-form frequencies
+/// take tens of seconds, much of it inside GiNaC calls no cooperative check reaches.
+std::string slow_chain() { return temporary_file("chain3.lag", chain_scene(3) + "equilibrium q1 = 0, q2 = 0, q3 = 0\n"); }
+
+/// One run under `seconds`: it stops with exit 1, naming the stage and the budget, within a
+/// tenth of the budget plus the earlier stages (a fraction of a second) and start-up.
+void require_budget_held(const std::string& scene, double seconds)
+{
+    std::ostringstream budget;
+    budget << seconds;
+    cli_result r = run_cli(scene + " --want frequencies --max-seconds " + budget.str(), "", 60);
+    INFO(r.err);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("stage exceeded its time budget of " + budget.str() + " s (--max-seconds)") != std::string::npos);
+    const char* scale = std::getenv("LAGRANGE_TEST_TIME_SCALE"); // sanitized builds start slower
+    CHECK(r.seconds < 1.1 * seconds + 0.8 * (scale ? std::max(1, std::atoi(scale)) : 1));
+}
+
+} // namespace
+
+TEST_CASE("budget: the watchdog holds --max-seconds inside GiNaC calls", "[budget][cli]")
+{
+    require_budget_held(slow_chain(), 0.5);
+}
+
+TEST_CASE("budget: the slow chain stops within a tenth of a 2 s budget, 20 times", "[budget][cli][slow_budget]")
+{
+    const std::string scene = slow_chain();
+    for (int run = 0; run < 20; ++run) {
+        INFO("run " << run);
+        require_budget_held(scene, 2);
+    }
+}
+
 TEST_CASE("output: a failing run with -o leaves the existing file intact and no temporary file", "[cli][output]")
 {
     std::string folder = fresh_folder();

@@ -2,8 +2,13 @@
  *  Size and time budgets of the symbolic stages (see budget.h). */
 #include "algebra/budget.h"
 
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
+#include <mutex>
 #include <sstream>
+#include <thread>
 
 namespace lagrange {
 
@@ -27,9 +32,74 @@ std::size_t saturating_multiply(std::size_t a, std::size_t b, std::size_t cap)
     return std::min(a * b, cap);
 }
 
+/// What the watchdog sees: the innermost watched scope of the watched thread.
+struct watch {
+    std::mutex lock;
+    std::thread::id thread;
+    bool started = false;
+    const budget_scope::state* open = nullptr; ///< guarded by lock
+    std::string prefix;
+    int exit_code = 1;
+};
+
+watch& the_watch()
+{
+    static watch* w = new watch; // never destroyed: the watchdog thread outlives main
+    return *w;
+}
+
+std::string exceeded_time_message(const budget_scope::state& s)
+{
+    return "the `" + s.stage + "` stage exceeded its time budget of " + seconds_text(s.limits.max_seconds) +
+           " s (--max-seconds)";
+}
+
+/// Tells the watchdog which scope is open on its thread (nothing on other threads).
+void watch_scope(const budget_scope::state* open)
+{
+    watch& w = the_watch();
+    if (!w.started || std::this_thread::get_id() != w.thread)
+        return;
+    std::lock_guard<std::mutex> guard(w.lock);
+    w.open = open && open->watched ? open : nullptr;
+}
+
 } // namespace
 
-budget_scope::budget_scope(std::string stage, const budget_limits& limits) : previous_(current_budget)
+void start_budget_watchdog(const std::string& prefix, int exit_code)
+{
+    watch& w = the_watch();
+    {
+        std::lock_guard<std::mutex> guard(w.lock);
+        if (w.started)
+            return;
+        w.started = true;
+        w.thread = std::this_thread::get_id();
+        w.prefix = prefix;
+        w.exit_code = exit_code;
+    }
+    std::thread([&w] {
+        for (;;) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            std::lock_guard<std::mutex> guard(w.lock);
+            if (!w.open)
+                continue;
+            const double grace = 0.08 * w.open->limits.max_seconds; // + one 20 ms poll: within a tenth
+            const auto late = w.open->deadline + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                     std::chrono::duration<double>(grace));
+            if (std::chrono::steady_clock::now() <= late)
+                continue;
+            const std::string message = w.prefix + exceeded_time_message(*w.open) +
+                                        " inside a step that cannot be interrupted, so the run stopped "
+                                        "with nothing printed\n";
+            std::fwrite(message.data(), 1, message.size(), stderr);
+            std::fflush(stderr);
+            std::_Exit(w.exit_code);
+        }
+    }).detach();
+}
+
+budget_scope::budget_scope(std::string stage, const budget_limits& limits, bool watched) : previous_(current_budget)
 {
     current_.stage = std::move(stage);
     current_.limits = limits;
@@ -39,19 +109,23 @@ budget_scope::budget_scope(std::string stage, const budget_limits& limits) : pre
         seconds = 1e7;
     current_.deadline = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                   std::chrono::duration<double>(seconds));
+    current_.watched = watched;
     current_budget = &current_;
+    watch_scope(current_budget);
 }
 
-budget_scope::~budget_scope() { current_budget = previous_; }
+budget_scope::~budget_scope()
+{
+    current_budget = previous_;
+    watch_scope(current_budget);
+}
 
 void budget_check()
 {
     if (!current_budget)
         return;
     if (std::chrono::steady_clock::now() > current_budget->deadline)
-        throw budget_exceeded(current_budget->stage,
-                              "the `" + current_budget->stage + "` stage exceeded its time budget of " +
-                                  seconds_text(current_budget->limits.max_seconds) + " s (--max-seconds)");
+        throw budget_exceeded(current_budget->stage, exceeded_time_message(*current_budget));
 }
 
 void budget_check_count(std::size_t terms, const char* what)

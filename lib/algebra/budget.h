@@ -56,9 +56,11 @@ private:
 };
 
 /// Opens a budget for one stage on this thread; the previous one is restored on exit.
+/// `watched`: the watchdog (start_budget_watchdog) may end the process when the stage
+/// overruns; false for stages whose time is the user's to choose (a simulation).
 class budget_scope {
 public:
-    budget_scope(std::string stage, const budget_limits& limits);
+    budget_scope(std::string stage, const budget_limits& limits, bool watched = true);
     ~budget_scope();
     budget_scope(const budget_scope&) = delete;
     budget_scope& operator=(const budget_scope&) = delete;
@@ -67,6 +69,7 @@ public:
         std::string stage;
         budget_limits limits;
         std::chrono::steady_clock::time_point deadline;
+        bool watched = true;
     };
 
 private:
@@ -90,5 +93,13 @@ std::size_t expanded_terms(const GiNaC::ex& e, std::size_t cap);
 
 /// The name of the stage whose budget is open on this thread, or "" if none.
 std::string budget_stage();
+
+/// For programs, not libraries (it ends the process): watches the watched stages opened on
+/// the calling thread from now on. One GiNaC call (a gcd, a factorization) cannot be
+/// interrupted by the cooperative checks above; when a stage runs past its time budget by
+/// 8 %, a watchdog thread writes `prefix` + "the `STAGE` stage exceeded its time budget of
+/// S s (--max-seconds) inside a step that cannot be interrupted, …" to standard error and
+/// ends the process with `exit_code`, so that --max-seconds holds within a tenth on every path.
+void start_budget_watchdog(const std::string& prefix, int exit_code);
 
 } // namespace lagrange
