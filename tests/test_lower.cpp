@@ -1,5 +1,6 @@
 /** @file test_lower.cpp
  *  Semantic checks and lowering: exact numbers, shorthands, rules, and every error path. */
+#include "bodies/inertia.h"
 #include "scene_helpers.h"
 
 #include <catch2/catch.hpp>
@@ -34,6 +35,32 @@ TEST_CASE("lower: I is a name, not the imaginary unit", "[lower]")
     CHECK_FALSE(scene.kinetic_terms.has(GiNaC::I));
 }
 
+TEST_CASE("lower: L, T and V are parameter names (spec section 1)", "[lower]")
+{
+    // A statement keyword is one only where a statement starts: `T = ...` is still the
+    // kinetic energy, while `T` inside an expression is the parameter.
+    model scene = load("parameters m L T V\ncoordinates q\nT = 1/2*m*L^2*q'^2\nV = m*V*T*q^2\n");
+    REQUIRE(scene.parameters.size() == 4);
+    GiNaC::ex m = symbol_of(scene, "m"), l = symbol_of(scene, "L"), period = symbol_of(scene, "T"),
+              v = symbol_of(scene, "V"), q = symbol_of(scene, "q"), q_dot = symbol_of(scene, "q_dot");
+    CHECK((scene.kinetic_terms - m * l * l * q_dot * q_dot / 2).expand().is_zero());
+    CHECK((scene.potential_terms - m * v * period * q * q).expand().is_zero());
+}
+
+TEST_CASE("lower: the homework's stick(L)", "[lower]")
+{
+    model scene = load("parameters M L\nbody S stick(L) mass M axis y\n");
+    REQUIRE(scene.bodies.size() == 1);
+    REQUIRE(scene.bodies[0].dimensions.size() == 1);
+    CHECK(scene.bodies[0].dimensions[0].is_equal(symbol_of(scene, "L")));
+    // a thin rod along y: I_xx = I_zz = M L^2/12 about its centre, I_yy = 0 (textbook)
+    lagrange::inertia_result inertia = lagrange::derive_inertia(scene.bodies[0]);
+    GiNaC::ex mass = symbol_of(scene, "M"), length = symbol_of(scene, "L");
+    CHECK((inertia.tensor(0, 0) - mass * length * length / 12).normal().is_zero());
+    CHECK((inertia.tensor(2, 2) - mass * length * length / 12).normal().is_zero());
+    CHECK(inertia.tensor(1, 1).normal().is_zero());
+}
+
 TEST_CASE("lower: error paths", "[lower]")
 {
     require_error(header + "T = m*z'^2\n", 3, 7, "`z'`: only coordinates have velocities");
@@ -44,7 +71,6 @@ TEST_CASE("lower: error paths", "[lower]")
     require_error("parameters m\ncoordinates m\n", 2, 13, "already declared");
     require_error("parameters sin\n", 1, 12, "reserved");
     require_error("parameters t\n", 1, 12, "reserved");
-    require_error("parameters L\n", 1, 12, "reserved");
     require_error("parameters x_dot\n", 1, 12, "reserved for velocities");
     require_error(header + "T = 1/2*m*q'^2\nL = 1/2*m*q'^2\n", 4, 1, "cannot be combined with the `T` line");
     require_error(header + "L = 1/2*m*q'^2\nV = m*g*q\n", 4, 1, "cannot be combined with the Lagrangian");
@@ -78,13 +104,43 @@ TEST_CASE("lower: error paths", "[lower]")
     require_error(header + "initial q = 0, q' = 1, q = 2\n", 3, 24, "given twice");
     require_error(header + "ratio r = m*g\n", 3, 11, "one parameter over another");
     require_error(header + "ratio r = m/g\nV = r*q\n", 4, 5, "is a ratio");
-    require_error(header + "limit z -> 0\n", 3, 7, "is not a ratio or a parameter");
+    require_error(header + "limit z -> 0\n", 3, 7, "is not a declared ratio");
     require_error(header + "simulate until -1\n", 3, 16, "must be positive");
     require_error(header + "want everything\n", 3, 6, "unknown product `everything`");
     require_error(header + "use \"no-such-file.rules\"\n", 3, 1, "cannot read the rules file");
     require_error(header + "scene \"a\"\nscene \"b\"\n", 4, 1, "given twice");
     require_error("parameters m\n", 1, 1, "declares no coordinates");
     require_error("", 1, 1, "declares no coordinates");
+}
+
+TEST_CASE("lower: scenes that make no sense are rejected at the offending line", "[lower]")
+{
+    // a limit is taken in the scene's ratio, declared before or after it
+    require_error(header + "limit m -> 0\n", 3, 7, "is not a declared ratio");
+    require_error(header + "ratio rho = m/g\nlimit m -> 0\n", 4, 7, "is not a declared ratio");
+    CHECK(load(header + "limit rho -> oo\nratio rho = m/g\n").limit->variable == "rho");
+    // gravity out of the plane of planar points
+    require_error(header + "point P mass m at (q, 0)\ngravity g along (0, 0, -1)\n", 4, 17, "points are planar");
+    require_error(header + "gravity g along (0, 0, -1)\npoint P mass m at (q, 0)\n", 3, 17, "points are planar");
+    CHECK(load(header + "point P mass m at (q, 0, 0)\ngravity g along (0, 0, -1)\n").gravity.has_value());
+    // values that make a mass, a dimension or a moment zero or negative
+    require_error(header + "point P mass m at (q, 0)\nvalues m = -1, g = 1, l = 1\n", 4, 12,
+                  "mass of point `P` negative");
+    require_error(header + "point P mass m*l at (q, 0)\nvalues m = 2, l = 0\n", 4, 12, "mass of point `P` zero");
+    require_error("parameters M L\ncoordinates q\nbody S stick(L) mass M axis y\nvalues M = 1, L = 0\n", 4, 19,
+                  "a dimension of body `S` zero");
+    require_error("parameters M I1 I2\ncoordinates q\nbody B inertia (I1, I2, I1) mass M\nvalues M = 1, I1 = 1, "
+                  "I2 = -2\n",
+                  4, 28, "a moment of inertia of body `B` negative");
+    CHECK(load(header + "point P mass m at (q, 0)\nvalues m = 2, g = -1, l = 1\n").values.size() == 1);
+    {
+        model scene = load(header + "point P mass m at (q, 0)\n");
+        REQUIRE_THROWS_AS(add_values(scene, "m=0"), scene_error);
+    }
+    // a body with orientation coordinates has its angular velocity derived, not named
+    require_error("parameters M R\ncoordinates a b c\nbody B ball(R) mass M orientation zxz(a, b, c)\n"
+                  "omega B (w1, w2, w3)\n",
+                  4, 1, "derived from them");
 }
 
 TEST_CASE("lower: use adds rules, errors in a rules file point into it", "[lower]")

@@ -222,6 +222,23 @@ TEST_CASE("normal modes: from a scene's values", "[normal_modes]")
     CHECK(all[0].values.size() == 4);
 }
 
+TEST_CASE("normal modes: the values echo every value given, also those not needed", "[normal_modes]")
+{
+    lagrange::model scene = lagrange::load_model(lagrange::source_text(
+        "t.lag", "parameters M m l g c\ncoordinates theta phi\nT = 1/2*M*l^2*theta'^2\n"
+                 "values c = 7, M = 1, m = 0.01, l = 1, g = 9.81\n"));
+    GiNaC::ex M = scene.parameters[0].symbol, m = scene.parameters[1].symbol, l = scene.parameters[2].symbol,
+              g = scene.parameters[3].symbol;
+    lagrange::linearization_result linear;
+    linear.kinetic = GiNaC::matrix{{(M + m) * l * l, m * l * l}, {m * l * l, m * l * l}};
+    linear.potential = GiNaC::matrix{{(M + m) * g * l, 0}, {0, m * g * l}};
+    std::vector<lagrange::numeric_modes> all = lagrange::numeric_normal_modes(scene, linear);
+    REQUIRE(all.size() == 1);
+    // in the declared order of the parameters
+    std::vector<std::pair<std::string, double>> expected{{"M", 1}, {"m", 0.01}, {"l", 1}, {"g", 9.81}, {"c", 7}};
+    CHECK(all[0].values == expected);
+}
+
 TEST_CASE("normal modes: errors", "[normal_modes]")
 {
     SECTION("a parameter without a value")

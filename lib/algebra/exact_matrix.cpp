@@ -7,6 +7,7 @@
 #include "core/errors.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace lagrange {
 
@@ -35,10 +36,13 @@ std::vector<ex> leading_minors(const GiNaC::matrix& a)
                 ex numerator = (m[k][k] * m[i][j] - m[i][k] * m[k][j]).expand();
                 budget_check_terms(numerator, "a minor of the determinant");
                 ex quotient;
-                if (GiNaC::divide(numerator, previous, quotient))
-                    m[i][j] = quotient;
-                else
-                    m[i][j] = (numerator / previous).normal();
+                bool exact = false;
+                try {
+                    exact = GiNaC::divide(numerator, previous, quotient);
+                } catch (const std::invalid_argument&) {
+                    exact = false; // rational entries (a parameter in a denominator): divide by normal()
+                }
+                m[i][j] = exact ? quotient : (numerator / previous).normal();
             }
         previous = m[k][k];
     }

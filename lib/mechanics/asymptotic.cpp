@@ -139,6 +139,12 @@ asymptotic_result asymptotic_limit(const model& scene, const modes_result& modes
                 break;
         }
         for (std::size_t i = 0; i < terms.size(); ++i) {
+            if (terms[i].empty()) {
+                // ω² = 0 identically: a zero mode (a free translation) stays 0
+                result.frequencies.push_back(0);
+                result.frequency_series.push_back({ex(0)});
+                continue;
+            }
             // c0·εᵏ⁰ (1 + (c1/c0) εᵏ¹⁻ᵏ⁰ + …): the leading term outside, corrections in order
             ex correction = 1;
             for (std::size_t t = 1; t < kept[i] && t < terms[i].size(); ++t)
@@ -195,9 +201,14 @@ asymptotic_result asymptotic_limit(const model& scene, const modes_result& modes
         std::size_t pivot = 0;
         while (pivot + 1 < coefficients.size() && vanishes(coefficients[pivot]))
             ++pivot;
+        if (vanishes(coefficients[pivot])) {
+            result.normal_coordinates.push_back(leading(zeta));
+            continue;
+        }
         ex sum = 0;
         for (std::size_t j = 0; j < coefficients.size(); ++j)
-            sum += tidy(coefficients[j] / coefficients[pivot]) * scene.coordinates[j].position;
+            sum += tidy(coefficients[j] / coefficients[pivot]) *
+                   (j < modes.displacements.size() ? modes.displacements[j] : ex(scene.coordinates[j].position));
         result.normal_coordinates.push_back(tidy(coefficients[pivot] * leading_scale) * sum);
     }
     return result;

@@ -13,9 +13,13 @@
 #include "algebra/sign.h"
 #include "core/errors.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <map>
 #include <optional>
 
 namespace lagrange {
@@ -40,6 +44,104 @@ using GiNaC::is_a;
 
 /// The most angle coordinates whose combinations of 0 and π are tried as equilibria.
 constexpr std::size_t max_enumerated_angles = 10;
+
+/// Above this many angle coordinates the combinations of 0 and π are not listed:
+/// the stable equilibrium is looked for directly (2^N points help nobody).
+constexpr std::size_t max_listed_angles = 4;
+
+/// e with tangents written as sin/cos and, for every argument u of a sine or cosine,
+/// sin² u = 1 − cos² u in numerator and denominator, common factors cancelled. Sines
+/// and cosines of different arguments are taken as independent, so the result equals e
+/// (and is 0 only where e is 0 identically). e itself where there is nothing to reduce.
+ex reduce_trigonometric(const ex& e)
+{
+    ex x = e.subs(GiNaC::tan(GiNaC::wild(0)) == GiNaC::sin(GiNaC::wild(0)) / GiNaC::cos(GiNaC::wild(0)));
+    // one (sine, cosine) pair of symbols per distinct argument, in order of appearance
+    std::vector<std::pair<ex, std::pair<GiNaC::realsymbol, GiNaC::realsymbol>>> arguments;
+    GiNaC::exmap to_symbols, back;
+    for (GiNaC::const_preorder_iterator i = x.preorder_begin(); i != x.preorder_end(); ++i) {
+        bool is_sin = GiNaC::is_the_function<GiNaC::sin_SERIAL>(*i),
+             is_cos = GiNaC::is_the_function<GiNaC::cos_SERIAL>(*i);
+        if (!is_sin && !is_cos)
+            continue;
+        ex argument = i->op(0);
+        auto known = std::find_if(arguments.begin(), arguments.end(),
+                                  [&](const auto& a) { return a.first.is_equal(argument); });
+        if (known != arguments.end())
+            continue;
+        GiNaC::realsymbol sine("S"), cosine("C");
+        arguments.push_back({argument, {sine, cosine}});
+        to_symbols[GiNaC::sin(argument)] = sine;
+        to_symbols[GiNaC::cos(argument)] = cosine;
+        back[sine] = GiNaC::sin(argument);
+        back[cosine] = GiNaC::cos(argument);
+    }
+    if (arguments.empty())
+        return e;
+    ex fraction = x.subs(to_symbols).normal().numer_denom();
+    for (const auto& [argument, pair] : arguments)
+        if (fraction.has(argument))
+            return e; // the argument also outside sin and cos
+    auto reduce = [&](ex polynomial) {
+        polynomial = polynomial.expand();
+        for (const auto& [argument, pair] : arguments) {
+            const auto& [sine, cosine] = pair;
+            ex reduced = 0;
+            for (int k = 0; k <= polynomial.degree(sine); ++k)
+                reduced += polynomial.coeff(sine, k) * GiNaC::pow(1 - cosine * cosine, k / 2) *
+                           (k % 2 == 0 ? ex(1) : ex(sine));
+            polynomial = reduced.expand();
+        }
+        return polynomial;
+    };
+    budget_check();
+    ex reduced = (reduce(fraction.op(0)) / reduce(fraction.op(1))).normal();
+    return reduced.subs(back);
+}
+
+/// Zero as a function of the coordinates and parameters: the rational test of
+/// vanishes(), then after reduce_trigonometric (so that a residual in sin(th0),
+/// cos(th0) and tan(th0) of a parameter th0 is recognized as 0).
+bool vanishes_identically(const ex& e)
+{
+    if (vanishes(e))
+        return true;
+    try {
+        return vanishes(reduce_trigonometric(e));
+    } catch (const budget_exceeded&) {
+        throw; // out of budget: the stage stops, no fallback
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+/// True if e contains a sine, cosine or tangent.
+bool has_trigonometric(const ex& e)
+{
+    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
+        if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(*i) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(*i) ||
+            GiNaC::is_the_function<GiNaC::tan_SERIAL>(*i))
+            return true;
+    return false;
+}
+
+/// The coordinates whose potential contains √(q²) (a spring's length, as for the
+/// elastic pendulum's r), and the potential on the physical branch q > 0, where
+/// √(q²) = q.
+std::pair<std::vector<bool>, ex> on_positive_branch(const model& scene, const ex& potential)
+{
+    std::vector<bool> branch(scene.coordinates.size(), false);
+    ex result = potential;
+    for (std::size_t i = 0; i < scene.coordinates.size(); ++i) {
+        const ex q = scene.coordinates[i].position;
+        ex replaced = result.subs(GiNaC::pow(GiNaC::pow(q, 2), GiNaC::wild(0)) == GiNaC::pow(q, 2 * GiNaC::wild(0)));
+        if (!replaced.is_equal(result)) {
+            branch[i] = true;
+            result = replaced;
+        }
+    }
+    return {branch, result};
+}
 
 /// sin and cos of integer combinations of the coordinates (plus a constant) written
 /// through sin q and cos q of each coordinate: cos(n q + c) = Re((cos q + i sin q)ⁿ e^{ic}).
@@ -80,6 +182,8 @@ ex expand_multiple_angles(const ex& e, const model& scene)
     return is_cos ? real : imaginary;
 }
 
+bool inside_trigonometric(const ex& e, const ex& q);
+
 /// The real roots of ∂V/∂q = 0 in one coordinate, where they can be found in closed form.
 std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
 {
@@ -87,6 +191,12 @@ std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
     ex g = gradient.expand();
     if (g.is_zero())
         return {ex(0)};
+    if (!g.info(GiNaC::info_flags::polynomial)) {
+        // a rational function: its zeros are among those of its numerator (checked by the caller)
+        ex numerator = g.normal().numer().expand();
+        if (numerator.info(GiNaC::info_flags::polynomial) || inside_trigonometric(numerator, q))
+            g = numerator;
+    }
     bool trigonometric = false;
     for (GiNaC::const_preorder_iterator i = g.preorder_begin(); i != g.preorder_end(); ++i)
         if (is_a<GiNaC::function>(*i) && i->has(q))
@@ -190,9 +300,110 @@ bool inside_trigonometric(const ex& e, const ex& q)
     return false;
 }
 
+/// The point with the angle coordinates at `fixed` (0 or π) and the others solved
+/// from the linear system that remains (free directions set to 0), if ∂V/∂q = 0 there.
+std::optional<std::vector<ex>> point_with_angles(const model& scene, const std::vector<ex>& gradient,
+                                                 const GiNaC::exmap& fixed, const std::vector<std::size_t>& others)
+{
+    std::size_t n = scene.coordinates.size();
+    GiNaC::lst equations, unknowns;
+    for (std::size_t i : others)
+        unknowns.append(scene.coordinates[i].position);
+    bool linear = true;
+    for (const ex& g : gradient) {
+        ex reduced = g.subs(fixed).expand();
+        if (reduced.is_zero())
+            continue;
+        if (!reduced.info(GiNaC::info_flags::polynomial))
+            reduced = reduced.normal().numer().expand(); // zeros of a rational function: of its numerator
+        for (const ex& u : unknowns)
+            linear = linear && reduced.degree(u) <= 1 && !inside_trigonometric(reduced, u);
+        equations.append(reduced == 0);
+    }
+    std::vector<ex> point(n, 0);
+    for (const auto& [coordinate, value] : fixed)
+        for (std::size_t i = 0; i < n; ++i)
+            if (ex(scene.coordinates[i].position).is_equal(coordinate))
+                point[i] = value;
+    if (equations.nops() > 0) {
+        if (unknowns.nops() == 0 || !linear)
+            return std::nullopt;
+        ex solution;
+        try {
+            solution = GiNaC::lsolve(equations, unknowns);
+        } catch (const budget_exceeded&) {
+            throw; // out of budget: the stage stops, no fallback
+        } catch (const std::exception&) {
+            return std::nullopt;
+        }
+        if (solution.nops() == 0)
+            return std::nullopt;
+        GiNaC::exmap free_to_zero;
+        for (const ex& u : unknowns)
+            free_to_zero[u] = 0;
+        for (const ex& equation : solution)
+            for (std::size_t i : others)
+                if (equation.lhs().is_equal(scene.coordinates[i].position))
+                    point[i] = tidy(equation.rhs().subs(free_to_zero));
+    }
+    for (const ex& g : gradient)
+        if (!vanishes(evaluate_at(g, scene, point)))
+            return std::nullopt;
+    return point;
+}
+
+/// A stable equilibrium found without listing the 2^N combinations of N angles:
+/// when each ∂V/∂q_i depends on q_i alone (a chain in absolute angles), each
+/// coordinate at a root where ∂²V/∂q_i² > 0; otherwise every angle at 0, if that is
+/// a stable equilibrium (a hanging chain in relative angles). Nothing if neither applies.
+std::optional<std::vector<ex>> stable_without_listing(const model& scene, const std::vector<ex>& gradient,
+                                                      const std::vector<std::size_t>& others,
+                                                      const std::function<stability(const std::vector<ex>&)>& kind_at)
+{
+    std::size_t n = scene.coordinates.size();
+    bool decoupled = true;
+    for (std::size_t i = 0; i < n && decoupled; ++i)
+        for (std::size_t j = 0; j < n && decoupled; ++j)
+            if (i != j && gradient[i].has(scene.coordinates[j].position))
+                decoupled = false;
+    if (decoupled) {
+        std::vector<ex> point(n, 0);
+        bool found = true;
+        for (std::size_t i = 0; i < n && found; ++i) {
+            const GiNaC::symbol& q = scene.coordinates[i].position;
+            ex curvature = differentiate(gradient[i], q);
+            found = false;
+            for (const ex& root : solve_one(gradient[i], q)) {
+                point[i] = root;
+                if (sign_of(tidy(evaluate_at(curvature, scene, point))) == std::optional<int>(1)) {
+                    found = true;
+                    break;
+                }
+            }
+        }
+        if (found) {
+            for (const ex& g : gradient)
+                if (!vanishes(evaluate_at(g, scene, point)))
+                    return std::nullopt;
+            return point;
+        }
+        return std::nullopt;
+    }
+    GiNaC::exmap at_zero;
+    for (std::size_t i = 0; i < n; ++i)
+        if (std::find(others.begin(), others.end(), i) == others.end())
+            at_zero[scene.coordinates[i].position] = 0;
+    std::optional<std::vector<ex>> hanging = point_with_angles(scene, gradient, at_zero, others);
+    if (hanging && kind_at(*hanging) == stability::stable)
+        return hanging;
+    return std::nullopt;
+}
+
 /// The solutions of ∂V/∂q = 0 for several coordinates: each angle coordinate at
-/// 0 or π, the others from a linear system (free directions set to 0).
-std::vector<std::vector<ex>> solve_several(const model& scene, const std::vector<ex>& gradient)
+/// 0 or π, the others from a linear system (free directions set to 0). With more
+/// than max_listed_angles angles, only a stable equilibrium where one is found directly.
+std::vector<std::vector<ex>> solve_several(const model& scene, const std::vector<ex>& gradient,
+                                           const std::function<stability(const std::vector<ex>&)>& kind_at)
 {
     std::size_t n = scene.coordinates.size();
     std::vector<std::size_t> angles, others;
@@ -202,56 +413,18 @@ std::vector<std::vector<ex>> solve_several(const model& scene, const std::vector
             angle = angle || inside_trigonometric(g, scene.coordinates[i].position);
         (angle ? angles : others).push_back(i);
     }
+    if (angles.size() > max_listed_angles)
+        if (std::optional<std::vector<ex>> stable = stable_without_listing(scene, gradient, others, kind_at))
+            return {*stable};
     if (angles.size() > max_enumerated_angles)
-        angles.resize(max_enumerated_angles); // the rest stay as unknowns and fail below
+        return {};
     std::vector<std::vector<ex>> points;
     for (unsigned long choice = 0; choice < (1UL << angles.size()); ++choice) {
         GiNaC::exmap fixed;
         for (std::size_t a = 0; a < angles.size(); ++a)
             fixed[scene.coordinates[angles[a]].position] = (choice >> a & 1) ? ex(GiNaC::Pi) : ex(0);
-        GiNaC::lst equations, unknowns;
-        for (std::size_t i : others)
-            unknowns.append(scene.coordinates[i].position);
-        bool linear = true;
-        for (const ex& g : gradient) {
-            ex reduced = g.subs(fixed).expand();
-            if (reduced.is_zero())
-                continue;
-            for (const ex& u : unknowns)
-                linear = linear && reduced.degree(u) <= 1 && !inside_trigonometric(reduced, u);
-            equations.append(reduced == 0);
-        }
-        std::vector<ex> point(n, 0);
-        for (const auto& [coordinate, value] : fixed)
-            for (std::size_t i = 0; i < n; ++i)
-                if (ex(scene.coordinates[i].position).is_equal(coordinate))
-                    point[i] = value;
-        if (equations.nops() > 0) {
-            if (unknowns.nops() == 0 || !linear)
-                continue;
-            ex solution;
-            try {
-                solution = GiNaC::lsolve(equations, unknowns);
-            } catch (const budget_exceeded&) {
-                throw; // out of budget: the stage stops, no fallback
-            } catch (const std::exception&) {
-                continue;
-            }
-            if (solution.nops() == 0)
-                continue;
-            GiNaC::exmap free_to_zero;
-            for (const ex& u : unknowns)
-                free_to_zero[u] = 0;
-            for (const ex& equation : solution)
-                for (std::size_t i : others)
-                    if (equation.lhs().is_equal(scene.coordinates[i].position))
-                        point[i] = tidy(equation.rhs().subs(free_to_zero));
-        }
-        bool solves = true;
-        for (const ex& g : gradient)
-            solves = solves && vanishes(evaluate_at(g, scene, point));
-        if (solves)
-            points.push_back(point);
+        if (std::optional<std::vector<ex>> point = point_with_angles(scene, gradient, fixed, others))
+            points.push_back(*point);
     }
     return points;
 }
@@ -326,6 +499,53 @@ stability classify(const GiNaC::matrix& hessian)
     return zero_root ? stability::marginal : stability::stable;
 }
 
+/// Stability decided at the scene's `values` points, for a Hessian whose sign depends
+/// on the parameters: the eigenvalues of the Hessian there. Unknown when there are no
+/// values, when a parameter has no value, when an eigenvalue is too close to zero to
+/// tell its sign, or when the points disagree.
+stability classify_at_values(const model& scene, const GiNaC::matrix& hessian)
+{
+    if (scene.values.empty())
+        return stability::unknown;
+    std::size_t n = hessian.rows();
+    std::optional<stability> agreed;
+    for (const value_point& point : scene.values) {
+        GiNaC::exmap at;
+        for (const auto& [name, value] : point.values)
+            for (const parameter& p : scene.parameters)
+                if (p.name == name)
+                    at[p.symbol] = value;
+        Eigen::MatrixXd numeric_hessian(n, n);
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) {
+                ex entry;
+                try {
+                    entry = hessian(i, j).subs(at).evalf();
+                } catch (const std::exception&) {
+                    return stability::unknown;
+                }
+                if (!is_a<GiNaC::numeric>(entry) || !ex_to<GiNaC::numeric>(entry).is_real())
+                    return stability::unknown;
+                numeric_hessian(i, j) = ex_to<GiNaC::numeric>(entry).to_double();
+            }
+        if (!numeric_hessian.allFinite())
+            return stability::unknown;
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(numeric_hessian, Eigen::EigenvaluesOnly);
+        if (solver.info() != Eigen::Success)
+            return stability::unknown;
+        const Eigen::VectorXd& eigenvalues = solver.eigenvalues();
+        double scale = eigenvalues.cwiseAbs().maxCoeff();
+        double tolerance = 1e-9 * scale * static_cast<double>(n);
+        if (scale == 0 || eigenvalues.cwiseAbs().minCoeff() <= tolerance)
+            return stability::unknown; // a zero eigenvalue cannot be told from rounding here
+        stability kind = eigenvalues.minCoeff() < 0 ? stability::unstable : stability::stable;
+        if (agreed && *agreed != kind)
+            return stability::unknown; // stable at some values, unstable at others
+        agreed = kind;
+    }
+    return *agreed;
+}
+
 } // namespace
 
 ex evaluate_at(const ex& e, const model& scene, const std::vector<ex>& at)
@@ -352,11 +572,27 @@ ex evaluate_at(const ex& e, const model& scene, const std::vector<ex>& at)
 GiNaC::matrix potential_hessian(const model& scene, const ex& potential, const std::vector<ex>& at)
 {
     std::size_t n = scene.coordinates.size();
+    // near a point where q > 0, √(q²) = q: the Hessian comes out without nested roots
+    ex local = potential;
+    for (std::size_t i = 0; i < n && i < at.size(); ++i)
+        if (sign_of(at[i]) == std::optional<int>(1)) {
+            const ex q = scene.coordinates[i].position;
+            local = local.subs(GiNaC::pow(GiNaC::pow(q, 2), GiNaC::wild(0)) == GiNaC::pow(q, 2 * GiNaC::wild(0)));
+        }
     GiNaC::matrix hessian(n, n);
     for (std::size_t i = 0; i < n; ++i) {
-        ex first = differentiate(potential, scene.coordinates[i].position);
+        ex first = differentiate(local, scene.coordinates[i].position);
         for (std::size_t j = i; j < n; ++j) {
             ex entry = tidy(evaluate_at(differentiate(first, scene.coordinates[j].position), scene, at));
+            if (has_trigonometric(entry)) {
+                // at a point given through a parameter (θ = th0): sin² th0 = 1 − cos² th0
+                try {
+                    entry = tidy(reduce_trigonometric(entry));
+                } catch (const budget_exceeded&) {
+                    throw; // out of budget: the stage stops, no fallback
+                } catch (const std::exception&) {
+                }
+            }
             hessian(i, j) = entry;
             hessian(j, i) = entry;
         }
@@ -376,28 +612,59 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
         const std::vector<ex>& at = *scene.equilibrium;
         for (std::size_t i = 0; i < n; ++i) {
             ex slope = evaluate_at(gradient[i], scene, at);
-            if (!vanishes(simplify.canonical(slope)))
+            if (!vanishes_identically(simplify.canonical(slope)))
                 throw computation_error("the equilibrium given is not one: ∂V/∂" + scene.coordinates[i].name + " = " +
                                         message_text(slope.expand()) + " there, not 0");
         }
         result.given = true;
-        result.points.push_back({at, stability::unknown});
+        GiNaC::matrix hessian = potential_hessian(scene, potential, at);
+        stability kind = classify(hessian);
+        result.points.push_back({at, kind == stability::unknown ? classify_at_values(scene, hessian) : kind});
     } else {
+        // A slope that no coordinate enters cannot vanish anywhere (Atwood's machine).
+        for (std::size_t i = 0; i < n; ++i) {
+            bool constant = true;
+            for (const coordinate& c : scene.coordinates)
+                constant = constant && !gradient[i].has(c.position);
+            if (constant && !vanishes(gradient[i]))
+                throw computation_error("no equilibrium: ∂U/∂" + scene.coordinates[i].name + " = " +
+                                        message_text(tidy(gradient[i])) + " ≠ 0 everywhere");
+        }
+        // Spring lengths √(q²): solved on the physical branch q > 0, where √(q²) = q.
+        std::pair<std::vector<bool>, ex> on_branch = on_positive_branch(scene, potential);
+        const std::vector<bool>& branch = on_branch.first;
+        const ex& branch_potential = on_branch.second;
+        std::vector<ex> branch_gradient;
+        for (const coordinate& c : scene.coordinates)
+            branch_gradient.push_back(differentiate(branch_potential, c.position));
+        // stability from the Hessian on the branch, else at the `values` points
+        auto kind_at = [&](const std::vector<ex>& at) {
+            GiNaC::matrix hessian = potential_hessian(scene, branch_potential, at);
+            stability kind = classify(hessian);
+            return kind == stability::unknown ? classify_at_values(scene, hessian) : kind;
+        };
         std::vector<std::vector<ex>> points;
         if (n == 1) {
-            for (const ex& root : solve_one(gradient[0], scene.coordinates[0].position))
+            for (const ex& root : solve_one(branch_gradient[0], scene.coordinates[0].position))
                 points.push_back({root});
         } else {
-            points = solve_several(scene, gradient);
+            points = solve_several(scene, branch_gradient, kind_at);
         }
-        if (points.empty())
+        for (const std::vector<ex>& point : points) {
+            bool kept = true;
+            for (std::size_t i = 0; i < n && kept; ++i)
+                kept = !branch[i] || sign_of(point[i]) == std::optional<int>(1);
+            for (std::size_t i = 0; i < n && kept; ++i)
+                kept = vanishes_identically(evaluate_at(branch_gradient[i], scene, point));
+            if (kept)
+                result.points.push_back({point, stability::unknown});
+        }
+        if (result.points.empty())
             throw computation_error("no equilibrium found: ∂V/∂q = 0 could not be solved in closed form; "
                                     "give one with an `equilibrium` line");
-        for (const std::vector<ex>& point : points)
-            result.points.push_back({point, stability::unknown});
+        for (equilibrium_point& point : result.points)
+            point.kind = kind_at(point.position);
     }
-    for (equilibrium_point& point : result.points)
-        point.kind = classify(potential_hessian(scene, potential, point.position));
     result.chosen = 0;
     for (stability preferred : {stability::stable, stability::marginal, stability::unknown}) {
         auto found = std::find_if(result.points.begin(), result.points.end(),

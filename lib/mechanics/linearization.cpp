@@ -44,10 +44,13 @@ std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const 
                                             const GiNaC::symbol& w)
 {
     std::size_t n = kinetic.rows();
+    // gcd and divide take polynomials: functions of the parameters (cos(th0) at an
+    // equilibrium given through a parameter) become symbols here and are put back below
+    GiNaC::exmap atoms;
     GiNaC::matrix pencil(n, n);
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j)
-            pencil(i, j) = potential(i, j) - w * kinetic(i, j);
+            pencil(i, j) = (potential(i, j) - w * kinetic(i, j)).to_rational(atoms);
     ex det = fraction_free_determinant(pencil).normal();
     ex fraction = det.numer_denom();
     ex numerator = fraction.op(0).expand();
@@ -59,8 +62,11 @@ std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const 
     for (const ex& c : coefficients)
         if (!c.is_zero())
             content = content.is_zero() ? c : GiNaC::gcd(content, c);
-    if (content.is_zero())
+    if (content.is_zero()) {
+        for (ex& c : coefficients)
+            c = c.subs(atoms);
         return coefficients;
+    }
     int flip = (denominator_sign && *denominator_sign < 0) ? -1 : 1;
     std::optional<int> leading = sign_of(coefficients.back() / content);
     if (leading && *leading < 0)
@@ -69,7 +75,7 @@ std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const 
         ex quotient;
         if (!GiNaC::divide(c, content, quotient))
             quotient = (c / content).normal();
-        c = factor_if_quick(flip * quotient);
+        c = factor_if_quick(flip * quotient).subs(atoms);
     }
     return coefficients;
 }

@@ -166,7 +166,7 @@ std::vector<ex> scaled_mode(std::vector<ex> a, const surd& root)
 /// ζ = (Σ_j w_j q_j)/√norm² with w = T a, written as ±√(w_p²/norm²)·(q_p + Σ_j (w_j/w_p) q_j)
 /// for the first coordinate p with w_p ≠ 0, each part reduced to c0 + c1·s and
 /// rationalized. Nothing if the sign of w_p cannot be decided.
-std::optional<ex> clean_normal_coordinate(const model& scene, const std::vector<ex>& weights,
+std::optional<ex> clean_normal_coordinate(const std::vector<ex>& displacements, const std::vector<ex>& weights,
                                           const ex& norm_squared, const surd& r)
 {
     try {
@@ -179,7 +179,7 @@ std::optional<ex> clean_normal_coordinate(const model& scene, const std::vector<
         std::optional<int> sign = sign_with(weights[pivot], r);
         ex combination = 0;
         for (std::size_t j = 0; j < weights.size(); ++j)
-            combination += fold_surd(simplify_with(weights[j] / weights[pivot], r), r) * scene.coordinates[j].position;
+            combination += fold_surd(simplify_with(weights[j] / weights[pivot], r), r) * displacements[j];
         if (!sign || *sign == 0)
             return std::nullopt; // (w_p/√norm² written out is longer than the plain sum)
         ex scale_squared = simplify_with(weights[pivot] * weights[pivot] / norm_squared, r);
@@ -206,8 +206,8 @@ struct closed_modes {
     std::vector<ex> normal_coordinates;
 };
 
-closed_modes solve_modes(const model& scene, const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
-                         const std::vector<ex>& coefficients, const GiNaC::symbol& w)
+closed_modes solve_modes(const std::vector<ex>& displacements, const GiNaC::matrix& kinetic,
+                         const GiNaC::matrix& potential, const std::vector<ex>& coefficients, const GiNaC::symbol& w)
 {
     closed_modes result;
     std::optional<std::vector<closed_root>> roots = closed_form_roots(coefficients, w);
@@ -260,9 +260,9 @@ closed_modes solve_modes(const model& scene, const GiNaC::matrix& kinetic, const
             for (std::size_t i = 0; i < n; ++i)
                 weight += a[i] * kinetic(i, j);
             weights.push_back(simplify_with(weight, surds[k]));
-            coordinate_sum += weights.back() * scene.coordinates[j].position;
+            coordinate_sum += weights.back() * displacements[j];
         }
-        if (std::optional<ex> clean = clean_normal_coordinate(scene, weights, norm_squared, surds[k])) {
+        if (std::optional<ex> clean = clean_normal_coordinate(displacements, weights, norm_squared, surds[k])) {
             result.normal_coordinates.push_back(*clean);
             continue;
         }
@@ -301,7 +301,11 @@ modes_result symbolic_modes(const model& scene, const linearization_result& line
     ex polynomial = characteristic.polynomial.expand();
     for (std::size_t k = 0; k <= n; ++k)
         coefficients.push_back(polynomial.coeff(characteristic.omega, static_cast<int>(2 * k)));
-    closed_modes plain = solve_modes(scene, linear.kinetic, linear.potential, coefficients, w);
+    // normal coordinates in the displacements q − q₀ from the equilibrium
+    for (std::size_t i = 0; i < n; ++i)
+        result.displacements.push_back(i < linear.at.size() ? scene.coordinates[i].position - linear.at[i]
+                                                            : ex(scene.coordinates[i].position));
+    closed_modes plain = solve_modes(result.displacements, linear.kinetic, linear.potential, coefficients, w);
     result.closed_form = plain.closed_form;
     result.frequencies = plain.frequencies;
     result.modes = plain.modes;
@@ -311,7 +315,10 @@ modes_result symbolic_modes(const model& scene, const linearization_result& line
     if (std::optional<GiNaC::exmap> in_ratio = ratio_substitution(scene)) {
         GiNaC::matrix kinetic = ex_to<GiNaC::matrix>(linear.kinetic.subs(*in_ratio));
         GiNaC::matrix potential = ex_to<GiNaC::matrix>(linear.potential.subs(*in_ratio));
-        closed_modes ratio = solve_modes(scene, kinetic, potential,
+        std::vector<ex> displacements;
+        for (const ex& d : result.displacements)
+            displacements.push_back(d.subs(*in_ratio));
+        closed_modes ratio = solve_modes(displacements, kinetic, potential,
                                          characteristic_coefficients(kinetic, potential, w), w);
         if (ratio.closed_form) {
             result.frequencies_in_ratio = ratio.frequencies;

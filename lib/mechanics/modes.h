@@ -16,7 +16,8 @@ struct modes_result {
     bool closed_form = false;                 ///< false: no closed form found (numeric only)
     std::vector<GiNaC::ex> frequencies;       ///< ω², ascending where the order is known
     std::vector<std::vector<GiNaC::ex>> modes;///< one mode vector per frequency
-    std::vector<GiNaC::ex> normal_coordinates;///< ζ_k = (Aᵀ T q)_k with Aᵀ T A = I
+    std::vector<GiNaC::ex> normal_coordinates;///< ζ_k = (Aᵀ T (q − q₀))_k with Aᵀ T A = I
+    std::vector<GiNaC::ex> displacements;     ///< q − q₀ per coordinate (q where q₀ = 0)
     /// The same with the scene's `ratio` substituted (m -> rho*M), if it has one.
     std::vector<GiNaC::ex> frequencies_in_ratio;
     std::vector<std::vector<GiNaC::ex>> modes_in_ratio;

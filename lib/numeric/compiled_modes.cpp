@@ -698,6 +698,11 @@ std::vector<numeric_modes> numeric_normal_modes(const model& scene, const linear
                 throw computation_error("the frequencies are not finite at the values on line "
                                         + std::to_string(point.where.line));
             }
+        // echo every value the user gave, also those the modes do not need, in declared order
+        modes.values.clear();
+        for (std::size_t k = 0; k < scene.parameters.size(); ++k)
+            if (given[k])
+                modes.values.emplace_back(scene.parameters[k].name, values[k]);
         results.push_back(std::move(modes));
     }
     return results;

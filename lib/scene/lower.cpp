@@ -81,6 +81,7 @@ private:
             lower_limit(s);
         } else if (k == "values") {
             scene_.values.push_back(lower_values(s));
+            value_statements_.push_back(&s);
         } else if (k == "initial") {
             lower_initial(s);
         } else if (k == "simulate") {
@@ -159,6 +160,8 @@ private:
         p.where = n.where;
         p.mass = lower(*s.value, expr_context{"a mass", false});
         p.position = lower_vector(*s.vector, expr_context{"a position"});
+        if (s.vector->components.size() == 3)
+            spatial_point_ = true;
         scene_.points.push_back(std::move(p));
     }
 
@@ -177,6 +180,8 @@ private:
             component = (component / norm).normal();
         g.direction = d;
         scene_.gravity = g;
+        if (s.vector->components.size() == 3)
+            spatial_gravity_ = s.vector->where;
     }
 
     std::vector<GiNaC::ex> lower_endpoint(const endpoint& e)
@@ -445,10 +450,11 @@ private:
             throw scene_error(s.where, "a limit is given twice");
         const name_ref& n = s.names[0];
         auto found = names_.find(n.name);
-        if (found == names_.end() || (found->second.name_kind != name_entry::kind::ratio &&
-                                      found->second.name_kind != name_entry::kind::parameter))
-            throw scene_error(n.where, quote(n.name) + " is not a ratio or a parameter");
+        if (found != names_.end() && found->second.name_kind != name_entry::kind::ratio &&
+            found->second.name_kind != name_entry::kind::parameter)
+            throw scene_error(n.where, quote(n.name) + " is not a ratio");
         scene_.limit = limit_request{n.name, s.limit_target->name == "oo"};
+        limit_name_ = n; // checked against the `ratio` line (before or after) in finish()
     }
 
     GiNaC::ex constant_value(const expr_node& node, const char* what)
@@ -582,13 +588,70 @@ private:
     {
         if (scene_.coordinates.empty() && scene_.bodies.empty())
             throw scene_error({source_.file(), 1, 1}, "the scene declares no coordinates (`coordinates q1 q2 ...`)");
-        if (scene_.limit && scene_.ratio && scene_.limit->variable != scene_.ratio->name &&
-            names_.at(scene_.limit->variable).name_kind != name_entry::kind::parameter)
-            throw scene_error({source_.file(), 1, 1}, "the limit's variable is not declared");
+        if (limit_name_ && (!scene_.ratio || scene_.ratio->name != limit_name_->name))
+            throw scene_error(limit_name_->where, quote(limit_name_->name) + " is not a declared ratio: a limit "
+                                                  "is taken in the scene's `ratio`, as `ratio rho = m/M` then "
+                                                  "`limit rho -> 0`");
+        // Planar points move in the plane (x, y): a third component of gravity would act on nothing.
+        if (spatial_gravity_ && !scene_.points.empty() && !spatial_point_ && scene_.bodies.empty())
+            throw scene_error(*spatial_gravity_, "the points are planar (x, y), so gravity has two components "
+                                                 "`(dx, dy)`; give the points three components to use a third");
+        for (std::size_t k = 0; k < value_statements_.size(); ++k)
+            check_physical(scene_, scene_.values[k], *value_statements_[k]);
     }
 
+public:
+    /// Rejects a `values` point that makes a mass, a body's dimension or moment zero or
+    /// negative, with the caret at the value of a parameter the quantity depends on.
+    static void check_physical(const model& scene, const value_point& point, const statement& s)
+    {
+        GiNaC::exmap at;
+        for (const auto& [name, value] : point.values)
+            for (const parameter& p : scene.parameters)
+                if (p.name == name)
+                    at[p.symbol] = value;
+        auto check = [&](const GiNaC::ex& quantity, const std::string& what) {
+            if (GiNaC::is_a<GiNaC::numeric>(quantity))
+                return; // a constant: the statement itself was checked
+            GiNaC::ex number;
+            try {
+                number = quantity.subs(at).evalf();
+            } catch (const std::exception&) {
+                return; // not defined at these values: the computation says so
+            }
+            if (!GiNaC::is_a<GiNaC::numeric>(number) || !GiNaC::ex_to<GiNaC::numeric>(number).is_real() ||
+                GiNaC::ex_to<GiNaC::numeric>(number).is_positive())
+                return;
+            auto culprit = [&]() -> source_location {
+                for (const assignment& a : s.assignments)
+                    for (const parameter& p : scene.parameters)
+                        if (p.name == a.target.name && quantity.has(p.symbol))
+                            return a.value->where;
+                return s.where;
+            };
+            throw scene_error(culprit(), "these values make " + what + " " +
+                                         (GiNaC::ex_to<GiNaC::numeric>(number).is_zero() ? "zero" : "negative") +
+                                         "; it must be positive");
+        };
+        for (const point_mass& p : scene.points)
+            check(p.mass, "the mass of point " + quote(p.name));
+        for (const rigid_body& b : scene.bodies) {
+            if (b.body_kind != rigid_body::kind::region)
+                check(b.mass, "the mass of body " + quote(b.name));
+            for (const GiNaC::ex& d : b.dimensions)
+                check(d, "a dimension of body " + quote(b.name));
+            for (const GiNaC::ex& m : b.moments)
+                check(m, "a moment of inertia of body " + quote(b.name));
+        }
+    }
+
+private:
     const source_text& source_;
     file_reader read_file_;
+    std::optional<name_ref> limit_name_;
+    std::optional<source_location> spatial_gravity_;
+    bool spatial_point_ = false;
+    std::vector<const statement*> value_statements_;
     std::map<std::string, source_location> points_;
     bool seen_title_ = false;
     std::optional<source_location> energy_line_;
@@ -618,7 +681,9 @@ void add_values(model& scene, const std::string& text)
             throw scene_error({"--values", 1, 1}, "give values as `a=1,b=2`");
         lowering lower(source, {});
         lower.adopt_names(scene);
-        scene.values.push_back(lower.values_line(ast.statements[0]));
+        value_point point = lower.values_line(ast.statements[0]);
+        lowering::check_physical(scene, point, ast.statements[0]);
+        scene.values.push_back(point);
     } catch (scene_error& error) {
         source_location at = error.where();
         at.column = std::max(1, at.column - static_cast<int>(prefix.size()));

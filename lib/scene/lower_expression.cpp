@@ -79,7 +79,7 @@ const std::set<std::string>& reserved_names()
         "omega", "torque", "equilibrium", "ratio", "limit", "values", "initial", "simulate",
         "use", "want", "mass", "at", "along", "between", "and", "rest", "region", "density",
         "inertia", "axis", "orientation", "until", "step", "method", "tolerance", "t", "Pi",
-        "pi", "oo", "dot", "T", "V", "L"};
+        "pi", "oo", "dot"};
     return names;
 }
 
