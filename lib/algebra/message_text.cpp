@@ -35,8 +35,13 @@ std::string message_text(const ex& e)
             parts.push_back(is_a<GiNaC::add>(e) ? message_text(operand) : wrapped(operand));
         std::sort(parts.begin(), parts.end());
         std::string out;
+        if (is_a<GiNaC::mul>(e) && parts.size() > 1 && parts.front() == "-1") { // -E*q0, not -1*E*q0
+            parts.erase(parts.begin());
+            out = "-";
+        }
         for (const std::string& part : parts)
-            out += (out.empty() ? "" : (is_a<GiNaC::add>(e) ? (part.rfind('-', 0) == 0 ? "" : "+") : "*")) + part;
+            out += (out.empty() || out == "-" ? "" : (is_a<GiNaC::add>(e) ? (part.rfind('-', 0) == 0 ? "" : "+") : "*")) +
+                   part;
         return out;
     }
     if (is_a<GiNaC::power>(e))
