@@ -8,6 +8,7 @@
  *  with the closed forms at seeded random parameter points. */
 #include "engine/analysis.h"
 #include "mechanics/gyroscopic.h"
+#include "numeric/verification.h"
 #include "scene_helpers.h"
 
 #include <catch2/catch.hpp>
@@ -346,4 +347,30 @@ TEST_CASE("gyroscopic: Kelvin–Tait–Chetaev verdicts", "[gyroscopic]")
                                     "equilibrium x = 0, y = 0\n"),
                                small_oscillations);
     CHECK(minimum->result.equilibria->points.front().kind == stability::stable);
+}
+
+TEST_CASE("gyroscopic: verification checks G, the polynomial and ω against L as built", "[gyroscopic]")
+{
+    auto run = analyse("parameters m q0 B k\ncoordinates x y\n"
+                       "L = 1/2*m*(x'^2 + y'^2) + 1/2*q0*B*(x*y' - y*x') - 1/2*k*(x^2 + y^2)\n"
+                       "equilibrium x = 0, y = 0\n",
+                       small_oscillations);
+    const analysis& a = run->result;
+    verification_input input{&*a.lagrangian, nullptr, &*a.equilibria, &*a.linearization, &*a.characteristic,
+                             &*a.modes};
+    verification_result checked = verify_results(run->scene, input, small_oscillations);
+    REQUIRE(checked.entries.size() == 4);
+    for (const verification_entry& e : checked.entries)
+        CHECK(e.checked);
+    // G with the wrong sign, or a polynomial without G, is caught.
+    linearization_result flipped = *a.linearization;
+    flipped.gyroscopic = GiNaC::ex_to<GiNaC::matrix>(flipped.gyroscopic.mul_scalar(-1));
+    input.linearization = &flipped;
+    REQUIRE_THROWS_AS(verify_results(run->scene, input, small_oscillations), computation_error);
+    linearization_result without = *a.linearization;
+    without.gyroscopic = GiNaC::matrix(2, 2);
+    characteristic_result plain = characteristic_polynomial(run->scene, without);
+    input.linearization = &*a.linearization;
+    input.characteristic = &plain;
+    REQUIRE_THROWS_AS(verify_results(run->scene, input, small_oscillations), computation_error);
 }
