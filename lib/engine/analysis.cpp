@@ -147,6 +147,14 @@ const std::vector<stage_definition>& stage_table()
         {"modes", {product::frequencies, product::modes, product::normal_coordinates}, {}, {"characteristic"},
          has_coordinates,
          [](stage_context& c) {
+             if (c.result.linearization->has_gyroscopic() &&
+                 (c.wants(product::modes) || c.wants(product::normal_coordinates))) {
+                 const std::string why = "with a gyroscopic matrix G the modes are complex (see `numeric`) and there "
+                                         "are no real normal coordinates";
+                 if (!c.by_default)
+                     throw computation_error("`modes` and `normal_coordinates` are not computed symbolically: " + why);
+                 c.result.notes.push_back("modes and normal coordinates not computed: " + why);
+             }
              c.result.modes = c.result.linearization->has_gyroscopic()
                                   ? gyroscopic_modes(c.scene, *c.result.linearization, *c.result.characteristic)
                                   : symbolic_modes(c.scene, *c.result.linearization, *c.result.characteristic);
