@@ -374,3 +374,18 @@ TEST_CASE("gyroscopic: verification checks G, the polynomial and ω against L as
     input.characteristic = &plain;
     REQUIRE_THROWS_AS(verify_results(run->scene, input, small_oscillations), computation_error);
 }
+
+TEST_CASE("gyroscopic: symbolic modes and asymptotics are refused, not left empty", "[gyroscopic]")
+{
+    model scene = load(charge + "equilibrium x = 0, y = 0\n");
+    REQUIRE_THROWS_MATCHES(analyze(scene, {product::modes}), computation_error,
+                           Catch::Matchers::Contains("the modes are complex"));
+    analysis by_default = analyze(scene);
+    REQUIRE(by_default.modes);
+    CHECK(by_default.modes->gyroscopic);
+    CHECK(by_default.modes->modes.empty());
+    bool noted = false;
+    for (const std::string& note : by_default.notes)
+        noted = noted || note.find("modes and normal coordinates not computed") != std::string::npos;
+    CHECK(noted);
+}
