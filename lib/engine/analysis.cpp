@@ -5,6 +5,7 @@
 #include "scene/lower.h"
 
 #include "numeric/free_body_motion.h"
+#include "numeric/gyroscopic_modes.h"
 
 #include <chrono>
 #include <functional>
@@ -146,13 +147,32 @@ const std::vector<stage_definition>& stage_table()
         {"modes", {product::frequencies, product::modes, product::normal_coordinates}, {}, {"characteristic"},
          has_coordinates,
          [](stage_context& c) {
-             c.result.modes = symbolic_modes(c.scene, *c.result.linearization, *c.result.characteristic);
+             if (c.result.linearization->has_gyroscopic() &&
+                 (c.wants(product::modes) || c.wants(product::normal_coordinates))) {
+                 const std::string why = "with a gyroscopic matrix G the modes are complex (see `numeric`) and there "
+                                         "are no real normal coordinates";
+                 if (!c.by_default)
+                     throw computation_error("`modes` and `normal_coordinates` are not computed symbolically: " + why);
+                 c.result.notes.push_back("modes and normal coordinates not computed: " + why);
+             }
+             c.result.modes = c.result.linearization->has_gyroscopic()
+                                  ? gyroscopic_modes(c.scene, *c.result.linearization, *c.result.characteristic)
+                                  : symbolic_modes(c.scene, *c.result.linearization, *c.result.characteristic);
          }, "small oscillations", "symbolic modes"},
         {"asymptotic", {product::asymptotic}, {}, {"modes"}, has_coordinates,
-         [](stage_context& c) { c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes); },
+         [](stage_context& c) {
+             if (c.result.modes->gyroscopic)
+                 throw computation_error("`asymptotic` is not computed for a Lagrangian with a part linear in the "
+                                         "velocities (gyroscopic terms)");
+             c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes);
+         },
          "small oscillations", "symbolic modes"},
         {"numeric", {product::numeric}, {}, {"linearization"}, has_coordinates,
-         [](stage_context& c) { c.result.numeric = numeric_normal_modes(c.scene, *c.result.linearization); },
+         [](stage_context& c) {
+             c.result.numeric = c.result.linearization->has_gyroscopic()
+                                    ? numeric_gyroscopic_modes(c.scene, *c.result.linearization)
+                                    : numeric_normal_modes(c.scene, *c.result.linearization);
+         },
          "small oscillations", "small oscillations"},
         {"simulation", {product::simulation}, {}, {"equations"}, any_scene,
          [](stage_context& c) {

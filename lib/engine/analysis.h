@@ -8,6 +8,7 @@
 #include "mechanics/lagrangian.h"
 #include "mechanics/asymptotic.h"
 #include "mechanics/equilibrium.h"
+#include "mechanics/gyroscopic.h"
 #include "mechanics/linearization.h"
 #include "mechanics/modes.h"
 #include "bodies/euler.h"

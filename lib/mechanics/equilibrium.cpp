@@ -4,6 +4,8 @@
  *  linear system for the rest), and the stability of each from its Hessian. */
 #include "mechanics/equilibrium.h"
 
+#include "mechanics/gyroscopic.h"
+
 #include "algebra/budget.h"
 #include "algebra/calculus.h"
 #include "algebra/exact_matrix.h"
@@ -665,6 +667,9 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
         for (equilibrium_point& point : result.points)
             point.kind = kind_at(point.position);
     }
+    if (!lagrangian.gyroscopic.is_zero()) // Kelvin–Tait–Chetaev: G can stabilize a maximum
+        for (equilibrium_point& point : result.points)
+            point.kind = gyroscopic_stability_at(scene, lagrangian, point.position, point.kind, simplify);
     result.chosen = 0;
     for (stability preferred : {stability::stable, stability::marginal, stability::unknown}) {
         auto found = std::find_if(result.points.begin(), result.points.end(),

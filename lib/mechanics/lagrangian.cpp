@@ -23,7 +23,9 @@ GiNaC::ex squared_length(const std::vector<GiNaC::ex>& v)
     return sum;
 }
 
-/// Splits L by its degree in the velocities: L = L2 + L1 + L0, T = L2, V = −L0.
+/// Splits L by its degree in the velocities: L = L2 + L1 + L0, T = L2, V = −L0 (the
+/// effective potential U: V minus the velocity-free part of T, such as a rotating frame's
+/// centrifugal term).
 void split_by_velocity_degree(const model& scene, lagrangian_result& result)
 {
     GiNaC::symbol scale("scale");
@@ -38,6 +40,36 @@ void split_by_velocity_degree(const model& scene, lagrangian_result& result)
     result.kinetic = l.coeff(scale, 2);
     result.gyroscopic = l.coeff(scale, 1);
     result.potential = -l.coeff(scale, 0);
+}
+
+/// Whether T is a quadratic form in the velocities and V free of them, as built from
+/// the scene: no position or orientation moves with t, the `T` lines are homogeneous of
+/// degree 2 in the velocities and the `V` lines hold none. Otherwise L is split by degree.
+bool kinetic_is_quadratic_form(const model& scene)
+{
+    auto moves = [&](const std::vector<GiNaC::ex>& position) {
+        for (const GiNaC::ex& x : position)
+            if (x.has(scene.time))
+                return true;
+        return false;
+    };
+    for (const point_mass& p : scene.points)
+        if (moves(p.position))
+            return false;
+    for (const rigid_body& b : scene.bodies)
+        if ((b.position && moves(*b.position)) || (b.orientation && moves(*b.orientation)))
+            return false;
+    for (const coordinate& c : scene.coordinates)
+        if (scene.potential_terms.has(c.velocity))
+            return false;
+    if (scene.kinetic_terms.is_zero())
+        return true;
+    GiNaC::symbol scale("scale");
+    GiNaC::exmap scaled;
+    for (const coordinate& c : scene.coordinates)
+        scaled[c.velocity] = scale * c.velocity;
+    GiNaC::ex t = scene.kinetic_terms.subs(scaled).expand();
+    return t.is_polynomial(scale) && t.degree(scale) == 2 && t.ldegree(scale) == 2;
 }
 
 } // namespace
@@ -103,8 +135,9 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
     result.kinetic_built = kinetic;
     result.potential_built = potential;
     result.gyroscopic = 0;
-    if (scene.lagrangian_terms) {
-        result.lagrangian_canonical = simplify.canonical(*scene.lagrangian_terms + kinetic - potential);
+    if (scene.lagrangian_terms || !kinetic_is_quadratic_form(scene)) {
+        result.lagrangian_canonical =
+            simplify.canonical(scene.lagrangian_terms.value_or(GiNaC::ex(0)) + kinetic - potential);
         result.lagrangian = simplify.compact(result.lagrangian_canonical);
         split_by_velocity_degree(scene, result);
         if (result.split) {

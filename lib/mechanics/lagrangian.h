@@ -1,6 +1,6 @@
 /** @file lagrangian.h
- *  The Lagrangian L = T − V from energies, points, gravity and springs, and the
- *  total time derivative with q, q̇, q̈ as plain symbols. */
+ *  The Lagrangian L = T − V from energies, points, gravity and springs, split by degree
+ *  in the velocities into L2 + L1 + L0. */
 #pragma once
 
 #include "algebra/calculus.h"
@@ -19,9 +19,14 @@ struct harmonic_lagrangian;
 struct lagrangian_result {
     GiNaC::ex kinetic_built;   ///< T as built from points and `T` lines, before simplification
     GiNaC::ex potential_built; ///< V as built from gravity, springs and `V` lines
-    GiNaC::ex kinetic;         ///< T simplified (the part of L quadratic in the velocities)
-    GiNaC::ex potential;       ///< V simplified (minus the part of L free of velocities)
-    GiNaC::ex gyroscopic;      ///< the part of L linear in the velocities (0 unless `L` says otherwise)
+    GiNaC::ex kinetic;         ///< L2, the part of L quadratic in the velocities, simplified
+    /// The effective potential U = −L0, minus the part of L free of velocities: V, less the
+    /// velocity-free part of T where positions move with t or `T` lines have one (a rotating
+    /// frame's centrifugal term). Equilibria and the stiffness matrix come from it.
+    GiNaC::ex potential;
+    /// L1 = Σ aᵢ(q) q̇ᵢ, the part of L linear in the velocities (magnetic terms, Coriolis terms
+    /// of a moving frame); 0 when T is a quadratic form and V free of velocities.
+    GiNaC::ex gyroscopic;
     GiNaC::ex lagrangian;      ///< L simplified
     GiNaC::ex lagrangian_canonical; ///< L in canonical trig form (expanded): what the equations use
     bool split = true;         ///< false if L is not a polynomial of degree ≤ 2 in the velocities

@@ -1,6 +1,6 @@
 /** @file linearization.cpp
- *  T and V at an equilibrium (with a check that T is positive definite there),
- *  and the primitive characteristic polynomial det(V − ω²T). */
+ *  T, V and G at an equilibrium (with a check that T is positive definite there),
+ *  and the primitive characteristic polynomial det(V − ω²T + iωG). */
 #include "mechanics/linearization.h"
 
 #include "algebra/calculus.h"
@@ -10,6 +10,7 @@
 #include "algebra/sign.h"
 #include "core/errors.h"
 #include "mechanics/equilibrium.h"
+#include "mechanics/gyroscopic.h"
 
 #include <optional>
 #include <stdexcept>
@@ -38,26 +39,13 @@ std::string free_name(const model& scene, std::string base)
     return base;
 }
 
-} // namespace
-
-std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
-                                            const GiNaC::symbol& w)
+/// The coefficients of a polynomial, lowest degree first, with every common factor
+/// removed and the leading one positive; `denominator_sign` is the sign of the
+/// denominator that was cleared to get them, `atoms` the functions of the parameters
+/// that to_rational made symbols (put back at the end).
+std::vector<ex> primitive(std::vector<ex> coefficients, std::optional<int> denominator_sign,
+                          const GiNaC::exmap& atoms)
 {
-    std::size_t n = kinetic.rows();
-    // gcd and divide take polynomials: functions of the parameters (cos(th0) at an
-    // equilibrium given through a parameter) become symbols here and are put back below
-    GiNaC::exmap atoms;
-    GiNaC::matrix pencil(n, n);
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-            pencil(i, j) = (potential(i, j) - w * kinetic(i, j)).to_rational(atoms);
-    ex det = fraction_free_determinant(pencil).normal();
-    ex fraction = det.numer_denom();
-    ex numerator = fraction.op(0).expand();
-    std::optional<int> denominator_sign = sign_of(fraction.op(1));
-    std::vector<ex> coefficients;
-    for (int k = 0; k <= numerator.degree(w); ++k)
-        coefficients.push_back(numerator.coeff(w, k).expand());
     ex content = 0;
     for (const ex& c : coefficients)
         if (!c.is_zero())
@@ -80,6 +68,63 @@ std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const 
     return coefficients;
 }
 
+} // namespace
+
+bool linearization_result::has_gyroscopic() const
+{
+    for (unsigned i = 0; i < gyroscopic.rows(); ++i)
+        for (unsigned j = 0; j < gyroscopic.cols(); ++j)
+            if (!vanishes(gyroscopic(i, j)))
+                return true;
+    return false;
+}
+
+std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
+                                            const GiNaC::symbol& w)
+{
+    std::size_t n = kinetic.rows();
+    // gcd and divide take polynomials: functions of the parameters (cos(th0) at an
+    // equilibrium given through a parameter) become symbols here and are put back below
+    GiNaC::exmap atoms;
+    GiNaC::matrix pencil(n, n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            pencil(i, j) = (potential(i, j) - w * kinetic(i, j)).to_rational(atoms);
+    ex det = fraction_free_determinant(pencil).normal();
+    ex fraction = det.numer_denom();
+    ex numerator = fraction.op(0).expand();
+    std::vector<ex> coefficients;
+    for (int k = 0; k <= numerator.degree(w); ++k)
+        coefficients.push_back(numerator.coeff(w, k).expand());
+    return primitive(coefficients, sign_of(fraction.op(1)), atoms);
+}
+
+std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
+                                            const GiNaC::matrix& gyroscopic, const GiNaC::symbol& w)
+{
+    std::size_t n = kinetic.rows();
+    GiNaC::symbol x("x");
+    GiNaC::exmap atoms;
+    GiNaC::matrix pencil(n, n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            pencil(i, j) = (potential(i, j) + x * gyroscopic(i, j) + x * x * kinetic(i, j)).to_rational(atoms);
+    ex det = fraction_free_determinant(pencil).normal();
+    ex fraction = det.numer_denom();
+    ex numerator = fraction.op(0).expand();
+    std::vector<ex> coefficients;
+    for (int k = 0; k <= numerator.degree(x); ++k) {
+        ex c = numerator.coeff(x, k).expand();
+        if (k % 2 == 1) {
+            if (!vanishes(c))
+                throw std::logic_error("characteristic_coefficients: G is not antisymmetric");
+            continue;
+        }
+        coefficients.push_back((k % 4 == 0 ? c : -c).expand());
+    }
+    return primitive(coefficients, sign_of(fraction.op(1)), atoms);
+}
+
 linearization_result linearize(const model& scene, const lagrangian_result& lagrangian, const std::vector<ex>& at,
                                const simplifier& simplify)
 {
@@ -89,7 +134,7 @@ linearization_result linearize(const model& scene, const lagrangian_result& lagr
     if (at.size() != n)
         throw std::invalid_argument("linearize: the equilibrium has " + std::to_string(at.size()) +
                                     " values for " + std::to_string(n) + " coordinates");
-    linearization_result result{at, GiNaC::matrix(n, n), GiNaC::matrix(n, n)};
+    linearization_result result{at, GiNaC::matrix(n, n), GiNaC::matrix(n, n), GiNaC::matrix(n, n)};
     ex kinetic = simplify.canonical(lagrangian.kinetic);
     ex potential = simplify.canonical(lagrangian.potential);
     for (std::size_t i = 0; i < n; ++i) {
@@ -101,6 +146,8 @@ linearization_result linearize(const model& scene, const lagrangian_result& lagr
         }
     }
     result.potential = potential_hessian(scene, potential, at);
+    if (!lagrangian.gyroscopic.is_zero())
+        result.gyroscopic = gyroscopic_matrix(scene, simplify.canonical(lagrangian.gyroscopic), at);
     for (std::size_t i = 0; i < n; ++i)
         if (vanishes(result.kinetic(i, i)))
             throw computation_error("coordinate `" + scene.coordinates[i].name +
@@ -120,7 +167,9 @@ characteristic_result characteristic_polynomial(const model& scene, const linear
 {
     characteristic_result result{GiNaC::possymbol(free_name(scene, "omega")), 0};
     GiNaC::possymbol w("W");
-    std::vector<ex> coefficients = characteristic_coefficients(linear.kinetic, linear.potential, w);
+    std::vector<ex> coefficients =
+        linear.has_gyroscopic() ? characteristic_coefficients(linear.kinetic, linear.potential, linear.gyroscopic, w)
+                                : characteristic_coefficients(linear.kinetic, linear.potential, w);
     ex polynomial = 0;
     for (std::size_t k = 0; k < coefficients.size(); ++k)
         polynomial += coefficients[k] * GiNaC::pow(result.omega, static_cast<int>(2 * k));

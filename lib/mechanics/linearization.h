@@ -1,6 +1,7 @@
 /** @file linearization.h
- *  Small oscillations about an equilibrium: the kinetic and potential matrices
- *  T and V there, and the characteristic polynomial det(V − ω²T) made primitive. */
+ *  Small oscillations about an equilibrium: the kinetic, potential and gyroscopic
+ *  matrices T, V and G there, and the characteristic polynomial det(V − ω²T + iωG)
+ *  made primitive. */
 #pragma once
 
 #include "algebra/simplify.h"
@@ -16,7 +17,12 @@ namespace lagrange {
 struct linearization_result {
     std::vector<GiNaC::ex> at;  ///< the equilibrium
     GiNaC::matrix kinetic;      ///< T_ij = ∂²T/∂q̇i∂q̇j at the equilibrium
-    GiNaC::matrix potential;    ///< V_ij = ∂²V/∂qi∂qj at the equilibrium
+    GiNaC::matrix potential;    ///< V_ij = ∂²U/∂qi∂qj at the equilibrium (U = −L0, lagrangian.h)
+    /// G_ij = ∂aⱼ/∂qi − ∂aᵢ/∂qj at the equilibrium, with L1 = Σ aᵢ(q) q̇ᵢ: antisymmetric; the
+    /// linearized equations are T q̈ − G q̇ + V q = 0. All zero when L has no part linear in
+    /// the velocities.
+    GiNaC::matrix gyroscopic;
+    bool has_gyroscopic() const; ///< whether some entry of G is not identically 0
 };
 
 /// T and V at `at`. Throws computation_error if T is not positive definite
@@ -26,15 +32,22 @@ linearization_result linearize(const model& scene, const lagrangian_result& lagr
 
 struct characteristic_result {
     GiNaC::possymbol omega;  ///< named "omega" unless the scene uses that name
-    GiNaC::ex polynomial;    ///< det(V − ω²T) made primitive, coefficients factored
+    /// det(V − ω²T + iωG) made primitive, coefficients factored: real, and even in ω
+    /// (G is antisymmetric), so a polynomial in ω² whether or not G is 0.
+    GiNaC::ex polynomial;
 };
 
-/// det(V − ω²T) as a polynomial in ω, made primitive (see characteristic_coefficients).
+/// det(V − ω²T + iωG) as a polynomial in ω, made primitive (see characteristic_coefficients).
 characteristic_result characteristic_polynomial(const model& scene, const linearization_result& linear);
 
 /// The primitive polynomial in w = ω² from det(V − w T): its coefficients, lowest
 /// degree first, with every common factor removed and the leading one positive.
 std::vector<GiNaC::ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
                                                    const GiNaC::symbol& w);
+
+/// The same for det(V − wT + i√w G), w = ω²: det(V + xG + x²T) in x = iω, whose odd
+/// coefficients vanish for an antisymmetric G, with x² = −w.
+std::vector<GiNaC::ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
+                                                   const GiNaC::matrix& gyroscopic, const GiNaC::symbol& w);
 
 } // namespace lagrange

@@ -14,6 +14,9 @@ namespace lagrange {
 
 struct modes_result {
     bool closed_form = false;                 ///< false: no closed form found (numeric only)
+    /// L has a part linear in the velocities (G ≠ 0, mechanics/gyroscopic.h): `frequencies`
+    /// hold ω ≥ 0, not ω², and there are no real modes or normal coordinates.
+    bool gyroscopic = false;
     std::vector<GiNaC::ex> frequencies;       ///< ω², ascending where the order is known
     std::vector<std::vector<GiNaC::ex>> modes;///< one mode vector per frequency
     std::vector<GiNaC::ex> normal_coordinates;///< ζ_k = (Aᵀ T (q − q₀))_k with Aᵀ T A = I

@@ -11,6 +11,7 @@
 
 #include <Eigen/Dense>
 
+#include <complex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,12 @@ struct numeric_modes {
     std::vector<double> error;                          ///< bound on the relative error of each ω;
                                                         ///< for a zero mode (ω = 0) the absolute error
     std::string method;                                 ///< which numeric path gave these
+    /// With a gyroscopic matrix G (numeric/gyroscopic_modes.h): `omega` holds the n
+    /// frequencies from the upper half of `eigenvalues`, `modes` is empty and
+    /// `complex_modes` holds their vectors; empty otherwise.
+    std::vector<std::complex<double>> eigenvalues;      ///< all 2n s with q ∝ x e^{st}, quadratic_modes order
+    Eigen::MatrixXcd complex_modes;                     ///< n × n, x* T x = 1 (quadratic_modes.h)
+    std::string stability;                              ///< "stable", "marginal" or "unstable" at this point
 };
 
 /// The numeric routes from T and V to the modes.

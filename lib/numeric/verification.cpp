@@ -4,6 +4,7 @@
 
 #include "numeric/double_double.h"
 #include "numeric/expression_program.h"
+#include "numeric/quadratic_modes.h"
 #include "numeric/values.h"
 
 #include <Eigen/Dense>
@@ -450,6 +451,35 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
                     fail("the equilibrium", "∂U/∂" + c.scene.coordinates[i].name, where, slope, 0);
             }
         }
+        std::optional<Eigen::MatrixXd> gyroscopic;
+        if (linear.has_gyroscopic())
+            gyroscopic = matrix_at(linear.gyroscopic, p.map);
+        if (gyroscopic) {
+            // uᵀGv = ∂²L/∂(q along u)∂(q̇ along v) − the same with u and v exchanged; each mixed
+            // derivative by polarization: ½(f''(t, t) − f''(t, 0) − f''(0, t)).
+            auto along = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& v, double a, double b) {
+                std::vector<double> s = rest;
+                for (std::size_t i = 0; i < n; ++i) {
+                    s[i] += a * u[static_cast<Eigen::Index>(i)];
+                    s[n + i] = b * v[static_cast<Eigen::Index>(i)];
+                }
+                return c.l_at(s);
+            };
+            auto mixed = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+                double both = value_of(second_derivative([&](double t) { return along(u, v, t, t); }));
+                double positions = value_of(second_derivative([&](double t) { return along(u, v, t, 0); }));
+                double velocities = value_of(second_derivative([&](double t) { return along(u, v, 0, t); }));
+                return (both - positions - velocities) / 2;
+            };
+            Eigen::VectorXd u(static_cast<Eigen::Index>(n)), v(static_cast<Eigen::Index>(n));
+            for (std::size_t i = 0; i < n; ++i) {
+                u[static_cast<Eigen::Index>(i)] = c.random.uniform(-1, 1);
+                v[static_cast<Eigen::Index>(i)] = c.random.uniform(-1, 1);
+            }
+            const double reference = mixed(u, v) - mixed(v, u), form = u.dot(*gyroscopic * v);
+            if (!close(form, reference, (size + gyroscopic->cwiseAbs().sum()) * u.norm() * v.norm()))
+                fail("the linearization", "uᵀGv along random u, v", where, form, reference);
+        }
         for (int direction = 0; direction < 2; ++direction) {
             Eigen::VectorXd v(static_cast<Eigen::Index>(n));
             for (std::size_t i = 0; i < n; ++i)
@@ -476,8 +506,9 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
     if (check_point)
         entries.push_back({"equilibrium", "∂U/∂q = 0 by finite differences of L as built" + points, true});
     entries.push_back({"linearization",
-                       "quadratic forms of T and V along random directions against second differences of "
-                       "L as built" + points, true});
+                       std::string("quadratic forms of T and V") + (linear.has_gyroscopic() ? " and the form of G" : "") +
+                           " along random directions against second differences of L as built" + points,
+                       true});
 }
 
 // ---- the characteristic polynomial, the frequencies, the modes ----
@@ -486,6 +517,7 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
 struct numeric_pencil {
     const parameter_point* point;
     Eigen::MatrixXd kinetic, potential;
+    Eigen::MatrixXd gyroscopic; ///< zero without a part of L linear in the velocities
 };
 
 std::vector<numeric_pencil> pencils(const checker& c, const linearization_result& linear)
@@ -497,7 +529,14 @@ std::vector<numeric_pencil> pencils(const checker& c, const linearization_result
         if (!kinetic || !potential || kinetic->ldlt().info() != Eigen::Success ||
             kinetic->llt().info() != Eigen::Success)
             continue;
-        result.push_back({&p, *kinetic, *potential});
+        Eigen::MatrixXd gyroscopic = Eigen::MatrixXd::Zero(kinetic->rows(), kinetic->cols());
+        if (linear.has_gyroscopic()) {
+            std::optional<Eigen::MatrixXd> g = matrix_at(linear.gyroscopic, p.map);
+            if (!g)
+                continue;
+            gyroscopic = *g;
+        }
+        result.push_back({&p, *kinetic, *potential, gyroscopic});
         if (result.size() == points_wanted)
             break;
     }
@@ -515,7 +554,6 @@ verification_entry check_characteristic(const model& scene, const linearization_
     if (!p.is_polynomial(characteristic.omega) || p.degree(characteristic.omega) != static_cast<int>(2 * n))
         throw computation_error("verification failed: the characteristic polynomial is not of degree " +
                                 std::to_string(2 * n) + " in " + characteristic.omega.get_name());
-    (void)linear;
     for (const numeric_pencil& pencil : pencils) {
         // p(ω)/det(V − ω²T) is the same at every ω (the factor removed to make p primitive).
         std::optional<double> ratio;
@@ -523,9 +561,12 @@ verification_entry check_characteristic(const model& scene, const linearization_
         for (int k = 0; compared < static_cast<int>(n) + 2 && k < 4 * static_cast<int>(n) + 8; ++k) {
             const double omega = 0.375 + 0.25 * k;
             const double w = omega * omega;
-            Eigen::MatrixXd pencil_at = pencil.potential - w * pencil.kinetic;
-            const double det = pencil_at.partialPivLu().determinant();
-            const double size = std::pow(pencil.potential.norm() + w * pencil.kinetic.norm(), static_cast<double>(n));
+            Eigen::MatrixXcd pencil_at = (pencil.potential - w * pencil.kinetic).cast<std::complex<double>>() +
+                                         std::complex<double>(0, omega) * pencil.gyroscopic.cast<std::complex<double>>();
+            const double det = pencil_at.partialPivLu().determinant().real();
+            const double size = std::pow(
+                pencil.potential.norm() + w * pencil.kinetic.norm() + omega * pencil.gyroscopic.norm(),
+                static_cast<double>(n));
             if (std::abs(det) < 1e-6 * size)
                 continue; // too near a root for the ratio to be well conditioned
             GiNaC::exmap at = pencil.point->map;
@@ -539,7 +580,9 @@ verification_entry check_characteristic(const model& scene, const linearization_
                 if (r == 0 || !std::isfinite(r))
                     break;
             } else if (!close(r, *ratio, std::abs(*ratio))) {
-                fail("the characteristic polynomial", "p(ω)/det(V − ω²T) at ω = " + message_number(omega),
+                fail("the characteristic polynomial",
+                     std::string(linear.has_gyroscopic() ? "p(ω)/det(V − ω²T + iωG)" : "p(ω)/det(V − ω²T)") +
+                         " at ω = " + message_number(omega),
                      at_point(*pencil.point), r, *ratio);
             }
             ++compared;
@@ -547,9 +590,53 @@ verification_entry check_characteristic(const model& scene, const linearization_
     }
     if (pencils.empty())
         return {"characteristic", "not checked: T and V are not real at any parameter point tried", false};
-    return {"characteristic", "against det(V − ω²T) (LU) at " + std::to_string(n + 2) +
+    return {"characteristic", std::string(linear.has_gyroscopic() ? "against det(V − ω²T + iωG)" : "against det(V − ω²T)") +
+                                  " (LU) at " + std::to_string(n + 2) +
                                   " frequencies and " + std::to_string(pencils.size()) + " parameter points",
             true};
+}
+
+/// The frequencies ω of a gyroscopic linearization: their squares (complex where the point
+/// is unstable) against −s² of the eigenvalues s of (s²T − sG + V)x = 0 in the upper half
+/// plane (numeric/quadratic_modes.h), matched as multisets.
+void check_gyroscopic_frequencies(const model& scene, const modes_result& modes,
+                                  const std::vector<numeric_pencil>& pencils, const std::set<product>& shown,
+                                  std::vector<verification_entry>& entries)
+{
+    const std::size_t n = scene.coordinates.size();
+    for (const numeric_pencil& pencil : pencils) {
+        const parameter_point& p = *pencil.point;
+        quadratic_modes q = solve_quadratic_modes(pencil.kinetic, -pencil.gyroscopic, pencil.potential);
+        std::vector<std::complex<double>> reference;
+        double scale = 1e-300;
+        for (std::size_t k = n; k < 2 * n; ++k) {
+            reference.push_back(-q.eigenvalues[k] * q.eigenvalues[k]);
+            scale = std::max(scale, std::abs(reference.back()));
+        }
+        if (modes.frequencies.size() != n)
+            throw computation_error("verification failed: the frequencies: " +
+                                    std::to_string(modes.frequencies.size()) + " listed for " + std::to_string(n) +
+                                    " coordinates");
+        std::vector<bool> used(n, false);
+        for (std::size_t k = 0; k < n; ++k) {
+            std::optional<std::complex<double>> omega = complex_at(modes.frequencies[k], p.map);
+            if (!omega)
+                not_real("the frequencies", "an ω", at_point(p));
+            const std::complex<double> w = *omega * *omega;
+            std::size_t best = n;
+            for (std::size_t j = 0; j < n; ++j)
+                if (!used[j] && (best == n || std::abs(reference[j] - w) < std::abs(reference[best] - w)))
+                    best = j;
+            if (std::abs(reference[best] - w) > tolerance * scale)
+                fail("the frequencies", "ω² of frequency " + std::to_string(k + 1), at_point(p), w.real(),
+                     reference[best].real());
+            used[best] = true;
+        }
+    }
+    if (!pencils.empty() && shown.count(product::frequencies))
+        entries.push_back({"frequencies", "ω² against −s² of the quadratic eigenproblem (s²T − sG + V)x = 0 at " +
+                                              std::to_string(pencils.size()) + " parameter points",
+                           true});
 }
 
 void check_modes(const model& scene, const modes_result& modes, const std::vector<numeric_pencil>& pencils,
@@ -558,6 +645,10 @@ void check_modes(const model& scene, const modes_result& modes, const std::vecto
     const std::size_t n = scene.coordinates.size();
     if (!modes.closed_form)
         return;
+    if (modes.gyroscopic) {
+        check_gyroscopic_frequencies(scene, modes, pencils, shown, entries);
+        return;
+    }
     for (const numeric_pencil& pencil : pencils) {
         const parameter_point& p = *pencil.point;
         Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(pencil.potential, pencil.kinetic);

@@ -11,6 +11,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <complex>
 #include <cstdio>
 
 namespace lagrange {
@@ -256,6 +257,15 @@ std::string number(double x)
     return error == std::errc() ? std::string(buffer, end) : std::string("?");
 }
 
+/// A complex mode component as a + bi (b omitted when 0).
+std::string complex_text(std::complex<double> z)
+{
+    double re = z.real() == 0 ? 0.0 : z.real(); // no −0
+    if (z.imag() == 0)
+        return number(re);
+    return number(re) + (z.imag() < 0 ? " - " : " + ") + number(std::abs(z.imag())) + "i";
+}
+
 } // namespace
 
 namespace {
@@ -275,8 +285,13 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
     if (result.linearization) {
         const linearization_result& l = *result.linearization;
         out << "\nLinearization\n";
-        for (const char* which : {"T", "V"}) {
-            const GiNaC::matrix& m = std::string(which) == "T" ? l.kinetic : l.potential;
+        std::vector<const char*> matrices{"T", "V"};
+        if (l.has_gyroscopic())
+            matrices.push_back("G");
+        for (const char* which : matrices) {
+            const GiNaC::matrix& m = std::string(which) == "T" ? l.kinetic
+                                     : std::string(which) == "V" ? l.potential
+                                                                 : l.gyroscopic;
             out << "  " << which << " =";
             for (unsigned i = 0; i < m.rows(); ++i) {
                 out << (i ? "      " : " ") << "[";
@@ -294,7 +309,7 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
         if (!m.closed_form) {
             out << "\nNormal modes\n  no closed form found (see the numeric modes)\n";
         } else {
-            std::string w2 = print_name(result.characteristic->omega.get_name(), s) + "²";
+            std::string w2 = print_name(result.characteristic->omega.get_name(), s) + (m.gyroscopic ? "" : "²");
             out << "\nNormal modes\n";
             for (std::size_t k = 0; k < m.frequencies.size(); ++k) {
                 out << "  " << w2 << " = " << print(m.frequencies[k], s) << '\n';
@@ -341,11 +356,15 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
             for (const auto& [name, value] : n.values)
                 out << ' ' << print_name(name, s) << " = " << number(value);
             out << "  (" << n.method << ")\n";
+            if (!n.stability.empty())
+                out << "    " << n.stability << '\n';
             for (std::size_t k = 0; k < n.omega.size(); ++k) {
                 out << "    ω = " << number(n.omega[k]) << "  (relative error ≤ " << number(n.error[k])
                     << ")  mode (";
                 for (Eigen::Index i = 0; i < n.modes.rows(); ++i)
                     out << (i ? ", " : "") << number(n.modes(i, static_cast<Eigen::Index>(k)));
+                for (Eigen::Index i = 0; i < n.complex_modes.rows(); ++i)
+                    out << (i ? ", " : "") << complex_text(n.complex_modes(i, static_cast<Eigen::Index>(k)));
                 out << ")\n";
             }
         }
@@ -407,7 +426,10 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
     }
     if (result.linearization)
         out << "\\subsection*{Linearization}\n\\begin{align*}\nT &= " << matrix_latex(result.linearization->kinetic)
-            << ", & V &= " << matrix_latex(result.linearization->potential) << "\n\\end{align*}\n";
+            << ", & V &= " << matrix_latex(result.linearization->potential)
+            << (result.linearization->has_gyroscopic() ? ", & G &= " + matrix_latex(result.linearization->gyroscopic)
+                                                       : std::string())
+            << "\n\\end{align*}\n";
     if (result.characteristic)
         out << "\\subsection*{Characteristic polynomial}\n"
             << latex_display("", print_terms(result.characteristic->polynomial, s, omega_order(result)), " = 0");
@@ -415,6 +437,8 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
     auto index = [](std::size_t k) { return "_{" + std::to_string(k + 1) + "}"; };
     if (result.modes && result.modes->closed_form) {
         const modes_result& m = *result.modes;
+        if (m.gyroscopic)
+            w2 = print_name(result.characteristic->omega.get_name(), s);
         out << "\\subsection*{Normal modes}\n";
         for (std::size_t k = 0; k < m.frequencies.size(); ++k) {
             out << latex_display(w2 + index(k), print_terms(m.frequencies[k], s), "");
@@ -453,7 +477,7 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
             for (std::size_t i = 0; i < n.values.size(); ++i)
                 out << (i ? ",\\ " : "") << print_name(n.values[i].first, s) << " = "
                     << print(GiNaC::numeric(n.values[i].second), s);
-            out << "$:\n\\begin{align*}\n";
+            out << "$" << (n.stability.empty() ? "" : " (" + n.stability + ")") << ":\n\\begin{align*}\n";
             for (std::size_t k = 0; k < n.omega.size(); ++k)
                 out << "\\omega_{" << k + 1 << "} &= " << print(GiNaC::numeric(n.omega[k]), s)
                     << " & \\text{(relative error} &\\le " << print(GiNaC::numeric(n.error[k]), s) << ")"
@@ -563,6 +587,8 @@ void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result
     if (result.linearization) {
         doc["T"] = matrix_json(result.linearization->kinetic);
         doc["V"] = matrix_json(result.linearization->potential);
+        if (result.linearization->has_gyroscopic())
+            doc["gyroscopic"] = matrix_json(result.linearization->gyroscopic);
     }
     if (result.characteristic)
         doc["characteristic"] = {{"variable", result.characteristic->omega.get_name()},
@@ -610,8 +636,21 @@ void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result
                     column.push_back(n.modes(i, k));
                 modes.push_back(column);
             }
+            for (Eigen::Index k = 0; k < n.complex_modes.cols(); ++k) {
+                nlohmann::ordered_json column = nlohmann::ordered_json::array();
+                for (Eigen::Index i = 0; i < n.complex_modes.rows(); ++i)
+                    column.push_back({n.complex_modes(i, k).real(), n.complex_modes(i, k).imag()});
+                modes.push_back(column);
+            }
             points.push_back({{"values", values}, {"omega", n.omega}, {"modes", modes},
                               {"error", n.error}, {"method", n.method}});
+            if (!n.eigenvalues.empty()) {
+                nlohmann::ordered_json eigenvalues = nlohmann::ordered_json::array();
+                for (const std::complex<double>& e : n.eigenvalues)
+                    eigenvalues.push_back({e.real(), e.imag()});
+                points.back()["eigenvalues"] = eigenvalues;
+                points.back()["stability"] = n.stability;
+            }
         }
         doc["numeric"] = points;
     }

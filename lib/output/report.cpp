@@ -337,20 +337,27 @@ void write_characteristic(report_writer& w)
     const linearization_result& l = *result.linearization;
     const characteristic_result& c = *result.characteristic;
     const std::string omega = report_writer::name(c.omega.get_name());
+    const bool gyroscopic = l.has_gyroscopic();
+    const std::string pencil = "\\mathbf{V} - " + omega + "^{2}\\mathbf{T}" +
+                               (gyroscopic ? " + i" + omega + "\\mathbf{G}" : "");
     w.latex("\\section{The characteristic equation}\n");
     w.text("Solutions ")
         .latex("$\\eta = a\\, e^{-i" + omega + " t}$")
         .text(" exist when ")
-        .latex("$(\\mathbf{V} - " + omega + "^{2}\\mathbf{T})\\,a = 0$")
+        .latex("$(" + pencil + ")\\,a = 0$")
         .text(" has a nonzero solution a, that is when");
+    if (gyroscopic)
+        w.text(" (with G, ").latex("$\\det(" + pencil + ")$").text(" is real and even in ").latex("$" + omega + "$")
+            .text(", as G is antisymmetric)");
     GiNaC::matrix shifted(l.kinetic.rows(), l.kinetic.cols());
     for (unsigned i = 0; i < l.kinetic.rows(); ++i)
         for (unsigned j = 0; j < l.kinetic.cols(); ++j)
-            shifted(i, j) = l.potential(i, j) - GiNaC::pow(c.omega, 2) * l.kinetic(i, j);
+            shifted(i, j) = l.potential(i, j) - GiNaC::pow(c.omega, 2) * l.kinetic(i, j) +
+                            (gyroscopic ? GiNaC::I * c.omega * l.gyroscopic(i, j) : GiNaC::ex(0));
     std::string matrix = latex_matrix(shifted);
     matrix.replace(0, std::string("\\begin{pmatrix}").size(), "\\begin{vmatrix}");
     matrix.replace(matrix.size() - std::string("\\end{pmatrix}").size(), std::string::npos, "\\end{vmatrix}");
-    w.display_terms("\\det(\\mathbf{V} - " + omega + "^{2}\\mathbf{T})", {matrix}, " = 0");
+    w.display_terms("\\det(" + pencil + ")", {matrix}, " = 0");
     w.text("Expanding the determinant (fraction-free elimination) and dividing out the factors common to all "
            "coefficients, with the leading coefficient positive, gives the characteristic polynomial in ")
         .latex("$" + omega + "^{2}$:");
@@ -363,7 +370,7 @@ void write_modes(report_writer& w)
     const model& scene = w.scene();
     const modes_result& m = *result.modes;
     const std::string omega = report_writer::name(result.characteristic->omega.get_name());
-    const std::string w2 = omega + "^{2}";
+    const std::string w2 = m.gyroscopic ? omega : omega + "^{2}";
     w.latex("\\section{Frequencies and normal modes}\n");
     if (!m.closed_form) {
         w.text("The characteristic polynomial has no closed-form roots the engine finds; the numeric modes are in "
@@ -675,15 +682,22 @@ const std::vector<report_section>& report_sections()
                     (wants(r, product::linearization) || r.characteristic.has_value());
          },
          write_linearization},
+        {"gyroscopic", [](const analysis& r) { return r.linearization && r.linearization->has_gyroscopic(); },
+         write_gyroscopic_matrix},
         {"characteristic", [](const analysis& r) { return r.characteristic.has_value(); }, write_characteristic},
         {"modes", [](const analysis& r) { return r.modes.has_value(); }, write_modes},
         {"mode shapes",
          [](const analysis& r) {
-             return r.modes.has_value() && wants(r, product::modes) && r.scene->coordinates.size() >= 2;
+             return r.modes.has_value() && !r.modes->gyroscopic && wants(r, product::modes) &&
+                    r.scene->coordinates.size() >= 2;
          },
          write_mode_figures},
         {"asymptotic", [](const analysis& r) { return r.asymptotic.has_value(); }, write_asymptotic},
-        {"numeric", [](const analysis& r) { return r.numeric.has_value(); }, write_numeric},
+        {"numeric",
+         [](const analysis& r) { return r.numeric.has_value() && !r.linearization->has_gyroscopic(); }, write_numeric},
+        {"gyroscopic numeric",
+         [](const analysis& r) { return r.numeric.has_value() && r.linearization->has_gyroscopic(); },
+         write_gyroscopic_numeric},
         // Rigid bodies (inertia integrals, Euler's equations) and the simulation
         // (beats, polhode, work-precision) add their section writers here.
         {"bodies",

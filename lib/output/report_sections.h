@@ -20,4 +20,9 @@ void write_body_sections(report_writer& w);
 /// against time (the beats, measured against 2π/(ω₊ − ω₋)), the work-precision diagram.
 void write_motion_sections(report_writer& w);
 
+/// The gyroscopic sections (report_gyroscopic.cpp): G with the Kelvin–Tait–Chetaev
+/// verdict, and the numeric values from the quadratic eigenproblem with complex modes.
+void write_gyroscopic_matrix(report_writer& w);
+void write_gyroscopic_numeric(report_writer& w);
+
 } // namespace lagrange
