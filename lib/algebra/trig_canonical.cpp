@@ -11,7 +11,11 @@
 
 #include <deque>
 #include <map>
+#include <algorithm>
 #include <optional>
+#include <set>
+#include <sstream>
+#include <string>
 #include <unordered_map>
 #include <utility>
 
@@ -194,6 +198,35 @@ bool is_sin_or_cos(const ex& e)
 }
 
 
+/// A term of an expanded sum as a rational coefficient times the rest (1 for a number).
+std::pair<numeric, ex> split_coefficient(const ex& term)
+{
+    if (ex_kind_of(term) == ex_kind::number && GiNaC::ex_to<numeric>(term).is_rational())
+        return {GiNaC::ex_to<numeric>(term), 1};
+    if (ex_kind_of(term) != ex_kind::product)
+        return {1, term};
+    numeric coefficient = 1;
+    exvector rest;
+    for (size_t i = 0; i < term.nops(); ++i) {
+        const ex& factor = term.op(i);
+        if (ex_kind_of(factor) == ex_kind::number && GiNaC::ex_to<numeric>(factor).is_rational())
+            coefficient = coefficient.mul(GiNaC::ex_to<numeric>(factor));
+        else
+            rest.push_back(factor);
+    }
+    return {coefficient, product_of(rest)};
+}
+
+bool has_symbol(const ex& e)
+{
+    if (ex_kind_of(e) == ex_kind::symbol)
+        return true;
+    for (size_t i = 0; i < e.nops(); ++i)
+        if (has_symbol(e.op(i)))
+            return true;
+    return false;
+}
+
 /// The canonical form for one list of angles.
 class canonicalizer {
 public:
@@ -203,6 +236,7 @@ public:
             if (index_.count(q) == 0) {
                 index_.emplace(q, angles_.size());
                 angles_.push_back(q);
+                all_symbols_ = all_symbols_ && ex_kind_of(q) == ex_kind::symbol;
             }
         }
     }
@@ -220,12 +254,18 @@ public:
     }
 
 private:
-    bool is_angle(const ex& e) const { return (ex_kind_of(e) == ex_kind::symbol) && index_.count(e) != 0; }
+    /// True if `e` is one of the angles (a symbol, or a monomial such as w*t or x/R).
+    bool is_angle(const ex& e) const
+    {
+        return (ex_kind_of(e) == ex_kind::symbol || !all_symbols_) && index_.count(e) != 0;
+    }
 
     bool has_angle(const ex& e) const
     {
         if (ex_kind_of(e) == ex_kind::symbol)
             return index_.count(e) != 0;
+        if (!all_symbols_ && index_.count(e) != 0)
+            return true;
         for (size_t i = 0; i < e.nops(); ++i)
             if (has_angle(e.op(i)))
                 return true;
@@ -267,6 +307,13 @@ private:
                 const ex& coefficient = term.op(1);
                 if (is_angle(factor) && coefficient.info(GiNaC::info_flags::rational)) {
                     n[index_.at(factor)] += GiNaC::ex_to<numeric>(coefficient);
+                    continue;
+                }
+            }
+            if (!all_symbols_) {
+                const auto [coefficient, monomial] = split_coefficient(term);
+                if (is_angle(monomial)) {
+                    n[index_.at(monomial)] += coefficient;
                     continue;
                 }
             }
@@ -531,6 +578,7 @@ private:
 
     std::map<ex, size_t, GiNaC::ex_is_less> index_;
     exvector angles_;
+    bool all_symbols_ = true; ///< every angle is a symbol (no monomial angles)
     mutable std::unordered_map<frequency, harmonic, frequency_hash, frequency_equal> functions_;
     mutable std::unordered_map<unsigned, std::deque<std::pair<ex, fourier_series>>> harmonics_;
 };
@@ -558,12 +606,81 @@ GiNaC::ex trig_canonical(const GiNaC::ex& e, const GiNaC::lst& angles)
 {
     if (std::optional<ex> fast = harmonic_canonical(e, angles))
         return *fast;
-    return canonicalizer(angles).canonical(e);
+    return trig_canonical_general(e, angles);
 }
+
+namespace {
+
+/// The monomials (w*t, x/R, a parameter) of the arguments of sines and cosines that
+/// are not among `angles`: they become further angles, so that products of sines and
+/// cosines of any argument are linearized too. Arguments that are not linear in the
+/// angles are put in canonical form first. Returns `e` with those arguments.
+class argument_monomials {
+public:
+    explicit argument_monomials(const GiNaC::lst& angles) : angles_(angles)
+    {
+        for (const ex& q : angles)
+            known_.insert(q);
+    }
+
+    ex scan(const ex& e)
+    {
+        if (e.nops() == 0)
+            return e;
+        map_each recurse([this](const ex& x) { return scan(x); });
+        const ex mapped = e.map(recurse);
+        if (!is_sin_or_cos(mapped))
+            return mapped;
+        ex argument = mapped.op(0).expand();
+        bool linear = true;
+        for (const ex& term : terms_of(argument)) {
+            const auto [coefficient, monomial] = split_coefficient(term);
+            linear = linear && (!has_symbol(monomial) || known_.count(monomial) != 0);
+        }
+        if (!linear)
+            argument = trig_canonical(argument, angles_);
+        for (const ex& term : terms_of(argument)) {
+            const ex monomial = split_coefficient(term).second;
+            if (has_symbol(monomial) && known_.insert(monomial).second)
+                found_.push_back(monomial);
+        }
+        return GiNaC::is_the_function<GiNaC::cos_SERIAL>(mapped) ? GiNaC::cos(argument) : GiNaC::sin(argument);
+    }
+
+    /// The angles, then the monomials found, ordered by their printed form.
+    GiNaC::lst extended_angles() const
+    {
+        std::vector<std::pair<std::string, ex>> named;
+        for (const ex& m : found_) {
+            std::ostringstream text;
+            text << m;
+            named.emplace_back(text.str(), m);
+        }
+        std::stable_sort(named.begin(), named.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        GiNaC::lst all = angles_;
+        for (const auto& entry : named)
+            all.append(entry.second);
+        return all;
+    }
+
+    bool found_any() const { return !found_.empty(); }
+
+private:
+    GiNaC::lst angles_;
+    std::set<ex, GiNaC::ex_is_less> known_;
+    exvector found_;
+};
+
+} // namespace
 
 GiNaC::ex trig_canonical_general(const GiNaC::ex& e, const GiNaC::lst& angles)
 {
-    return canonicalizer(angles).canonical(e);
+    argument_monomials monomials(angles);
+    const ex prepared = monomials.scan(e);
+    if (!monomials.found_any())
+        return canonicalizer(angles).canonical(prepared);
+    return canonicalizer(monomials.extended_angles()).canonical(prepared);
 }
 
 bool trig_equal(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::lst& angles)

@@ -123,6 +123,7 @@ enum class product {
     euler,
     simulation,
     workprecision,
+    floquet,
 };
 
 /// Spec names of the products, in order.

@@ -66,6 +66,7 @@ std::optional<std::vector<GiNaC::ex>> equilibrium_of(const stage_context& c)
 
 bool has_coordinates(const model& scene) { return !scene.coordinates.empty(); }
 bool any_scene(const model&) { return true; }
+bool has_time(const model& scene) { return !scene.coordinates.empty() && mentions_time(scene); }
 bool has_top(const model& scene)
 {
     if (scene.coordinates.empty())
@@ -78,12 +79,13 @@ bool has_top(const model& scene)
 
 const std::vector<product> coordinate_products = {
     product::equations, product::equilibrium, product::linearization, product::characteristic,
-    product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric};
+    product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
+    product::floquet};
 
 const std::vector<product> every_product = {
     product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
     product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
-    product::euler,      product::simulation, product::workprecision};
+    product::euler,      product::simulation, product::workprecision, product::floquet};
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
@@ -124,8 +126,18 @@ const std::vector<stage_definition>& stage_table()
         {"top", {}, {product::equations, product::inertia}, {"lagrangian"}, has_top,
          [](stage_context& c) { c.result.tops = analyze_tops(c.scene, *c.result.lagrangian, c.simplifier_for_scene()); },
          "", ""},
-        {"equilibrium", {product::equilibrium}, {}, {"lagrangian"}, has_coordinates,
+        // Before anything else in the oscillation path: does L depend on t, and if so,
+        // which points solve the equations at every t (else: no equilibrium, exit 1).
+        {"time", {}, {}, {"equations"}, has_time,
          [](stage_context& c) {
+             c.result.time = analyze_time_dependence(c.scene, *c.result.lagrangian, *c.result.equations,
+                                                     c.simplifier_for_scene());
+         }, "", ""},
+        {"equilibrium", {product::equilibrium}, {}, {"lagrangian", "time"}, has_coordinates,
+         [](stage_context& c) {
+             if (c.result.time && c.result.time->depends_on_time)
+                 throw computation_error("L depends on t, so there is no static equilibrium to linearize about; "
+                                         "the points that solve the equations at every t are studied by `floquet`");
              if (!c.result.lagrangian->split)
                  throw computation_error("the Lagrangian is not quadratic in the velocities, so it has no "
                                          "kinetic and potential energy to linearize");
@@ -174,6 +186,15 @@ const std::vector<stage_definition>& stage_table()
                                     : numeric_normal_modes(c.scene, *c.result.linearization);
          },
          "small oscillations", "small oscillations"},
+        {"floquet", {product::floquet}, {}, {"time"}, has_coordinates,
+         [](stage_context& c) {
+             if (!c.result.time || !c.result.time->depends_on_time) {
+                 if (c.by_default)
+                     return;
+                 throw computation_error("`floquet` needs an L that depends on t, and this L does not");
+             }
+             c.result.floquet = floquet_multipliers(c.scene, *c.result.equations, *c.result.time);
+         }, "", ""},
         {"simulation", {product::simulation}, {}, {"equations"}, any_scene,
          [](stage_context& c) {
              if (!c.result.lagrangian) {
@@ -254,6 +275,8 @@ std::set<product> default_products(const model& scene)
         products.insert(product::asymptotic);
     if (!scene.values.empty())
         products.insert(product::numeric);
+    if (!scene.values.empty() && mentions_time(scene))
+        products.insert(product::floquet);
     if (scene.simulation)
         products.insert(product::simulation);
     return products;

@@ -15,6 +15,8 @@
 #include "bodies/inertia.h"
 #include "mechanics/top.h"
 #include "numeric/compiled_modes.h"
+#include "numeric/floquet.h"
+#include "mechanics/time_dependence.h"
 #include "numeric/simulation.h"
 #include "numeric/verification.h"
 #include "core/model.h"
@@ -52,6 +54,8 @@ struct analysis {
     std::optional<workprecision_result> workprecision;
     /// How each symbolic result was checked numerically before it is printed.
     std::optional<verification_result> verification;
+    std::optional<time_dependence_result> time; ///< whether L depends on t (scenes that mention t)
+    std::optional<std::vector<floquet_point>> floquet; ///< per point solving at every t and `values` point
 };
 
 /// The products this version computes.

@@ -3,6 +3,7 @@
 #include "mechanics/lagrangian.h"
 
 #include "mechanics/harmonic_lagrangian.h"
+#include "mechanics/time_dependence.h"
 #include "bodies/inertia.h"
 
 #include <map>
@@ -135,7 +136,9 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
     result.kinetic_built = kinetic;
     result.potential_built = potential;
     result.gyroscopic = 0;
-    if (scene.lagrangian_terms || !kinetic_is_quadratic_form(scene)) {
+    // With explicit time (a moving support, a turning frame) the velocity-free part of
+    // T belongs to V as well (the hoop's centrifugal term): split L as for an `L` line.
+    if (scene.lagrangian_terms || !kinetic_is_quadratic_form(scene) || mentions_time(scene)) {
         result.lagrangian_canonical =
             simplify.canonical(scene.lagrangian_terms.value_or(GiNaC::ex(0)) + kinetic - potential);
         result.lagrangian = simplify.compact(result.lagrangian_canonical);

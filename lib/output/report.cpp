@@ -698,6 +698,7 @@ const std::vector<report_section>& report_sections()
         {"gyroscopic numeric",
          [](const analysis& r) { return r.numeric.has_value() && r.linearization->has_gyroscopic(); },
          write_gyroscopic_numeric},
+        {"floquet", [](const analysis& r) { return r.floquet.has_value(); }, write_floquet_section},
         // Rigid bodies (inertia integrals, Euler's equations) and the simulation
         // (beats, polhode, work-precision) add their section writers here.
         {"bodies",

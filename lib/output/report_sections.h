@@ -25,4 +25,8 @@ void write_motion_sections(report_writer& w);
 void write_gyroscopic_matrix(report_writer& w);
 void write_gyroscopic_numeric(report_writer& w);
 
+/// An L that depends on t (report_floquet.cpp): the Floquet multipliers about the points
+/// that solve the equations at every t.
+void write_floquet_section(report_writer& w);
+
 } // namespace lagrange
