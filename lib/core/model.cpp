@@ -56,6 +56,12 @@ GiNaC::lst model::accelerations() const
     return result;
 }
 
+bool model::has_generalized_forces() const
+{
+    return !dissipation.is_zero() || !dampers.empty() || !forces.empty() || !point_forces.empty() ||
+           !inputs.empty();
+}
+
 GiNaC::exmap value_map(const model& scene, const value_point& point)
 {
     GiNaC::exmap map;

@@ -133,6 +133,7 @@ const std::vector<stage_definition>& stage_table()
                  throw computation_error("`asymptotic` needs a `limit` line, such as `limit rho -> 0`");
              if (c.wants(product::numeric) && c.scene.values.empty())
                  throw computation_error("`numeric` needs a `values` line or --values");
+             require_forces_vanish_at_rest(c.scene, c.simplifier_for_scene());
              c.result.equilibria = find_equilibria(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
         {"linearization", {product::linearization}, {}, {"equilibrium"}, has_coordinates,
