@@ -3,7 +3,9 @@
  *  errors, and the generalized forces in the equations of motion, against SymPy's
  *  multi_mass_spring_damper results, Newton's vector form of a damper, and virtual work
  *  by hand. */
+#include "engine/analysis.h"
 #include "mechanics/equations_of_motion.h"
+#include "numeric/verification.h"
 #include "mechanics/forces.h"
 #include "mechanics/lagrangian.h"
 #include "scene/lower.h"
@@ -261,4 +263,37 @@ force on P (F0*cos(w*t), 0)
     GiNaC::ex residual = s("m") * s("l") * s("l") * s("theta_ddot") + s("m") * s("g") * s("l") * GiNaC::sin(s("theta")) -
                          expected;
     CHECK(same_as_zero((*eom.residuals)[0] - residual));
+}
+
+// The self-verification takes Q from the statements by finite differences (numeric/verification):
+// the derived equations pass, and an equation with one damper's force dropped is caught.
+TEST_CASE("forces: the verification checks the equations with their generalized forces",
+          "[forces][verification]")
+{
+    model scene = load(R"(parameters m l g b a F0 c
+coordinates theta phi
+input u
+point A mass m at (l*sin(theta), -l*cos(theta))
+point B mass m at (l*sin(theta) + l*sin(phi), -l*cos(theta) - l*cos(phi))
+gravity g along (0, -1)
+damper b between B and (a, 0)
+dissipation F = 1/2*c*(theta'^2 + phi'^2)
+force phi = u*cos(theta)
+force on A (F0*sin(t), 0)
+)");
+    analysis a = analyze(scene, {product::equations});
+    verification_input input;
+    input.lagrangian = &*a.lagrangian;
+    input.equations = &*a.equations;
+    verification_result checked = verify_results(scene, input, {product::equations});
+    REQUIRE(checked.entries.size() == 1);
+    CHECK(checked.entries[0].checked);
+    CHECK(checked.entries[0].how.find("generalized forces") != std::string::npos);
+
+    equations_of_motion wrong = *a.equations;
+    const generalized_forces& q = wrong.forces;
+    (*wrong.residuals)[1] = (*wrong.residuals)[1] + q.dissipative[1];
+    input.equations = &wrong;
+    CHECK_THROWS_WITH(verify_results(scene, input, {product::equations}),
+                      Catch::Contains("verification failed: the equations of motion"));
 }
