@@ -20,6 +20,7 @@ const std::vector<std::pair<product, std::string>>& product_names()
         {product::euler, "euler"},
         {product::simulation, "simulation"},
         {product::workprecision, "workprecision"},
+        {product::damping, "damping"},
     };
     return names;
 }

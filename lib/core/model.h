@@ -159,6 +159,7 @@ enum class product {
     euler,
     simulation,
     workprecision,
+    damping,
 };
 
 /// Spec names of the products, in order.

@@ -78,12 +78,13 @@ bool has_top(const model& scene)
 
 const std::vector<product> coordinate_products = {
     product::equations, product::equilibrium, product::linearization, product::characteristic,
-    product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric};
+    product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
+    product::damping};
 
 const std::vector<product> every_product = {
     product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
     product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
-    product::euler,      product::simulation, product::workprecision};
+    product::euler,      product::simulation, product::workprecision, product::damping};
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
@@ -168,6 +169,14 @@ const std::vector<stage_definition>& stage_table()
              c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes);
          },
          "small oscillations", "symbolic modes"},
+        {"damping", {product::damping}, {}, {"linearization"}, has_coordinates,
+         [](stage_context& c) {
+             if (!c.result.lagrangian->gyroscopic.is_zero())
+                 throw computation_error("damped small oscillations with a part of L linear in the velocities "
+                                         "(gyroscopic terms) are not computed");
+             c.result.damping = damped_oscillations(c.scene, *c.result.linearization, c.simplifier_for_scene(),
+                                                    c.result.modes ? &*c.result.modes : nullptr);
+         }, "small oscillations", "small oscillations"},
         {"numeric", {product::numeric}, {}, {"linearization"}, has_coordinates,
          [](stage_context& c) {
              c.result.numeric = c.result.linearization->has_gyroscopic()
@@ -255,6 +264,8 @@ std::set<product> default_products(const model& scene)
         products.insert(product::asymptotic);
     if (!scene.values.empty())
         products.insert(product::numeric);
+    if (scene.has_generalized_forces())
+        products.insert(product::damping);
     if (scene.simulation)
         products.insert(product::simulation);
     return products;

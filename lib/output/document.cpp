@@ -4,6 +4,7 @@
 
 #include "output/latex_blocks.h"
 #include "output/bodies.h"
+#include "output/damping_output.h"
 #include "output/print.h"
 #include "output/simulation_output.h"
 
@@ -398,6 +399,8 @@ void write_text(std::ostream& out, const analysis& result, const document_option
                 << print((*result.equations->residuals)[i], syntax::text, equation_order(scene)) << " = 0\n";
     }
     write_oscillations_text(out, result);
+    if (result.damping)
+        write_damping_text(out, scene, *result.damping);
     write_bodies_text(out, result);
     if (result.simulation)
         write_simulation_text(out, *result.simulation, options.timings);
@@ -521,6 +524,8 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
             out << latex_display("", print_terms((*result.equations->residuals)[i], syntax::latex, equation_order(scene)), " = 0");
     }
     write_oscillations_latex(out, result);
+    if (result.damping)
+        write_damping_latex(out, scene, *result.damping);
     write_bodies_latex(out, result);
     if (result.simulation)
         write_simulation_latex(out, *result.simulation, options.timings);
@@ -688,6 +693,8 @@ void write_json(std::ostream& out, const analysis& result, const document_option
             doc["equations"].push_back(print(e, syntax::plain, equation_order(scene)));
     }
     write_oscillations_json(doc, result);
+    if (result.damping)
+        write_damping_json(doc, scene, *result.damping);
     write_bodies_json(doc, result);
     if (result.simulation)
         doc["simulation"] = simulation_json(*result.simulation, options.timings);
