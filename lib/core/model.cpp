@@ -21,6 +21,7 @@ const std::vector<std::pair<product, std::string>>& product_names()
         {product::simulation, "simulation"},
         {product::workprecision, "workprecision"},
         {product::floquet, "floquet"},
+        {product::damping, "damping"},
     };
     return names;
 }
@@ -55,6 +56,12 @@ GiNaC::lst model::accelerations() const
     for (const coordinate& c : coordinates)
         result.append(c.acceleration);
     return result;
+}
+
+bool model::has_generalized_forces() const
+{
+    return !dissipation.is_zero() || !dampers.empty() || !forces.empty() || !point_forces.empty() ||
+           !inputs.empty();
 }
 
 GiNaC::exmap value_map(const model& scene, const value_point& point)

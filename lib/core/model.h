@@ -53,6 +53,39 @@ struct spring {
     GiNaC::ex rest_length; ///< 0 if omitted
 };
 
+/// `input u`: a named input u(t), a symbol in the equations; in `values` a number or an
+/// expression in t.
+struct input_signal {
+    std::string name;
+    GiNaC::realsymbol symbol;
+    source_location where;
+    std::string line_text; ///< the `input` line, to quote when the simulation finds no value
+};
+
+/// `damper b between A and B`: a linear damper along the line from A to B, with the
+/// Rayleigh function ½ b (d/dt |r_A − r_B|)².
+struct damper {
+    GiNaC::ex coefficient;
+    std::vector<GiNaC::ex> end_a; ///< 3 components
+    std::vector<GiNaC::ex> end_b;
+    source_location where;
+};
+
+/// `force q = expr`: a generalized force on one coordinate.
+struct generalized_force {
+    std::size_t coordinate = 0; ///< index into model::coordinates
+    GiNaC::ex value;            ///< in t, coordinates, velocities, parameters and inputs
+    source_location where;
+};
+
+/// `force on P (Fx, Fy[, Fz])`: a force applied at a point.
+struct point_force {
+    std::string point;
+    std::vector<GiNaC::ex> position; ///< the point's position (3 components)
+    std::vector<GiNaC::ex> force;    ///< 3 components
+    source_location where;
+};
+
 /// A rigid body (§2 of the spec). Its inertia is derived later (bodies/inertia.h);
 /// the model keeps what the scene said.
 struct rigid_body {
@@ -91,6 +124,9 @@ struct limit_request {
 struct value_point {
     std::vector<std::pair<std::string, GiNaC::ex>> values;
     source_location where;
+    /// Inputs given on this line (`values u = sin(2*t)`): numbers or expressions in t
+    /// and the parameters, in the order written.
+    std::vector<std::pair<std::string, GiNaC::ex>> inputs;
 };
 
 /// `initial q = 0.1, q' = 0`: entries not named are 0.
@@ -124,6 +160,7 @@ enum class product {
     simulation,
     workprecision,
     floquet,
+    damping,
 };
 
 /// Spec names of the products, in order.
@@ -146,6 +183,13 @@ struct model {
     std::vector<spring> springs;
     std::vector<rigid_body> bodies;
 
+    GiNaC::ex dissipation;     ///< sum of the `dissipation F = ...` lines (0 if none)
+    std::optional<source_location> dissipation_line; ///< the first `dissipation` line
+    std::vector<damper> dampers;
+    std::vector<generalized_force> forces;
+    std::vector<point_force> point_forces;
+    std::vector<input_signal> inputs;
+
     std::optional<std::vector<GiNaC::ex>> equilibrium; ///< one value per coordinate
     std::optional<ratio_request> ratio;
     std::optional<limit_request> limit;
@@ -159,6 +203,9 @@ struct model {
     GiNaC::lst positions() const;
     GiNaC::lst velocities() const;
     GiNaC::lst accelerations() const;
+    /// True if the scene has dissipation, dampers, forces or inputs: the equations of
+    /// motion then have generalized forces beyond L.
+    bool has_generalized_forces() const;
 };
 
 /// The values of a `values` line as a substitution.

@@ -80,12 +80,12 @@ bool has_top(const model& scene)
 const std::vector<product> coordinate_products = {
     product::equations, product::equilibrium, product::linearization, product::characteristic,
     product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
-    product::floquet};
+    product::floquet, product::damping};
 
 const std::vector<product> every_product = {
     product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
     product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
-    product::euler,      product::simulation, product::workprecision, product::floquet};
+    product::euler,      product::simulation, product::workprecision, product::floquet, product::damping};
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
@@ -145,6 +145,7 @@ const std::vector<stage_definition>& stage_table()
                  throw computation_error("`asymptotic` needs a `limit` line, such as `limit rho -> 0`");
              if (c.wants(product::numeric) && c.scene.values.empty())
                  throw computation_error("`numeric` needs a `values` line or --values");
+             require_forces_vanish_at_rest(c.scene, c.simplifier_for_scene());
              c.result.equilibria = find_equilibria(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
         {"linearization", {product::linearization}, {}, {"equilibrium"}, has_coordinates,
@@ -179,6 +180,14 @@ const std::vector<stage_definition>& stage_table()
              c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes);
          },
          "small oscillations", "symbolic modes"},
+        {"damping", {product::damping}, {}, {"linearization"}, has_coordinates,
+         [](stage_context& c) {
+             if (!c.result.lagrangian->gyroscopic.is_zero())
+                 throw computation_error("damped small oscillations with a part of L linear in the velocities "
+                                         "(gyroscopic terms) are not computed");
+             c.result.damping = damped_oscillations(c.scene, *c.result.linearization, c.simplifier_for_scene(),
+                                                    c.result.modes ? &*c.result.modes : nullptr);
+         }, "small oscillations", "small oscillations"},
         {"numeric", {product::numeric}, {}, {"linearization"}, has_coordinates,
          [](stage_context& c) {
              c.result.numeric = c.result.linearization->has_gyroscopic()
@@ -277,6 +286,8 @@ std::set<product> default_products(const model& scene)
         products.insert(product::numeric);
     if (!scene.values.empty() && mentions_time(scene))
         products.insert(product::floquet);
+    if (scene.has_generalized_forces())
+        products.insert(product::damping);
     if (scene.simulation)
         products.insert(product::simulation);
     return products;

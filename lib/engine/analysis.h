@@ -7,6 +7,7 @@
 #include "mechanics/equations_of_motion.h"
 #include "mechanics/lagrangian.h"
 #include "mechanics/asymptotic.h"
+#include "mechanics/damping.h"
 #include "mechanics/equilibrium.h"
 #include "mechanics/gyroscopic.h"
 #include "mechanics/linearization.h"
@@ -52,6 +53,7 @@ struct analysis {
     std::optional<std::vector<top_result>> tops;        ///< bodies turned by three coordinates (heavy tops)
     std::optional<simulation_result> simulation;
     std::optional<workprecision_result> workprecision;
+    std::optional<damping_result> damping;   ///< damped small oscillations (dissipation, dampers)
     /// How each symbolic result was checked numerically before it is printed.
     std::optional<verification_result> verification;
     std::optional<time_dependence_result> time; ///< whether L depends on t (scenes that mention t)

@@ -108,6 +108,7 @@ equations_of_motion derive_equations_of_motion(const model& scene, const lagrang
     for (const coordinate& c : scene.coordinates)
         result.momenta.push_back(differentiate(l, c.velocity));
     result.energy = -l;
+    result.forces = derive_generalized_forces(scene, simplify);
     for (std::size_t i = 0; i < n; ++i) {
         const GiNaC::ex& p = result.momenta[i];
         for (std::size_t j = 0; j < n; ++j) {
@@ -117,11 +118,14 @@ equations_of_motion derive_equations_of_motion(const model& scene, const lagrang
         GiNaC::ex f = differentiate(l, scene.coordinates[i].position) - differentiate(p, scene.time);
         for (const coordinate& c : scene.coordinates)
             f -= differentiate(p, c.position) * c.velocity;
-        result.forcing.push_back(f);
+        result.forcing.push_back(f + result.forces.total[i]);
         result.energy += scene.coordinates[i].velocity * p;
     }
     if (printed) {
         result.residuals = derive_equations(scene, lagrangian, simplify);
+        if (result.forces.any)
+            for (std::size_t i = 0; i < n; ++i)
+                (*result.residuals)[i] = simplify((*result.residuals)[i] - result.forces.total[i]);
         result.grouped = group_by_accelerations(scene, *result.residuals);
     }
     return result;

@@ -6,6 +6,7 @@
 
 #include "algebra/simplify.h"
 #include "core/model.h"
+#include "mechanics/forces.h"
 #include "mechanics/lagrangian.h"
 
 #include <ginac/ginac.h>
@@ -31,9 +32,11 @@ struct equations_of_motion {
     GiNaC::ex lagrangian;                ///< the L they come from (lagrangian_result::lagrangian)
     std::vector<GiNaC::ex> momenta;      ///< p_i = ∂L/∂q̇_i
     GiNaC::matrix mass;                  ///< M_ij = ∂p_i/∂q̇_j (n × n)
-    std::vector<GiNaC::ex> forcing;      ///< f_i = ∂L/∂q_i − Σ_j ∂p_i/∂q_j q̇_j − ∂p_i/∂t
+    std::vector<GiNaC::ex> forcing;      ///< f_i = ∂L/∂q_i − Σ_j ∂p_i/∂q_j q̇_j − ∂p_i/∂t + Q_i
+    /// Q: dissipation, dampers and applied forces (mechanics/forces.h), in `forcing` and the residuals.
+    generalized_forces forces;
     GiNaC::ex energy;                    ///< the energy function h = Σ q̇_i p_i − L
-    /// d/dt ∂L/∂q̇ − ∂L/∂q, each meaning `expr = 0`, simplified: set when they are printed.
+    /// d/dt ∂L/∂q̇ − ∂L/∂q − Q, each meaning `expr = 0`, simplified: set when they are printed.
     std::optional<std::vector<GiNaC::ex>> residuals;
     /// The residuals as 𝓜(q) q̈ + f = 0, when they are linear in the accelerations.
     std::optional<acceleration_form> grouped;

@@ -12,19 +12,32 @@ namespace lagrange {
 
 namespace {
 
-/// Substitutes the parameter values; throws computation_error naming a parameter that L uses without one.
+/// Substitutes the inputs' and parameters' values; throws computation_error naming a parameter
+/// that L uses without one, and scene_error at an input without a value.
 GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values)
 {
+    GiNaC::exmap inputs;
+    for (const input_signal& u : scene.inputs) {
+        auto found = values.find(u.name);
+        if (found == values.end()) {
+            scene_error error(u.where, "input `" + u.name + "` has no value: give it in a `values` line, "
+                                       "as a number or an expression in t (`values " + u.name + " = sin(2*t)`)");
+            error.attach_line_text(u.line_text);
+            throw error;
+        }
+        inputs[u.symbol] = found->second;
+    }
+    GiNaC::ex with_inputs = inputs.empty() ? e : e.subs(inputs);
     GiNaC::lst substitutions;
     for (const parameter& p : scene.parameters) {
         auto found = values.find(p.name);
         if (found != values.end())
             substitutions.append(p.symbol == found->second);
-        else if (e.has(p.symbol))
+        else if (with_inputs.has(p.symbol))
             throw computation_error("the simulation needs a value for the parameter `" + p.name +
                                     "` (a `values` line or --values)");
     }
-    return e.subs(substitutions);
+    return with_inputs.subs(substitutions);
 }
 
 } // namespace
@@ -35,7 +48,9 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
     n_ = scene.coordinates.size();
     if (n_ == 0)
         throw computation_error("the scene has no coordinates to simulate");
-    conservative_ = !at_values(equations.lagrangian, scene, values).has(scene.time);
+    const bool lagrangian_has_time = at_values(equations.lagrangian, scene, values).has(scene.time);
+    conservative_ = !lagrangian_has_time && !equations.forces.any;
+    accumulates_work_ = !lagrangian_has_time && equations.forces.any;
 
     // Symbols in the state's order, time last: without explicit time the programs read x directly.
     std::vector<GiNaC::ex> symbols;
@@ -54,6 +69,10 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
                                                  scene, values);
         force[i] = at_values(equations.forcing[i], scene, values);
     }
+    for (const GiNaC::ex& e : mass)
+        explicit_time_ = explicit_time_ || e.has(scene.time);
+    for (const GiNaC::ex& e : force)
+        explicit_time_ = explicit_time_ || e.has(scene.time);
     std::vector<GiNaC::ex> rhs_outputs = mass;
     rhs_outputs.insert(rhs_outputs.end(), force.begin(), force.end());
 
@@ -69,11 +88,24 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
             jacobian_outputs.push_back(differentiate(f, c.velocity));
 
     const GiNaC::ex energy = at_values(equations.energy, scene, values);
+    std::vector<GiNaC::ex> power_outputs;
+    if (accumulates_work_) {
+        GiNaC::ex power = 0;
+        for (std::size_t i = 0; i < n_; ++i)
+            power += at_values(equations.forces.total[i], scene, values) * scene.coordinates[i].velocity;
+        power_outputs.push_back(power);
+        for (const coordinate& c : scene.coordinates)
+            power_outputs.push_back(differentiate(power, c.position));
+        for (const coordinate& c : scene.coordinates)
+            power_outputs.push_back(differentiate(power, c.velocity));
+    }
 
     try {
         rhs_program_ = expression_program(rhs_outputs, symbols);
         jacobian_program_ = expression_program(jacobian_outputs, symbols);
         energy_program_ = expression_program({energy}, symbols);
+        if (accumulates_work_)
+            power_program_ = expression_program(power_outputs, symbols);
     } catch (const std::invalid_argument& error) {
         throw computation_error(std::string("the equations of motion cannot be compiled: ") + error.what());
     }
@@ -86,7 +118,7 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
 void compiled_motion::solve(double t, const double* x, double* acceleration, bool keep_factor) const
 {
     const double* symbols = x;
-    if (!conservative_) {
+    if (explicit_time_) {
         std::copy(x, x + 2 * n_, symbols_.begin());
         symbols_[2 * n_] = t;
         symbols = symbols_.data();
@@ -103,11 +135,24 @@ void compiled_motion::rhs(double t, const double* x, double* dxdt) const
 {
     std::copy(x + n_, x + 2 * n_, dxdt);
     solve(t, x, dxdt + n_);
+    if (accumulates_work_)
+        dxdt[2 * n_] = power(t, x);
+}
+
+double compiled_motion::power(double t, const double* x) const
+{
+    if (!accumulates_work_)
+        return 0;
+    std::vector<double> symbols(1 + 2 * n_), outputs(1 + 2 * n_), scratch;
+    std::copy(x, x + 2 * n_, symbols.begin());
+    symbols[2 * n_] = t;
+    power_program_.run(symbols.data(), scratch, outputs.data());
+    return outputs[0];
 }
 
 void compiled_motion::jacobian(double t, const double* x, double* out) const
 {
-    const std::size_t n = n_, d = 2 * n_;
+    const std::size_t n = n_, d = dimension();
     std::vector<double> acceleration(n);
     solve(t, x, acceleration.data(), true); // leaves the LDLᵀ factor of M in factor_
     std::copy(x, x + 2 * n_, symbols_.begin());
@@ -138,6 +183,13 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
         for (std::size_t i = 0; i < n; ++i)
             out[(n + i) * d + k] = column[i];
     }
+    if (accumulates_work_) {
+        // The last row: ∂P/∂(q, q̇); W itself appears nowhere.
+        std::vector<double> outputs(1 + 2 * n);
+        power_program_.run(symbols_.data(), scratch_, outputs.data());
+        for (std::size_t k = 0; k < 2 * n; ++k)
+            out[2 * n * d + k] = outputs[1 + k];
+    }
 }
 
 bool compiled_motion::compile_native() { return native_.compile(rhs_program_, jacobian_program_); }
@@ -160,8 +212,12 @@ ode_system compiled_motion::system(double energy_scale) const
     s.jacobian = [this](double t, const double* x, double* out) { jacobian(t, x, out); };
     if (conservative_)
         s.invariants.push_back({"energy", [this](const double* x) { return energy(x); }, energy_scale});
-    if (native_.rhs)
-        s.compiled = ode_system::compiled_rhs{native_.rhs, n_, !conservative_};
+    if (accumulates_work_)
+        s.invariants.push_back(
+            {"energy_balance", [this](const double* x) { return energy(x) - x[2 * n_]; }, energy_scale});
+    // The compiled right-hand side knows the state (q, q̇) only, not the work W.
+    if (native_.rhs && !accumulates_work_)
+        s.compiled = ode_system::compiled_rhs{native_.rhs, n_, explicit_time_};
     return s;
 }
 

@@ -3,7 +3,9 @@
  *  point, compiled once into straight-line code (M, f, the energy function, and the
  *  symbolic derivatives that make the Jacobian of the first-order system), and
  *  solved for q̈ at each evaluation — the mass matrix is never inverted symbolically.
- *  State layout: x = (q1 … qn, q̇1 … q̇n). */
+ *  State layout: x = (q1 … qn, q̇1 … q̇n), and with generalized forces (dissipation,
+ *  dampers, applied forces) and no explicit time in L a last entry W, the work
+ *  ∫ Σ Q_i q̇_i dt they have done, so that the energy balance h(x) − W is an invariant. */
 #pragma once
 
 #include "mechanics/equations_of_motion.h"
@@ -28,8 +30,11 @@ public:
                     const std::map<std::string, GiNaC::ex>& values);
 
     std::size_t coordinates() const { return n_; }
-    std::size_t dimension() const { return 2 * n_; }
-    bool conservative() const { return conservative_; } ///< L has no explicit time: energy is conserved
+    std::size_t dimension() const { return 2 * n_ + (accumulates_work_ ? 1 : 0); }
+    /// L has no explicit time and there are no generalized forces: energy is conserved.
+    bool conservative() const { return conservative_; }
+    /// The state ends with the work W of the generalized forces (see above).
+    bool accumulates_work() const { return accumulates_work_; }
     std::size_t instructions() const { return rhs_program_.instruction_count(); }
 
     /// dxdt = (q̇, q̈) with M q̈ = f solved by LDLᵀ; throws computation_error when M
@@ -39,6 +44,8 @@ public:
     void jacobian(double t, const double* x, double* out) const;
     /// The energy function h = Σ q̇ ∂L/∂q̇ − L (conserved when L has no explicit t).
     double energy(const double* x) const;
+    /// The power of the generalized forces Σ Q_i q̇_i at (t, x).
+    double power(double t, const double* x) const;
 
     /// Compiles M, f and the Jacobian's parts to machine code (see native_code.h);
     /// false, and the interpreter stays in use, when no C compiler is available.
@@ -46,7 +53,8 @@ public:
     bool native() const { return static_cast<bool>(native_); }
 
     /// The system for the integrators: rhs, Jacobian, and the energy as an invariant
-    /// (relative to `energy_scale`, 0 for its initial magnitude) when it is conserved; after
+    /// (relative to `energy_scale`, 0 for its initial magnitude) when it is conserved, or the
+    /// energy balance h − W when the state carries the work W; after
     /// compile_native() also the native program as `compiled` (ode.h), which DOP853 calls directly.
     ode_system system(double energy_scale = 0) const;
 
@@ -55,7 +63,10 @@ private:
     void solve(double t, const double* x, double* acceleration, bool keep_factor = false) const;
     std::size_t n_ = 0;
     bool conservative_ = true;
+    bool explicit_time_ = false;          ///< t appears in M or f at the parameter values
+    bool accumulates_work_ = false;
     expression_program rhs_program_;      ///< M (row-major, n²) then f (n)
+    expression_program power_program_;    ///< Σ Q_i q̇_i, then its derivatives by q and q̇ (2n)
     expression_program jacobian_program_; ///< ∂M/∂q_k (n³), ∂f/∂q (n²), ∂f/∂q̇ (n²)
     expression_program energy_program_;
     native_rhs native_;
@@ -65,7 +76,8 @@ private:
 /// A value for every parameter from the first `values` line (later lines are other points).
 std::map<std::string, GiNaC::ex> first_value_point(const model& scene);
 
-/// The initial state x0 = (q, q̇) of the scene's `initial` line at those values (zeros if none).
+/// The initial state x0 = (q, q̇) of the scene's `initial` line at those values (zeros if none);
+/// the work W (when the motion accumulates it) starts at 0 and is not part of it.
 std::vector<double> initial_state_vector(const model& scene, const std::map<std::string, GiNaC::ex>& values);
 
 } // namespace lagrange

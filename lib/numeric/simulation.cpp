@@ -17,13 +17,17 @@ namespace lagrange {
 
 namespace {
 
-/// Every `values` line overlaid in order: later points (and --values) override earlier ones.
+/// Every `values` line overlaid in order: later points (and --values) override earlier ones;
+/// the inputs' values (expressions in t) are among them, by name.
 std::map<std::string, GiNaC::ex> merged_values(const model& scene)
 {
     std::map<std::string, GiNaC::ex> values;
-    for (const value_point& point : scene.values)
+    for (const value_point& point : scene.values) {
         for (const auto& [name, value] : point.values)
             values[name] = value;
+        for (const auto& [name, value] : point.inputs)
+            values[name] = value;
+    }
     return values;
 }
 
@@ -59,8 +63,14 @@ std::vector<double> linearized_frequencies(const ode_system& system, const std::
         double size = std::abs(lambda);
         if (size <= 1e-9 * largest || size == 0)
             continue;
-        // ±iω (or ±γ for an unstable mode): keep the one with a positive part once.
-        if (lambda.imag() > 0 || (lambda.imag() == 0 && lambda.real() > 0))
+        // ±iω (or ±γ for an unstable mode): keep the one with a positive part once. A
+        // damped motion has −γ ± iω (the one with positive imaginary part) and decay rates
+        // −γ without a partner +γ: each is a rate of its own (a stiff damper).
+        bool decay_alone = lambda.imag() == 0 && lambda.real() < 0;
+        for (Eigen::Index j = 0; j < d && decay_alone; ++j)
+            if (std::abs(solver.eigenvalues()[j] + lambda) <= 1e-9 * largest)
+                decay_alone = false;
+        if (lambda.imag() > 0 || (lambda.imag() == 0 && lambda.real() > 0) || decay_alone)
             frequencies.push_back(size);
     }
     std::sort(frequencies.begin(), frequencies.end());
@@ -195,6 +205,8 @@ prepared_motion prepare(const model& scene, const equations_of_motion& equations
     else if (!p.motion->compile_native()) // falls back to the interpreter without a compiler
         p.evaluation = "interpreted: no C compiler was found to compile the equations";
     p.x0 = initial_state_vector(scene, p.values);
+    if (p.motion->accumulates_work())
+        p.x0.push_back(0); // the work of the generalized forces starts at 0
     const std::size_t n = p.motion->coordinates();
     p.coordinates = n;
     for (const coordinate& c : scene.coordinates)
@@ -202,7 +214,7 @@ prepared_motion prepare(const model& scene, const equations_of_motion& equations
     read_span(p, scene, settings);
 
     // The linearization about the equilibrium (or the initial position) for the choice of method.
-    std::vector<double> reference_state(2 * n, 0.0);
+    std::vector<double> reference_state(p.motion->dimension(), 0.0);
     if (equilibrium && equilibrium->size() == n) {
         for (std::size_t i = 0; i < n; ++i)
             reference_state[i] = real_value(substitute((*equilibrium)[i], scene, p.values), "the equilibrium");
@@ -210,7 +222,7 @@ prepared_motion prepare(const model& scene, const equations_of_motion& equations
         std::copy(p.x0.begin(), p.x0.begin() + static_cast<std::ptrdiff_t>(n), reference_state.begin());
     }
     double energy_scale = 0;
-    if (p.motion->conservative() && equilibrium)
+    if ((p.motion->conservative() || p.motion->accumulates_work()) && equilibrium)
         energy_scale = std::abs(p.motion->energy(p.x0.data()) - p.motion->energy(reference_state.data()));
     p.system = p.motion->system(energy_scale);
     p.frequencies = linearized_frequencies(p.system, reference_state);

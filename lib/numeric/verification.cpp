@@ -128,10 +128,12 @@ std::optional<Eigen::MatrixXd> matrix_at(const GiNaC::matrix& m, const GiNaC::ex
 
 /// The symbols of a state, in the order the programs read them.
 struct state_layout {
-    std::vector<ex> symbols; ///< q…, q'…, q''…, t, parameters…
+    std::vector<ex> symbols; ///< q…, q'…, q''…, t, parameters…, inputs…
     std::size_t n = 0;
+    std::size_t parameters = 0;
     std::size_t time() const { return 3 * n; }
     std::size_t parameter(std::size_t k) const { return 3 * n + 1 + k; }
+    std::size_t input(std::size_t k) const { return 3 * n + 1 + parameters + k; }
 };
 
 state_layout layout_of(const model& scene)
@@ -147,6 +149,9 @@ state_layout layout_of(const model& scene)
     layout.symbols.push_back(scene.time);
     for (const parameter& p : scene.parameters)
         layout.symbols.push_back(p.symbol);
+    layout.parameters = scene.parameters.size();
+    for (const input_signal& u : scene.inputs)
+        layout.symbols.push_back(u.symbol);
     return layout;
 }
 
@@ -237,11 +242,35 @@ ex built_lagrangian(const model& scene, const lagrangian_result& lagrangian)
     return l;
 }
 
+/// The generalized forces as the scene gave them, for the reference: the `dissipation`
+/// lines, each damper's coefficient and length |r_A − r_B| (a square root, differentiated
+/// numerically), each `force q` value, and each `force on P` with P's position.
+std::vector<ex> force_terms(const model& scene)
+{
+    std::vector<ex> terms{scene.dissipation};
+    for (const damper& d : scene.dampers) {
+        ex length2 = 0;
+        for (std::size_t k = 0; k < 3; ++k)
+            length2 += GiNaC::pow(d.end_a[k] - d.end_b[k], 2);
+        terms.push_back(d.coefficient);
+        terms.push_back(GiNaC::sqrt(length2));
+    }
+    for (const generalized_force& f : scene.forces)
+        terms.push_back(f.value);
+    for (const point_force& f : scene.point_forces)
+        for (std::size_t k = 0; k < 3; ++k) {
+            terms.push_back(f.force[k]);
+            terms.push_back(f.position[k]);
+        }
+    return terms;
+}
+
 /// What the checks share: the layout, the compiled reference L, the parameter points.
 struct checker {
     const model& scene;
     state_layout layout;
     std::optional<probe> lagrangian;
+    std::optional<probe> forces; ///< force_terms, when the scene has generalized forces
     std::string why_not; ///< why L could not be compiled
     std::vector<parameter_point> points;
     sampler random;
@@ -250,8 +279,11 @@ struct checker {
     {
         try {
             lagrangian.emplace(std::vector<ex>{built_lagrangian(s, l)}, layout);
+            if (s.has_generalized_forces())
+                forces.emplace(force_terms(s), layout);
         } catch (const std::invalid_argument& error) {
-            why_not = std::string("L cannot be evaluated numerically (") + error.what() + ")";
+            lagrangian.reset();
+            why_not = std::string("L or the forces cannot be evaluated numerically (") + error.what() + ")";
         }
     }
     double_double l_at(const std::vector<double>& state) const { return (*lagrangian)(state)[0]; }
@@ -266,9 +298,64 @@ struct checker {
         state[layout.time()] = random.uniform(0, 1);
         for (std::size_t k = 0; k < p.values.size(); ++k)
             state[layout.parameter(k)] = p.values[k];
+        for (std::size_t k = 0; k < scene.inputs.size(); ++k)
+            state[layout.input(k)] = random.uniform(-1, 1);
         return state;
     }
 };
+
+/// The generalized forces Q at a state from the scene's statements by finite differences:
+/// −∂F/∂q̇ of the Rayleigh function (a damper's ½ b (d/dt |r_A − r_B|)² with the rate of the
+/// length differenced along the motion), `force q` values, and F · ∂r_P/∂q by differences
+/// of P's position. Zeros without forces.
+std::vector<double> generalized_force_reference(const checker& c, const std::vector<double>& state)
+{
+    const std::size_t n = c.layout.n;
+    std::vector<double> q(n, 0.0);
+    if (!c.forces)
+        return q;
+    const model& scene = c.scene;
+    auto terms = [&](const std::vector<double>& s) { return (*c.forces)(s); };
+    // The Rayleigh function at a state: the rate of a damper's length along q + q̇τ, t + τ.
+    auto rayleigh = [&](const std::vector<double>& s) {
+        std::vector<double_double> at = terms(s);
+        double_double f = at[0];
+        for (std::size_t d = 0; d < scene.dampers.size(); ++d) {
+            double_double rate = first_derivative([&](double tau) {
+                std::vector<double> moved = s;
+                for (std::size_t j = 0; j < n; ++j)
+                    moved[j] = s[j] + s[n + j] * tau;
+                moved[c.layout.time()] = s[c.layout.time()] + tau;
+                return terms(moved)[2 + 2 * d];
+            });
+            f = dd::add(f, dd::mul(double_double{0.5, 0}, dd::mul(at[1 + 2 * d], dd::mul(rate, rate))));
+        }
+        return f;
+    };
+    std::vector<double_double> here = terms(state);
+    const std::size_t first_force = 1 + 2 * scene.dampers.size();
+    for (std::size_t k = 0; k < scene.forces.size(); ++k)
+        q[scene.forces[k].coordinate] += value_of(here[first_force + k]);
+    const std::size_t first_point = first_force + scene.forces.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        q[i] -= value_of(first_derivative([&](double h) {
+            std::vector<double> moved = state;
+            moved[n + i] += h;
+            return rayleigh(moved);
+        }));
+        for (std::size_t p = 0; p < scene.point_forces.size(); ++p)
+            for (std::size_t k = 0; k < 3; ++k) {
+                const std::size_t entry = first_point + 6 * p + 2 * k;
+                double_double slope = first_derivative([&](double h) {
+                    std::vector<double> moved = state;
+                    moved[i] += h;
+                    return terms(moved)[entry + 1];
+                });
+                q[i] += value_of(here[entry]) * value_of(slope);
+            }
+    }
+    return q;
+}
 
 // ---- the equations of motion ----
 
@@ -341,6 +428,12 @@ verification_entry check_equations(checker& c, const equations_of_motion& equati
     for (const parameter_point& p : c.points) {
         std::vector<double> state = c.random_state(p);
         euler_lagrange_values reference = euler_lagrange(c, state);
+        // The equations are d/dt ∂L/∂q̇ − ∂L/∂q − Q = 0.
+        const std::vector<double> forces = generalized_force_reference(c, state);
+        for (std::size_t i = 0; i < n; ++i) {
+            reference.residual[i] -= forces[i];
+            reference.scale[i] += std::abs(forces[i]);
+        }
         std::vector<double_double> here = (*symbolic)(state);
         bool finite = std::isfinite(reference.lagrangian);
         for (const double_double& x : here)
@@ -377,7 +470,10 @@ verification_entry check_equations(checker& c, const equations_of_motion& equati
     }
     if (used == 0)
         return {"equations", "not checked: L is not a finite real number at any point tried", false};
-    return {"equations", how + " at " + std::to_string(used) + " seeded random states", true};
+    return {"equations", how + (c.forces ? ", less the generalized forces of the statements by finite differences"
+                                         : "") +
+                             " at " + std::to_string(used) + " seeded random states",
+            true};
 }
 
 // ---- the equilibrium and the linearization ----

@@ -5,6 +5,7 @@
 #include "output/latex_blocks.h"
 #include "output/bodies.h"
 #include "output/floquet_output.h"
+#include "output/damping_output.h"
 #include "output/print.h"
 #include "output/simulation_output.h"
 
@@ -400,6 +401,8 @@ void write_text(std::ostream& out, const analysis& result, const document_option
     }
     write_oscillations_text(out, result);
     write_floquet_text(out, result);
+    if (result.damping)
+        write_damping_text(out, scene, *result.damping);
     write_bodies_text(out, result);
     if (result.simulation)
         write_simulation_text(out, *result.simulation, options.timings);
@@ -524,6 +527,8 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
     }
     write_oscillations_latex(out, result);
     write_floquet_latex(out, result);
+    if (result.damping)
+        write_damping_latex(out, scene, *result.damping);
     write_bodies_latex(out, result);
     if (result.simulation)
         write_simulation_latex(out, *result.simulation, options.timings);
@@ -692,6 +697,8 @@ void write_json(std::ostream& out, const analysis& result, const document_option
     }
     write_oscillations_json(doc, result);
     write_floquet_json(doc, result);
+    if (result.damping)
+        write_damping_json(doc, scene, *result.damping);
     write_bodies_json(doc, result);
     if (result.simulation)
         doc["simulation"] = simulation_json(*result.simulation, options.timings);

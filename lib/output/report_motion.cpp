@@ -73,7 +73,7 @@ void write_simulation(report_writer& w, const simulation_result& s)
             .latex("$" + report_writer::number(*s.error_estimate, 2) + "$")
             .text(s.error_basis.empty() ? "" : " (" + s.error_basis + ")");
     for (const auto& [name, drift] : s.run.invariant_drift)
-        w.text(", a relative drift of the " + name + " of ").latex("$" + report_writer::number(drift, 2) + "$");
+        w.text(", a relative drift of the " + (name == "energy_balance" ? "energy balance" : name) + " of ").latex("$" + report_writer::number(drift, 2) + "$");
     w.text(".\n");
     if (s.missed_error)
         w.text(" A first run's error, about ")

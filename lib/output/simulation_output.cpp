@@ -133,8 +133,13 @@ void write_simulation_text(std::ostream& out, const simulation_result& s, bool t
         out << "  error estimate: " << number(*s.error_estimate, 3) << " relative (" << s.error_basis << ")\n";
     else
         out << "  error estimate: " << s.error_basis << '\n';
-    for (const auto& [name, drift] : run.invariant_drift)
-        out << "  " << name << " drift: " << number(drift, 3) << " relative\n";
+    for (const auto& [name, drift] : run.invariant_drift) {
+        if (name == "energy_balance")
+            out << "  energy balance: " << number(drift, 3)
+                << " relative (largest |h(t) − h(0) − ∫ Σ Q q̇ dt|: energy change, dissipated and input work)\n";
+        else
+            out << "  " << name << " drift: " << number(drift, 3) << " relative\n";
+    }
     if (!s.evaluation.empty())
         out << "  evaluation: " << s.evaluation << '\n';
     if (timings)
@@ -196,8 +201,13 @@ void write_simulation_latex(std::ostream& out, const simulation_result& s, bool 
         << " Jacobians)\\\\\n";
     if (s.error_estimate)
         out << "error estimate & $" << latex_number(*s.error_estimate) << "$ relative\\\\\n";
-    for (const auto& [name, drift] : run.invariant_drift)
-        out << latex_text(name) << " drift & $" << latex_number(drift) << "$ relative\\\\\n";
+    for (const auto& [name, drift] : run.invariant_drift) {
+        if (name == "energy_balance")
+            out << "energy balance $h(t)-h(0)-\\int Q\\cdot\\dot q\\,dt$ & $" << latex_number(drift)
+                << "$ relative\\\\\n";
+        else
+            out << latex_text(name) << " drift & $" << latex_number(drift) << "$ relative\\\\\n";
+    }
     if (timings)
         out << "run time & " << number(run.seconds, 3) << " s\\\\\n";
     if (s.beats)
@@ -240,7 +250,7 @@ nlohmann::ordered_json simulation_json(const simulation_result& s, bool timings)
     doc["states"] = states;
     nlohmann::ordered_json invariants = nlohmann::ordered_json::object();
     for (const auto& [name, drift] : run.invariant_drift)
-        invariants[name + "_drift"] = drift;
+        invariants[name == "energy_balance" ? name : name + "_drift"] = drift;
     doc["invariants"] = invariants;
     doc["choice"] = s.choice;
     doc["tolerance"] = s.tolerance;

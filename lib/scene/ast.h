@@ -94,6 +94,7 @@ struct statement {
     expr_ptr step, tolerance;        ///< simulate
     std::optional<name_ref> method;  ///< simulate
     std::optional<body_statement> body;
+    bool on_point = false;           ///< `force on P (...)` rather than `force q = ...`
 };
 
 struct scene_ast {

@@ -90,6 +90,15 @@ private:
             lower_use(s);
         } else if (k == "want") {
             lower_want(s);
+        } else if (k == "dissipation") {
+            lower_dissipation(s);
+        } else if (k == "damper") {
+            lower_damper(s);
+        } else if (k == "force") {
+            lower_force(s);
+        } else if (k == "input") {
+            for (const name_ref& n : s.names)
+                declare_input(n);
         }
     }
 
@@ -203,6 +212,77 @@ private:
         sp.rest_length = s.rest ? lower(*s.rest, expr_context{"a rest length", false, false, true, false})
                                 : GiNaC::ex(0);
         scene_.springs.push_back(std::move(sp));
+    }
+
+    // ---- forces beyond L: dissipation, dampers, forces, inputs (§5) -----------------------
+
+    void declare_input(const name_ref& n)
+    {
+        declare_name(n, "input");
+        input_signal u{n.name, GiNaC::realsymbol(n.name), n.where, source_.line(n.where.line)};
+        names_[n.name] = {name_entry::kind::input, u.symbol, 0, n.where};
+        scene_.inputs.push_back(u);
+    }
+
+    /// A Rayleigh function is a quadratic form in the velocities: every term of degree two.
+    void lower_dissipation(const statement& s)
+    {
+        expr_context context{"a Rayleigh function"};
+        context.velocities = true;
+        GiNaC::ex f = lower(*s.value, context);
+        GiNaC::symbol scale("scale");
+        GiNaC::exmap scaled;
+        GiNaC::lst velocities;
+        for (const coordinate& c : coordinates_) {
+            scaled[c.velocity] = scale * c.velocity;
+            velocities.append(c.velocity);
+        }
+        GiNaC::ex expanded = f.subs(scaled).expand();
+        if (!f.is_zero() && (!f.is_polynomial(velocities) || expanded.degree(scale) != 2 ||
+                             expanded.ldegree(scale) != 2))
+            throw scene_error(s.value->where, "a Rayleigh function is quadratic in the velocities (every term "
+                                              "has two of them, as in `1/2*b*x'^2`); this one is not");
+        if (!scene_.dissipation_line)
+            scene_.dissipation_line = s.where;
+        scene_.dissipation += f;
+    }
+
+    void lower_damper(const statement& s)
+    {
+        damper d;
+        d.where = s.where;
+        d.coefficient = lower(*s.value, expr_context{"a damping coefficient", false, false, true, false});
+        d.end_a = lower_endpoint(*s.end_a);
+        d.end_b = lower_endpoint(*s.end_b);
+        GiNaC::ex length2 = 0;
+        for (std::size_t k = 0; k < 3; ++k)
+            length2 += GiNaC::pow(d.end_a[k] - d.end_b[k], 2);
+        if (length2.expand().is_zero())
+            throw scene_error(s.where, "the damper's two ends are the same point");
+        scene_.dampers.push_back(std::move(d));
+    }
+
+    void lower_force(const statement& s)
+    {
+        expr_context context{"a force"};
+        context.velocities = true;
+        context.inputs = true;
+        const name_ref& n = s.names[0];
+        if (!s.on_point) {
+            auto found = names_.find(n.name);
+            if (found == names_.end() || found->second.name_kind != name_entry::kind::coordinate)
+                throw scene_error(n.where, "a generalized force acts on a coordinate, and " + quote(n.name) +
+                                               " is not one");
+            scene_.forces.push_back({found->second.index, lower(*s.value, context), s.where});
+            return;
+        }
+        for (const point_mass& p : scene_.points)
+            if (p.name == n.name) {
+                scene_.point_forces.push_back({p.name, p.position, lower_vector(*s.vector, context), s.where});
+                return;
+            }
+        throw scene_error(n.where, "unknown point " + quote(n.name) + ": declare it with `point` first (a point "
+                                   "that only carries a force has `mass 0`)");
     }
 
     const name_entry& coordinate_named(const name_ref& n)
@@ -466,6 +546,15 @@ private:
         return value;
     }
 
+    /// An input's value: a number or an expression in t and the parameters.
+    GiNaC::ex input_value(const expr_node& node)
+    {
+        GiNaC::ex value = lower(node, expr_context{"an input's value", false, false, true, true});
+        if (!value.info(GiNaC::info_flags::real) && GiNaC::is_a<GiNaC::numeric>(value.evalf()))
+            throw scene_error(node.where, "an input's value must be real");
+        return value;
+    }
+
     value_point lower_values(const statement& s)
     {
         value_point point;
@@ -473,6 +562,12 @@ private:
         std::set<std::string> seen;
         for (const assignment& a : s.assignments) {
             auto found = names_.find(a.target.name);
+            if (found != names_.end() && found->second.name_kind == name_entry::kind::input && !a.velocity) {
+                if (!seen.insert(a.target.name).second)
+                    throw scene_error(a.target.where, quote(a.target.name) + " is given twice");
+                point.inputs.emplace_back(a.target.name, input_value(*a.value));
+                continue;
+            }
             if (found == names_.end() || found->second.name_kind != name_entry::kind::parameter || a.velocity)
                 throw scene_error(a.target.where, quote(a.target.name + (a.velocity ? "'" : "")) +
                                                       " is not a parameter");

@@ -79,7 +79,7 @@ const std::set<std::string>& reserved_names()
         "omega", "torque", "equilibrium", "ratio", "limit", "values", "initial", "simulate",
         "use", "want", "mass", "at", "along", "between", "and", "rest", "region", "density",
         "inertia", "axis", "orientation", "until", "step", "method", "tolerance", "t", "Pi",
-        "pi", "oo", "dot"};
+        "pi", "oo", "dot", "dissipation", "damper", "force", "input", "on"};
     return names;
 }
 
@@ -90,6 +90,8 @@ void expression_lowering::adopt_names(const model& scene)
     for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
         names_[scene.coordinates[i].name] = {name_entry::kind::coordinate,
                                              scene.coordinates[i].position, i, {}};
+    for (const input_signal& u : scene.inputs)
+        names_[u.name] = {name_entry::kind::input, u.symbol, 0, u.where};
     coordinates_ = scene.coordinates;
     scene_.time = scene.time;
 }
@@ -200,6 +202,11 @@ GiNaC::ex expression_lowering::lower_name(const expr_node& node, const expr_cont
         if (!context.angular)
             fail(node, "angular velocity " + quote(name) + " cannot appear in " + context.what +
                            " (only in a `torque`)");
+        return entry.value;
+    case name_entry::kind::input:
+        if (!context.inputs)
+            fail(node, "input " + quote(name) + " cannot appear in " + context.what +
+                           " (only in a `force`)");
         return entry.value;
     }
     fail(node, "unexpected name");

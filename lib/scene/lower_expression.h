@@ -27,7 +27,7 @@ const std::set<std::string>& reserved_names();
 
 /// What a name in an expression stands for.
 struct name_entry {
-    enum class kind { parameter, coordinate, shorthand, ratio, angular } name_kind;
+    enum class kind { parameter, coordinate, shorthand, ratio, angular, input } name_kind;
     GiNaC::ex value;        ///< the symbol, or a shorthand's expression
     std::size_t index = 0;  ///< coordinate index
     source_location declared;
@@ -42,6 +42,7 @@ struct expr_context {
     bool time = true;              ///< t
     bool wildcards = false;        ///< $0 (rules)
     bool angular = false;          ///< w1 of `omega B (w1, w2, w3)` (torques)
+    bool inputs = false;           ///< u of `input u` (forces)
 };
 
 /// Lowers expressions against a table of names: those declared so far (statements),

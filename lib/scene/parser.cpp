@@ -115,6 +115,7 @@ private:
     // statement := scene | parameters | coordinates | let | energy | point | gravity
     //            | spring | body | omega | torque | equilibrium | ratio | limit
     //            | values | initial | simulate | use | want
+    //            | dissipation | damper | force | input
     statement parse_statement()
     {
         const token& first = current();
@@ -145,6 +146,10 @@ private:
         else if (k == "simulate") parse_simulate(s);
         else if (k == "use") parse_use(s);
         else if (k == "want") parse_want(s);
+        else if (k == "dissipation") parse_dissipation(s);
+        else if (k == "damper") parse_damper(s);
+        else if (k == "force") parse_force(s);
+        else if (k == "input") parse_name_list(s, k);
         else
             throw scene_error(first.where, "unknown statement " + quote(k));
         return s;
@@ -153,7 +158,7 @@ private:
     // scene_title := 'scene' STRING
     void parse_scene_title(statement& s) { s.text = expect(token_kind::string, "a title in quotes").text; }
 
-    // name_list := ('parameters' | 'coordinates') NAME { NAME }
+    // name_list := ('parameters' | 'coordinates' | 'input') NAME { NAME }
     void parse_name_list(statement& s, const std::string& keyword)
     {
         s.names.push_back(expect_name("a name after `" + keyword + "`"));
@@ -197,6 +202,41 @@ private:
         s.end_b = parse_endpoint();
         if (accept_name("rest"))
             s.rest = parse_expr();
+    }
+
+    // dissipation := 'dissipation' 'F' '=' expr
+    void parse_dissipation(statement& s)
+    {
+        if (!at_name("F"))
+            fail_here("`F`, the Rayleigh function, as in `dissipation F = 1/2*b*x'^2`");
+        take();
+        expect(token_kind::equals, "`=`");
+        s.value = parse_expr();
+    }
+
+    // damper := 'damper' expr 'between' endpoint 'and' endpoint
+    void parse_damper(statement& s)
+    {
+        s.value = parse_expr();
+        expect_keyword("between");
+        s.end_a = parse_endpoint();
+        expect_keyword("and");
+        s.end_b = parse_endpoint();
+    }
+
+    // force := 'force' ( 'on' NAME vector | NAME '=' expr )
+    void parse_force(statement& s)
+    {
+        if (at_name("on") && tokens_[pos_ + 1].kind != token_kind::equals) {
+            take();
+            s.on_point = true;
+            s.names.push_back(expect_name("the name of the point the force acts on"));
+            s.vector = parse_vector();
+            return;
+        }
+        s.names.push_back(expect_name("a coordinate, as in `force x = -c*x'`, or `on` and a point"));
+        expect(token_kind::equals, "`=`");
+        s.value = parse_expr();
     }
 
     // endpoint := NAME | vector

@@ -1,0 +1,172 @@
+/** @file damping_output.cpp
+ *  Printers of the damped small oscillations. */
+#include "output/damping_output.h"
+
+#include "output/latex_blocks.h"
+#include "output/print.h"
+
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+namespace {
+
+term_order s_order(const damping_result& damping) { return term_order{{{damping.s}}}; }
+
+/// The roots of one factor: "−γ ± i√(ω₀² − γ²)" and its regime, in `syntax`.
+std::string roots_text(const damped_factor& f, syntax s, const damping_result& damping)
+{
+    const bool latex = s == syntax::latex;
+    const std::string variable = print_name(damping.s.get_name(), s);
+    if (f.roots.size() == 1)
+        return variable + " = " + print(f.roots[0], s);
+    const std::string minus_gamma = print(-f.decay, s);
+    const std::string pm = latex ? " \\pm " : " ± ";
+    auto root = [&](const GiNaC::ex& radicand) {
+        return latex ? "\\sqrt{" + print(radicand, s) + "}" : "√(" + print(radicand, s) + ")";
+    };
+    if (f.regime == "critical")
+        return variable + " = " + minus_gamma + (latex ? "\\ \\text{(double root)}" : " (double root)");
+    if (f.regime == "underdamped" || f.regime.empty())
+        return variable + " = " + minus_gamma + pm + (latex ? "i\\," : "i·") + root(f.discriminant);
+    return variable + " = " + minus_gamma + pm + root(-f.discriminant);
+}
+
+std::string regime_text(const damped_factor& f, syntax s)
+{
+    if (f.roots.size() != 2)
+        return "";
+    if (!f.regime.empty())
+        return f.regime;
+    const bool latex = s == syntax::latex;
+    const std::string d = print(f.discriminant, s);
+    return latex ? "\\text{underdamped if } " + d + " > 0 \\text{, critical if } = 0 \\text{, overdamped if } < 0"
+                 : "underdamped if " + d + " > 0, critical if = 0, overdamped if < 0";
+}
+
+} // namespace
+
+void write_damping_text(std::ostream& out, const model& scene, const damping_result& damping)
+{
+    (void)scene;
+    const syntax s = syntax::text;
+    out << "\nDamping\n  C =";
+    for (unsigned i = 0; i < damping.damping.rows(); ++i) {
+        out << (i ? "      " : " ") << "[";
+        for (unsigned j = 0; j < damping.damping.cols(); ++j)
+            out << (j ? ", " : "") << print(damping.damping(i, j), s);
+        out << "]\n";
+    }
+    out << "  det(K + " << print_name(damping.s.get_name(), s) << "C + " << print_name(damping.s.get_name(), s)
+        << "²M) = " << print(damping.polynomial, s, s_order(damping)) << " = 0\n";
+    if (!damping.closed_form)
+        out << "  roots: no closed form (a factor of degree above 2)\n";
+    for (const damped_factor& f : damping.factors) {
+        out << "  " << roots_text(f, s, damping);
+        std::string regime = regime_text(f, s);
+        if (!regime.empty())
+            out << "  (" << regime << ")";
+        out << '\n';
+    }
+    if (damping.proportional) {
+        out << "  proportional damping: C M⁻¹K = K M⁻¹C, the undamped mode shapes stay";
+        if (!damping.modal_damping_ratios.empty()) {
+            out << "; modal damping ratios ζ =";
+            for (std::size_t k = 0; k < damping.modal_damping_ratios.size(); ++k)
+                out << (k ? ", " : " ") << print(damping.modal_damping_ratios[k], s);
+        }
+        out << '\n';
+    } else {
+        out << "  damping not proportional: the damped modes are complex\n";
+    }
+}
+
+void write_damping_latex(std::ostream& out, const model& scene, const damping_result& damping)
+{
+    (void)scene;
+    const syntax s = syntax::latex;
+    const std::string variable = print_name(damping.s.get_name(), s);
+    out << "\\subsection*{Damping}\n\\begin{align*}\nC &= " << latex_matrix(damping.damping) << "\n\\end{align*}\n";
+    out << "Characteristic polynomial $\\det(K + " << variable << "C + " << variable << "^{2}M)$:\n"
+        << latex_equation("", print_terms(damping.polynomial, s, s_order(damping)), " = 0");
+    if (!damping.closed_form)
+        out << "No closed form of the roots (a factor of degree above 2).\n";
+    for (const damped_factor& f : damping.factors) {
+        std::string regime = regime_text(f, s);
+        out << "\\[" << roots_text(f, s, damping);
+        if (!regime.empty())
+            out << (f.regime.empty() ? "\\quad " : "\\quad\\text{(") + regime + (f.regime.empty() ? "" : ")}");
+        out << "\\]\n";
+    }
+    if (damping.proportional) {
+        out << "Proportional damping: $C M^{-1} K = K M^{-1} C$, the undamped mode shapes stay";
+        if (!damping.modal_damping_ratios.empty()) {
+            out << "; modal damping ratios $";
+            for (std::size_t k = 0; k < damping.modal_damping_ratios.size(); ++k)
+                out << (k ? ",\\ " : "") << "\\zeta_{" << k + 1 << "} = " << print(damping.modal_damping_ratios[k], s);
+            out << "$";
+        }
+        out << ".\n\n";
+    } else {
+        out << "The damping is not proportional: the damped modes are complex.\n\n";
+    }
+}
+
+void write_damping_json(nlohmann::ordered_json& doc, const model& scene, const damping_result& damping)
+{
+    (void)scene;
+    const syntax s = syntax::plain;
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (unsigned i = 0; i < damping.damping.rows(); ++i) {
+        nlohmann::ordered_json row = nlohmann::ordered_json::array();
+        for (unsigned j = 0; j < damping.damping.cols(); ++j)
+            row.push_back(print(damping.damping(i, j), s));
+        rows.push_back(row);
+    }
+    doc["damping"] = rows;
+    nlohmann::ordered_json characteristic;
+    characteristic["variable"] = damping.s.get_name();
+    characteristic["polynomial"] = print(damping.polynomial, s, s_order(damping));
+    if (damping.closed_form) {
+        nlohmann::ordered_json factors = nlohmann::ordered_json::array();
+        for (const damped_factor& f : damping.factors) {
+            nlohmann::ordered_json entry;
+            entry["factor"] = print(f.factor, s, s_order(damping));
+            nlohmann::ordered_json roots = nlohmann::ordered_json::array();
+            if (f.roots.size() == 2) {
+                entry["decay"] = print(f.decay, s);
+                entry["natural_squared"] = print(f.natural_squared, s);
+                entry["discriminant"] = print(f.discriminant, s);
+                entry["regime"] = f.regime.empty() ? "depends on the parameters" : f.regime;
+                const std::string minus_gamma = print(-f.decay, s);
+                if (f.regime == "critical") {
+                    roots = {minus_gamma, minus_gamma};
+                } else if (f.regime == "underdamped" || f.regime.empty()) {
+                    const std::string imaginary = "I*sqrt(" + print(f.discriminant, s) + ")";
+                    roots = {minus_gamma + "-" + imaginary, minus_gamma + "+" + imaginary};
+                } else {
+                    const std::string real = "sqrt(" + print(-f.discriminant, s) + ")";
+                    roots = {minus_gamma + "-" + real, minus_gamma + "+" + real};
+                }
+            } else {
+                roots.push_back(print(f.roots[0], s));
+            }
+            entry["roots"] = roots;
+            factors.push_back(entry);
+        }
+        characteristic["factors"] = factors;
+    }
+    doc["damped_characteristic"] = characteristic;
+    nlohmann::ordered_json proportional;
+    proportional["proportional"] = damping.proportional;
+    if (!damping.modal_damping_ratios.empty()) {
+        nlohmann::ordered_json ratios = nlohmann::ordered_json::array();
+        for (const GiNaC::ex& z : damping.modal_damping_ratios)
+            ratios.push_back(print(z, s));
+        proportional["modal_damping_ratios"] = ratios;
+    }
+    doc["proportional_damping"] = proportional;
+}
+
+} // namespace lagrange
