@@ -151,3 +151,11 @@ TEST_CASE("damping: a scene with dissipation has `damping` among its default pro
     model plain = load("parameters m k\ncoordinates x\nT = 1/2*m*x'^2\nV = 1/2*k*x^2\n");
     CHECK_FALSE(analyze(plain).damping);
 }
+
+TEST_CASE("damping: gyroscopic terms with damping are refused, not printed wrong", "[damping][errors]")
+{
+    model scene = load("parameters m k B c\ncoordinates x y\n"
+                       "L = 1/2*m*(x'^2 + y'^2) + 1/2*B*(x*y' - y*x') - 1/2*k*(x^2 + y^2)\n"
+                       "dissipation F = 1/2*c*(x'^2 + y'^2)\n");
+    CHECK_THROWS_WITH(analyze(scene, {product::damping}), Catch::Contains("gyroscopic"));
+}

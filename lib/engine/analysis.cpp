@@ -182,9 +182,9 @@ const std::vector<stage_definition>& stage_table()
          "small oscillations", "symbolic modes"},
         {"damping", {product::damping}, {}, {"linearization"}, has_coordinates,
          [](stage_context& c) {
-             if (!c.result.lagrangian->gyroscopic.is_zero())
-                 throw computation_error("damped small oscillations with a part of L linear in the velocities "
-                                         "(gyroscopic terms) are not computed");
+             if (c.result.linearization->has_gyroscopic())
+                 throw computation_error("damped small oscillations with gyroscopic terms (G ≠ 0) are not "
+                                         "computed");
              c.result.damping = damped_oscillations(c.scene, *c.result.linearization, c.simplifier_for_scene(),
                                                     c.result.modes ? &*c.result.modes : nullptr);
          }, "small oscillations", "small oscillations"},
