@@ -127,6 +127,10 @@ bool has_trigonometric(const ex& e)
     return false;
 }
 
+/// ∂²V/∂qi∂qj at a point; each entry tidied if asked (for printing), else as it comes
+/// (enough to classify, and much faster for a long chain).
+GiNaC::matrix hessian_at(const model& scene, const ex& potential, const std::vector<ex>& at, bool tidy_entries);
+
 /// The coordinates whose potential contains √(q²) (a spring's length, as for the
 /// elastic pendulum's r), and the potential on the physical branch q > 0, where
 /// √(q²) = q.
@@ -573,6 +577,13 @@ ex evaluate_at(const ex& e, const model& scene, const std::vector<ex>& at)
 
 GiNaC::matrix potential_hessian(const model& scene, const ex& potential, const std::vector<ex>& at)
 {
+    return hessian_at(scene, potential, at, true);
+}
+
+namespace {
+
+GiNaC::matrix hessian_at(const model& scene, const ex& potential, const std::vector<ex>& at, bool tidy_entries)
+{
     std::size_t n = scene.coordinates.size();
     // near a point where q > 0, √(q²) = q: the Hessian comes out without nested roots
     ex local = potential;
@@ -585,11 +596,21 @@ GiNaC::matrix potential_hessian(const model& scene, const ex& potential, const s
     for (std::size_t i = 0; i < n; ++i) {
         ex first = differentiate(local, scene.coordinates[i].position);
         for (std::size_t j = i; j < n; ++j) {
-            ex entry = tidy(evaluate_at(differentiate(first, scene.coordinates[j].position), scene, at));
+            ex second = differentiate(first, scene.coordinates[j].position);
+            if (second.is_zero()) { // most entries of a long chain: nothing to evaluate or tidy
+                hessian(i, j) = 0;
+                hessian(j, i) = 0;
+                continue;
+            }
+            ex entry = evaluate_at(second, scene, at);
+            if (tidy_entries)
+                entry = tidy(entry);
             if (has_trigonometric(entry)) {
                 // at a point given through a parameter (θ = th0): sin² th0 = 1 − cos² th0
                 try {
-                    entry = tidy(reduce_trigonometric(entry));
+                    entry = reduce_trigonometric(entry);
+                    if (tidy_entries)
+                        entry = tidy(entry);
                 } catch (const budget_exceeded&) {
                     throw; // out of budget: the stage stops, no fallback
                 } catch (const std::exception&) {
@@ -601,6 +622,8 @@ GiNaC::matrix potential_hessian(const model& scene, const ex& potential, const s
     }
     return hessian;
 }
+
+} // namespace
 
 equilibria_result find_equilibria(const model& scene, const lagrangian_result& lagrangian, const simplifier& simplify)
 {
@@ -619,7 +642,7 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
                                         message_text(slope.expand()) + " there, not 0");
         }
         result.given = true;
-        GiNaC::matrix hessian = potential_hessian(scene, potential, at);
+        GiNaC::matrix hessian = hessian_at(scene, potential, at, false);
         stability kind = classify(hessian);
         result.points.push_back({at, kind == stability::unknown ? classify_at_values(scene, hessian) : kind});
     } else {
@@ -641,7 +664,7 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
             branch_gradient.push_back(differentiate(branch_potential, c.position));
         // stability from the Hessian on the branch, else at the `values` points
         auto kind_at = [&](const std::vector<ex>& at) {
-            GiNaC::matrix hessian = potential_hessian(scene, branch_potential, at);
+            GiNaC::matrix hessian = hessian_at(scene, branch_potential, at, false);
             stability kind = classify(hessian);
             return kind == stability::unknown ? classify_at_values(scene, hessian) : kind;
         };
