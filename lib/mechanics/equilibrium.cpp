@@ -653,7 +653,7 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
                 constant = constant && !gradient[i].has(c.position);
             if (constant && !vanishes(gradient[i]))
                 throw computation_error("no equilibrium: ∂U/∂" + scene.coordinates[i].name + " = " +
-                                        message_text(tidy(gradient[i])) + " ≠ 0 everywhere");
+                                        message_text(gradient[i].expand()) + " ≠ 0 everywhere");
         }
         // Spring lengths √(q²): solved on the physical branch q > 0, where √(q²) = q.
         std::pair<std::vector<bool>, ex> on_branch = on_positive_branch(scene, potential);
