@@ -507,9 +507,10 @@ stability classify(const GiNaC::matrix& hessian)
 
 /// Stability decided at the scene's `values` points, for a Hessian whose sign depends
 /// on the parameters: the eigenvalues of the Hessian there. Unknown when there are no
-/// values, when a parameter has no value, when an eigenvalue is too close to zero to
-/// tell its sign, or when the points disagree.
-stability classify_at_values(const model& scene, const GiNaC::matrix& hessian)
+/// values, when a parameter has no value, when the point itself is not real there
+/// (acos(g/(R w²)) for g > R w²), when an eigenvalue is too close to zero to tell its
+/// sign, or when the points disagree.
+stability classify_at_values(const model& scene, const GiNaC::matrix& hessian, const std::vector<ex>& position)
 {
     if (scene.values.empty())
         return stability::unknown;
@@ -521,6 +522,16 @@ stability classify_at_values(const model& scene, const GiNaC::matrix& hessian)
             for (const parameter& p : scene.parameters)
                 if (p.name == name)
                     at[p.symbol] = value;
+        for (const ex& coordinate : position) {
+            ex number;
+            try {
+                number = coordinate.subs(at).evalf();
+            } catch (const std::exception&) {
+                return stability::unknown;
+            }
+            if (!is_a<GiNaC::numeric>(number) || !ex_to<GiNaC::numeric>(number).is_real())
+                return stability::unknown; // no such equilibrium at these values
+        }
         Eigen::MatrixXd numeric_hessian(n, n);
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = 0; j < n; ++j) {
@@ -644,7 +655,7 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
         result.given = true;
         GiNaC::matrix hessian = hessian_at(scene, potential, at, false);
         stability kind = classify(hessian);
-        result.points.push_back({at, kind == stability::unknown ? classify_at_values(scene, hessian) : kind});
+        result.points.push_back({at, kind == stability::unknown ? classify_at_values(scene, hessian, at) : kind});
     } else {
         // A slope that no coordinate enters cannot vanish anywhere (Atwood's machine).
         for (std::size_t i = 0; i < n; ++i) {
@@ -666,7 +677,7 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
         auto kind_at = [&](const std::vector<ex>& at) {
             GiNaC::matrix hessian = hessian_at(scene, branch_potential, at, false);
             stability kind = classify(hessian);
-            return kind == stability::unknown ? classify_at_values(scene, hessian) : kind;
+            return kind == stability::unknown ? classify_at_values(scene, hessian, at) : kind;
         };
         std::vector<std::vector<ex>> points;
         if (n == 1) {
