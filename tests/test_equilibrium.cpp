@@ -2,6 +2,7 @@
  *  Equilibria the solver used to miss (rational potentials, spring lengths √(r²), an
  *  equilibrium given through a parameter, long chains), "no equilibrium at all", and
  *  stability decided at the `values` points, each against a textbook closed form. */
+#include "cli_runner.h"
 #include "mechanics/equilibrium.h"
 #include "mechanics/lagrangian.h"
 #include "mechanics/linearization.h"
@@ -219,6 +220,10 @@ V = m*g*R*(1 - cos(q)) - 1/2*m*R^2*w^2*sin(q)^2
         const equilibrium_point& chosen = a.equilibria.points.at(a.equilibria.chosen);
         CHECK(same(chosen.position[0], 0));
         CHECK(chosen.kind == stability::stable);
+        // cos q0 = g/(R w²) > 1: no side equilibrium at these values, so nothing is claimed of it
+        for (const equilibrium_point& p : a.equilibria.points)
+            if (!same(p.position[0], 0) && !same(p.position[0], GiNaC::Pi))
+                CHECK(p.kind == stability::unknown);
     }
     SECTION("fast: the side")
     {
@@ -275,4 +280,22 @@ TEST_CASE("equilibrium: a chain in relative angles hangs at 0 without listing co
     for (const GiNaC::ex& a : equilibria.points[0].position)
         CHECK(a.is_zero());
     CHECK(equilibria.points[0].kind == stability::stable);
+}
+
+TEST_CASE("equilibrium: the command line says no equilibrium with exit 1, senseless values with exit 2",
+          "[equilibrium][cli]")
+{
+    const std::string scenes = std::string(LAGRANGE_SOURCE_DIR) + "/tests/scenes/";
+    lagrange_test::cli_result none = lagrange_test::run_cli(scenes + "atwood.lag --want equilibrium");
+    CHECK(none.exit_code == 1);
+    CHECK(none.err.find("no equilibrium: ∂U/∂x = -g*m1+g*m2 ≠ 0") != std::string::npos);
+    // the default run leaves out the small oscillations with that note
+    lagrange_test::cli_result by_default = lagrange_test::run_cli(scenes + "atwood.lag");
+    CHECK(by_default.exit_code == 0);
+    CHECK(by_default.out.find("no equilibrium") != std::string::npos);
+    lagrange_test::cli_result bad = lagrange_test::run_cli("- --values m=-2",
+                                                           "parameters m g\ncoordinates x\n"
+                                                           "point P mass m at (x, 0)\ngravity g along (0, -1)\n");
+    CHECK(bad.exit_code == 2);
+    CHECK(bad.err.find("--values:1:3: error: these values make the mass of point `P` negative") != std::string::npos);
 }

@@ -29,6 +29,10 @@ std::string message_text(const ex& e)
         std::string text = message_text(x);
         return is_a<GiNaC::add>(x) || is_a<GiNaC::mul>(x) ? "(" + text + ")" : text;
     };
+    if (is_a<GiNaC::mul>(e) && e.op(e.nops() - 1).is_equal(-1)) { // −x, not -1*x
+        ex positive = -e;
+        return "-" + (is_a<GiNaC::add>(positive) ? "(" + message_text(positive) + ")" : message_text(positive));
+    }
     if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
         std::vector<std::string> parts;
         for (const ex& operand : e)

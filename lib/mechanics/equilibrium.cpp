@@ -127,6 +127,10 @@ bool has_trigonometric(const ex& e)
     return false;
 }
 
+/// ∂²V/∂qi∂qj at a point; each entry tidied if asked (for printing), else as it comes
+/// (enough to classify, and much faster for a long chain).
+GiNaC::matrix hessian_at(const model& scene, const ex& potential, const std::vector<ex>& at, bool tidy_entries);
+
 /// The coordinates whose potential contains √(q²) (a spring's length, as for the
 /// elastic pendulum's r), and the potential on the physical branch q > 0, where
 /// √(q²) = q.
@@ -503,9 +507,10 @@ stability classify(const GiNaC::matrix& hessian)
 
 /// Stability decided at the scene's `values` points, for a Hessian whose sign depends
 /// on the parameters: the eigenvalues of the Hessian there. Unknown when there are no
-/// values, when a parameter has no value, when an eigenvalue is too close to zero to
-/// tell its sign, or when the points disagree.
-stability classify_at_values(const model& scene, const GiNaC::matrix& hessian)
+/// values, when a parameter has no value, when the point itself is not real there
+/// (acos(g/(R w²)) for g > R w²), when an eigenvalue is too close to zero to tell its
+/// sign, or when the points disagree.
+stability classify_at_values(const model& scene, const GiNaC::matrix& hessian, const std::vector<ex>& position)
 {
     if (scene.values.empty())
         return stability::unknown;
@@ -517,6 +522,16 @@ stability classify_at_values(const model& scene, const GiNaC::matrix& hessian)
             for (const parameter& p : scene.parameters)
                 if (p.name == name)
                     at[p.symbol] = value;
+        for (const ex& coordinate : position) {
+            ex number;
+            try {
+                number = coordinate.subs(at).evalf();
+            } catch (const std::exception&) {
+                return stability::unknown;
+            }
+            if (!is_a<GiNaC::numeric>(number) || !ex_to<GiNaC::numeric>(number).is_real())
+                return stability::unknown; // no such equilibrium at these values
+        }
         Eigen::MatrixXd numeric_hessian(n, n);
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = 0; j < n; ++j) {
@@ -573,6 +588,13 @@ ex evaluate_at(const ex& e, const model& scene, const std::vector<ex>& at)
 
 GiNaC::matrix potential_hessian(const model& scene, const ex& potential, const std::vector<ex>& at)
 {
+    return hessian_at(scene, potential, at, true);
+}
+
+namespace {
+
+GiNaC::matrix hessian_at(const model& scene, const ex& potential, const std::vector<ex>& at, bool tidy_entries)
+{
     std::size_t n = scene.coordinates.size();
     // near a point where q > 0, √(q²) = q: the Hessian comes out without nested roots
     ex local = potential;
@@ -585,11 +607,21 @@ GiNaC::matrix potential_hessian(const model& scene, const ex& potential, const s
     for (std::size_t i = 0; i < n; ++i) {
         ex first = differentiate(local, scene.coordinates[i].position);
         for (std::size_t j = i; j < n; ++j) {
-            ex entry = tidy(evaluate_at(differentiate(first, scene.coordinates[j].position), scene, at));
+            ex second = differentiate(first, scene.coordinates[j].position);
+            if (second.is_zero()) { // most entries of a long chain: nothing to evaluate or tidy
+                hessian(i, j) = 0;
+                hessian(j, i) = 0;
+                continue;
+            }
+            ex entry = evaluate_at(second, scene, at);
+            if (tidy_entries)
+                entry = tidy(entry);
             if (has_trigonometric(entry)) {
                 // at a point given through a parameter (θ = th0): sin² th0 = 1 − cos² th0
                 try {
-                    entry = tidy(reduce_trigonometric(entry));
+                    entry = reduce_trigonometric(entry);
+                    if (tidy_entries)
+                        entry = tidy(entry);
                 } catch (const budget_exceeded&) {
                     throw; // out of budget: the stage stops, no fallback
                 } catch (const std::exception&) {
@@ -601,6 +633,8 @@ GiNaC::matrix potential_hessian(const model& scene, const ex& potential, const s
     }
     return hessian;
 }
+
+} // namespace
 
 equilibria_result find_equilibria(const model& scene, const lagrangian_result& lagrangian, const simplifier& simplify)
 {
@@ -619,9 +653,9 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
                                         message_text(slope.expand()) + " there, not 0");
         }
         result.given = true;
-        GiNaC::matrix hessian = potential_hessian(scene, potential, at);
+        GiNaC::matrix hessian = hessian_at(scene, potential, at, false);
         stability kind = classify(hessian);
-        result.points.push_back({at, kind == stability::unknown ? classify_at_values(scene, hessian) : kind});
+        result.points.push_back({at, kind == stability::unknown ? classify_at_values(scene, hessian, at) : kind});
     } else {
         // A slope that no coordinate enters cannot vanish anywhere (Atwood's machine).
         for (std::size_t i = 0; i < n; ++i) {
@@ -630,7 +664,7 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
                 constant = constant && !gradient[i].has(c.position);
             if (constant && !vanishes(gradient[i]))
                 throw computation_error("no equilibrium: ∂U/∂" + scene.coordinates[i].name + " = " +
-                                        message_text(tidy(gradient[i])) + " ≠ 0 everywhere");
+                                        message_text(gradient[i].expand()) + " ≠ 0 everywhere");
         }
         // Spring lengths √(q²): solved on the physical branch q > 0, where √(q²) = q.
         std::pair<std::vector<bool>, ex> on_branch = on_positive_branch(scene, potential);
@@ -641,9 +675,9 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
             branch_gradient.push_back(differentiate(branch_potential, c.position));
         // stability from the Hessian on the branch, else at the `values` points
         auto kind_at = [&](const std::vector<ex>& at) {
-            GiNaC::matrix hessian = potential_hessian(scene, branch_potential, at);
+            GiNaC::matrix hessian = hessian_at(scene, branch_potential, at, false);
             stability kind = classify(hessian);
-            return kind == stability::unknown ? classify_at_values(scene, hessian) : kind;
+            return kind == stability::unknown ? classify_at_values(scene, hessian, at) : kind;
         };
         std::vector<std::vector<ex>> points;
         if (n == 1) {

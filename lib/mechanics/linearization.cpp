@@ -56,9 +56,22 @@ std::vector<ex> primitive(std::vector<ex> coefficients, std::optional<int> denom
         return coefficients;
     }
     int flip = (denominator_sign && *denominator_sign < 0) ? -1 : 1;
-    std::optional<int> leading = sign_of(coefficients.back() / content);
+    std::optional<int> leading = sign_of((coefficients.back() / content).subs(atoms));
     if (leading && *leading < 0)
         flip = -flip;
+    if (!leading) {
+        // sign undecidable (−l·cos(th0)): at least no leading coefficient whose every term is negative
+        ex top = (coefficients.back() / content).normal().numer().expand();
+        bool all_negative = true;
+        for (const ex& term : GiNaC::is_a<GiNaC::add>(top) ? GiNaC::exvector(top.begin(), top.end())
+                                                            : GiNaC::exvector{top}) {
+            ex factor = GiNaC::is_a<GiNaC::mul>(term) ? term.op(term.nops() - 1) : term;
+            all_negative = all_negative && GiNaC::is_a<GiNaC::numeric>(factor) &&
+                           GiNaC::ex_to<GiNaC::numeric>(factor).is_negative();
+        }
+        if (all_negative)
+            flip = -flip;
+    }
     for (ex& c : coefficients) {
         ex quotient;
         if (!GiNaC::divide(c, content, quotient))
