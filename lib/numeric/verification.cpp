@@ -233,6 +233,12 @@ std::string state_text(const model& scene, const std::vector<double>& state, boo
 
 bool close(double a, double b, double scale) { return std::abs(a - b) <= tolerance * scale; }
 
+/// The compiled sines and cosines are correct to double precision only, so L carries a
+/// rounding error of about 2⁻⁵² of the size of its terms; a second difference divides it
+/// by h². This is that error, bounded generously (the stencil weights sum to 64), in the
+/// units of `scale` in close(): the allowance it adds to a comparison.
+double rounding_allowance(double energy_size) { return 64 * 0x1p-52 * energy_size / (step * step) / tolerance; }
+
 /// The Lagrangian as built, before any simplification: the reference of every check.
 ex built_lagrangian(const model& scene, const lagrangian_result& lagrangian)
 {
@@ -271,6 +277,7 @@ struct checker {
     state_layout layout;
     std::optional<probe> lagrangian;
     std::optional<probe> forces; ///< force_terms, when the scene has generalized forces
+    std::optional<probe> energies; ///< T, V and the `L` lines as built, for the size of L's terms
     std::string why_not; ///< why L could not be compiled
     std::vector<parameter_point> points;
     sampler random;
@@ -279,6 +286,9 @@ struct checker {
     {
         try {
             lagrangian.emplace(std::vector<ex>{built_lagrangian(s, l)}, layout);
+            energies.emplace(std::vector<ex>{l.kinetic_built, l.potential_built,
+                                             s.lagrangian_terms ? *s.lagrangian_terms : ex(0)},
+                             layout);
             if (s.has_generalized_forces())
                 forces.emplace(force_terms(s), layout);
         } catch (const std::invalid_argument& error) {
@@ -287,6 +297,14 @@ struct checker {
         }
     }
     double_double l_at(const std::vector<double>& state) const { return (*lagrangian)(state)[0]; }
+    /// |T| + |V| + |L lines| at a state: the size of L's terms, of which L may be a small difference.
+    double energy_size(const std::vector<double>& state) const
+    {
+        double size = 0;
+        for (const double_double& e : (*energies)(state))
+            size += std::abs(value_of(e));
+        return std::isfinite(size) ? size : 0;
+    }
 
     /// A state at the parameter point: coordinates, velocities and accelerations in [−1, 1],
     /// t in [0, 1].
@@ -450,7 +468,7 @@ verification_entry check_equations(checker& c, const equations_of_motion& equati
         for (std::size_t form = 0; form < forms; ++form)
             for (std::size_t i = 0; i < n; ++i) {
                 double value = value_of(here[form * n + i]);
-                double scale = reference.scale[i] + 1e-6 * largest + 1e-300;
+                double scale = reference.scale[i] + 1e-6 * largest + rounding_allowance(c.energy_size(state)) + 1e-300;
                 if (!close(value, reference.residual[i], scale))
                     fail("the equations of motion",
                          std::string(forms == 2 && form == 0 ? "the equation" : "M q'' − f in the row") + " of " +
@@ -538,12 +556,13 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
             return c.l_at(s);
         };
         const double size = kinetic->cwiseAbs().sum() + potential->cwiseAbs().sum() + 1e-300;
+        const double noise = rounding_allowance(c.energy_size(rest));
         if (check_point) {
             for (std::size_t i = 0; i < n; ++i) {
                 Eigen::VectorXd e = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
                 e[static_cast<Eigen::Index>(i)] = 1;
                 double slope = value_of(first_derivative([&](double h) { return potential_along(e, h); }));
-                if (!close(slope, 0, potential->cwiseAbs().sum() + 1e-300))
+                if (!close(slope, 0, potential->cwiseAbs().sum() + noise * step + 1e-300))
                     fail("the equilibrium", "∂U/∂" + c.scene.coordinates[i].name, where, slope, 0);
             }
         }
@@ -573,7 +592,7 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
                 v[static_cast<Eigen::Index>(i)] = c.random.uniform(-1, 1);
             }
             const double reference = mixed(u, v) - mixed(v, u), form = u.dot(*gyroscopic * v);
-            if (!close(form, reference, (size + gyroscopic->cwiseAbs().sum()) * u.norm() * v.norm()))
+            if (!close(form, reference, (size + gyroscopic->cwiseAbs().sum()) * u.norm() * v.norm() + 3 * noise))
                 fail("the linearization", "uᵀGv along random u, v", where, form, reference);
         }
         for (int direction = 0; direction < 2; ++direction) {
@@ -582,7 +601,7 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
                 v[static_cast<Eigen::Index>(i)] = c.random.uniform(-1, 1);
             double t_form = value_of(second_derivative([&](double eps) { return kinetic_along(v, eps); }));
             double v_form = value_of(second_derivative([&](double eps) { return potential_along(v, eps); }));
-            const double scale = size * v.squaredNorm();
+            const double scale = size * v.squaredNorm() + noise;
             if (!close(quadratic_form(*kinetic, v), t_form, scale))
                 fail("the linearization", "vᵀTv along a random v", where, quadratic_form(*kinetic, v), t_form);
             if (!close(quadratic_form(*potential, v), v_form, scale))
