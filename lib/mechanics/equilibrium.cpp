@@ -55,9 +55,34 @@ constexpr std::size_t max_listed_angles = 4;
 /// sin² u = 1 − cos² u in numerator and denominator, common factors cancelled. Sines
 /// and cosines of different arguments are taken as independent, so the result equals e
 /// (and is 0 only where e is 0 identically). e itself where there is nothing to reduce.
+/// sin(k·a) and cos(k·a), k an integer (the canonical form writes multiple angles), through
+/// sin a and cos a by the binomial expansion of (cos a + i sin a)^k.
+struct multiple_angles : GiNaC::map_function {
+    ex operator()(const ex& e) override
+    {
+        const bool is_sin = GiNaC::is_the_function<GiNaC::sin_SERIAL>(e),
+                   is_cos = GiNaC::is_the_function<GiNaC::cos_SERIAL>(e);
+        if ((!is_sin && !is_cos) || !GiNaC::is_a<GiNaC::mul>(e.op(0)))
+            return e.map(*this);
+        const ex argument = e.op(0);
+        const ex k = argument.op(argument.nops() - 1); // a mul's numeric coefficient is last
+        if (!k.info(GiNaC::info_flags::integer) || GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(k)) > 12)
+            return e.map(*this);
+        const ex a = argument / k;
+        const long n = std::labs(GiNaC::ex_to<GiNaC::numeric>(k).to_long());
+        const ex c = GiNaC::cos(a), s = GiNaC::sin(a);
+        ex sum = 0;
+        for (long j = is_sin ? 1 : 0; j <= n; j += 2)
+            sum += (((j / 2) % 2) ? -1 : 1) * GiNaC::binomial(n, j) * GiNaC::pow(c, n - j) * GiNaC::pow(s, j);
+        return is_sin && k.info(GiNaC::info_flags::negative) ? -sum : sum;
+    }
+};
+
 ex reduce_trigonometric(const ex& e)
 {
-    ex x = e.subs(GiNaC::tan(GiNaC::wild(0)) == GiNaC::sin(GiNaC::wild(0)) / GiNaC::cos(GiNaC::wild(0)));
+    multiple_angles expand_angles;
+    ex x = expand_angles(
+        e.subs(GiNaC::tan(GiNaC::wild(0)) == GiNaC::sin(GiNaC::wild(0)) / GiNaC::cos(GiNaC::wild(0))));
     // one (sine, cosine) pair of symbols per distinct argument, in order of appearance
     std::vector<std::pair<ex, std::pair<GiNaC::realsymbol, GiNaC::realsymbol>>> arguments;
     GiNaC::exmap to_symbols, back;
@@ -648,7 +673,9 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
         const std::vector<ex>& at = *scene.equilibrium;
         for (std::size_t i = 0; i < n; ++i) {
             ex slope = evaluate_at(gradient[i], scene, at);
-            if (!vanishes_identically(simplify.canonical(slope)))
+            // the canonical form may write multiple angles (sin 3θ) that reduce_trigonometric
+            // does not take apart: try the slope as it comes too
+            if (!vanishes_identically(simplify.canonical(slope)) && !vanishes_identically(slope))
                 throw computation_error("the equilibrium given is not one: ∂V/∂" + scene.coordinates[i].name + " = " +
                                         message_text(slope.expand()) + " there, not 0");
         }
