@@ -388,3 +388,41 @@ TEST_CASE("gyroscopic: symbolic modes and asymptotics are refused, not left empt
         noted = noted || note.find("modes and normal coordinates not computed") != std::string::npos;
     CHECK(noted);
 }
+
+TEST_CASE("gyroscopic: bead on a hoop and on a wire written with explicit t", "[gyroscopic]")
+{
+    // The positions turn with cos(w t), sin(w t); L is free of t, and its velocity-free part
+    // of T (the centrifugal term) goes into U.
+    const std::string hoop = "parameters m g R w\ncoordinates q\n"
+                             "point P mass m at (R*sin(q)*cos(w*t), R*sin(q)*sin(w*t), -R*cos(q))\n"
+                             "gravity g along (0, 0, -1)\n";
+    auto bottom = analyse(hoop + "equilibrium q = 0\n", small_oscillations);
+    REQUIRE(bottom->result.modes->closed_form);
+    auto off = analyse(hoop + "equilibrium q = acos(g/(R*w^2))\n", small_oscillations);
+    REQUIRE(off->result.modes->closed_form);
+    for (int k = 0; k < 5; ++k) {
+        double g = uniform(5, 15), R = uniform(0.5, 2), w = std::sqrt(g / R) * uniform(1.05, 3);
+        point p{{"m", uniform(0.5, 2)}, {"g", g}, {"R", R}, {"w", w}};
+        CHECK_THAT(value_at(bottom->scene, bottom->result.modes->frequencies.at(0), p),
+                   WithinAbs(g / R - w * w, 1e-10 * w * w));
+        CHECK_THAT(value_at(off->scene, off->result.modes->frequencies.at(0), p),
+                   WithinAbs(w * w - g * g / (R * R * w * w), 1e-10 * w * w));
+    }
+    auto kind_at_bottom = [](const analysis& a) {
+        for (const equilibrium_point& p : a.equilibria->points)
+            if (p.position[0].is_zero())
+                return p.kind;
+        FAIL("no equilibrium at q = 0");
+        return stability::unknown;
+    };
+    auto slow = analyse(hoop + "values m = 1, g = 9.81, R = 1, w = 2\n", {product::equilibrium});
+    auto fast = analyse(hoop + "values m = 1, g = 9.81, R = 1, w = 5\n", {product::equilibrium});
+    CHECK(kind_at_bottom(slow->result) == stability::stable);
+    CHECK(kind_at_bottom(fast->result) == stability::unstable);
+
+    auto wire = analyse("parameters m w\ncoordinates r\npoint P mass m at (r*cos(w*t), r*sin(w*t))\n",
+                        small_oscillations);
+    CHECK(wire->result.equilibria->points.at(wire->result.equilibria->chosen).kind == stability::unstable);
+    GiNaC::ex w = symbol_of(wire->scene, "w");
+    CHECK((wire->result.modes->frequencies.at(0) + w * w).normal().is_zero());
+}
