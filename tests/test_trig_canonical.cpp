@@ -76,9 +76,12 @@ TEST_CASE("trig_canonical: arguments x/R, q1 - q2/2 and a parameter", "[trig_can
     SECTION("a parameter")
     {
         const GiNaC::lst angles{x};
-        CHECK(lagrange::trig_canonical(GiNaC::pow(GiNaC::cos(a), 2) + GiNaC::pow(GiNaC::sin(a), 2), angles)
+        // A parameter times a coordinate is one more angle; a positive parameter alone
+        // stays an offset (sin a, cos a, tan a are atoms of the coefficients).
+        CHECK(lagrange::trig_canonical(GiNaC::pow(GiNaC::cos(a * x), 2) + GiNaC::pow(GiNaC::sin(a * x), 2), angles)
                   .is_equal(1));
-        CHECK(expanded_zero(lagrange::trig_canonical(2 * GiNaC::sin(a) * GiNaC::cos(a) - GiNaC::sin(2 * a), angles)));
+        CHECK(expanded_zero(
+            lagrange::trig_canonical(2 * GiNaC::sin(a * x) * GiNaC::cos(a * x) - GiNaC::sin(2 * a * x), angles)));
         // cos(x + a) through the addition formula
         const ex sum = GiNaC::cos(x) * GiNaC::cos(a) - GiNaC::sin(x) * GiNaC::sin(a);
         CHECK(expanded_zero(lagrange::trig_canonical(sum - GiNaC::cos(x + a), angles)));

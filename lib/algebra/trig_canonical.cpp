@@ -217,6 +217,19 @@ std::pair<numeric, ex> split_coefficient(const ex& term)
     return {coefficient, product_of(rest)};
 }
 
+/// True if `e` holds a symbol not declared positive (a coordinate, time t): a monomial
+/// of constant parameters alone (a possymbol such as an angle th0) stays an offset, so
+/// that expressions in sin th0, cos th0, tan th0 keep them as atoms.
+bool varies(const ex& e)
+{
+    if (ex_kind_of(e) == ex_kind::symbol)
+        return !e.info(GiNaC::info_flags::positive);
+    for (size_t i = 0; i < e.nops(); ++i)
+        if (varies(e.op(i)))
+            return true;
+    return false;
+}
+
 bool has_symbol(const ex& e)
 {
     if (ex_kind_of(e) == ex_kind::symbol)
@@ -641,7 +654,7 @@ public:
             argument = trig_canonical(argument, angles_);
         for (const ex& term : terms_of(argument)) {
             const ex monomial = split_coefficient(term).second;
-            if (has_symbol(monomial) && known_.insert(monomial).second)
+            if (varies(monomial) && known_.insert(monomial).second)
                 found_.push_back(monomial);
         }
         return GiNaC::is_the_function<GiNaC::cos_SERIAL>(mapped) ? GiNaC::cos(argument) : GiNaC::sin(argument);

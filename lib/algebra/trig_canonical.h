@@ -14,10 +14,11 @@ namespace lagrange {
 /// and the result expanded. Two expressions are equal as functions of the angles
 /// iff their canonical forms are equal (given canonical coefficients).
 /// The arguments may hold more than the angles: each monomial of an expanded
-/// argument that is not an angle (w*t, x/R, a parameter a) counts as one more angle,
-/// after the given ones, ordered by its printed form. So cos²(w t) + sin²(w t) and
-/// cos²(x/R) + sin²(x/R) are 1, and a product of sines and cosines of w*t and q is a
-/// sum of cos(q ± w t), sin(q ± w t); only constants without symbols (π/2) stay offsets.
+/// argument that is not an angle and holds a symbol not declared positive (w*t, x/R,
+/// a*x) counts as one more angle, after the given ones, ordered by its printed form.
+/// So cos²(w t) + sin²(w t) and cos²(x/R) + sin²(x/R) are 1, and a product of sines
+/// and cosines of w*t and q is a sum of cos(q ± w t), sin(q ± w t). Monomials of
+/// positive parameters alone (th0) and constants (π/2) stay offsets.
 /// Other subexpressions (sqrt, exp) are kept as atoms, their arguments canonicalized
 /// recursively.
 GiNaC::ex trig_canonical(const GiNaC::ex& e, const GiNaC::lst& angles);
