@@ -1,6 +1,7 @@
 /** @file model.cpp
  *  Product names and the model's symbol lists. */
 #include "core/model.h"
+#include "core/names.h"
 
 namespace lagrange {
 
@@ -72,6 +73,25 @@ GiNaC::exmap value_map(const model& scene, const value_point& point)
             if (p.name == name)
                 map[p.symbol] = value;
     return map;
+}
+
+std::string unused_name(const model& scene, std::string base)
+{
+    auto taken = [&](const std::string& name) {
+        for (const parameter& p : scene.parameters)
+            if (p.name == name)
+                return true;
+        for (const coordinate& c : scene.coordinates)
+            if (c.name == name)
+                return true;
+        for (const input_signal& u : scene.inputs)
+            if (u.name == name)
+                return true;
+        return scene.ratio && scene.ratio->name == name;
+    };
+    while (taken(base))
+        base += "_";
+    return base;
 }
 
 } // namespace lagrange

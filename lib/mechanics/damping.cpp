@@ -1,6 +1,7 @@
 /** @file damping.cpp
  *  The damping matrix, det(K + sC + s²M) and its closed forms, proportional damping. */
 #include "mechanics/damping.h"
+#include "core/names.h"
 
 #include "algebra/calculus.h"
 #include "algebra/exact_matrix.h"
@@ -18,26 +19,6 @@ namespace lagrange {
 namespace {
 
 using GiNaC::ex;
-
-/// A symbol named `base` (or base_, base__, …) that no parameter, coordinate or input uses.
-std::string free_name(const model& scene, std::string base)
-{
-    auto taken = [&](const std::string& name) {
-        for (const parameter& p : scene.parameters)
-            if (p.name == name)
-                return true;
-        for (const coordinate& c : scene.coordinates)
-            if (c.name == name)
-                return true;
-        for (const input_signal& u : scene.inputs)
-            if (u.name == name)
-                return true;
-        return scene.ratio && scene.ratio->name == name;
-    };
-    while (taken(base))
-        base += "_";
-    return base;
-}
 
 /// The coefficients of the primitive polynomial det(pencil) in `s`, lowest degree first:
 /// every factor common to all coefficients removed and the leading one positive.
@@ -187,7 +168,7 @@ damping_result damped_oscillations(const model& scene, const linearization_resul
                                    const simplifier& simplify, const modes_result* modes)
 {
     const unsigned n = static_cast<unsigned>(scene.coordinates.size());
-    damping_result result{damping_matrix(scene, linear.at, simplify), GiNaC::possymbol(free_name(scene, "s")), 0};
+    damping_result result{damping_matrix(scene, linear.at, simplify), GiNaC::possymbol(unused_name(scene, "s")), 0};
     const GiNaC::symbol& s = result.s;
     GiNaC::matrix pencil(n, n);
     for (unsigned i = 0; i < n; ++i)

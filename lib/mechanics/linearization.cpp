@@ -2,6 +2,7 @@
  *  T, V and G at an equilibrium (with a check that T is positive definite there),
  *  and the primitive characteristic polynomial det(V − ω²T + iωG). */
 #include "mechanics/linearization.h"
+#include "core/names.h"
 
 #include "algebra/calculus.h"
 #include "algebra/exact_matrix.h"
@@ -21,23 +22,6 @@ namespace lagrange {
 namespace {
 
 using GiNaC::ex;
-
-/// A symbol named `base` (or base_, base__, …) that no parameter or coordinate uses.
-std::string free_name(const model& scene, std::string base)
-{
-    auto taken = [&](const std::string& name) {
-        for (const parameter& p : scene.parameters)
-            if (p.name == name)
-                return true;
-        for (const coordinate& c : scene.coordinates)
-            if (c.name == name)
-                return true;
-        return scene.ratio && scene.ratio->name == name;
-    };
-    while (taken(base))
-        base += "_";
-    return base;
-}
 
 /// The coefficients of a polynomial, lowest degree first, with every common factor
 /// removed and the leading one positive; `denominator_sign` is the sign of the
@@ -178,7 +162,7 @@ linearization_result linearize(const model& scene, const lagrangian_result& lagr
 
 characteristic_result characteristic_polynomial(const model& scene, const linearization_result& linear)
 {
-    characteristic_result result{GiNaC::possymbol(free_name(scene, "omega")), 0};
+    characteristic_result result{GiNaC::possymbol(unused_name(scene, "omega")), 0};
     GiNaC::possymbol w("W");
     std::vector<ex> coefficients =
         linear.has_gyroscopic() ? characteristic_coefficients(linear.kinetic, linear.potential, linear.gyroscopic, w)
