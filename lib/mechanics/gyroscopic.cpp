@@ -8,11 +8,14 @@
 #include "algebra/calculus.h"
 #include "algebra/exact_matrix.h"
 #include "algebra/factor.h"
+#include "algebra/message_text.h"
 #include "algebra/sign.h"
 #include "algebra/surd.h"
 
 #include <cln/cln.h>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <optional>
 
@@ -301,7 +304,7 @@ stability gyroscopic_stability_at(const model& scene, const lagrangian_result& l
     return gyroscopic_stability(scene, mass, stiffness, g, potential_verdict);
 }
 
-modes_result gyroscopic_modes(const model&, const linearization_result& linear,
+modes_result gyroscopic_modes(const model& scene, const linearization_result& linear,
                               const characteristic_result& characteristic)
 {
     modes_result result;
@@ -331,6 +334,27 @@ modes_result gyroscopic_modes(const model&, const linearization_result& linear,
         for (long m = 0; m < multiplicity; ++m)
             omegas.insert(omegas.end(), found->begin(), found->end());
     }
+    // A start that does not depend on GiNaC's factor order (hash order): ascending at the
+    // first `values` point (else every parameter 1), ties by text. The proven order below wins.
+    GiNaC::exmap at;
+    for (const parameter& p : scene.parameters)
+        at[p.symbol] = 1;
+    if (!scene.values.empty())
+        for (const auto& [symbol, value] : value_map(scene, scene.values.front()))
+            at[symbol] = value;
+    std::vector<std::pair<double, std::string>> keys;
+    for (const ex& omega : omegas) {
+        std::optional<double> value = number_at(omega, at);
+        keys.push_back({value ? *value : HUGE_VAL, message_text(omega)});
+    }
+    std::vector<std::size_t> order(omegas.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+    std::vector<ex> sorted;
+    for (std::size_t i : order)
+        sorted.push_back(omegas[i]);
+    omegas = sorted;
     // Insertion sort, moving a root only past those it is known to be below.
     for (std::size_t i = 1; i < omegas.size(); ++i)
         for (std::size_t j = i; j > 0; --j) {
