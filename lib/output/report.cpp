@@ -478,10 +478,7 @@ void write_numeric(report_writer& w)
         .text(" is the growth rate of an unstable mode.)");
     w.latex("\n");
     for (const numeric_modes& nm : *result.numeric) {
-        std::string at;
-        for (std::size_t i = 0; i < nm.values.size(); ++i)
-            at += (i ? ",\\ " : "") + report_writer::name(nm.values[i].first) + " = " +
-                  report_writer::number(nm.values[i].second);
+        const std::string at = values_latex(nm);
         w.latex("\\subsection*{At $" + at + "$}\n");
         w.latex("\\begin{center}\n\\renewcommand{\\arraystretch}{1.3}\n\\begin{tabular}{rll}\n\\hline\n$k$ & $\\omega_{k}$ & relative error bound\\\\\n"
                 "\\hline\n");
@@ -760,6 +757,15 @@ std::string compile_report(const report_document& document)
         }
     }
     return folder.read("report.pdf");
+}
+
+std::string values_latex(const numeric_modes& point)
+{
+    std::string at;
+    for (std::size_t i = 0; i < point.values.size(); ++i)
+        at += (i ? ",\\ " : "") + report_writer::name(point.values[i].first) + " = " +
+              report_writer::number(point.values[i].second);
+    return at;
 }
 
 } // namespace lagrange

@@ -62,10 +62,7 @@ void write_gyroscopic_numeric(report_writer& w)
         .text(" with their first largest component real and positive.");
     w.latex("\n");
     for (const numeric_modes& nm : *result.numeric) {
-        std::string at;
-        for (std::size_t i = 0; i < nm.values.size(); ++i)
-            at += (i ? ",\\ " : "") + report_writer::name(nm.values[i].first) + " = " +
-                  report_writer::number(nm.values[i].second);
+        const std::string at = values_latex(nm);
         w.latex("\\subsection*{At $" + at + "$: " + nm.stability + "}\n");
         w.latex("\\begin{center}\n\\renewcommand{\\arraystretch}{1.3}\n\\begin{tabular}{rlll}\n\\hline\n"
                 "$k$ & $\\omega_{k}$ & relative error & mode\\\\\n\\hline\n");

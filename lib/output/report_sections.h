@@ -6,6 +6,8 @@
 
 #include "output/report.h"
 
+#include <string>
+
 namespace lagrange {
 
 /// The figure of the mode shapes, with a sentence on which mode is in phase.
@@ -28,5 +30,9 @@ void write_gyroscopic_numeric(report_writer& w);
 /// An L that depends on t (report_floquet.cpp): the Floquet multipliers about the points
 /// that solve the equations at every t.
 void write_floquet_section(report_writer& w);
+
+/// The parameter values of a numeric point as LaTeX, "m = 1,\ k = 4" (the numeric sections'
+/// subsection titles).
+std::string values_latex(const numeric_modes& point);
 
 } // namespace lagrange
