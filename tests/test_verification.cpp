@@ -24,18 +24,6 @@ gravity g along (0, -1)
 equilibrium theta = 0, phi = 0
 )";
 
-verification_input input_of(const analysis& a)
-{
-    verification_input input;
-    input.lagrangian = a.lagrangian ? &*a.lagrangian : nullptr;
-    input.equations = a.equations ? &*a.equations : nullptr;
-    input.equilibria = a.equilibria ? &*a.equilibria : nullptr;
-    input.linearization = a.linearization ? &*a.linearization : nullptr;
-    input.characteristic = a.characteristic ? &*a.characteristic : nullptr;
-    input.modes = a.modes ? &*a.modes : nullptr;
-    return input;
-}
-
 /// Flips the sign of the first term of a sum (or of the whole expression).
 GiNaC::ex flip_one_term(const GiNaC::ex& e)
 {
@@ -82,7 +70,7 @@ TEST_CASE("verification catches a wrong term in the equations of motion", "[veri
     REQUIRE(a.equations->residuals);
     equations_of_motion wrong = *a.equations;
     (*wrong.residuals)[1] = flip_one_term((*wrong.residuals)[1]);
-    verification_input input = input_of(a);
+    verification_input input = verification_input_of(a);
     input.equations = &wrong;
     require_caught(scene, input, "the equations of motion");
 
@@ -105,7 +93,7 @@ TEST_CASE("verification catches a wrong linearization, polynomial, frequency, mo
     REQUIRE(a.linearization);
     REQUIRE(a.modes);
     REQUIRE(a.modes->closed_form);
-    const verification_input right = input_of(a);
+    const verification_input right = verification_input_of(a);
     CHECK_NOTHROW(verify_results(scene, right, {product::frequencies}));
 
     linearization_result wrong_linear = *a.linearization;
@@ -160,7 +148,7 @@ L = m/2*(x'^2 + y'^2) + q*B/2*(x*y' - y*x') - k/2*(x^2 + y^2)
     CHECK(a.verification->entries[0].checked);
     equations_of_motion wrong = *a.equations;
     (*wrong.residuals)[0] = flip_one_term((*wrong.residuals)[0]);
-    verification_input input = input_of(a);
+    verification_input input = verification_input_of(a);
     input.equations = &wrong;
     require_caught(scene, input, "the equations of motion");
 }

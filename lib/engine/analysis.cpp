@@ -228,21 +228,25 @@ const std::vector<stage_definition>& stage_table()
         // Last: checks numerically whatever symbolic results the stages above computed.
         {"verification", {}, every_product, {}, has_coordinates,
          [](stage_context& c) {
-             const analysis& r = c.result;
-             verification_input input;
-             input.lagrangian = r.lagrangian ? &*r.lagrangian : nullptr;
-             input.equations = r.equations ? &*r.equations : nullptr;
-             input.equilibria = r.equilibria ? &*r.equilibria : nullptr;
-             input.linearization = r.linearization ? &*r.linearization : nullptr;
-             input.characteristic = r.characteristic ? &*r.characteristic : nullptr;
-             input.modes = r.modes ? &*r.modes : nullptr;
-             c.result.verification = verify_results(c.scene, input, r.wanted);
+             c.result.verification = verify_results(c.scene, verification_input_of(c.result), c.result.wanted);
          }, "", ""},
     };
     return table;
 }
 
 } // namespace
+
+verification_input verification_input_of(const analysis& r)
+{
+    verification_input input;
+    input.lagrangian = r.lagrangian ? &*r.lagrangian : nullptr;
+    input.equations = r.equations ? &*r.equations : nullptr;
+    input.equilibria = r.equilibria ? &*r.equilibria : nullptr;
+    input.linearization = r.linearization ? &*r.linearization : nullptr;
+    input.characteristic = r.characteristic ? &*r.characteristic : nullptr;
+    input.modes = r.modes ? &*r.modes : nullptr;
+    return input;
+}
 
 const std::set<product>& available_products()
 {

@@ -60,6 +60,9 @@ struct analysis {
     std::optional<std::vector<floquet_point>> floquet; ///< per point solving at every t and `values` point
 };
 
+/// What verify_results reads of an analysis: a pointer to each result it computed.
+verification_input verification_input_of(const analysis& result);
+
 /// The products this version computes.
 const std::set<product>& available_products();
 
