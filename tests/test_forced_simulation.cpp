@@ -177,3 +177,35 @@ TEST_CASE("forced simulation: an input without a value is an error at its declar
         CHECK(e.line_text() == "input u");
     }
 }
+
+TEST_CASE("forced simulation: the Jacobian with the work row against central differences",
+          "[simulation][forces][jacobian]")
+{
+    // A damped, driven pendulum: the state is (θ, θ̇, W), and nothing depends on W.
+    lagrange::model scene = load(R"(parameters m l g b A w
+coordinates theta
+point P mass m at (l*sin(theta), -l*cos(theta))
+gravity g along (0, -1)
+dissipation F = 1/2*b*theta'^2
+force theta = A*cos(w*t)
+values m = 1.3, l = 0.8, g = 9.81, b = 0.4, A = 0.7, w = 2.1
+)");
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    lagrange::compiled_motion motion(scene, *a.equations, lagrange::first_value_point(scene));
+    REQUIRE(motion.accumulates_work());
+    const std::size_t d = motion.dimension();
+    REQUIRE(d == 3);
+    const double t = 0.37;
+    std::vector<double> x{0.6, -1.4, 0.25}, j(d * d, -1.0);
+    motion.jacobian(t, x.data(), j.data());
+    for (std::size_t k = 0; k < d; ++k) {
+        std::vector<double> up = x, down = x, fu(d), fd(d);
+        const double h = 1e-6;
+        up[k] += h;
+        down[k] -= h;
+        motion.rhs(t, up.data(), fu.data());
+        motion.rhs(t, down.data(), fd.data());
+        for (std::size_t i = 0; i < d; ++i)
+            CHECK_THAT(j[i * d + k], WithinAbs((fu[i] - fd[i]) / (2 * h), 1e-7 * (1 + std::abs(j[i * d + k]))));
+    }
+}

@@ -168,7 +168,7 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
     for (std::size_t i = 0; i < n; ++i)
         out[i * d + n + i] = 1;
     std::vector<double> column(n);
-    for (std::size_t k = 0; k < d; ++k) {
+    for (std::size_t k = 0; k < 2 * n; ++k) { // nothing depends on the work W, the last state
         for (std::size_t i = 0; i < n; ++i) {
             if (k < n) {
                 double s = force_position[i * n + k];
