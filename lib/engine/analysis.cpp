@@ -425,7 +425,9 @@ analysis analyze(const model& scene, const std::set<product>& wanted, const budg
                  const simulation_settings& simulation)
 {
     std::optional<budget_exceeded> exceeded;
-    analysis result = run_stages(scene, wanted, limits, simulation, exceeded);
+    simulation_settings settings = simulation; // the C compiler runs within the time budget too
+    settings.compile_seconds = std::min(settings.compile_seconds, limits.max_seconds);
+    analysis result = run_stages(scene, wanted, limits, settings, exceeded);
     if (exceeded && !computed_any(result))
         throw *exceeded;
     return result;

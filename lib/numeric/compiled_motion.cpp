@@ -192,7 +192,10 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
     }
 }
 
-bool compiled_motion::compile_native() { return native_.compile(rhs_program_, jacobian_program_); }
+bool compiled_motion::compile_native(const native_limits& limits, std::string* why)
+{
+    return native_.compile(rhs_program_, jacobian_program_, limits, why);
+}
 
 double compiled_motion::energy(const double* x) const
 {

@@ -49,7 +49,7 @@ public:
 
     /// Compiles M, f and the Jacobian's parts to machine code (see native_code.h);
     /// false, and the interpreter stays in use, when no C compiler is available.
-    bool compile_native();
+    bool compile_native(const native_limits& limits = {}, std::string* why = nullptr);
     bool native() const { return static_cast<bool>(native_); }
 
     /// The system for the integrators: rhs, Jacobian, and the energy as an invariant
