@@ -4,6 +4,7 @@
 
 #include "scene/lower.h"
 
+#include "numeric/damped_modes.h"
 #include "numeric/free_body_motion.h"
 #include "numeric/gyroscopic_modes.h"
 
@@ -193,6 +194,13 @@ const std::vector<stage_definition>& stage_table()
              c.result.numeric = c.result.linearization->has_gyroscopic()
                                     ? numeric_gyroscopic_modes(c.scene, *c.result.linearization)
                                     : numeric_normal_modes(c.scene, *c.result.linearization);
+             if (!c.scene.has_generalized_forces())
+                 return;
+             const GiNaC::matrix damping =
+                 c.result.damping ? c.result.damping->damping
+                                  : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
+             if (!is_zero_matrix(damping))
+                 add_damped_eigenvalues(c.scene, *c.result.linearization, damping, *c.result.numeric);
          },
          "small oscillations", "small oscillations"},
         {"floquet", {product::floquet}, {}, {"time"}, has_coordinates,
