@@ -81,12 +81,13 @@ bool has_top(const model& scene)
 const std::vector<product> coordinate_products = {
     product::equations, product::equilibrium, product::linearization, product::characteristic,
     product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
-    product::floquet, product::damping};
+    product::floquet, product::damping, product::state_space, product::transfer};
 
 const std::vector<product> every_product = {
     product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
     product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
-    product::euler,      product::simulation, product::workprecision, product::floquet, product::damping};
+    product::euler,      product::simulation, product::workprecision, product::floquet, product::damping,
+    product::state_space, product::transfer};
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
@@ -203,6 +204,20 @@ const std::vector<stage_definition>& stage_table()
                  add_damped_eigenvalues(c.scene, *c.result.linearization, damping, *c.result.numeric);
          },
          "small oscillations", "small oscillations"},
+        // The linearized input–output system: A, B (and at the `values` points), then H(s).
+        {"state_space", {product::state_space}, {}, {"linearization"}, has_coordinates,
+         [](stage_context& c) {
+             const GiNaC::matrix damping =
+                 c.result.damping ? c.result.damping->damping
+                                  : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
+             c.result.state_space =
+                 derive_state_space(c.scene, *c.result.linearization, damping, c.simplifier_for_scene());
+             c.result.state_space_values = state_space_at_values(c.scene, *c.result.state_space);
+         }, "linear system", "linear system"},
+        {"transfer", {product::transfer}, {}, {"state_space"}, has_coordinates,
+         [](stage_context& c) {
+             c.result.transfer = transfer_functions(c.scene, *c.result.linearization, *c.result.state_space);
+         }, "linear system", "linear system"},
         {"floquet", {product::floquet}, {}, {"time"}, has_coordinates,
          [](stage_context& c) {
              if (!c.result.time || !c.result.time->depends_on_time) {
@@ -300,6 +315,8 @@ std::set<product> default_products(const model& scene)
         products.insert(product::floquet);
     if (scene.has_generalized_forces())
         products.insert(product::damping);
+    if (!scene.inputs.empty())
+        products.insert({product::state_space, product::transfer});
     if (scene.simulation)
         products.insert(product::simulation);
     return products;

@@ -6,6 +6,7 @@
 #include "output/bodies.h"
 #include "output/floquet_output.h"
 #include "output/damping_output.h"
+#include "output/linear_system_output.h"
 #include "output/print.h"
 #include "output/simulation_output.h"
 
@@ -406,6 +407,7 @@ void write_text(std::ostream& out, const analysis& result, const document_option
     write_floquet_text(out, result);
     if (result.damping)
         write_damping_text(out, scene, *result.damping);
+    write_linear_system_text(out, result);
     write_bodies_text(out, result);
     if (result.simulation)
         write_simulation_text(out, *result.simulation, options.timings);
@@ -538,6 +540,7 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
     write_floquet_latex(out, result);
     if (result.damping)
         write_damping_latex(out, scene, *result.damping);
+    write_linear_system_latex(out, result);
     write_bodies_latex(out, result);
     if (result.simulation)
         write_simulation_latex(out, *result.simulation, options.timings);
@@ -710,6 +713,7 @@ void write_json(std::ostream& out, const analysis& result, const document_option
     write_floquet_json(doc, result);
     if (result.damping)
         write_damping_json(doc, scene, *result.damping);
+    write_linear_system_json(doc, result);
     write_bodies_json(doc, result);
     if (result.simulation)
         doc["simulation"] = simulation_json(*result.simulation, options.timings);
