@@ -268,6 +268,7 @@ verification_input verification_input_of(const analysis& r)
     input.linearization = r.linearization ? &*r.linearization : nullptr;
     input.characteristic = r.characteristic ? &*r.characteristic : nullptr;
     input.modes = r.modes ? &*r.modes : nullptr;
+    input.damping = r.damping ? &*r.damping : nullptr;
     return input;
 }
 
