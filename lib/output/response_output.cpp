@@ -94,7 +94,7 @@ void plot_response(const std::string& path, const frequency_response& r, const s
               "set output 'plot.svg'\n"
               "set multiplot layout 2,1 title "
            << gnuplot_quoted(title + ": Bode diagram of " + name) << " noenhanced\n"
-           << "set logscale x\nset grid\nunset key\nset format x '%g'\n"
+           << "set logscale x\nset autoscale xfix\nset grid\nunset key\nset format x '%g'\n"
               "set logscale y\nset ylabel '|H(iω)|'\n"
               "plot 'data.txt' using 1:2 with lines lw 1.5\n"
               "unset logscale y\nset ylabel 'phase (degrees)'\nset xlabel 'ω'\n"
