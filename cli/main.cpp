@@ -4,6 +4,7 @@
 #include "engine/analysis.h"
 #include "output/document.h"
 #include "output/report.h"
+#include "output/response_output.h"
 #include "output/simulation_output.h"
 #include "output/sweep_output.h"
 #include "scene/lower.h"
@@ -186,6 +187,47 @@ int motion_command(const motion_options& options, lagrange::product wanted, cons
     return exit_ok;
 }
 
+struct response_options {
+    std::string scene_path;
+    std::vector<std::string> values;
+    std::string input, output;
+    double from = 0, to = 0;
+    std::size_t points = 400;
+    bool linear = false;
+    std::string format = "text";
+    std::string output_path;
+    std::string plot;
+};
+
+/// `lagrange response SCENE --input u --output q`: the frequency response H(iω) of the
+/// linearized system, as text, CSV or JSON, and its Bode diagram.
+int response_command(const response_options& options)
+{
+    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::model scene = lagrange::load_model(source);
+    for (const std::string& v : options.values)
+        lagrange::add_values(scene, v);
+    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::state_space});
+    lagrange::response_settings settings;
+    settings.from = options.from;
+    settings.to = options.to;
+    settings.points = options.points;
+    settings.logarithmic = !options.linear;
+    lagrange::frequency_response response = lagrange::frequency_response_of(
+        scene, *result.linearization, *result.state_space, options.input, options.output, settings);
+    if (!options.plot.empty())
+        lagrange::plot_response(options.plot, response, scene.title.empty() ? source.file() : scene.title);
+    std::ostringstream out;
+    if (options.format == "csv")
+        lagrange::write_response_csv(out, response);
+    else if (options.format == "json")
+        lagrange::write_response_json(out, response);
+    else
+        lagrange::write_response_text(out, response);
+    write_output(options.output_path, out.str());
+    return exit_ok;
+}
+
 int check_scene(const std::string& path)
 {
     lagrange::source_text source = read_scene(path);
@@ -305,6 +347,28 @@ int run(int argc, char** argv)
     bool native_flag = false; // accepted for older scripts: native code is the default now
     simulate->add_flag("--native", native_flag, "compile the equations to machine code (the default)");
 
+    response_options response_options;
+    CLI::App* response =
+        app.add_subcommand("response", "frequency response (Bode diagram) of one input to one coordinate");
+    response->add_option("SCENE", response_options.scene_path, "the scene file (`-` for standard input)")->required();
+    response->add_option("--input", response_options.input, "the input (an `input` line's name)")->required();
+    response->add_option("--output", response_options.output, "the coordinate whose response is wanted")->required();
+    response->add_option("--values", response_options.values,
+                         "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
+    response->add_option("--from", response_options.from,
+                         "lowest drive frequency ω (default: a tenth of the smallest |s|)")
+        ->check(finite_number & CLI::PositiveNumber);
+    response->add_option("--to", response_options.to, "highest drive frequency ω (default: ten times the largest |s|)")
+        ->check(finite_number & CLI::PositiveNumber);
+    response->add_option("--points", response_options.points, "number of frequencies")
+        ->check(CLI::Range(std::size_t{2}, std::size_t{10000000}))
+        ->capture_default_str();
+    response->add_flag("--linear", response_options.linear, "space the frequencies evenly (default: logarithmically)");
+    response->add_option("--format", response_options.format, "output format")
+        ->check(CLI::IsMember({"text", "csv", "json"}));
+    response->add_option("-o,--output-file", response_options.output_path, "write the output to this file");
+    response->add_option("--plot", response_options.plot, "draw the Bode diagram (SVG, with gnuplot)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -320,6 +384,8 @@ int run(int argc, char** argv)
         return motion_command(simulate_options, lagrange::product::simulation, options.budget);
     if (workprecision->parsed())
         return motion_command(workprecision_options, lagrange::product::workprecision, options.budget);
+    if (response->parsed())
+        return response_command(response_options);
     if (options.scene_path.empty()) {
         std::cerr << app.help();
         return exit_bad_input;

@@ -23,6 +23,8 @@ const std::vector<std::pair<product, std::string>>& product_names()
         {product::workprecision, "workprecision"},
         {product::floquet, "floquet"},
         {product::damping, "damping"},
+        {product::state_space, "state_space"},
+        {product::transfer, "transfer"},
     };
     return names;
 }

@@ -161,6 +161,8 @@ enum class product {
     workprecision,
     floquet,
     damping,
+    state_space,
+    transfer,
 };
 
 /// Spec names of the products, in order.

@@ -4,6 +4,7 @@
 
 #include "scene/lower.h"
 
+#include "numeric/damped_modes.h"
 #include "numeric/free_body_motion.h"
 #include "numeric/gyroscopic_modes.h"
 
@@ -80,12 +81,13 @@ bool has_top(const model& scene)
 const std::vector<product> coordinate_products = {
     product::equations, product::equilibrium, product::linearization, product::characteristic,
     product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
-    product::floquet, product::damping};
+    product::floquet, product::damping, product::state_space, product::transfer};
 
 const std::vector<product> every_product = {
     product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
     product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
-    product::euler,      product::simulation, product::workprecision, product::floquet, product::damping};
+    product::euler,      product::simulation, product::workprecision, product::floquet, product::damping,
+    product::state_space, product::transfer};
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
@@ -193,8 +195,29 @@ const std::vector<stage_definition>& stage_table()
              c.result.numeric = c.result.linearization->has_gyroscopic()
                                     ? numeric_gyroscopic_modes(c.scene, *c.result.linearization)
                                     : numeric_normal_modes(c.scene, *c.result.linearization);
+             if (!c.scene.has_generalized_forces())
+                 return;
+             const GiNaC::matrix damping =
+                 c.result.damping ? c.result.damping->damping
+                                  : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
+             if (!is_zero_matrix(damping))
+                 add_damped_eigenvalues(c.scene, *c.result.linearization, damping, *c.result.numeric);
          },
          "small oscillations", "small oscillations"},
+        // The linearized input–output system: A, B (and at the `values` points), then H(s).
+        {"state_space", {product::state_space}, {}, {"linearization"}, has_coordinates,
+         [](stage_context& c) {
+             const GiNaC::matrix damping =
+                 c.result.damping ? c.result.damping->damping
+                                  : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
+             c.result.state_space =
+                 derive_state_space(c.scene, *c.result.linearization, damping, c.simplifier_for_scene());
+             c.result.state_space_values = state_space_at_values(c.scene, *c.result.state_space);
+         }, "linear system", "linear system"},
+        {"transfer", {product::transfer}, {}, {"state_space"}, has_coordinates,
+         [](stage_context& c) {
+             c.result.transfer = transfer_functions(c.scene, *c.result.linearization, *c.result.state_space);
+         }, "linear system", "linear system"},
         {"floquet", {product::floquet}, {}, {"time"}, has_coordinates,
          [](stage_context& c) {
              if (!c.result.time || !c.result.time->depends_on_time) {
@@ -245,6 +268,7 @@ verification_input verification_input_of(const analysis& r)
     input.linearization = r.linearization ? &*r.linearization : nullptr;
     input.characteristic = r.characteristic ? &*r.characteristic : nullptr;
     input.modes = r.modes ? &*r.modes : nullptr;
+    input.damping = r.damping ? &*r.damping : nullptr;
     return input;
 }
 
@@ -292,6 +316,8 @@ std::set<product> default_products(const model& scene)
         products.insert(product::floquet);
     if (scene.has_generalized_forces())
         products.insert(product::damping);
+    if (!scene.inputs.empty())
+        products.insert({product::state_space, product::transfer});
     if (scene.simulation)
         products.insert(product::simulation);
     return products;

@@ -871,6 +871,9 @@ verification_result verify_results(const model& scene, const verification_input&
             result.entries.push_back(check_characteristic(scene, *input.linearization, *input.characteristic, numeric));
         if (input.modes)
             check_modes(scene, *input.modes, numeric, shown, result.entries);
+        if (input.damping)
+            for (verification_entry& entry : verify_damping(scene, *input.linearization, *input.damping))
+                result.entries.push_back(std::move(entry));
     }
     return result;
 }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/model.h"
+#include "mechanics/damping.h"
 #include "mechanics/equations_of_motion.h"
 #include "mechanics/equilibrium.h"
 #include "mechanics/lagrangian.h"
@@ -39,6 +40,7 @@ struct verification_input {
     const linearization_result* linearization = nullptr;
     const characteristic_result* characteristic = nullptr;
     const modes_result* modes = nullptr;
+    const damping_result* damping = nullptr;
 };
 
 /// Checks every result given (`shown`: the products printed, which name the entries of
@@ -47,5 +49,13 @@ struct verification_input {
 /// with its numeric reference.
 verification_result verify_results(const model& scene, const verification_input& input,
                                    const std::set<product>& shown);
+
+/// The damping matrix C against the Rayleigh function and the forces as the scene wrote
+/// them (beside the equilibrium, at up to two parameter points), and det(K + sC + s²M)
+/// against the printed polynomial at complex s: the entries `damping` and
+/// `damped_characteristic` (verification_damping.cpp). Throws computation_error
+/// "verification failed: …" on a disagreement.
+std::vector<verification_entry> verify_damping(const model& scene, const linearization_result& linear,
+                                               const damping_result& damping);
 
 } // namespace lagrange

@@ -101,6 +101,18 @@ void deliver(const private_directory& folder, const std::string& path) { write_o
 
 } // namespace
 
+void draw_gnuplot_svg(const std::string& path, const std::string& script,
+                      const std::vector<std::pair<std::string, std::string>>& files)
+{
+    private_directory folder;
+    for (const auto& [name, bytes] : files)
+        folder.write(name, bytes);
+    run_gnuplot(folder, script);
+    deliver(folder, path);
+}
+
+std::string gnuplot_quoted(const std::string& text) { return gnuplot_string(text); }
+
 void write_simulation_text(std::ostream& out, const simulation_result& s, bool timings)
 {
     const trajectory& run = s.run;
