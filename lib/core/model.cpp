@@ -23,6 +23,9 @@ const std::vector<std::pair<product, std::string>>& product_names()
         {product::workprecision, "workprecision"},
         {product::floquet, "floquet"},
         {product::damping, "damping"},
+        {product::conserved, "conserved"},
+        {product::hamiltonian, "hamiltonian"},
+        {product::reduced, "reduced"},
     };
     return names;
 }
