@@ -5,6 +5,7 @@
 #include "numeric/double_double.h"
 #include "numeric/expression_program.h"
 #include "numeric/quadratic_modes.h"
+#include "numeric/symmetry_checks.h"
 #include "numeric/values.h"
 
 #include <Eigen/Dense>
@@ -872,6 +873,8 @@ verification_result verify_results(const model& scene, const verification_input&
         if (input.modes)
             check_modes(scene, *input.modes, numeric, shown, result.entries);
     }
+    check_symmetries(scene, *input.lagrangian,
+                     symmetry_input{input.conserved, input.hamiltonian, input.reduced, input.steady}, result.entries);
     return result;
 }
 

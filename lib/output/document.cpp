@@ -6,6 +6,7 @@
 #include "output/bodies.h"
 #include "output/floquet_output.h"
 #include "output/damping_output.h"
+#include "output/symmetries_output.h"
 #include "output/print.h"
 #include "output/simulation_output.h"
 
@@ -403,6 +404,7 @@ void write_text(std::ostream& out, const analysis& result, const document_option
     write_floquet_text(out, result);
     if (result.damping)
         write_damping_text(out, scene, *result.damping);
+    write_symmetries_text(out, result);
     write_bodies_text(out, result);
     if (result.simulation)
         write_simulation_text(out, *result.simulation, options.timings);
@@ -529,6 +531,7 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
     write_floquet_latex(out, result);
     if (result.damping)
         write_damping_latex(out, scene, *result.damping);
+    write_symmetries_latex(out, result);
     write_bodies_latex(out, result);
     if (result.simulation)
         write_simulation_latex(out, *result.simulation, options.timings);
@@ -699,6 +702,7 @@ void write_json(std::ostream& out, const analysis& result, const document_option
     write_floquet_json(doc, result);
     if (result.damping)
         write_damping_json(doc, scene, *result.damping);
+    write_symmetries_json(doc, result);
     write_bodies_json(doc, result);
     if (result.simulation)
         doc["simulation"] = simulation_json(*result.simulation, options.timings);

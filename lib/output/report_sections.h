@@ -31,6 +31,10 @@ void write_gyroscopic_numeric(report_writer& w);
 /// that solve the equations at every t.
 void write_floquet_section(report_writer& w);
 
+/// Symmetries (report_symmetries.cpp): the conserved quantities, the Hamiltonian, Routh's
+/// reduction and the steady motion.
+void write_symmetries_section(report_writer& w);
+
 /// The parameter values of a numeric point as LaTeX, "m = 1,\ k = 4" (the numeric sections'
 /// subsection titles).
 std::string values_latex(const numeric_modes& point);
