@@ -25,6 +25,9 @@ const std::vector<std::pair<product, std::string>>& product_names()
         {product::damping, "damping"},
         {product::state_space, "state_space"},
         {product::transfer, "transfer"},
+        {product::conserved, "conserved"},
+        {product::hamiltonian, "hamiltonian"},
+        {product::reduced, "reduced"},
     };
     return names;
 }

@@ -67,6 +67,10 @@ std::optional<std::vector<GiNaC::ex>> equilibrium_of(const stage_context& c)
 
 bool has_coordinates(const model& scene) { return !scene.coordinates.empty(); }
 bool any_scene(const model&) { return true; }
+/// Static equilibria and small oscillations about them: not for a scene whose
+/// `equilibrium` line names a steady rate (the `steady` stage studies that motion).
+bool has_static_point(const model& scene) { return !scene.coordinates.empty() && !scene.steady; }
+bool has_steady(const model& scene) { return !scene.coordinates.empty() && scene.steady; }
 bool has_time(const model& scene) { return !scene.coordinates.empty() && mentions_time(scene); }
 bool has_top(const model& scene)
 {
@@ -81,13 +85,14 @@ bool has_top(const model& scene)
 const std::vector<product> coordinate_products = {
     product::equations, product::equilibrium, product::linearization, product::characteristic,
     product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
-    product::floquet, product::damping, product::state_space, product::transfer};
+    product::floquet, product::damping, product::state_space, product::transfer, product::conserved,
+    product::hamiltonian, product::reduced};
 
 const std::vector<product> every_product = {
     product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
     product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
     product::euler,      product::simulation, product::workprecision, product::floquet, product::damping,
-    product::state_space, product::transfer};
+    product::state_space, product::transfer, product::conserved, product::hamiltonian, product::reduced};
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
@@ -135,7 +140,7 @@ const std::vector<stage_definition>& stage_table()
              c.result.time = analyze_time_dependence(c.scene, *c.result.lagrangian, *c.result.equations,
                                                      c.simplifier_for_scene());
          }, "", ""},
-        {"equilibrium", {product::equilibrium}, {}, {"lagrangian", "time"}, has_coordinates,
+        {"equilibrium", {product::equilibrium}, {}, {"lagrangian", "time"}, has_static_point,
          [](stage_context& c) {
              if (c.result.time && c.result.time->depends_on_time)
                  throw computation_error("L depends on t, so there is no static equilibrium to linearize about; "
@@ -150,17 +155,17 @@ const std::vector<stage_definition>& stage_table()
              require_forces_vanish_at_rest(c.scene, c.simplifier_for_scene());
              c.result.equilibria = find_equilibria(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
-        {"linearization", {product::linearization}, {}, {"equilibrium"}, has_coordinates,
+        {"linearization", {product::linearization}, {}, {"equilibrium"}, has_static_point,
          [](stage_context& c) {
              const equilibrium_point& point = c.result.equilibria->points.at(c.result.equilibria->chosen);
              c.result.linearization =
                  linearize(c.scene, *c.result.lagrangian, point.position, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
-        {"characteristic", {product::characteristic}, {}, {"linearization"}, has_coordinates,
+        {"characteristic", {product::characteristic}, {}, {"linearization"}, has_static_point,
          [](stage_context& c) { c.result.characteristic = characteristic_polynomial(c.scene, *c.result.linearization); },
          "small oscillations", "symbolic modes"},
         {"modes", {product::frequencies, product::modes, product::normal_coordinates}, {}, {"characteristic"},
-         has_coordinates,
+         has_static_point,
          [](stage_context& c) {
              if (c.result.linearization->has_gyroscopic() &&
                  (c.wants(product::modes) || c.wants(product::normal_coordinates))) {
@@ -174,7 +179,7 @@ const std::vector<stage_definition>& stage_table()
                                   ? gyroscopic_modes(c.scene, *c.result.linearization, *c.result.characteristic)
                                   : symbolic_modes(c.scene, *c.result.linearization, *c.result.characteristic);
          }, "small oscillations", "symbolic modes"},
-        {"asymptotic", {product::asymptotic}, {}, {"modes"}, has_coordinates,
+        {"asymptotic", {product::asymptotic}, {}, {"modes"}, has_static_point,
          [](stage_context& c) {
              if (c.result.modes->gyroscopic)
                  throw computation_error("`asymptotic` is not computed for a Lagrangian with a part linear in the "
@@ -182,7 +187,7 @@ const std::vector<stage_definition>& stage_table()
              c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes);
          },
          "small oscillations", "symbolic modes"},
-        {"damping", {product::damping}, {}, {"linearization"}, has_coordinates,
+        {"damping", {product::damping}, {}, {"linearization"}, has_static_point,
          [](stage_context& c) {
              if (c.result.linearization->has_gyroscopic())
                  throw computation_error("damped small oscillations with gyroscopic terms (G ≠ 0) are not "
@@ -190,7 +195,7 @@ const std::vector<stage_definition>& stage_table()
              c.result.damping = damped_oscillations(c.scene, *c.result.linearization, c.simplifier_for_scene(),
                                                     c.result.modes ? &*c.result.modes : nullptr);
          }, "small oscillations", "small oscillations"},
-        {"numeric", {product::numeric}, {}, {"linearization"}, has_coordinates,
+        {"numeric", {product::numeric}, {}, {"linearization"}, has_static_point,
          [](stage_context& c) {
              c.result.numeric = c.result.linearization->has_gyroscopic()
                                     ? numeric_gyroscopic_modes(c.scene, *c.result.linearization)
@@ -226,6 +231,26 @@ const std::vector<stage_definition>& stage_table()
                  throw computation_error("`floquet` needs an L that depends on t, and this L does not");
              }
              c.result.floquet = floquet_multipliers(c.scene, *c.result.equations, *c.result.time);
+         }, "", ""},
+        {"conserved", {product::conserved}, {}, {"equations"}, has_coordinates,
+         [](stage_context& c) {
+             c.result.conserved = conserved_quantities(c.scene, *c.result.lagrangian, *c.result.equations,
+                                                       c.simplifier_for_scene());
+         }, "symmetries", "symmetries"},
+        {"hamiltonian", {product::hamiltonian}, {}, {"equations"}, has_coordinates,
+         [](stage_context& c) {
+             c.result.hamiltonian = derive_hamiltonian(c.scene, *c.result.lagrangian, *c.result.equations,
+                                                       c.simplifier_for_scene());
+         }, "", "hamiltonian"},
+        {"reduced", {product::reduced}, {}, {"lagrangian"}, has_coordinates,
+         [](stage_context& c) {
+             c.result.reduced = reduce_cyclic(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
+         }, "symmetries", "symmetries"},
+        // An `equilibrium` line that names a steady rate: the motion on the reduced system.
+        {"steady", {}, {product::equilibrium, product::linearization, product::characteristic, product::frequencies,
+                        product::reduced}, {"reduced"}, has_steady,
+         [](stage_context& c) {
+             c.result.steady = steady_motion(c.scene, *c.result.lagrangian, *c.result.reduced, c.simplifier_for_scene());
          }, "", ""},
         {"simulation", {product::simulation}, {}, {"equations"}, any_scene,
          [](stage_context& c) {
@@ -269,6 +294,10 @@ verification_input verification_input_of(const analysis& r)
     input.characteristic = r.characteristic ? &*r.characteristic : nullptr;
     input.modes = r.modes ? &*r.modes : nullptr;
     input.damping = r.damping ? &*r.damping : nullptr;
+    input.conserved = r.conserved ? &*r.conserved : nullptr;
+    input.hamiltonian = r.hamiltonian ? &*r.hamiltonian : nullptr;
+    input.reduced = r.reduced && r.wanted.count(product::reduced) ? &*r.reduced : nullptr;
+    input.steady = r.steady ? &*r.steady : nullptr;
     return input;
 }
 
@@ -297,10 +326,12 @@ std::string name_of(product p)
 std::set<product> default_products(const model& scene)
 {
     std::set<product> products;
-    if (!scene.coordinates.empty()) {
+    if (!scene.coordinates.empty() && scene.steady)
+        products.insert({product::equations, product::conserved, product::reduced, product::equilibrium,
+                         product::linearization, product::characteristic, product::frequencies});
+    else if (!scene.coordinates.empty())
         products.insert({product::equations, product::equilibrium, product::linearization, product::characteristic,
                          product::frequencies, product::modes, product::normal_coordinates});
-    }
     if (!scene.bodies.empty())
         products.insert(product::inertia);
     for (const rigid_body& b : scene.bodies)

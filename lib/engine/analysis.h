@@ -16,6 +16,8 @@
 #include "bodies/euler.h"
 #include "bodies/inertia.h"
 #include "mechanics/top.h"
+#include "mechanics/steady_motion.h"
+#include "mechanics/symmetries.h"
 #include "numeric/compiled_modes.h"
 #include "numeric/floquet.h"
 #include "numeric/linear_response.h"
@@ -63,6 +65,10 @@ struct analysis {
     std::optional<state_space_result> state_space;     ///< ẋ = A x + B u at the equilibrium (inputs)
     std::vector<state_space_point> state_space_values; ///< A and B at the `values` points
     std::optional<transfer_result> transfer;           ///< H(s) of each input to each coordinate
+    std::optional<conserved_result> conserved;     ///< the energy function and the cyclic momenta
+    std::optional<hamiltonian_result> hamiltonian; ///< H(q, p) and Hamilton's equations
+    std::optional<reduced_result> reduced;         ///< Routh's reduction of the cyclic coordinates
+    std::optional<steady_motion_result> steady;    ///< the `equilibrium` line's steady motion, reduced
 };
 
 /// What verify_results reads of an analysis: a pointer to each result it computed.

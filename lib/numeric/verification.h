@@ -13,6 +13,8 @@
 #include "mechanics/lagrangian.h"
 #include "mechanics/linearization.h"
 #include "mechanics/modes.h"
+#include "mechanics/steady_motion.h"
+#include "mechanics/symmetries.h"
 
 #include <set>
 #include <string>
@@ -41,6 +43,10 @@ struct verification_input {
     const characteristic_result* characteristic = nullptr;
     const modes_result* modes = nullptr;
     const damping_result* damping = nullptr;
+    const conserved_result* conserved = nullptr;
+    const hamiltonian_result* hamiltonian = nullptr;
+    const reduced_result* reduced = nullptr;
+    const steady_motion_result* steady = nullptr;
 };
 
 /// Checks every result given (`shown`: the products printed, which name the entries of

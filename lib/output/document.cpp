@@ -7,6 +7,7 @@
 #include "output/floquet_output.h"
 #include "output/damping_output.h"
 #include "output/linear_system_output.h"
+#include "output/symmetries_output.h"
 #include "output/print.h"
 #include "output/simulation_output.h"
 
@@ -408,6 +409,7 @@ void write_text(std::ostream& out, const analysis& result, const document_option
     if (result.damping)
         write_damping_text(out, scene, *result.damping);
     write_linear_system_text(out, result);
+    write_symmetries_text(out, result);
     write_bodies_text(out, result);
     if (result.simulation)
         write_simulation_text(out, *result.simulation, options.timings);
@@ -541,6 +543,7 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
     if (result.damping)
         write_damping_latex(out, scene, *result.damping);
     write_linear_system_latex(out, result);
+    write_symmetries_latex(out, result);
     write_bodies_latex(out, result);
     if (result.simulation)
         write_simulation_latex(out, *result.simulation, options.timings);
@@ -714,6 +717,7 @@ void write_json(std::ostream& out, const analysis& result, const document_option
     if (result.damping)
         write_damping_json(doc, scene, *result.damping);
     write_linear_system_json(doc, result);
+    write_symmetries_json(doc, result);
     write_bodies_json(doc, result);
     if (result.simulation)
         doc["simulation"] = simulation_json(*result.simulation, options.timings);

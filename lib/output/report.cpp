@@ -721,6 +721,12 @@ const std::vector<report_section>& report_sections()
          },
          write_linear_system_section},
         {"floquet", [](const analysis& r) { return r.floquet.has_value(); }, write_floquet_section},
+        {"symmetries",
+         [](const analysis& r) {
+             return r.conserved.has_value() || r.hamiltonian.has_value() || r.steady.has_value() ||
+                    (r.reduced.has_value() && r.wanted.count(product::reduced));
+         },
+         write_symmetries_section},
         // Rigid bodies (inertia integrals, Euler's equations) and the simulation
         // (beats, polhode, work-precision) add their section writers here.
         {"bodies",

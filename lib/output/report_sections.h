@@ -36,6 +36,9 @@ void write_floquet_section(report_writer& w);
 void write_damping_section(report_writer& w);
 /// The linearized input–output system (report_damping.cpp): A, B and the transfer functions.
 void write_linear_system_section(report_writer& w);
+/// Symmetries (report_symmetries.cpp): the conserved quantities, the Hamiltonian, Routh's
+/// reduction and the steady motion.
+void write_symmetries_section(report_writer& w);
 
 /// The parameter values of a numeric point as LaTeX, "m = 1,\ k = 4" (the numeric sections'
 /// subsection titles).

@@ -494,16 +494,23 @@ private:
 
     void lower_equilibrium(const statement& s)
     {
-        if (scene_.equilibrium)
+        if (scene_.equilibrium || scene_.steady)
             throw scene_error(s.where, "the equilibrium is given twice");
-        std::vector<std::optional<GiNaC::ex>> values(coordinates_.size());
+        std::vector<std::optional<GiNaC::ex>> values(coordinates_.size()), rates(coordinates_.size());
+        bool steady = false;
         for (const assignment& a : s.assignments) {
-            if (a.velocity)
-                throw scene_error(a.target.where, "an equilibrium gives positions only, not velocities");
             std::size_t i = coordinate_named(a.target).index;
-            if (values[i])
+            if (values[i] || rates[i])
                 throw scene_error(a.target.where, quote(a.target.name) + " is given twice");
-            values[i] = lower(*a.value, expr_context{"an equilibrium value", false, false, true, false});
+            const GiNaC::ex value = lower(*a.value, expr_context{a.velocity ? "a steady rate" : "an equilibrium value",
+                                                                 false, false, true, false});
+            (a.velocity ? rates[i] : values[i]) = value;
+            steady = steady || a.velocity;
+        }
+        if (steady) {
+            // A steady motion: coordinates without a value are cyclic (checked by the stage).
+            scene_.steady = steady_motion_request{values, rates, s.where};
+            return;
         }
         std::vector<GiNaC::ex> equilibrium;
         for (std::size_t i = 0; i < values.size(); ++i) {
