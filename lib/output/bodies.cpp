@@ -17,13 +17,6 @@ namespace {
 
 const char* const axis_names[] = {"x", "y", "z"};
 
-/// The shortest decimal that reads back as the same double.
-std::string decimal(double x)
-{
-    char buffer[64];
-    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return error == std::errc() ? std::string(buffer, end) : std::string("?");
-}
 
 std::string join(const std::vector<std::string>& parts, const std::string& separator)
 {
@@ -224,23 +217,23 @@ void write_bodies_text(std::ostream& out, const analysis& result)
             if (e.elliptic) {
                 const auto& s = *e.elliptic;
                 const char* functions[] = {"cn", "sn", "dn"};
-                out << "  Jacobi elliptic solution, modulus k = " << decimal(s.modulus) << ", period "
-                    << decimal(s.period) << ":\n";
+                out << "  Jacobi elliptic solution, modulus k = " << round_trip(s.modulus) << ", period "
+                    << round_trip(s.period) << ":\n";
                 for (unsigned k = 0; k < 3; ++k) {
                     unsigned role = 0;
                     while (s.roles[role] != k)
                         ++role;
-                    out << "    " << omega_name(e.omega[k], syntax::text) << "(t) = " << decimal(s.amplitudes[role]) << "·"
-                        << functions[role] << "(" << decimal(s.rate) << "·t " << (s.phase < 0 ? "- " : "+ ")
-                        << decimal(std::abs(s.phase)) << ", k)\n";
+                    out << "    " << omega_name(e.omega[k], syntax::text) << "(t) = " << round_trip(s.amplitudes[role]) << "·"
+                        << functions[role] << "(" << round_trip(s.rate) << "·t " << (s.phase < 0 ? "- " : "+ ")
+                        << round_trip(std::abs(s.phase)) << ", k)\n";
                 }
-                out << "    T = " << decimal(s.energy) << ", |L|² = " << decimal(s.momentum_squared) << '\n';
+                out << "    T = " << round_trip(s.energy) << ", |L|² = " << round_trip(s.momentum_squared) << '\n';
             }
             if (e.poinsot) {
                 const auto& p = *e.poinsot;
-                out << "  Poinsot: inertia ellipsoid ωᵀIω = 2T with semi-axes " << decimal(p.ellipsoid_axes[0]) << ", "
-                    << decimal(p.ellipsoid_axes[1]) << ", " << decimal(p.ellipsoid_axes[2])
-                    << "; invariable plane at distance 2T/|L| = " << decimal(p.plane_distance) << "; polhode: "
+                out << "  Poinsot: inertia ellipsoid ωᵀIω = 2T with semi-axes " << round_trip(p.ellipsoid_axes[0]) << ", "
+                    << round_trip(p.ellipsoid_axes[1]) << ", " << round_trip(p.ellipsoid_axes[2])
+                    << "; invariable plane at distance 2T/|L| = " << round_trip(p.plane_distance) << "; polhode: "
                     << p.polhode.size() << " points (JSON)\n";
             }
             if (!e.stability.empty()) {
@@ -382,18 +375,18 @@ void write_bodies_latex(std::ostream& out, const analysis& result)
                     unsigned role = 0;
                     while (s.roles[role] != k)
                         ++role;
-                    rows.push_back(print(e.omega[k], syntax::latex) + "(t) &= " + decimal(s.amplitudes[role]) +
-                                   "\\,\\mathrm{" + functions[role] + "}(" + decimal(s.rate) + "\\,t " +
-                                   (s.phase < 0 ? "- " : "+ ") + decimal(std::abs(s.phase)) + ", k)");
+                    rows.push_back(print(e.omega[k], syntax::latex) + "(t) &= " + round_trip(s.amplitudes[role]) +
+                                   "\\,\\mathrm{" + functions[role] + "}(" + round_trip(s.rate) + "\\,t " +
+                                   (s.phase < 0 ? "- " : "+ ") + round_trip(std::abs(s.phase)) + ", k)");
                 }
-                out << "Jacobi elliptic solution, $k = " << decimal(s.modulus) << "$, period $" << decimal(s.period)
+                out << "Jacobi elliptic solution, $k = " << round_trip(s.modulus) << "$, period $" << round_trip(s.period)
                     << "$:\n\\begin{align*}\n" << join(rows, " \\\\\n") << "\n\\end{align*}\n";
             }
             if (e.poinsot)
-                out << "Poinsot: the ellipsoid $\\omega^{T} I \\omega = 2T$ has the semi-axes\n\\[" << decimal(e.poinsot->ellipsoid_axes[0])
-                    << ",\\quad " << decimal(e.poinsot->ellipsoid_axes[1]) << ",\\quad "
-                    << decimal(e.poinsot->ellipsoid_axes[2]) << "\\]\nand the invariable plane is at the distance\n\\[2T/|L| = "
-                    << decimal(e.poinsot->plane_distance) << "\\]\nfrom the centre.\n\n";
+                out << "Poinsot: the ellipsoid $\\omega^{T} I \\omega = 2T$ has the semi-axes\n\\[" << round_trip(e.poinsot->ellipsoid_axes[0])
+                    << ",\\quad " << round_trip(e.poinsot->ellipsoid_axes[1]) << ",\\quad "
+                    << round_trip(e.poinsot->ellipsoid_axes[2]) << "\\]\nand the invariable plane is at the distance\n\\[2T/|L| = "
+                    << round_trip(e.poinsot->plane_distance) << "\\]\nfrom the centre.\n\n";
             if (!e.stability.empty())
                 out << "Rotation about axes 1, 2, 3: " << join(e.stability, ", ") << ".\n\n";
         }
@@ -512,8 +505,8 @@ void write_bodies_json(nlohmann::ordered_json& doc, const analysis& result)
                     unsigned role = 0;
                     while (s.roles[role] != k)
                         ++role;
-                    omega.push_back(decimal(s.amplitudes[role]) + "*" + functions[role] + "(" + decimal(s.rate) +
-                                    "*t" + (s.phase < 0 ? "-" : "+") + decimal(std::abs(s.phase)) + ", k)");
+                    omega.push_back(round_trip(s.amplitudes[role]) + "*" + functions[role] + "(" + round_trip(s.rate) +
+                                    "*t" + (s.phase < 0 ? "-" : "+") + round_trip(std::abs(s.phase)) + ", k)");
                 }
                 body["solution"] = {{"kind", "elliptic"},     {"omega", omega},
                                     {"modulus", s.modulus},   {"rate", s.rate},

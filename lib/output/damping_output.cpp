@@ -174,16 +174,6 @@ void write_damping_json(nlohmann::ordered_json& doc, const model& scene, const d
 
 namespace {
 
-/// The shortest decimal that reads back as the same double.
-std::string shortest(double x)
-{
-    if (x == 0)
-        x = 0; // no −0
-    char buffer[64];
-    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return error == std::errc() ? std::string(buffer, end) : std::string("?");
-}
-
 /// The eigenvalues to print: every real one and the upper member of each conjugate pair
 /// (the lower one is its exact conjugate), in quadratic_modes order.
 std::vector<std::size_t> printed_eigenvalues(const numeric_modes& n)
@@ -195,7 +185,7 @@ std::vector<std::size_t> printed_eigenvalues(const numeric_modes& n)
     return chosen;
 }
 
-std::string ratio_text(double ratio) { return std::isnan(ratio) ? "none (s = 0)" : shortest(ratio); }
+std::string ratio_text(double ratio) { return std::isnan(ratio) ? "none (s = 0)" : round_trip(ratio); }
 
 } // namespace
 
@@ -204,10 +194,10 @@ void write_damped_eigenvalues_text(std::ostream& out, const numeric_modes& n)
     out << "    damped eigenvalues s (q ∝ e^{st}, first-order system): " << n.stability << '\n';
     for (std::size_t k : printed_eigenvalues(n)) {
         const std::complex<double> z = n.eigenvalues[k];
-        out << "    s = " << shortest(z.real());
+        out << "    s = " << round_trip(z.real());
         if (z.imag() != 0)
-            out << " ± " << shortest(z.imag()) << "i";
-        out << "  (error ≤ " << shortest(n.eigenvalue_error[k]) << ")  ζ = " << ratio_text(n.damping_ratio[k])
+            out << " ± " << round_trip(z.imag()) << "i";
+        out << "  (error ≤ " << round_trip(n.eigenvalue_error[k]) << ")  ζ = " << ratio_text(n.damping_ratio[k])
             << '\n';
     }
 }

@@ -253,21 +253,14 @@ std::string matrix_latex(const GiNaC::matrix& m)
     return out + "\\end{pmatrix}";
 }
 
-/// The shortest decimal that reads back as the same double.
-std::string number(double x)
-{
-    char buffer[64];
-    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return error == std::errc() ? std::string(buffer, end) : std::string("?");
-}
 
 /// A complex mode component as a + bi (b omitted when 0).
 std::string complex_text(std::complex<double> z)
 {
     double re = z.real() == 0 ? 0.0 : z.real(); // no −0
     if (z.imag() == 0)
-        return number(re);
-    return number(re) + (z.imag() < 0 ? " - " : " + ") + number(std::abs(z.imag())) + "i";
+        return round_trip(re);
+    return round_trip(re) + (z.imag() < 0 ? " - " : " + ") + round_trip(std::abs(z.imag())) + "i";
 }
 
 } // namespace
@@ -359,15 +352,15 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
         for (const numeric_modes& n : *result.numeric) {
             out << "  at";
             for (const auto& [name, value] : n.values)
-                out << ' ' << print_name(name, s) << " = " << number(value);
+                out << ' ' << print_name(name, s) << " = " << round_trip(value);
             out << "  (" << n.method << ")\n";
             if (!n.stability.empty() && !n.damped)
                 out << "    " << n.stability << '\n';
             for (std::size_t k = 0; k < n.omega.size(); ++k) {
-                out << "    ω = " << number(n.omega[k]) << "  (relative error ≤ " << number(n.error[k])
+                out << "    ω = " << round_trip(n.omega[k]) << "  (relative error ≤ " << round_trip(n.error[k])
                     << ")  mode (";
                 for (Eigen::Index i = 0; i < n.modes.rows(); ++i)
-                    out << (i ? ", " : "") << number(n.modes(i, static_cast<Eigen::Index>(k)));
+                    out << (i ? ", " : "") << round_trip(n.modes(i, static_cast<Eigen::Index>(k)));
                 for (Eigen::Index i = 0; i < n.complex_modes.rows(); ++i)
                     out << (i ? ", " : "") << complex_text(n.complex_modes(i, static_cast<Eigen::Index>(k)));
                 out << ")\n";

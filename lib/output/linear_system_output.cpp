@@ -13,16 +13,6 @@ namespace lagrange {
 
 namespace {
 
-/// The shortest decimal that reads back as the same double.
-std::string shortest(double x)
-{
-    if (x == 0)
-        x = 0; // no −0
-    char buffer[64];
-    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return error == std::errc() ? std::string(buffer, end) : std::string("?");
-}
-
 bool shows(const analysis& result, product p) { return result.wanted.count(p) > 0; }
 
 std::vector<std::string> state_names(const analysis& result, syntax how)
@@ -66,7 +56,7 @@ void numbers_text(std::ostream& out, const std::string& label, const Eigen::Matr
     for (Eigen::Index i = 0; i < m.rows(); ++i) {
         out << (i ? indent + std::string(label.size() + 3, ' ') : std::string(" ")) << "[";
         for (Eigen::Index j = 0; j < m.cols(); ++j)
-            out << (j ? ", " : "") << shortest(m(i, j));
+            out << (j ? ", " : "") << round_trip(m(i, j));
         out << "]\n";
     }
 }
@@ -87,7 +77,7 @@ std::string values_text(const std::vector<std::pair<std::string, double>>& value
     std::string out;
     for (const auto& [name, value] : values)
         out += (out.empty() ? "" : how == syntax::latex ? ",\\ " : " ") + print_name(name, how) + " = " +
-               (how == syntax::latex ? print(GiNaC::numeric(value), how) : shortest(value));
+               (how == syntax::latex ? print(GiNaC::numeric(value), how) : round_trip(value));
     return out;
 }
 

@@ -5,6 +5,7 @@
 #include "output/print.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -1048,6 +1049,15 @@ std::string print_name(const std::string& name, syntax s)
         out += "_" + text_word(sub_letters) + sub_digits;
     }
     return out;
+}
+
+std::string round_trip(double x)
+{
+    if (x == 0)
+        x = 0; // no −0
+    char buffer[64];
+    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return error == std::errc() ? std::string(buffer, end) : std::string("?");
 }
 
 } // namespace lagrange

@@ -39,4 +39,8 @@ std::vector<std::string> print_terms(const GiNaC::ex& e, syntax s, const term_or
 /// "θ1" / "\theta_{1}", `l_2` -> "l_{2}", `M` -> "M", `omega` -> "\omega".
 std::string print_name(const std::string& name, syntax s);
 
+/// The shortest decimal that reads back as the same double (`std::to_chars`): "9.81",
+/// "1e-14"; zero as "0", never "-0". For numbers printed as data (JSON, tables, CSV).
+std::string round_trip(double x);
+
 } // namespace lagrange

@@ -15,21 +15,11 @@ namespace lagrange {
 
 namespace {
 
-/// The shortest decimal that reads back as the same double.
-std::string shortest(double x)
-{
-    if (x == 0)
-        x = 0; // no −0
-    char buffer[64];
-    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return error == std::errc() ? std::string(buffer, end) : std::string("?");
-}
-
 std::string values_line(const frequency_response& r)
 {
     std::string out;
     for (const auto& [name, value] : r.values)
-        out += (out.empty() ? "" : " ") + print_name(name, syntax::text) + " = " + shortest(value);
+        out += (out.empty() ? "" : " ") + print_name(name, syntax::text) + " = " + round_trip(value);
     return out;
 }
 
@@ -39,24 +29,24 @@ void write_response_text(std::ostream& out, const frequency_response& r)
 {
     out << "Frequency response H(iω) of " << print_name(r.output, syntax::text) << " to "
         << print_name(r.input, syntax::text) << "\n  at " << values_line(r) << "\n  " << r.omega.size()
-        << " frequencies from " << shortest(r.omega.front()) << " to " << shortest(r.omega.back()) << "\n";
+        << " frequencies from " << round_trip(r.omega.front()) << " to " << round_trip(r.omega.back()) << "\n";
     if (std::isnan(r.peak_omega))
         out << "  no resonance peak inside the range\n";
     else
-        out << "  peak |H| = " << shortest(r.peak_magnitude) << " at ω = " << shortest(r.peak_omega) << "\n";
+        out << "  peak |H| = " << round_trip(r.peak_magnitude) << " at ω = " << round_trip(r.peak_omega) << "\n";
     out << "\n  ω  |H|  |H| (dB)  phase (°)\n";
     for (std::size_t k = 0; k < r.omega.size(); ++k)
-        out << "  " << shortest(r.omega[k]) << "  " << shortest(r.magnitude[k]) << "  " << shortest(r.magnitude_db[k])
-            << "  " << shortest(r.phase_degrees[k]) << "\n";
+        out << "  " << round_trip(r.omega[k]) << "  " << round_trip(r.magnitude[k]) << "  " << round_trip(r.magnitude_db[k])
+            << "  " << round_trip(r.phase_degrees[k]) << "\n";
 }
 
 void write_response_csv(std::ostream& out, const frequency_response& r)
 {
     out << "omega,magnitude,magnitude_db,phase_degrees,real,imag\n";
     for (std::size_t k = 0; k < r.omega.size(); ++k)
-        out << shortest(r.omega[k]) << ',' << shortest(r.magnitude[k]) << ',' << shortest(r.magnitude_db[k]) << ','
-            << shortest(r.phase_degrees[k]) << ',' << shortest(r.gain[k].real()) << ','
-            << shortest(r.gain[k].imag()) << '\n';
+        out << round_trip(r.omega[k]) << ',' << round_trip(r.magnitude[k]) << ',' << round_trip(r.magnitude_db[k]) << ','
+            << round_trip(r.phase_degrees[k]) << ',' << round_trip(r.gain[k].real()) << ','
+            << round_trip(r.gain[k].imag()) << '\n';
 }
 
 void write_response_json(std::ostream& out, const frequency_response& r)
@@ -87,7 +77,7 @@ void plot_response(const std::string& path, const frequency_response& r, const s
 {
     std::ostringstream data;
     for (std::size_t k = 0; k < r.omega.size(); ++k)
-        data << shortest(r.omega[k]) << ' ' << shortest(r.magnitude[k]) << ' ' << shortest(r.phase_degrees[k]) << '\n';
+        data << round_trip(r.omega[k]) << ' ' << round_trip(r.magnitude[k]) << ' ' << round_trip(r.phase_degrees[k]) << '\n';
     const std::string name = print_name(r.input, syntax::text) + " → " + print_name(r.output, syntax::text);
     std::ostringstream script;
     script << "set terminal svg size 900,640 dynamic font 'sans,12'\n"
