@@ -79,3 +79,54 @@ TEST_CASE("verification catches a wrong damping matrix and a wrong damped polyno
         require_caught(scene, *a.linearization, wrong, "the damped characteristic polynomial");
     }
 }
+
+TEST_CASE("verification catches a wrong state-space matrix and a wrong transfer function", "[verification][transfer]")
+{
+    model scene = load(R"(parameters mc mp l g c
+coordinates x theta
+input F
+point C mass mc at (x, 0)
+point B mass mp at (x + l*sin(theta), l*cos(theta))
+gravity g along (0, -1)
+damper c between C and (0, 0)
+force on C (F, 0)
+equilibrium x = 0, theta = 0
+)");
+    analysis a = analyze(scene, {product::transfer, product::state_space});
+    REQUIRE(a.state_space);
+    REQUIRE(a.transfer);
+    REQUIRE(a.verification);
+    int checked = 0;
+    for (const verification_entry& e : a.verification->entries)
+        if (e.item == "state_space" || e.item == "transfer") {
+            INFO(e.item << ": " << e.how);
+            CHECK(e.checked);
+            ++checked;
+        }
+    CHECK(checked == 2);
+    const GiNaC::ex c = lagrange_test::symbol_of(scene, "c");
+    auto caught = [&](const state_space_result& system, const transfer_result& transfer, const std::string& what) {
+        try {
+            verify_linear_system(scene, *a.linearization, system, &transfer);
+            FAIL("the wrong " << what << " passed verification");
+        } catch (const computation_error& e) {
+            INFO(e.what());
+            CHECK(std::string(e.what()).find("verification failed: " + what) != std::string::npos);
+        }
+    };
+    {
+        state_space_result wrong = *a.state_space;
+        wrong.a(2, 2) = wrong.a(2, 2) + c; // the damper's sign flipped
+        caught(wrong, *a.transfer, "the state space");
+    }
+    {
+        state_space_result wrong = *a.state_space;
+        wrong.b(3, 0) = -wrong.b(3, 0);
+        caught(wrong, *a.transfer, "the state space");
+    }
+    {
+        transfer_result wrong = *a.transfer;
+        wrong.entries[1].numerator = -wrong.entries[1].numerator;
+        caught(*a.state_space, wrong, "the transfer function");
+    }
+}

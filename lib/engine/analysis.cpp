@@ -298,6 +298,8 @@ verification_input verification_input_of(const analysis& r)
     input.hamiltonian = r.hamiltonian ? &*r.hamiltonian : nullptr;
     input.reduced = r.reduced && r.wanted.count(product::reduced) ? &*r.reduced : nullptr;
     input.steady = r.steady ? &*r.steady : nullptr;
+    input.state_space = r.state_space ? &*r.state_space : nullptr;
+    input.transfer = r.transfer ? &*r.transfer : nullptr;
     return input;
 }
 

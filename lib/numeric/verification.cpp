@@ -875,6 +875,10 @@ verification_result verify_results(const model& scene, const verification_input&
         if (input.damping)
             for (verification_entry& entry : verify_damping(scene, *input.linearization, *input.damping))
                 result.entries.push_back(std::move(entry));
+        if (input.state_space)
+            for (verification_entry& entry :
+                 verify_linear_system(scene, *input.linearization, *input.state_space, input.transfer))
+                result.entries.push_back(std::move(entry));
     }
     check_symmetries(scene, *input.lagrangian,
                      symmetry_input{input.conserved, input.hamiltonian, input.reduced, input.steady}, result.entries);

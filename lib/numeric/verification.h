@@ -15,6 +15,7 @@
 #include "mechanics/modes.h"
 #include "mechanics/steady_motion.h"
 #include "mechanics/symmetries.h"
+#include "mechanics/state_space.h"
 
 #include <set>
 #include <string>
@@ -47,6 +48,8 @@ struct verification_input {
     const hamiltonian_result* hamiltonian = nullptr;
     const reduced_result* reduced = nullptr;
     const steady_motion_result* steady = nullptr;
+    const state_space_result* state_space = nullptr;
+    const transfer_result* transfer = nullptr; ///< checked only with state_space
 };
 
 /// Checks every result given (`shown`: the products printed, which name the entries of
@@ -63,5 +66,13 @@ verification_result verify_results(const model& scene, const verification_input&
 /// "verification failed: …" on a disagreement.
 std::vector<verification_entry> verify_damping(const model& scene, const linearization_result& linear,
                                                const damping_result& damping);
+
+/// A and B against M⁻¹ of the linearization's T, V, G with C and ∂Q/∂u taken from the
+/// statements by differences; each H(s) (when `transfer` is given) against
+/// (s²M + s(C − G) + K)⁻¹ ∂Q/∂u by LU at complex s: the entries `state_space` and
+/// `transfer`. Throws computation_error "verification failed: …" on a disagreement.
+std::vector<verification_entry> verify_linear_system(const model& scene, const linearization_result& linear,
+                                                     const state_space_result& system,
+                                                     const transfer_result* transfer);
 
 } // namespace lagrange

@@ -89,6 +89,7 @@ struct state_point {
     const model& scene;
     const GiNaC::exmap& parameters;
     std::vector<double> q, v;
+    std::vector<double> inputs = {}; ///< empty: every input 0
 
     GiNaC::exmap map() const
     {
@@ -97,8 +98,8 @@ struct state_point {
             at[scene.coordinates[i].position] = GiNaC::numeric(q[i]);
             at[scene.coordinates[i].velocity] = GiNaC::numeric(v[i]);
         }
-        for (const input_signal& u : scene.inputs)
-            at[u.symbol] = 0;
+        for (std::size_t k = 0; k < scene.inputs.size(); ++k)
+            at[scene.inputs[k].symbol] = k < inputs.size() ? GiNaC::ex(GiNaC::numeric(inputs[k])) : GiNaC::ex(0);
         at[scene.time] = 0;
         return at;
     }
@@ -236,6 +237,23 @@ std::optional<Eigen::MatrixXd> matrix_value(const GiNaC::matrix& m, const GiNaC:
     return result;
 }
 
+/// C from the statements beside the equilibrium q0 (both sides averaged), to O(offset²): a damper's length may vanish at q0 itself.
+std::optional<Eigen::MatrixXd> damping_beside(const model& scene, const GiNaC::exmap& parameters,
+                                              const std::vector<double>& q0)
+{
+    std::vector<double> plus = q0, minus = q0;
+    for (std::size_t i = 0; i < q0.size(); ++i) {
+        const double direction = 1 + 0.375 * static_cast<double>(i % 3);
+        plus[i] += offset * direction;
+        minus[i] -= offset * direction;
+    }
+    std::optional<Eigen::MatrixXd> up = damping_reference(scene, parameters, plus);
+    std::optional<Eigen::MatrixXd> down = damping_reference(scene, parameters, minus);
+    if (!up || !down)
+        return std::nullopt;
+    return Eigen::MatrixXd((*up + *down) / 2);
+}
+
 [[noreturn]] void fail(const std::string& product, const std::string& what, const std::string& where, double here,
                        double reference)
 {
@@ -261,19 +279,10 @@ std::vector<verification_entry> verify_damping(const model& scene, const lineari
         std::optional<Eigen::MatrixXd> stiffness = matrix_value(linear.potential, parameters);
         if (q0.size() != n || !symbolic || !mass || !stiffness)
             continue;
-        // Beside the equilibrium on both sides along a fixed direction (a damper's length may
-        // vanish at it), averaged: C there to O(offset²).
-        std::vector<double> plus = q0, minus = q0;
-        for (std::size_t i = 0; i < n; ++i) {
-            const double direction = 1 + 0.375 * static_cast<double>(i % 3);
-            plus[i] += offset * direction;
-            minus[i] -= offset * direction;
-        }
-        std::optional<Eigen::MatrixXd> up = damping_reference(scene, parameters, plus);
-        std::optional<Eigen::MatrixXd> down = damping_reference(scene, parameters, minus);
-        if (!up || !down)
+        std::optional<Eigen::MatrixXd> beside = damping_beside(scene, parameters, q0);
+        if (!beside)
             continue;
-        const Eigen::MatrixXd reference = (*up + *down) / 2;
+        const Eigen::MatrixXd& reference = *beside;
         const std::string where = point_text(scene, parameters);
         const double size = reference.cwiseAbs().sum() + symbolic->cwiseAbs().sum() + 1e-300;
         for (std::size_t i = 0; i < n; ++i)
@@ -333,6 +342,121 @@ std::vector<verification_entry> verify_damping(const model& scene, const lineari
             {"damped_characteristic", "against det(K + sC + s²M) (LU) at " + std::to_string(2 * n + 2) +
                                           " complex s" + points,
              true}};
+}
+
+namespace {
+
+/// B_q = ∂Q/∂u at rest at q0 by central differences of the applied forces in each input.
+std::optional<Eigen::MatrixXd> input_reference(const model& scene, const GiNaC::exmap& parameters,
+                                               const std::vector<double>& q0)
+{
+    const std::size_t n = q0.size(), m = scene.inputs.size();
+    Eigen::MatrixXd b(n, m);
+    for (std::size_t j = 0; j < m; ++j) {
+        state_point up{scene, parameters, q0, std::vector<double>(n, 0.0), std::vector<double>(m, 0.0)};
+        state_point down = up;
+        up.inputs[j] = step;
+        down.inputs[j] = -step;
+        std::optional<std::vector<double>> qu = applied_at(up), qd = applied_at(down);
+        if (!qu || !qd)
+            return std::nullopt;
+        for (std::size_t i = 0; i < n; ++i)
+            b(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = ((*qu)[i] - (*qd)[i]) / (2 * step);
+    }
+    return b;
+}
+
+void compare_matrices(const std::string& product, const std::string& name, const Eigen::MatrixXd& here,
+                      const Eigen::MatrixXd& reference, const std::string& where)
+{
+    const double size = here.cwiseAbs().sum() + reference.cwiseAbs().sum() + 1e-300;
+    for (Eigen::Index i = 0; i < here.rows(); ++i)
+        for (Eigen::Index j = 0; j < here.cols(); ++j)
+            if (std::abs(here(i, j) - reference(i, j)) > tolerance * size)
+                fail(product, name + "(" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + ")", where,
+                     here(i, j), reference(i, j));
+}
+
+} // namespace
+
+std::vector<verification_entry> verify_linear_system(const model& scene, const linearization_result& linear,
+                                                     const state_space_result& system, const transfer_result* transfer)
+{
+    const std::size_t n = scene.coordinates.size();
+    int used = 0;
+    for (const GiNaC::exmap& parameters : parameter_points(scene)) {
+        std::vector<double> q0;
+        for (const ex& x : linear.at)
+            if (std::optional<double> v = real_value(x, parameters))
+                q0.push_back(*v);
+        std::optional<Eigen::MatrixXd> a = matrix_value(system.a, parameters), b = matrix_value(system.b, parameters);
+        std::optional<Eigen::MatrixXd> mass = matrix_value(linear.kinetic, parameters);
+        std::optional<Eigen::MatrixXd> stiffness = matrix_value(linear.potential, parameters);
+        std::optional<Eigen::MatrixXd> gyroscopic = matrix_value(linear.gyroscopic, parameters);
+        if (q0.size() != n || !a || !b || !mass || !stiffness || !gyroscopic)
+            continue;
+        std::optional<Eigen::MatrixXd> damping = damping_beside(scene, parameters, q0);
+        std::optional<Eigen::MatrixXd> forcing = input_reference(scene, parameters, q0);
+        if (!damping || !forcing)
+            continue;
+        const Eigen::MatrixXd inverse_mass = mass->inverse();
+        const Eigen::Index size = static_cast<Eigen::Index>(n);
+        Eigen::MatrixXd a_reference = Eigen::MatrixXd::Zero(2 * size, 2 * size);
+        a_reference.block(0, size, size, size) = Eigen::MatrixXd::Identity(size, size);
+        a_reference.block(size, 0, size, size) = -inverse_mass * *stiffness;
+        a_reference.block(size, size, size, size) = inverse_mass * (*gyroscopic - *damping);
+        Eigen::MatrixXd b_reference = Eigen::MatrixXd::Zero(2 * size, forcing->cols());
+        b_reference.block(size, 0, size, forcing->cols()) = inverse_mass * *forcing;
+        const std::string where = point_text(scene, parameters);
+        compare_matrices("the state space", "A", *a, a_reference, where);
+        compare_matrices("the state space", "B", *b, b_reference, where);
+        if (transfer) {
+            for (const complex s : {complex(0.25, 0.75), complex(-0.5, 1.5), complex(1.25, 0.125)}) {
+                const Eigen::MatrixXcd pencil = (s * s) * mass->cast<complex>() +
+                                                s * (*damping - *gyroscopic).cast<complex>() +
+                                                stiffness->cast<complex>();
+                Eigen::PartialPivLU<Eigen::MatrixXcd> lu(pencil);
+                const Eigen::MatrixXcd reference = lu.solve(forcing->cast<complex>());
+                const double scale = reference.cwiseAbs().sum() + 1e-300;
+                for (const transfer_function& h : transfer->entries) {
+                    GiNaC::exmap at = parameters;
+                    at[transfer->s] = GiNaC::numeric(s.real()) + GiNaC::I * GiNaC::numeric(s.imag());
+                    ex value = h.function().subs(at).evalf();
+                    if (!GiNaC::is_a<GiNaC::numeric>(value))
+                        continue;
+                    const GiNaC::numeric& number = GiNaC::ex_to<GiNaC::numeric>(value);
+                    const complex here(GiNaC::real(number).to_double(), GiNaC::imag(number).to_double());
+                    const complex there = reference(static_cast<Eigen::Index>(h.coordinate),
+                                                    static_cast<Eigen::Index>(h.input));
+                    if (std::abs(here - there) > tolerance * scale)
+                        fail("the transfer function",
+                             "|H(s)| of " + scene.inputs[h.input].name + " -> " +
+                                 scene.coordinates[h.coordinate].name + " at s = " + message_number(s.real()) +
+                                 " + " + message_number(s.imag()) + "i",
+                             where, std::abs(here), std::abs(there));
+                }
+            }
+        }
+        if (++used == points_wanted)
+            break;
+    }
+    std::vector<verification_entry> entries;
+    if (used == 0) {
+        const std::string why = "not checked: the matrices are not real at any parameter point tried";
+        entries.push_back({"state_space", why, false});
+        if (transfer)
+            entries.push_back({"transfer", why, false});
+        return entries;
+    }
+    const std::string points = " at " + std::to_string(used) + " parameter points";
+    entries.push_back({"state_space",
+                       "A and B against M⁻¹ of the verified T, V, G with C and ∂Q/∂u from the statements by "
+                       "differences" +
+                           points,
+                       true});
+    if (transfer)
+        entries.push_back({"transfer", "against (s²M + s(C − G) + K)⁻¹ ∂Q/∂u (LU) at 3 complex s" + points, true});
+    return entries;
 }
 
 } // namespace lagrange
