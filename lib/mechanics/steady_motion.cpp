@@ -190,14 +190,26 @@ steady_motion_result steady_motion(const model& scene, const lagrangian_result& 
                                     " = " + message_text(failing[0].second) +
                                     " there, not 0, and that cannot be solved for a rate or a parameter");
     }
-    // Shown tidied; where no sine or cosine is left in a denominator, in the simplifier's
-    // compact form (sin(th0)², not 1 − cos(th0)²).
     result.solution = solution;
+    // Shown in the shortest of three exact forms: tidied (sin² = 1 − cos², factored), and
+    // the simplifier's compact form of that or of the expression itself where no sine or
+    // cosine is left in a denominator (sin(th0)², not −(cos(th0) + 1)·(cos(th0) − 1)).
     auto apply = [&](const ex& e) {
-        const ex tidied = tidy_trigonometric(e.subs(solution));
-        if (!has_trigonometric_function(tidied.denom()))
-            return simplify(tidied);
-        return tidied;
+        const ex raw = e.subs(solution);
+        const ex tidied = tidy_trigonometric(raw);
+        ex best = tidied;
+        std::size_t shortest = message_text(tidied).size();
+        for (const ex& form : {tidied, raw}) {
+            if (has_trigonometric_function(form.denom()))
+                continue;
+            const ex candidate = simplify(form);
+            const std::size_t length = message_text(candidate).size();
+            if (length < shortest) {
+                best = candidate;
+                shortest = length;
+            }
+        }
+        return best;
     };
     for (std::size_t k = 0; k < result.rates.size(); ++k)
         if (!result.rate_given[k])
