@@ -366,3 +366,23 @@ TEST_CASE("simulation: a cyclic momentum's drift is reported", "[symmetries][sim
         }
     CHECK(found);
 }
+
+TEST_CASE("steady motion: numeric angle and rate", "[symmetries]")
+{
+    const std::string pendulum =
+        "parameters m l g Omega\ncoordinates theta phi\n"
+        "point bob mass m at (l*sin(theta)*cos(phi), l*sin(theta)*sin(phi), -l*cos(theta))\n"
+        "gravity g along (0, 0, -1)\n";
+    // A decimal angle is studied exactly: Ω² = g/(l cos ½), ω² = Ω²(1 + 3cos²½).
+    model decimal = load(pendulum + "equilibrium theta = 0.5, phi' = Omega\n");
+    analysis a = run(decimal, {product::frequencies});
+    const ex omega = named(decimal, "Omega");
+    REQUIRE(a.steady->modes.frequencies.size() == 1);
+    CHECK(same_values(a.steady->modes.frequencies[0], omega * omega * (1 + 3 * pow(cos(GiNaC::numeric(1, 2)), 2))));
+    // θ0 = π/3 and Ω = 2: steady when g = 2l, and ω² = 4(1 + 3/4) = 7.
+    model exact = load(pendulum + "equilibrium theta = 1/3*Pi, phi' = 2\n");
+    analysis b = run(exact, {product::frequencies});
+    REQUIRE(b.steady->relation);
+    CHECK(same_values(b.steady->relation->second, 2 * named(exact, "l")));
+    CHECK(same_values(b.steady->modes.frequencies[0], 7));
+}

@@ -4,12 +4,14 @@
 
 #include "algebra/budget.h"
 #include "algebra/calculus.h"
+#include "algebra/expression.h"
 #include "algebra/message_text.h"
 #include "algebra/sign.h"
 #include "mechanics/equilibrium.h"
 #include "mechanics/gyroscopic.h"
 
 #include <algorithm>
+#include <charconv>
 #include <optional>
 #include <utility>
 #include <string>
@@ -41,6 +43,31 @@ bool has_trigonometric_function(const ex& e)
     return false;
 }
 
+/// e with every floating-point number written as the exact decimal it prints as (0.5 as
+/// 1/2), so that a steady motion given in decimals is studied exactly.
+ex exact_decimals(const ex& e)
+{
+    if (GiNaC::is_a<GiNaC::numeric>(e)) {
+        const GiNaC::numeric& x = GiNaC::ex_to<GiNaC::numeric>(e);
+        if (x.is_rational() || !x.is_real())
+            return e;
+        char text[64];
+        const auto end = std::to_chars(text, text + sizeof text, x.to_double()).ptr;
+        const std::string digits(text, end);
+        const std::size_t exponent_at = digits.find_first_of("eE");
+        std::string mantissa = digits.substr(0, exponent_at);
+        long exponent = exponent_at == std::string::npos ? 0 : std::stol(digits.substr(exponent_at + 1));
+        const std::size_t point = mantissa.find('.');
+        if (point != std::string::npos) {
+            exponent -= static_cast<long>(mantissa.size() - point - 1);
+            mantissa.erase(point, 1);
+        }
+        return GiNaC::numeric(mantissa.c_str()) * GiNaC::pow(GiNaC::numeric(10), exponent);
+    }
+    map_each recurse([](const ex& x) { return exact_decimals(x); });
+    return e.nops() == 0 ? e : e.map(recurse);
+}
+
 } // namespace
 
 steady_motion_result steady_motion(const model& scene, const lagrangian_result& lagrangian,
@@ -65,7 +92,7 @@ steady_motion_result steady_motion(const model& scene, const lagrangian_result& 
     std::vector<ex> candidates;
     for (std::size_t c : reduced.cyclic) {
         if (request.rates[c]) {
-            result.rates.push_back(*request.rates[c]);
+            result.rates.push_back(exact_decimals(*request.rates[c]));
             result.rate_given.push_back(true);
         } else {
             GiNaC::realsymbol unknown(coords[c].name + "_dot");
@@ -81,8 +108,8 @@ steady_motion_result steady_motion(const model& scene, const lagrangian_result& 
             candidates.push_back(result.rates[k]);
     std::vector<ex> at(coords.size(), 0);
     for (std::size_t a : reduced.kept) {
-        at[a] = *request.positions[a];
-        result.position.push_back(*request.positions[a]);
+        at[a] = exact_decimals(*request.positions[a]);
+        result.position.push_back(at[a]);
     }
     auto at_point = [&](const ex& e) { return evaluate_at(e.subs(rate_map), scene, at); };
 
@@ -163,14 +190,26 @@ steady_motion_result steady_motion(const model& scene, const lagrangian_result& 
                                     " = " + message_text(failing[0].second) +
                                     " there, not 0, and that cannot be solved for a rate or a parameter");
     }
-    // Shown tidied; where no sine or cosine is left in a denominator, in the simplifier's
-    // compact form (sin(th0)², not 1 − cos(th0)²).
     result.solution = solution;
+    // Shown in the shortest of three exact forms: tidied (sin² = 1 − cos², factored), and
+    // the simplifier's compact form of that or of the expression itself where no sine or
+    // cosine is left in a denominator (sin(th0)², not −(cos(th0) + 1)·(cos(th0) − 1)).
     auto apply = [&](const ex& e) {
-        const ex tidied = tidy_trigonometric(e.subs(solution));
-        if (!has_trigonometric_function(tidied.denom()))
-            return simplify(tidied);
-        return tidied;
+        const ex raw = e.subs(solution);
+        const ex tidied = tidy_trigonometric(raw);
+        ex best = tidied;
+        std::size_t shortest = message_text(tidied).size();
+        for (const ex& form : {tidied, raw}) {
+            if (has_trigonometric_function(form.denom()))
+                continue;
+            const ex candidate = simplify(form);
+            const std::size_t length = message_text(candidate).size();
+            if (length < shortest) {
+                best = candidate;
+                shortest = length;
+            }
+        }
+        return best;
     };
     for (std::size_t k = 0; k < result.rates.size(); ++k)
         if (!result.rate_given[k])

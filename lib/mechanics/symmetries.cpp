@@ -18,7 +18,7 @@ namespace {
 
 using GiNaC::ex;
 
-/// Velocities of the coordinates `which`, set to 0.
+/// Every velocity set to 0.
 GiNaC::exmap velocities_at_rest(const model& scene)
 {
     GiNaC::exmap rest;
