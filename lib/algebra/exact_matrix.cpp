@@ -62,6 +62,50 @@ ex fraction_free_determinant(const GiNaC::matrix& a)
     return a.determinant(GiNaC::determinant_algo::laplace).expand();
 }
 
+ex expansion_determinant(const GiNaC::matrix& a)
+{
+    const std::size_t n = a.rows();
+    if (n == 0)
+        return 1;
+    if (n > 16)
+        throw computation_error("the determinant is too large to expand by minors");
+    std::vector<std::vector<ex>> entries(n, std::vector<ex>(n));
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            entries[i][j] = a(i, j).expand();
+    // minor[S]: the determinant of rows n − |S| … n − 1 and the columns in the bit set S,
+    // expanded along its first row; built up from the last row.
+    std::vector<ex> minor(std::size_t(1) << n);
+    minor[0] = 1;
+    for (std::size_t size = 1; size <= n; ++size) {
+        const std::size_t row = n - size;
+        for (std::size_t columns = 1; columns < minor.size(); ++columns) {
+            if (static_cast<std::size_t>(__builtin_popcountll(columns)) != size)
+                continue;
+            ex sum = 0;
+            int sign = 1;
+            for (std::size_t j = 0; j < n; ++j) {
+                if (!(columns >> j & 1))
+                    continue;
+                const ex& rest = minor[columns & ~(std::size_t(1) << j)];
+                if (!entries[row][j].is_zero() && !rest.is_zero())
+                    sum += sign * entries[row][j] * rest;
+                sign = -sign;
+            }
+            // each product is at most (terms of an entry) × (terms of a checked minor):
+            // the size budget is on what the minor is, not on what cancels in it
+            budget_check();
+            minor[columns] = sum.expand();
+            budget_check_terms(minor[columns], "a minor of the determinant");
+        }
+        // the minors of the row below are no longer needed
+        for (std::size_t columns = 1; columns < minor.size(); ++columns)
+            if (static_cast<std::size_t>(__builtin_popcountll(columns)) == size - 1)
+                minor[columns] = ex();
+    }
+    return minor.back();
+}
+
 std::vector<std::vector<ex>> null_space(GiNaC::matrix a)
 {
     std::size_t rows = a.rows(), columns = a.cols();
