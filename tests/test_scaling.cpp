@@ -1,13 +1,16 @@
 // Symbolic work that scales (issue 23): the determinant by minor expansion, the content
 // and factors of large sparse polynomials, and the primitive characteristic polynomial
 // of chains with every mass and length distinct.
+#include "algebra/budget.h"
 #include "algebra/exact_matrix.h"
 #include "algebra/factor.h"
 #include "engine/analysis.h"
+#include "cli_runner.h"
 #include "scene_helpers.h"
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <map>
 #include <random>
 #include <string>
@@ -197,4 +200,108 @@ TEST_CASE("scaling: the 4-link chain's coefficients have no common factor (GiNaC
     for (const parameter& parameter : scene.parameters)
         ones[parameter.symbol] = 1;
     CHECK(GiNaC::ex_to<GiNaC::numeric>(leading.subs(ones)).is_positive());
+}
+
+namespace {
+
+/// The planar chain with every mass and length distinct, at rest, with one `values` point.
+std::string chain_with_values(int n)
+{
+    std::string equilibrium = "equilibrium ", values = "values g = 9.81";
+    for (int i = 1; i <= n; ++i) {
+        const std::string k = std::to_string(i);
+        equilibrium += (i > 1 ? ", q" : "q") + k + " = 0";
+        values += ", m" + k + " = " + std::to_string(1 + i / 10.0) + ", l" + k + " = " + std::to_string(1 + i / 20.0);
+    }
+    return chain_scene(n) + equilibrium + "\n" + values + "\n";
+}
+
+} // namespace
+
+TEST_CASE("scaling: a share of the budget ends before the stage's own deadline", "[scaling][budget]")
+{
+    CHECK_NOTHROW(budget_share(0.5)); // no budget open: nothing
+    budget_limits limits;
+    limits.max_seconds = 1000;
+    budget_scope scope("characteristic", limits);
+    {
+        budget_share none(0.0);
+        CHECK_THROWS_AS(budget_check(), budget_exceeded);
+        CHECK(budget_stage() == "characteristic");
+    }
+    CHECK_NOTHROW(budget_check());
+    {
+        budget_share half(0.5);
+        CHECK_NOTHROW(budget_check());
+    }
+}
+
+// Past the budget the run degrades: the frequencies come numerically at the `values`
+// points with a note, instead of nothing. The size budget trips deterministically.
+TEST_CASE("degrade: frequencies over the budget are given numerically at the values", "[scaling][budget]")
+{
+    model scene = load(chain_with_values(4));
+    budget_limits limits;
+    limits.max_terms = 50;
+    analysis a = analyze(scene, {product::frequencies}, limits);
+    CHECK_FALSE(a.characteristic);
+    CHECK_FALSE(a.modes);
+    REQUIRE(a.numeric);
+    REQUIRE(a.numeric->size() == 1);
+    CHECK(a.wanted.count(product::numeric));
+    REQUIRE(a.notes.size() == 1);
+    CHECK_THAT(a.notes[0], Catch::Matchers::Contains("exceeded its size budget") &&
+                               Catch::Matchers::Contains("given numerically at the `values` points"));
+    // the same frequencies as the numeric modes asked for directly (an LU-free reference:
+    // the sum of ω² is the trace of T⁻¹V, checked for the chain in test_reliability)
+    analysis direct = analyze(scene, {product::numeric}, limits);
+    REQUIRE(direct.numeric);
+    CHECK(direct.numeric->at(0).omega_squared == a.numeric->at(0).omega_squared);
+    // with no values there is nothing to give: the budget error, as before
+    model bare = load(chain_scene(4) + "equilibrium q1 = 0, q2 = 0, q3 = 0, q4 = 0\n");
+    CHECK_THROWS_AS(analyze(bare, {product::frequencies}, limits), budget_exceeded);
+}
+
+TEST_CASE("degrade: frequencies without a closed form are given numerically at the values", "[scaling]")
+{
+    model scene = load(chain_with_values(5)); // a quintic in ω² that does not factor
+    analysis a = analyze(scene, {product::frequencies});
+    REQUIRE(a.modes);
+    CHECK_FALSE(a.modes->closed_form);
+    REQUIRE(a.numeric);
+    CHECK(a.numeric->at(0).omega_squared.size() == 5);
+    REQUIRE(a.notes.size() == 1);
+    CHECK_THAT(a.notes[0], Catch::Matchers::Contains("no closed form"));
+    // the numeric ω² are roots of the characteristic polynomial at the values point
+    GiNaC::exmap at = value_map(scene, scene.values.front());
+    const GiNaC::ex omega = a.characteristic->omega;
+    const GiNaC::ex p = a.characteristic->polynomial.expand().subs(at);
+    for (double w2 : a.numeric->at(0).omega_squared) {
+        GiNaC::ex value = 0, scale = 0;
+        for (int k = 0; k <= 5; ++k) {
+            const double c = GiNaC::ex_to<GiNaC::numeric>(p.coeff(omega, 2 * k).evalf()).to_double();
+            value += c * std::pow(w2, k);
+            scale += std::abs(c) * std::pow(w2, k);
+        }
+        CHECK(std::abs(GiNaC::ex_to<GiNaC::numeric>(value).to_double()) <=
+              1e-9 * GiNaC::ex_to<GiNaC::numeric>(scale).to_double());
+    }
+}
+
+TEST_CASE("degrade: the command line prints what it computed and exits 0", "[scaling][budget][cli]")
+{
+    const std::string scene = temporary_file("chain4v.lag", chain_with_values(4));
+    cli_result r = run_cli(scene + " --want frequencies --max-terms 50");
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.find("Numeric modes") != std::string::npos);
+    CHECK(r.out.find("given numerically at the `values` points") != std::string::npos);
+    cli_result json = run_cli(scene + " --want frequencies --max-terms 50 --format json");
+    CHECK(json.exit_code == 0);
+    CHECK(json.out.find("\"numeric\"") != std::string::npos);
+    CHECK(json.out.find("\"notes\"") != std::string::npos);
+    // nothing to fall back on without values: exit 1 with the budget's message
+    const std::string bare = temporary_file("chain4.lag", chain_scene(4) + "equilibrium q1 = 0, q2 = 0, q3 = 0, q4 = 0\n");
+    cli_result none = run_cli(bare + " --want frequencies --max-terms 50");
+    CHECK(none.exit_code == 1);
+    CHECK(none.err.find("exceeded its size budget") != std::string::npos);
 }
