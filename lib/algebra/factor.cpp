@@ -6,7 +6,10 @@
 #include "algebra/budget.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
+#include <optional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -50,6 +53,181 @@ int point_value(std::size_t k, int attempt)
     return 2 + static_cast<int>((k * 7919 + static_cast<std::size_t>(attempt) * 104729 + 13) % 89);
 }
 
+/// An expanded polynomial p at `point` (every symbol but y) as a polynomial in y, read off
+/// term by term (GiNaC's subs would rebuild every term).
+ex image_at(const ex& p, const ex& y, const GiNaC::exmap& point)
+{
+    std::map<int, GiNaC::numeric> coefficients;
+    const GiNaC::exvector terms = is_a<GiNaC::add>(p) ? GiNaC::exvector(p.begin(), p.end()) : GiNaC::exvector{p};
+    for (const ex& term : terms) {
+        GiNaC::numeric value = 1;
+        int degree = 0;
+        const GiNaC::exvector factors = is_a<GiNaC::mul>(term) ? GiNaC::exvector(term.begin(), term.end())
+                                                               : GiNaC::exvector{term};
+        for (const ex& f : factors) {
+            const bool is_power = is_a<GiNaC::power>(f);
+            const ex base = is_power ? f.op(0) : f;
+            if (is_a<GiNaC::numeric>(f)) {
+                value *= ex_to<GiNaC::numeric>(f);
+                continue;
+            }
+            if (!is_a<GiNaC::symbol>(base) || (is_power && !f.op(1).info(GiNaC::info_flags::posint)))
+                return p.subs(point).expand(); // not a plain polynomial term
+            const int exponent = is_power ? ex_to<GiNaC::numeric>(f.op(1)).to_int() : 1;
+            if (base.is_equal(y)) {
+                degree += exponent;
+                continue;
+            }
+            auto at = point.find(base);
+            if (at == point.end())
+                return p.subs(point).expand();
+            value *= ex_to<GiNaC::numeric>(at->second).power(exponent);
+        }
+        coefficients[degree] += value;
+    }
+    ex image = 0;
+    for (const auto& [degree, c] : coefficients)
+        image += c * GiNaC::pow(y, degree);
+    return image;
+}
+
+/// Arithmetic modulo the prime 2³¹ − 1, for images of polynomials in one symbol.
+constexpr std::uint64_t modulus = 2147483647;
+
+std::uint64_t power_mod(std::uint64_t base, std::uint64_t exponent)
+{
+    std::uint64_t result = 1;
+    base %= modulus;
+    for (; exponent > 0; exponent >>= 1, base = base * base % modulus)
+        if (exponent & 1)
+            result = result * base % modulus;
+    return result;
+}
+
+/// An expanded polynomial read once: per term its coefficient modulo the prime and its
+/// exponents (symbol index, exponent).
+struct term_list {
+    std::vector<std::uint64_t> coefficients;
+    std::vector<std::vector<std::pair<std::size_t, int>>> exponents;
+};
+
+std::optional<term_list> read_terms(const ex& p, const std::map<ex, std::size_t, GiNaC::ex_is_less>& index)
+{
+    term_list list;
+    const GiNaC::exvector terms = is_a<GiNaC::add>(p) ? GiNaC::exvector(p.begin(), p.end()) : GiNaC::exvector{p};
+    for (const ex& term : terms) {
+        GiNaC::numeric value = 1;
+        std::vector<std::pair<std::size_t, int>> exponents;
+        const GiNaC::exvector factors = is_a<GiNaC::mul>(term) ? GiNaC::exvector(term.begin(), term.end())
+                                                               : GiNaC::exvector{term};
+        for (const ex& f : factors) {
+            if (is_a<GiNaC::numeric>(f)) {
+                value *= ex_to<GiNaC::numeric>(f);
+                continue;
+            }
+            const bool is_power = is_a<GiNaC::power>(f);
+            const ex base = is_power ? f.op(0) : f;
+            if (is_power && !f.op(1).info(GiNaC::info_flags::posint))
+                return std::nullopt;
+            auto at = index.find(base);
+            if (at == index.end())
+                return std::nullopt;
+            exponents.push_back({at->second, is_power ? ex_to<GiNaC::numeric>(f.op(1)).to_int() : 1});
+        }
+        if (!value.is_rational())
+            return std::nullopt;
+        const GiNaC::numeric p_ = static_cast<long>(modulus);
+        const std::uint64_t denominator = GiNaC::mod(value.denom(), p_).to_long();
+        if (denominator == 0)
+            return std::nullopt;
+        const std::uint64_t numerator = GiNaC::mod(value.numer(), p_).to_long();
+        list.coefficients.push_back(numerator * power_mod(denominator, modulus - 2) % modulus);
+        list.exponents.push_back(std::move(exponents));
+    }
+    return list;
+}
+
+/// The image in y (index `y`) at `point`, coefficients lowest degree first, trimmed.
+std::vector<std::uint64_t> image_mod(const term_list& list, std::size_t y, const std::vector<std::uint64_t>& point)
+{
+    std::vector<std::uint64_t> image;
+    for (std::size_t t = 0; t < list.coefficients.size(); ++t) {
+        std::uint64_t value = list.coefficients[t];
+        std::size_t degree = 0;
+        for (const auto& [k, e] : list.exponents[t]) {
+            if (k == y)
+                degree += static_cast<std::size_t>(e);
+            else
+                value = value * power_mod(point[k], static_cast<std::uint64_t>(e)) % modulus;
+        }
+        if (image.size() <= degree)
+            image.resize(degree + 1, 0);
+        image[degree] = (image[degree] + value) % modulus;
+    }
+    while (!image.empty() && image.back() == 0)
+        image.pop_back();
+    return image;
+}
+
+/// The degree of gcd(a, b) over the integers modulo the prime (Euclid); −1 if both are 0.
+int gcd_degree_mod(std::vector<std::uint64_t> a, std::vector<std::uint64_t> b)
+{
+    while (!b.empty()) {
+        // a mod b
+        const std::uint64_t inverse = power_mod(b.back(), modulus - 2);
+        while (a.size() >= b.size()) {
+            const std::uint64_t factor = a.back() * inverse % modulus;
+            const std::size_t shift = a.size() - b.size();
+            for (std::size_t i = 0; i < b.size(); ++i)
+                a[shift + i] = (a[shift + i] + modulus - factor * b[i] % modulus) % modulus;
+            while (!a.empty() && a.back() == 0)
+                a.pop_back();
+            if (a.empty())
+                break;
+        }
+        std::swap(a, b);
+    }
+    return static_cast<int>(a.size()) - 1;
+}
+
+/// coprime_by_images on images modulo the prime: nothing if a or b is not a polynomial
+/// in plain symbols with rational coefficients.
+std::optional<bool> coprime_by_modular_images(const ex& a, const ex& b, const std::vector<ex>& symbols)
+{
+    std::map<ex, std::size_t, GiNaC::ex_is_less> index;
+    for (std::size_t k = 0; k < symbols.size(); ++k)
+        index[symbols[k]] = k;
+    std::optional<term_list> ta = read_terms(a, index), tb = read_terms(b, index);
+    if (!ta || !tb)
+        return std::nullopt;
+    std::vector<int> degree_a(symbols.size(), 0), degree_b(symbols.size(), 0);
+    for (const auto& exponents : ta->exponents)
+        for (const auto& [k, e] : exponents)
+            degree_a[k] = std::max(degree_a[k], e);
+    for (const auto& exponents : tb->exponents)
+        for (const auto& [k, e] : exponents)
+            degree_b[k] = std::max(degree_b[k], e);
+    for (std::size_t y = 0; y < symbols.size(); ++y) {
+        const int degree = degree_a[y];
+        if (degree == 0 || degree_b[y] == 0)
+            continue;
+        bool proven = false;
+        for (int attempt = 0; attempt < 3 && !proven; ++attempt) {
+            budget_check();
+            std::vector<std::uint64_t> point(symbols.size());
+            for (std::size_t k = 0; k < symbols.size(); ++k)
+                point[k] = static_cast<std::uint64_t>(point_value(k, attempt));
+            const std::vector<std::uint64_t> image_a = image_mod(*ta, y, point);
+            if (static_cast<int>(image_a.size()) - 1 != degree)
+                continue; // the leading coefficient vanished there
+            proven = gcd_degree_mod(image_a, image_mod(*tb, y, point)) == 0;
+        }
+        if (!proven)
+            return false;
+    }
+    return true;
+}
+
 } // namespace
 
 bool coprime_by_images(const ex& a, const ex& b)
@@ -60,7 +238,9 @@ bool coprime_by_images(const ex& a, const ex& b)
     // of the other symbols, with its degree in y kept wherever the leading coefficient of
     // a in y does not vanish: so images without a common factor in y, for every y,
     // prove that there is none.
-    const std::vector<ex> symbols = symbols_of(a + b);
+    const std::vector<ex> symbols = symbols_of(GiNaC::lst{a, b});
+    if (std::optional<bool> modular = coprime_by_modular_images(a, b, symbols))
+        return *modular;
     for (std::size_t index = 0; index < symbols.size(); ++index) {
         const ex& y = symbols[index];
         const int degree = a.degree(y);
@@ -73,10 +253,10 @@ bool coprime_by_images(const ex& a, const ex& b)
             for (std::size_t k = 0; k < symbols.size(); ++k)
                 if (k != index)
                     point[symbols[k]] = point_value(k, attempt);
-            const ex image_a = a.subs(point).expand();
+            const ex image_a = image_at(a, y, point);
             if (image_a.degree(y) != degree)
                 continue;
-            proven = GiNaC::gcd(image_a, b.subs(point).expand()).degree(y) == 0;
+            proven = GiNaC::gcd(image_a, image_at(b, y, point)).degree(y) == 0;
         }
         if (!proven)
             return false;

@@ -98,6 +98,21 @@ std::vector<ex> primitive(std::vector<ex> coefficients, std::optional<int> denom
     return factors;
 }
 
+/// The coefficients of an expanded polynomial in w, lowest degree first, in one pass
+/// over its terms.
+std::vector<ex> coefficients_in(const ex& p, const GiNaC::symbol& w)
+{
+    std::vector<GiNaC::exvector> terms(std::max(p.degree(w), 0) + 1);
+    for (const ex& term : GiNaC::is_a<GiNaC::add>(p) ? GiNaC::exvector(p.begin(), p.end()) : GiNaC::exvector{p}) {
+        const int k = term.degree(w);
+        terms.at(k).push_back(k == 0 ? term : term.coeff(w, k));
+    }
+    std::vector<ex> coefficients;
+    for (const GiNaC::exvector& t : terms)
+        coefficients.push_back(ex(GiNaC::add(t)).expand());
+    return coefficients;
+}
+
 /// det(pencil) as {numerator, denominator} with a numerator of integer coefficients: by
 /// minor expansion when every entry is a polynomial, else by fraction-free elimination
 /// brought over one denominator.
@@ -138,10 +153,7 @@ std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const 
         for (std::size_t j = 0; j < n; ++j)
             pencil(i, j) = (potential(i, j) - w * kinetic(i, j)).to_rational(atoms);
     ex fraction = pencil_determinant(pencil);
-    ex numerator = fraction.op(0).expand();
-    std::vector<ex> coefficients;
-    for (int k = 0; k <= numerator.degree(w); ++k)
-        coefficients.push_back(numerator.coeff(w, k).expand());
+    std::vector<ex> coefficients = coefficients_in(fraction.op(0).expand(), w);
     return primitive(coefficients, sign_of(fraction.op(1)), atoms, factored);
 }
 
