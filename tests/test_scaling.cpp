@@ -72,6 +72,12 @@ TEST_CASE("scaling: the minor expansion gives GiNaC's determinant", "[scaling]")
     CHECK((expansion_determinant(m) - m.determinant(GiNaC::determinant_algo::laplace)).expand().is_zero());
     CHECK((expansion_determinant(GiNaC::matrix{{a}}) - a).is_zero());
     CHECK(expansion_determinant(GiNaC::matrix(0, 0)).is_equal(1));
+    // rational coefficients and a function of a parameter: the expression path
+    GiNaC::matrix rational{{a / 2 + w, GiNaC::cos(b), 0}, {GiNaC::cos(b), c - w / 3, 1}, {0, 1, a * c}};
+    CHECK((expansion_determinant(rational) - rational.determinant(GiNaC::determinant_algo::laplace)).expand().is_zero());
+    // large integer coefficients: past the overflow bound, the expression path
+    GiNaC::matrix large{{GiNaC::numeric("1000000000000") * a, b}, {b, GiNaC::numeric("3000000000000") * c + w}};
+    CHECK((expansion_determinant(large) - large.determinant(GiNaC::determinant_algo::laplace)).expand().is_zero());
     // a singular matrix: two equal rows
     GiNaC::matrix singular{{a, b, c}, {a, b, c}, {w, 1, a}};
     CHECK(expansion_determinant(singular).is_zero());
