@@ -4,14 +4,19 @@
 #include "engine/analysis.h"
 #include "output/document.h"
 #include "output/report.h"
+#include "output/response_output.h"
 #include "output/simulation_output.h"
 #include "output/sweep_output.h"
 #include "scene/lower.h"
 #include "system/address_layout.h"
+#include "system/files.h"
+#include "system/signals.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -38,99 +43,16 @@ struct usage_error : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-lagrange::source_text read_scene(const std::string& path)
+/// A scene from a file or standard input, bounded in size and, for a pipe or a device,
+/// in the time it may take to give its data (the time budget).
+lagrange::source_text read_scene(const std::string& path, double wait_seconds = lagrange::budget_limits{}.max_seconds)
 {
-    std::string text;
-    if (path == "-") {
-        std::ostringstream buffer;
-        buffer << std::cin.rdbuf();
-        text = buffer.str();
-    } else {
-        struct stat info {};
-        if (stat(path.c_str(), &info) != 0)
-            throw usage_error("cannot open `" + path + "`: no such file");
-        if (S_ISDIR(info.st_mode))
-            throw usage_error("`" + path + "` is a folder, not a scene file");
-        std::ifstream in(path, std::ios::binary);
-        if (!in)
-            throw usage_error("cannot read `" + path + "`");
-        std::ostringstream buffer;
-        buffer << in.rdbuf();
-        text = buffer.str();
-    }
-    if (text.size() > max_scene_bytes)
-        throw usage_error("`" + path + "` is larger than 64 MB: not a scene file");
+    std::string text = lagrange::read_bounded(path, max_scene_bytes, wait_seconds);
     return lagrange::source_text(path == "-" ? "<stdin>" : path, text);
 }
 
-/// Output to standard output (path empty or `-`) or to a file written through a
-/// temporary file in the same folder (so that the rename is atomic), renamed over
-/// `path` only by commit(): a failure never truncates or half-writes an existing
-/// file, and the destructor removes the temporary file of a run that failed.
-class output_file {
-public:
-    explicit output_file(const std::string& path) : path_(path)
-    {
-        if (path.empty() || path == "-")
-            return;
-        std::string pattern = path + ".XXXXXX";
-        std::vector<char> name(pattern.begin(), pattern.end());
-        name.push_back('\0');
-        int fd = mkstemp(name.data());
-        if (fd < 0)
-            throw usage_error("cannot write `" + path + "`: " + std::strerror(errno));
-        ::close(fd);
-        temporary_ = name.data();
-        file_.open(temporary_, std::ios::binary | std::ios::trunc);
-        if (!file_) {
-            std::remove(temporary_.c_str());
-            temporary_.clear();
-            throw usage_error("cannot write `" + path + "`");
-        }
-    }
-    ~output_file()
-    {
-        if (!temporary_.empty()) {
-            file_.close();
-            std::remove(temporary_.c_str());
-        }
-    }
-    output_file(const output_file&) = delete;
-    output_file& operator=(const output_file&) = delete;
-
-    std::ostream& stream() { return temporary_.empty() ? std::cout : file_; }
-
-    void commit()
-    {
-        if (temporary_.empty()) {
-            std::cout.flush();
-            return;
-        }
-        file_.close();
-        if (file_.fail())
-            throw usage_error("cannot write `" + path_ + "`");
-        // mkstemp makes the file private (0600); give it the usual mode (0666 less the umask).
-        mode_t mask = umask(0);
-        umask(mask);
-        chmod(temporary_.c_str(), 0666 & ~mask);
-        if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
-            throw usage_error("cannot write `" + path_ + "`: " + std::strerror(errno));
-        temporary_.clear();
-    }
-
-private:
-    std::string path_;
-    std::string temporary_;
-    std::ofstream file_;
-};
-
-/// Writes `text` to `path` (see output_file).
-void write_output(const std::string& path, const std::string& text)
-{
-    output_file out(path);
-    out.stream() << text;
-    out.commit();
-}
+using lagrange::output_file;
+using lagrange::write_output;
 
 struct run_options {
     std::string scene_path;
@@ -167,7 +89,7 @@ int sweep_scene(const run_options& options)
         throw usage_error("--sweep writes text or json, not latex");
     if (!options.want.empty())
         throw usage_error("--sweep computes the numeric modes only; leave out --want");
-    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::source_text source = read_scene(options.scene_path, options.budget.max_seconds);
     lagrange::model scene = lagrange::load_model(source);
     for (const std::string& v : options.values)
         lagrange::add_values(scene, v);
@@ -186,7 +108,7 @@ int analyze_scene(const run_options& options)
 {
     if (!options.sweeps.empty())
         return sweep_scene(options);
-    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::source_text source = read_scene(options.scene_path, options.budget.max_seconds);
     lagrange::model scene = lagrange::load_model(source);
     for (const std::string& v : options.values)
         lagrange::add_values(scene, v);
@@ -235,9 +157,9 @@ std::function<void(double)> progress_bar()
     };
 }
 
-int motion_command(const motion_options& options, lagrange::product wanted)
+int motion_command(const motion_options& options, lagrange::product wanted, const lagrange::budget_limits& budget)
 {
-    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::source_text source = read_scene(options.scene_path, budget.max_seconds);
     lagrange::model scene = lagrange::load_model(source);
     for (const std::string& v : options.values)
         lagrange::add_values(scene, v);
@@ -248,7 +170,7 @@ int motion_command(const motion_options& options, lagrange::product wanted)
     settings.tolerance = options.tolerance;
     settings.progress = progress_bar();
     settings.native = !options.interpret;
-    lagrange::analysis result = lagrange::analyze(scene, {wanted}, settings);
+    lagrange::analysis result = lagrange::analyze(scene, {wanted}, budget, settings);
     std::string title = scene.title.empty() ? source.file() : scene.title;
     if (result.simulation && !options.csv.empty()) {
         std::ostringstream csv;
@@ -265,12 +187,54 @@ int motion_command(const motion_options& options, lagrange::product wanted)
     return exit_ok;
 }
 
+struct response_options {
+    std::string scene_path;
+    std::vector<std::string> values;
+    std::string input, output;
+    double from = 0, to = 0;
+    std::size_t points = 400;
+    bool linear = false;
+    std::string format = "text";
+    std::string output_path;
+    std::string plot;
+};
+
+/// `lagrange response SCENE --input u --output q`: the frequency response H(iω) of the
+/// linearized system, as text, CSV or JSON, and its Bode diagram.
+int response_command(const response_options& options)
+{
+    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::model scene = lagrange::load_model(source);
+    for (const std::string& v : options.values)
+        lagrange::add_values(scene, v);
+    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::state_space});
+    lagrange::response_settings settings;
+    settings.from = options.from;
+    settings.to = options.to;
+    settings.points = options.points;
+    settings.logarithmic = !options.linear;
+    lagrange::frequency_response response = lagrange::frequency_response_of(
+        scene, *result.linearization, *result.state_space, options.input, options.output, settings);
+    if (!options.plot.empty())
+        lagrange::plot_response(options.plot, response, scene.title.empty() ? source.file() : scene.title);
+    std::ostringstream out;
+    if (options.format == "csv")
+        lagrange::write_response_csv(out, response);
+    else if (options.format == "json")
+        lagrange::write_response_json(out, response);
+    else
+        lagrange::write_response_text(out, response);
+    write_output(options.output_path, out.str());
+    return exit_ok;
+}
+
 int check_scene(const std::string& path)
 {
     lagrange::source_text source = read_scene(path);
     lagrange::model scene = lagrange::load_model(source);
     std::cout << source.file() << ": ok (" << scene.coordinates.size() << " coordinates, "
               << scene.parameters.size() << " parameters)\n";
+    lagrange::finish_standard_output();
     return exit_ok;
 }
 
@@ -315,6 +279,15 @@ int report_scene(const run_options& options)
     return exit_ok;
 }
 
+/// Refuses `nan` and `inf`, which pass CLI11's range checks (every comparison with nan is false).
+const CLI::Validator finite_number(
+    [](std::string& text) {
+        char* end = nullptr;
+        double value = std::strtod(text.c_str(), &end);
+        return std::isfinite(value) ? std::string() : "must be a finite number, not `" + text + "`";
+    },
+    "FINITE");
+
 int run(int argc, char** argv)
 {
     CLI::App app{"lagrange: equations of motion, equilibria, normal modes and rigid bodies from a scene file"};
@@ -335,7 +308,7 @@ int run(int argc, char** argv)
         ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40))
         ->capture_default_str();
     app.add_option("--max-seconds", options.budget.max_seconds, "time budget of each symbolic stage, in seconds")
-        ->check(CLI::Range(1e-3, 1e7))
+        ->check(finite_number & CLI::Range(1e-3, 1e7))
         ->capture_default_str();
 
     std::string check_path;
@@ -356,7 +329,7 @@ int run(int argc, char** argv)
         sub->add_option("SCENE", o->scene_path, "the scene file (`-` for standard input)")->required();
         sub->add_option("--values", o->values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
         sub->add_option("--until", o->until, "end time (default: the scene's `simulate until`)")
-            ->check(CLI::PositiveNumber);
+            ->check(finite_number & CLI::PositiveNumber);
         sub->add_option("--plot", o->plot, "draw a plot (SVG, with gnuplot)");
         sub->add_option("--format", o->format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
         sub->add_option("-o,--output", o->output, "write the output to this file");
@@ -369,10 +342,32 @@ int run(int argc, char** argv)
                          "auto, dopri5, rkf78, dop853, bulirsch-stoer, bdf or implicit-midpoint")
         ->check(CLI::IsMember({"auto", "dopri5", "rkf78", "dop853", "bulirsch-stoer", "bdf", "implicit-midpoint"}));
     simulate->add_option("--tolerance", simulate_options.tolerance, "relative and absolute tolerance per step")
-        ->check(CLI::Range(1e-14, 0.5));
+        ->check(finite_number & CLI::Range(1e-14, 0.5));
     simulate->add_option("--csv", simulate_options.csv, "write the trajectory as CSV");
     bool native_flag = false; // accepted for older scripts: native code is the default now
     simulate->add_flag("--native", native_flag, "compile the equations to machine code (the default)");
+
+    response_options response_options;
+    CLI::App* response =
+        app.add_subcommand("response", "frequency response (Bode diagram) of one input to one coordinate");
+    response->add_option("SCENE", response_options.scene_path, "the scene file (`-` for standard input)")->required();
+    response->add_option("--input", response_options.input, "the input (an `input` line's name)")->required();
+    response->add_option("--output", response_options.output, "the coordinate whose response is wanted")->required();
+    response->add_option("--values", response_options.values,
+                         "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
+    response->add_option("--from", response_options.from,
+                         "lowest drive frequency ω (default: a tenth of the smallest |s|)")
+        ->check(finite_number & CLI::PositiveNumber);
+    response->add_option("--to", response_options.to, "highest drive frequency ω (default: ten times the largest |s|)")
+        ->check(finite_number & CLI::PositiveNumber);
+    response->add_option("--points", response_options.points, "number of frequencies")
+        ->check(CLI::Range(std::size_t{2}, std::size_t{10000000}))
+        ->capture_default_str();
+    response->add_flag("--linear", response_options.linear, "space the frequencies evenly (default: logarithmically)");
+    response->add_option("--format", response_options.format, "output format")
+        ->check(CLI::IsMember({"text", "csv", "json"}));
+    response->add_option("-o,--output-file", response_options.output_path, "write the output to this file");
+    response->add_option("--plot", response_options.plot, "draw the Bode diagram (SVG, with gnuplot)");
 
     try {
         app.parse(argc, argv);
@@ -386,9 +381,11 @@ int run(int argc, char** argv)
     if (report->parsed())
         return report_scene(report_options);
     if (simulate->parsed())
-        return motion_command(simulate_options, lagrange::product::simulation);
+        return motion_command(simulate_options, lagrange::product::simulation, options.budget);
     if (workprecision->parsed())
-        return motion_command(workprecision_options, lagrange::product::workprecision);
+        return motion_command(workprecision_options, lagrange::product::workprecision, options.budget);
+    if (response->parsed())
+        return response_command(response_options);
     if (options.scene_path.empty()) {
         std::cerr << app.help();
         return exit_bad_input;
@@ -402,14 +399,20 @@ int main(int argc, char** argv)
 {
     // Byte-identical output in every run: see system/address_layout.h.
     lagrange::use_fixed_address_layout(argv);
+    lagrange::guard_standard_streams();
+    // SIGINT and SIGTERM remove temporary files and end the compiler: exit 130 or 143.
+    lagrange::install_signal_cleanup();
     // --max-seconds holds even inside a GiNaC call that cannot be interrupted.
-    lagrange::start_budget_watchdog("lagrange: error: ", exit_failed);
+    lagrange::start_budget_watchdog("lagrange: error: ", exit_failed, lagrange::clean_up_registered);
     try {
         return run(argc, argv);
     } catch (const lagrange::scene_error& error) {
         std::cerr << lagrange::format_error(error);
         return exit_bad_input;
     } catch (const usage_error& error) {
+        std::cerr << "lagrange: error: " << error.what() << '\n';
+        return exit_bad_input;
+    } catch (const lagrange::file_error& error) {
         std::cerr << "lagrange: error: " << error.what() << '\n';
         return exit_bad_input;
     } catch (const lagrange::computation_error& error) {

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <random>
 
@@ -212,4 +213,30 @@ TEST_CASE("cli: simulate and workprecision usage errors and impossible runs", "[
                                               "values k = 1\ninitial x = 1\nsimulate until 100\n");
     CHECK(runaway.exit_code == 1);
     CHECK(runaway.err.find("lagrange: error:") == 0);
+}
+
+TEST_CASE("cli: response writes JSON with the resonance peak, CSV and a Bode plot", "[cli][response]")
+{
+    const std::string scene = examples + "damped_driven_oscillator.lag";
+    std::string svg = temporary_file("bode.svg", "");
+    cli_result r = run_cli("response " + scene + " --input u --output x --format json --plot " + svg, "", 60);
+    REQUIRE(r.exit_code == 0);
+    nlohmann::json doc = nlohmann::json::parse(r.out);
+    // m = 1, k = 4, b = 0.4: ω_r = √(ω₀² − 2γ²) = √(4 − 2·0.04).
+    CHECK(std::abs(doc["peak"]["omega"].get<double>() - std::sqrt(3.92)) < 1e-7);
+    CHECK(doc["omega"].size() == 400);
+    CHECK(doc["phase_degrees"].size() == 400);
+    std::string plot = read_file(svg);
+    if (plot.find("<svg") == std::string::npos)
+        WARN("no SVG drawn (gnuplot missing?): " << r.err);
+
+    cli_result csv = run_cli("response " + scene + " --input u --output x --format csv --points 3 --from 1 --to 4");
+    REQUIRE(csv.exit_code == 0);
+    CHECK(csv.out.rfind("omega,magnitude,magnitude_db,phase_degrees,real,imag\n1,", 0) == 0);
+
+    cli_result unknown = run_cli("response " + scene + " --input v --output x");
+    CHECK(unknown.exit_code == 1);
+    CHECK(unknown.err.find("no input `v`") != std::string::npos);
+    cli_result missing = run_cli("response " + scene + " --input u");
+    CHECK(missing.exit_code == 2);
 }

@@ -94,7 +94,6 @@ TEST_CASE("lower: error paths", "[lower]")
     require_error(header + "gravity g along (0, 0)\n", 3, 17, "zero vector");
     require_error(header + "gravity g along (0, -1)\ngravity g along (0, -1)\n", 4, 1, "given twice");
     require_error(header + "spring g between P and (0, 0)\n", 3, 18, "unknown point `P`");
-    require_error(header + "equilibrium q' = 0\n", 3, 13, "positions only");
     require_error(header + "equilibrium m = 0\n", 3, 13, "is not a coordinate");
     require_error("parameters m\ncoordinates q p\nequilibrium q = 0\n", 3, 1, "does not give coordinate `p`");
     require_error(header + "equilibrium q = 0, q = 1\n", 3, 20, "given twice");
@@ -189,4 +188,17 @@ TEST_CASE("lower: --values and --want from the command line", "[lower]")
     } catch (const scene_error& e) {
         CHECK(e.where().column == 11);
     }
+}
+
+TEST_CASE("lower: an equilibrium with a rate is a steady motion", "[lower][symmetries]")
+{
+    model scene = load("parameters m l g th0 Omega\ncoordinates theta phi\nT = 1/2*m*l^2*theta'^2\n"
+                       "equilibrium theta = th0, phi' = Omega\n");
+    CHECK_FALSE(scene.equilibrium);
+    REQUIRE(scene.steady);
+    CHECK(scene.steady->positions[0]->is_equal(scene.parameters[3].symbol));
+    CHECK_FALSE(scene.steady->positions[1]);
+    CHECK(scene.steady->rates[1]->is_equal(scene.parameters[4].symbol));
+    CHECK_FALSE(scene.steady->rates[0]);
+    require_error(header + "equilibrium q = 0, q' = 1\n", 3, 20, "given twice");
 }

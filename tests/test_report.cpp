@@ -657,3 +657,18 @@ TEST_CASE("report: a cone, a region of given density and a free box compile, cen
     CHECK(status == 0);
     CHECK(widest_overfull_box(log) <= 10.0);
 }
+
+TEST_CASE("report: the damped driven oscillator shows C, the damped eigenvalues and the transfer function",
+          "[report][damping]")
+{
+    auto built = report_of("damped_driven_oscillator.lag");
+    const std::string& tex = built->document.latex;
+    CHECK(contains(tex, "\\section{Damping}"));
+    CHECK(contains(tex, "C = "));
+    CHECK(contains(tex, "Damped eigenvalues at"));
+    CHECK(contains(tex, "underdamped where it is positive"));
+    CHECK(contains(tex, "\\section{Inputs: state space and transfer functions}"));
+    CHECK(contains(tex, "H_{u \\to x}(s)"));
+    CHECK(contains(tex, "frequencies and modes of the undamped system"));
+    CHECK(contains(tex, "small oscillations without the damping"));
+}

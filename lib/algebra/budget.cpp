@@ -41,6 +41,7 @@ struct watch {
     const budget_scope::state* open = nullptr; ///< guarded by lock
     std::string prefix;
     int exit_code = 1;
+    void (*before_exit)() = nullptr;
 };
 
 watch& the_watch()
@@ -67,7 +68,7 @@ void watch_scope(const budget_scope::state* open)
 
 } // namespace
 
-void start_budget_watchdog(const std::string& prefix, int exit_code)
+void start_budget_watchdog(const std::string& prefix, int exit_code, void (*before_exit)())
 {
     watch& w = the_watch();
     {
@@ -78,6 +79,7 @@ void start_budget_watchdog(const std::string& prefix, int exit_code)
         w.thread = std::this_thread::get_id();
         w.prefix = prefix;
         w.exit_code = exit_code;
+        w.before_exit = before_exit;
     }
     std::thread([&w] {
         for (;;) {
@@ -95,6 +97,8 @@ void start_budget_watchdog(const std::string& prefix, int exit_code)
                                         "with nothing printed\n";
             std::fwrite(message.data(), 1, message.size(), stderr);
             std::fflush(stderr);
+            if (w.before_exit)
+                w.before_exit();
             std::_Exit(w.exit_code);
         }
     }).detach();

@@ -117,7 +117,8 @@ std::string budget_stage();
 /// interrupted by the cooperative checks above; when a stage runs past its time budget by
 /// 8 %, a watchdog thread writes `prefix` + "the `STAGE` stage exceeded its time budget of
 /// S s (--max-seconds) inside a step that cannot be interrupted, …" to standard error and
-/// ends the process with `exit_code`, so that --max-seconds holds within a tenth on every path.
-void start_budget_watchdog(const std::string& prefix, int exit_code);
+/// ends the process with `exit_code`, so that --max-seconds holds within a tenth on every path;
+/// `before_exit` (if any) runs just before, to remove temporary files.
+void start_budget_watchdog(const std::string& prefix, int exit_code, void (*before_exit)() = nullptr);
 
 } // namespace lagrange

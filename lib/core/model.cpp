@@ -23,6 +23,11 @@ const std::vector<std::pair<product, std::string>>& product_names()
         {product::workprecision, "workprecision"},
         {product::floquet, "floquet"},
         {product::damping, "damping"},
+        {product::state_space, "state_space"},
+        {product::transfer, "transfer"},
+        {product::conserved, "conserved"},
+        {product::hamiltonian, "hamiltonian"},
+        {product::reduced, "reduced"},
     };
     return names;
 }

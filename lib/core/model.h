@@ -107,6 +107,16 @@ struct rigid_body {
     source_location where;
 };
 
+/// `equilibrium theta = th0, phi' = Omega`: a steady motion (relative equilibrium). The
+/// coordinates given a rate are cyclic and move at that constant rate; the others rest at
+/// their values. A cyclic coordinate given neither is left to the engine, which solves
+/// the steady-motion condition for its rate.
+struct steady_motion_request {
+    std::vector<std::optional<GiNaC::ex>> positions; ///< per coordinate; none for a cyclic one
+    std::vector<std::optional<GiNaC::ex>> rates;     ///< per coordinate; set for those given a rate
+    source_location where;
+};
+
 /// `ratio rho = m/M`: results are also written with `numerator` replaced by rho·denominator.
 struct ratio_request {
     std::string name;
@@ -161,6 +171,11 @@ enum class product {
     workprecision,
     floquet,
     damping,
+    state_space,
+    transfer,
+    conserved,
+    hamiltonian,
+    reduced,
 };
 
 /// Spec names of the products, in order.
@@ -191,6 +206,7 @@ struct model {
     std::vector<input_signal> inputs;
 
     std::optional<std::vector<GiNaC::ex>> equilibrium; ///< one value per coordinate
+    std::optional<steady_motion_request> steady; ///< an `equilibrium` line that names a rate
     std::optional<ratio_request> ratio;
     std::optional<limit_request> limit;
     std::vector<value_point> values;

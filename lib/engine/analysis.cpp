@@ -4,6 +4,7 @@
 
 #include "scene/lower.h"
 
+#include "numeric/damped_modes.h"
 #include "numeric/free_body_motion.h"
 #include "numeric/gyroscopic_modes.h"
 
@@ -66,6 +67,10 @@ std::optional<std::vector<GiNaC::ex>> equilibrium_of(const stage_context& c)
 
 bool has_coordinates(const model& scene) { return !scene.coordinates.empty(); }
 bool any_scene(const model&) { return true; }
+/// Static equilibria and small oscillations about them: not for a scene whose
+/// `equilibrium` line names a steady rate (the `steady` stage studies that motion).
+bool has_static_point(const model& scene) { return !scene.coordinates.empty() && !scene.steady; }
+bool has_steady(const model& scene) { return !scene.coordinates.empty() && scene.steady; }
 bool has_time(const model& scene) { return !scene.coordinates.empty() && mentions_time(scene); }
 bool has_top(const model& scene)
 {
@@ -80,12 +85,14 @@ bool has_top(const model& scene)
 const std::vector<product> coordinate_products = {
     product::equations, product::equilibrium, product::linearization, product::characteristic,
     product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
-    product::floquet, product::damping};
+    product::floquet, product::damping, product::state_space, product::transfer, product::conserved,
+    product::hamiltonian, product::reduced};
 
 const std::vector<product> every_product = {
     product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
     product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
-    product::euler,      product::simulation, product::workprecision, product::floquet, product::damping};
+    product::euler,      product::simulation, product::workprecision, product::floquet, product::damping,
+    product::state_space, product::transfer, product::conserved, product::hamiltonian, product::reduced};
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
@@ -133,7 +140,7 @@ const std::vector<stage_definition>& stage_table()
              c.result.time = analyze_time_dependence(c.scene, *c.result.lagrangian, *c.result.equations,
                                                      c.simplifier_for_scene());
          }, "", ""},
-        {"equilibrium", {product::equilibrium}, {}, {"lagrangian", "time"}, has_coordinates,
+        {"equilibrium", {product::equilibrium}, {}, {"lagrangian", "time"}, has_static_point,
          [](stage_context& c) {
              if (c.result.time && c.result.time->depends_on_time)
                  throw computation_error("L depends on t, so there is no static equilibrium to linearize about; "
@@ -148,13 +155,13 @@ const std::vector<stage_definition>& stage_table()
              require_forces_vanish_at_rest(c.scene, c.simplifier_for_scene());
              c.result.equilibria = find_equilibria(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
-        {"linearization", {product::linearization}, {}, {"equilibrium"}, has_coordinates,
+        {"linearization", {product::linearization}, {}, {"equilibrium"}, has_static_point,
          [](stage_context& c) {
              const equilibrium_point& point = c.result.equilibria->points.at(c.result.equilibria->chosen);
              c.result.linearization =
                  linearize(c.scene, *c.result.lagrangian, point.position, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
-        {"characteristic", {product::characteristic}, {}, {"linearization"}, has_coordinates,
+        {"characteristic", {product::characteristic}, {}, {"linearization"}, has_static_point,
          [](stage_context& c) {
              c.result.characteristic = characteristic_polynomial(c.scene, *c.result.linearization);
              if (!c.result.characteristic->factored)
@@ -163,7 +170,7 @@ const std::vector<stage_definition>& stage_table()
          },
          "small oscillations", "symbolic modes"},
         {"modes", {product::frequencies, product::modes, product::normal_coordinates}, {}, {"characteristic"},
-         has_coordinates,
+         has_static_point,
          [](stage_context& c) {
              if (c.result.linearization->has_gyroscopic() &&
                  (c.wants(product::modes) || c.wants(product::normal_coordinates))) {
@@ -177,7 +184,7 @@ const std::vector<stage_definition>& stage_table()
                                   ? gyroscopic_modes(c.scene, *c.result.linearization, *c.result.characteristic)
                                   : symbolic_modes(c.scene, *c.result.linearization, *c.result.characteristic);
          }, "small oscillations", "symbolic modes"},
-        {"asymptotic", {product::asymptotic}, {}, {"modes"}, has_coordinates,
+        {"asymptotic", {product::asymptotic}, {}, {"modes"}, has_static_point,
          [](stage_context& c) {
              if (c.result.modes->gyroscopic)
                  throw computation_error("`asymptotic` is not computed for a Lagrangian with a part linear in the "
@@ -185,7 +192,7 @@ const std::vector<stage_definition>& stage_table()
              c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes);
          },
          "small oscillations", "symbolic modes"},
-        {"damping", {product::damping}, {}, {"linearization"}, has_coordinates,
+        {"damping", {product::damping}, {}, {"linearization"}, has_static_point,
          [](stage_context& c) {
              if (c.result.linearization->has_gyroscopic())
                  throw computation_error("damped small oscillations with gyroscopic terms (G ≠ 0) are not "
@@ -193,13 +200,34 @@ const std::vector<stage_definition>& stage_table()
              c.result.damping = damped_oscillations(c.scene, *c.result.linearization, c.simplifier_for_scene(),
                                                     c.result.modes ? &*c.result.modes : nullptr);
          }, "small oscillations", "small oscillations"},
-        {"numeric", {product::numeric}, {}, {"linearization"}, has_coordinates,
+        {"numeric", {product::numeric}, {}, {"linearization"}, has_static_point,
          [](stage_context& c) {
              c.result.numeric = c.result.linearization->has_gyroscopic()
                                     ? numeric_gyroscopic_modes(c.scene, *c.result.linearization)
                                     : numeric_normal_modes(c.scene, *c.result.linearization);
+             if (!c.scene.has_generalized_forces())
+                 return;
+             const GiNaC::matrix damping =
+                 c.result.damping ? c.result.damping->damping
+                                  : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
+             if (!is_zero_matrix(damping))
+                 add_damped_eigenvalues(c.scene, *c.result.linearization, damping, *c.result.numeric);
          },
          "small oscillations", "small oscillations"},
+        // The linearized input–output system: A, B (and at the `values` points), then H(s).
+        {"state_space", {product::state_space}, {}, {"linearization"}, has_coordinates,
+         [](stage_context& c) {
+             const GiNaC::matrix damping =
+                 c.result.damping ? c.result.damping->damping
+                                  : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
+             c.result.state_space =
+                 derive_state_space(c.scene, *c.result.linearization, damping, c.simplifier_for_scene());
+             c.result.state_space_values = state_space_at_values(c.scene, *c.result.state_space);
+         }, "linear system", "linear system"},
+        {"transfer", {product::transfer}, {}, {"state_space"}, has_coordinates,
+         [](stage_context& c) {
+             c.result.transfer = transfer_functions(c.scene, *c.result.linearization, *c.result.state_space);
+         }, "linear system", "linear system"},
         {"floquet", {product::floquet}, {}, {"time"}, has_coordinates,
          [](stage_context& c) {
              if (!c.result.time || !c.result.time->depends_on_time) {
@@ -208,6 +236,26 @@ const std::vector<stage_definition>& stage_table()
                  throw computation_error("`floquet` needs an L that depends on t, and this L does not");
              }
              c.result.floquet = floquet_multipliers(c.scene, *c.result.equations, *c.result.time);
+         }, "", ""},
+        {"conserved", {product::conserved}, {}, {"equations"}, has_coordinates,
+         [](stage_context& c) {
+             c.result.conserved = conserved_quantities(c.scene, *c.result.lagrangian, *c.result.equations,
+                                                       c.simplifier_for_scene());
+         }, "symmetries", "symmetries"},
+        {"hamiltonian", {product::hamiltonian}, {}, {"equations"}, has_coordinates,
+         [](stage_context& c) {
+             c.result.hamiltonian = derive_hamiltonian(c.scene, *c.result.lagrangian, *c.result.equations,
+                                                       c.simplifier_for_scene());
+         }, "", "hamiltonian"},
+        {"reduced", {product::reduced}, {}, {"lagrangian"}, has_coordinates,
+         [](stage_context& c) {
+             c.result.reduced = reduce_cyclic(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
+         }, "symmetries", "symmetries"},
+        // An `equilibrium` line that names a steady rate: the motion on the reduced system.
+        {"steady", {}, {product::equilibrium, product::linearization, product::characteristic, product::frequencies,
+                        product::reduced}, {"reduced"}, has_steady,
+         [](stage_context& c) {
+             c.result.steady = steady_motion(c.scene, *c.result.lagrangian, *c.result.reduced, c.simplifier_for_scene());
          }, "", ""},
         {"simulation", {product::simulation}, {}, {"equations"}, any_scene,
          [](stage_context& c) {
@@ -250,6 +298,11 @@ verification_input verification_input_of(const analysis& r)
     input.linearization = r.linearization ? &*r.linearization : nullptr;
     input.characteristic = r.characteristic ? &*r.characteristic : nullptr;
     input.modes = r.modes ? &*r.modes : nullptr;
+    input.damping = r.damping ? &*r.damping : nullptr;
+    input.conserved = r.conserved ? &*r.conserved : nullptr;
+    input.hamiltonian = r.hamiltonian ? &*r.hamiltonian : nullptr;
+    input.reduced = r.reduced && r.wanted.count(product::reduced) ? &*r.reduced : nullptr;
+    input.steady = r.steady ? &*r.steady : nullptr;
     return input;
 }
 
@@ -278,10 +331,12 @@ std::string name_of(product p)
 std::set<product> default_products(const model& scene)
 {
     std::set<product> products;
-    if (!scene.coordinates.empty()) {
+    if (!scene.coordinates.empty() && scene.steady)
+        products.insert({product::equations, product::conserved, product::reduced, product::equilibrium,
+                         product::linearization, product::characteristic, product::frequencies});
+    else if (!scene.coordinates.empty())
         products.insert({product::equations, product::equilibrium, product::linearization, product::characteristic,
                          product::frequencies, product::modes, product::normal_coordinates});
-    }
     if (!scene.bodies.empty())
         products.insert(product::inertia);
     for (const rigid_body& b : scene.bodies)
@@ -297,6 +352,8 @@ std::set<product> default_products(const model& scene)
         products.insert(product::floquet);
     if (scene.has_generalized_forces())
         products.insert(product::damping);
+    if (!scene.inputs.empty())
+        products.insert({product::state_space, product::transfer});
     if (scene.simulation)
         products.insert(product::simulation);
     return products;
@@ -405,7 +462,8 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
         try {
             run_stage(context, stage, limits);
             done.insert(stage.name);
-            if (stage.name == "modes" && !result.modes->closed_form && numeric_frequencies_possible(scene, result)) {
+            if (stage.name == "modes" && result.modes && !result.modes->closed_form &&
+                numeric_frequencies_possible(scene, result)) {
                 result.wanted.insert(product::numeric);
                 planned.insert("numeric");
                 result.notes.push_back("the frequencies have no closed form; they are given numerically at the "
@@ -456,7 +514,9 @@ analysis analyze(const model& scene, const std::set<product>& wanted, const budg
                  const simulation_settings& simulation)
 {
     std::optional<budget_exceeded> exceeded;
-    analysis result = run_stages(scene, wanted, limits, simulation, exceeded);
+    simulation_settings settings = simulation; // the C compiler runs within the time budget too
+    settings.compile_seconds = std::min(settings.compile_seconds, limits.max_seconds);
+    analysis result = run_stages(scene, wanted, limits, settings, exceeded);
     if (exceeded && !computed_any(result))
         throw *exceeded;
     return result;

@@ -12,11 +12,15 @@
 #include "mechanics/gyroscopic.h"
 #include "mechanics/linearization.h"
 #include "mechanics/modes.h"
+#include "mechanics/state_space.h"
 #include "bodies/euler.h"
 #include "bodies/inertia.h"
 #include "mechanics/top.h"
+#include "mechanics/steady_motion.h"
+#include "mechanics/symmetries.h"
 #include "numeric/compiled_modes.h"
 #include "numeric/floquet.h"
+#include "numeric/linear_response.h"
 #include "mechanics/time_dependence.h"
 #include "numeric/simulation.h"
 #include "numeric/verification.h"
@@ -58,6 +62,13 @@ struct analysis {
     std::optional<verification_result> verification;
     std::optional<time_dependence_result> time; ///< whether L depends on t (scenes that mention t)
     std::optional<std::vector<floquet_point>> floquet; ///< per point solving at every t and `values` point
+    std::optional<state_space_result> state_space;     ///< ẋ = A x + B u at the equilibrium (inputs)
+    std::vector<state_space_point> state_space_values; ///< A and B at the `values` points
+    std::optional<transfer_result> transfer;           ///< H(s) of each input to each coordinate
+    std::optional<conserved_result> conserved;     ///< the energy function and the cyclic momenta
+    std::optional<hamiltonian_result> hamiltonian; ///< H(q, p) and Hamilton's equations
+    std::optional<reduced_result> reduced;         ///< Routh's reduction of the cyclic coordinates
+    std::optional<steady_motion_result> steady;    ///< the `equilibrium` line's steady motion, reduced
 };
 
 /// What verify_results reads of an analysis: a pointer to each result it computed.

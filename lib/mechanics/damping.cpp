@@ -131,6 +131,8 @@ std::optional<std::vector<damped_factor>> closed_forms(const ex& polynomial, con
     return factors;
 }
 
+} // namespace
+
 bool is_zero_matrix(const GiNaC::matrix& m)
 {
     for (unsigned i = 0; i < m.rows(); ++i)
@@ -139,8 +141,6 @@ bool is_zero_matrix(const GiNaC::matrix& m)
                 return false;
     return true;
 }
-
-} // namespace
 
 GiNaC::matrix damping_matrix(const model& scene, const std::vector<ex>& at, const simplifier& simplify)
 {

@@ -78,6 +78,8 @@ struct multiple_angles : GiNaC::map_function {
     }
 };
 
+} // namespace
+
 ex reduce_trigonometric(const ex& e)
 {
     multiple_angles expand_angles;
@@ -125,6 +127,8 @@ ex reduce_trigonometric(const ex& e)
     ex reduced = (reduce(fraction.op(0)) / reduce(fraction.op(1))).normal();
     return reduced.subs(back);
 }
+
+namespace {
 
 /// Zero as a function of the coordinates and parameters: the rational test of
 /// vanishes(), then after reduce_trigonometric (so that a residual in sin(th0),

@@ -41,6 +41,11 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
 /// through sin q and cos q, so that q = acos(x) substitutes to exact roots.
 GiNaC::ex evaluate_at(const GiNaC::ex& e, const model& scene, const std::vector<GiNaC::ex>& at);
 
+/// e with tangents written as sin/cos, multiple angles through sin a and cos a, and for
+/// every argument u of a sine or cosine sin² u = 1 − cos² u in numerator and denominator,
+/// common factors cancelled: equal to e, and 0 exactly when e vanishes identically.
+GiNaC::ex reduce_trigonometric(const GiNaC::ex& e);
+
 /// ∂²V/∂qi∂qj at a point, each entry tidied (the V matrix of the linearization).
 GiNaC::matrix potential_hessian(const model& scene, const GiNaC::ex& potential, const std::vector<GiNaC::ex>& at);
 

@@ -27,6 +27,16 @@ struct top_result {
     GiNaC::ex effective_potential; ///< V_eff(θ) at p_φ = p_ψ = I3 ω3
     GiNaC::ex curvature;           ///< the coefficient of θ² in V_eff about θ = 0
     GiNaC::ex condition;           ///< 8 I1 × curvature: the sleeping top is stable when it is > 0
+    /// Steady precession at the angle θ (θ̇ = 0, φ̇ = Ω, ω3 fixed): a2 Ω² + a1 Ω + a0 = 0
+    /// (I1 cos θ Ω² − I3 ω3 Ω + M g l = 0), with a0's sign made positive where known.
+    GiNaC::ex precession;                 ///< the symbol Ω
+    std::vector<GiNaC::ex> precession_quadratic; ///< a0, a1, a2
+    GiNaC::ex slow_precession;            ///< (−a1 − √(a1² − 4 a2 a0))/(2 a2): slow for ω3 > 0
+    GiNaC::ex fast_precession;            ///< (−a1 + √(a1² − 4 a2 a0))/(2 a2)
+    /// ω² of small nutation about a steady precession: V_eff''(θ)/I1 at the momenta of the
+    /// precession, with the gravity strength eliminated by the condition above
+    /// ((I3 ω3 − 2 I1 Ω cos θ)²/I1² + Ω² sin² θ). Empty where it could not be formed.
+    GiNaC::ex nutation_frequency_squared;
 };
 
 /// The top analysis for every body that qualifies (none: empty).

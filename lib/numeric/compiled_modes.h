@@ -33,6 +33,12 @@ struct numeric_modes {
     std::vector<std::complex<double>> eigenvalues;      ///< all 2n s with q ∝ x e^{st}, quadratic_modes order
     Eigen::MatrixXcd complex_modes;                     ///< n × n, x* T x = 1 (quadratic_modes.h)
     std::string stability;                              ///< "stable", "marginal" or "unstable" at this point
+    /// With a damping matrix C ≠ 0 (numeric/damped_modes.h): `eigenvalues` are the 2n s of
+    /// M q̈ + (C − G) q̇ + K q = 0, while `omega` and `modes` stay those of the undamped
+    /// system (C = 0).
+    bool damped = false;
+    std::vector<double> eigenvalue_error; ///< estimated absolute error of each damped eigenvalue
+    std::vector<double> damping_ratio;    ///< −Re s/|s| of each damped eigenvalue (NaN for s = 0)
 };
 
 /// The numeric routes from T and V to the modes.

@@ -88,6 +88,16 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
             jacobian_outputs.push_back(differentiate(f, c.velocity));
 
     const GiNaC::ex energy = at_values(equations.energy, scene, values);
+    // A cyclic coordinate (L holds its velocity, not itself) conserves its momentum.
+    std::vector<GiNaC::ex> cyclic_momenta;
+    const GiNaC::ex lagrangian_at_values = at_values(equations.lagrangian, scene, values);
+    for (std::size_t i = 0; i < n_ && !equations.forces.any; ++i) {
+        const coordinate& c = scene.coordinates[i];
+        if (!lagrangian_at_values.has(c.position) && lagrangian_at_values.has(c.velocity)) {
+            cyclic_momenta.push_back(at_values(equations.momenta[i], scene, values));
+            momentum_names_.push_back("p_" + c.name);
+        }
+    }
     std::vector<GiNaC::ex> power_outputs;
     if (accumulates_work_) {
         GiNaC::ex power = 0;
@@ -104,6 +114,7 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
         rhs_program_ = expression_program(rhs_outputs, symbols);
         jacobian_program_ = expression_program(jacobian_outputs, symbols);
         energy_program_ = expression_program({energy}, symbols);
+        momentum_program_ = expression_program(cyclic_momenta, symbols);
         if (accumulates_work_)
             power_program_ = expression_program(power_outputs, symbols);
     } catch (const std::invalid_argument& error) {
@@ -192,7 +203,10 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
     }
 }
 
-bool compiled_motion::compile_native() { return native_.compile(rhs_program_, jacobian_program_); }
+bool compiled_motion::compile_native(const native_limits& limits, std::string* why)
+{
+    return native_.compile(rhs_program_, jacobian_program_, limits, why);
+}
 
 double compiled_motion::energy(const double* x) const
 {
@@ -212,6 +226,13 @@ ode_system compiled_motion::system(double energy_scale) const
     s.jacobian = [this](double t, const double* x, double* out) { jacobian(t, x, out); };
     if (conservative_)
         s.invariants.push_back({"energy", [this](const double* x) { return energy(x); }, energy_scale});
+    for (std::size_t k = 0; k < momentum_names_.size(); ++k)
+        s.invariants.push_back({momentum_names_[k], [this, k](const double* x) {
+                                    std::vector<double> symbols(1 + 2 * n_, 0.0), scratch, out(momentum_names_.size());
+                                    std::copy(x, x + 2 * n_, symbols.begin());
+                                    momentum_program_.run(symbols.data(), scratch, out.data());
+                                    return out[k];
+                                }});
     if (accumulates_work_)
         s.invariants.push_back(
             {"energy_balance", [this](const double* x) { return energy(x) - x[2 * n_]; }, energy_scale});

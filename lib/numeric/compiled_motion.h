@@ -49,7 +49,7 @@ public:
 
     /// Compiles M, f and the Jacobian's parts to machine code (see native_code.h);
     /// false, and the interpreter stays in use, when no C compiler is available.
-    bool compile_native();
+    bool compile_native(const native_limits& limits = {}, std::string* why = nullptr);
     bool native() const { return static_cast<bool>(native_); }
 
     /// The system for the integrators: rhs, Jacobian, and the energy as an invariant
@@ -69,6 +69,10 @@ private:
     expression_program power_program_;    ///< Σ Q_i q̇_i, then its derivatives by q and q̇ (2n)
     expression_program jacobian_program_; ///< ∂M/∂q_k (n³), ∂f/∂q (n²), ∂f/∂q̇ (n²)
     expression_program energy_program_;
+    /// The momenta p_q = ∂L/∂q̇ of the cyclic coordinates (conserved, reported as invariants
+    /// named `p_q` when there are no generalized forces), and their names.
+    expression_program momentum_program_;
+    std::vector<std::string> momentum_names_;
     native_rhs native_;
     mutable std::vector<double> scratch_, symbols_, outputs_, factor_, jacobian_outputs_;
 };

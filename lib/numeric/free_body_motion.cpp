@@ -174,7 +174,10 @@ std::array<double, 3> free_body_motion::exact(double t) const
     return w;
 }
 
-bool free_body_motion::compile_native() { return native_.compile(rhs_program_, jacobian_program_); }
+bool free_body_motion::compile_native(const native_limits& limits, std::string* why)
+{
+    return native_.compile(rhs_program_, jacobian_program_, limits, why);
+}
 
 ode_system free_body_motion::system() const
 {

@@ -43,7 +43,7 @@ public:
 
     /// Compiles the right-hand side and Jacobian to machine code (native_code.h); false,
     /// and the interpreter stays in use, without a C compiler.
-    bool compile_native();
+    bool compile_native(const native_limits& limits = {}, std::string* why = nullptr);
     bool native() const { return static_cast<bool>(native_); }
 
     /// The system for the integrators (refers to this object, which must outlive it):

@@ -36,15 +36,21 @@ bool sleef_wanted()
 
 } // namespace
 
-std::shared_ptr<native_module> native_module::compile(const std::vector<const expression_program*>& programs)
+std::shared_ptr<native_module> native_module::compile(const std::vector<const expression_program*>& programs,
+                                                      const native_limits& limits, std::string* why)
 {
+    auto refuse = [why](const std::string& reason) {
+        if (why)
+            *why = reason;
+        return nullptr;
+    };
     bool sleef = sleef_wanted() &&
                  std::any_of(programs.begin(), programs.end(), [](const auto* p) { return p->trigonometric(); });
     std::optional<private_directory> folder;
     try {
         folder.emplace("lagrange-native");
     } catch (const computation_error&) {
-        return nullptr; // no temporary folder: the interpreter runs
+        return refuse("no temporary folder could be made to compile the equations");
     }
     std::string source = folder->path() + "/programs.c";
     std::string library = folder->path() + "/programs.so";
@@ -53,6 +59,7 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     // -ffp-contract=off: no fused multiply-adds where the interpreter has none (with -mfma, or
     // on a CPU where FMA is the baseline), so native code rounds as the interpreter does;
     // only SLEEF's sines and cosines may differ from libm's, by an ulp or two.
+    bool too_large = false, timed_out = false;
     auto build = [&](bool with_sleef) {
         std::ostringstream code;
         code << "#include <math.h>\n";
@@ -64,6 +71,10 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         for (std::size_t k = 0; k < programs.size(); ++k)
             code << (k ? ", " : "") << "program_" << k;
         code << "};\n";
+        if (code.tellp() > static_cast<std::streamoff>(limits.max_source_bytes)) {
+            too_large = true;
+            return false;
+        }
         try {
             folder->write("programs.c", code.str());
         } catch (const computation_error&) {
@@ -76,31 +87,43 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         if (with_sleef)
             arguments.push_back("-lsleef");
         arguments.push_back("-lm");
-        return run_program(arguments, folder->path(), "cc.log").exit_code == 0;
+        // TMPDIR: the compiler's own temporary files go into the private folder too.
+        program_result run = run_program(arguments, folder->path(), "cc.log", {"TMPDIR=" + folder->path()},
+                                          limits.seconds);
+        timed_out = timed_out || run.timed_out;
+        return run.exit_code == 0;
     };
-    if (sleef && !build(true)) {
+    bool built = sleef && build(true);
+    if (sleef && !built && !too_large && !timed_out) {
         sleef_failed = true;
         sleef = false;
     }
-    if (!sleef && !build(false))
-        return nullptr;
+    if (!sleef)
+        built = build(false);
+    if (!built)
+        return refuse(too_large ? "the equations' C source is larger than " +
+                                      std::to_string(limits.max_source_bytes >> 20) +
+                                      " MB, too large for compiling to pay off"
+                      : timed_out ? "compiling the equations took longer than the time budget"
+                                  : "no C compiler was found to compile the equations");
     std::shared_ptr<native_module> module(new native_module());
     module->handle_ = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!module->handle_)
-        return nullptr;
+        return refuse("the compiled equations could not be loaded");
     auto* table = static_cast<function*>(dlsym(module->handle_, "lagrange_programs"));
     if (!table)
-        return nullptr;
+        return refuse("the compiled equations could not be loaded");
     module->functions_.assign(table, table + programs.size());
     module->sleef_ = sleef;
     return module; // the folder and its files go; the loaded library stays mapped
 }
 
-bool native_rhs::compile(const expression_program& rhs_program, const expression_program& jacobian_program)
+bool native_rhs::compile(const expression_program& rhs_program, const expression_program& jacobian_program,
+                         const native_limits& limits, std::string* why)
 {
     if (module)
         return true;
-    std::shared_ptr<native_module> compiled = native_module::compile({&rhs_program, &jacobian_program});
+    std::shared_ptr<native_module> compiled = native_module::compile({&rhs_program, &jacobian_program}, limits, why);
     if (!compiled)
         return false;
     module = std::move(compiled);

@@ -16,14 +16,24 @@
 
 namespace lagrange {
 
+/// Bounds on compiling: the compiler is stopped after `seconds` (with its children), and
+/// source beyond `max_source_bytes` is not compiled at all, since the compile would then
+/// take longer than the interpreter's whole run.
+struct native_limits {
+    double seconds = 120;
+    std::size_t max_source_bytes = 4u << 20;
+};
+
 /// A loaded native module with one function per program.
 class native_module {
 public:
     using function = void (*)(const double* symbols, double* out);
 
-    /// Compiles `programs`; returns nullptr (never throws) when no compiler is
-    /// available or compilation fails, so callers fall back to the interpreter.
-    static std::shared_ptr<native_module> compile(const std::vector<const expression_program*>& programs);
+    /// Compiles `programs`; returns nullptr (never throws) when no compiler is available,
+    /// compilation fails or passes `limits`, so callers fall back to the interpreter; then
+    /// `why` (if given) says which, for the user.
+    static std::shared_ptr<native_module> compile(const std::vector<const expression_program*>& programs,
+                                                  const native_limits& limits = {}, std::string* why = nullptr);
 
     ~native_module();
     native_module(const native_module&) = delete;
@@ -47,8 +57,9 @@ struct native_rhs {
     native_module::function rhs = nullptr;
     native_module::function jacobian = nullptr;
 
-    /// Compiles both programs once; false when there is no compiler (nothing changes).
-    bool compile(const expression_program& rhs_program, const expression_program& jacobian_program);
+    /// Compiles both programs once; false when they cannot be (nothing changes; `why` says why).
+    bool compile(const expression_program& rhs_program, const expression_program& jacobian_program,
+                 const native_limits& limits = {}, std::string* why = nullptr);
     explicit operator bool() const { return static_cast<bool>(module); }
 };
 

@@ -191,9 +191,10 @@ std::vector<double> output_times(const integration_options& options)
     }
     double span = options.until - options.start;
     double step = options.output_step > 0 ? options.output_step : span / 1000;
-    std::size_t count = static_cast<std::size_t>(std::ceil(span / step - 1e-9));
-    if (count > 10'000'000)
+    const double intervals = std::ceil(span / step - 1e-9);
+    if (!(intervals <= 10'000'000)) // before the cast: a tiny step's count does not fit an integer
         throw computation_error("the output step " + message_number(step) + " gives more than 10^7 output times");
+    std::size_t count = static_cast<std::size_t>(intervals);
     std::vector<double> times;
     for (std::size_t k = 0; k < count; ++k)
         times.push_back(options.start + static_cast<double>(k) * step);

@@ -202,8 +202,8 @@ prepared_motion prepare(const model& scene, const equations_of_motion& equations
     p.motion = std::make_unique<compiled_motion>(scene, equations, p.values);
     if (!settings.native)
         p.evaluation = "interpreted (as asked)";
-    else if (!p.motion->compile_native()) // falls back to the interpreter without a compiler
-        p.evaluation = "interpreted: no C compiler was found to compile the equations";
+    else if (std::string why; !p.motion->compile_native(native_limits{settings.compile_seconds}, &why))
+        p.evaluation = "interpreted: " + why;
     p.x0 = initial_state_vector(scene, p.values);
     if (p.motion->accumulates_work())
         p.x0.push_back(0); // the work of the generalized forces starts at 0
@@ -240,8 +240,8 @@ prepared_motion prepare_free_body(const model& scene, const simulation_settings&
     p.free_body = std::make_unique<free_body_motion>(scene, p.values);
     if (!settings.native)
         p.evaluation = "interpreted (as asked)";
-    else if (!p.free_body->compile_native())
-        p.evaluation = "interpreted: no C compiler was found to compile the equations";
+    else if (std::string why; !p.free_body->compile_native(native_limits{settings.compile_seconds}, &why))
+        p.evaluation = "interpreted: " + why;
     p.names = p.free_body->names();
     p.x0 = p.free_body->initial();
     read_span(p, scene, settings);

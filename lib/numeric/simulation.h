@@ -27,6 +27,9 @@ struct simulation_settings {
     /// then faster evaluations than the interpreter's); the default. Without a
     /// compiler, or when false (`--interpret`), the interpreter evaluates them.
     bool native = true;
+    /// The C compiler's time limit; past it, or for C source too large to pay off, the
+    /// interpreter runs (the `evaluation` says why). The engine keeps it within the time budget.
+    double compile_seconds = 120;
     std::function<void(double fraction)> progress;
 };
 

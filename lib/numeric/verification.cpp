@@ -5,6 +5,7 @@
 #include "numeric/double_double.h"
 #include "numeric/expression_program.h"
 #include "numeric/quadratic_modes.h"
+#include "numeric/symmetry_checks.h"
 #include "numeric/values.h"
 
 #include <Eigen/Dense>
@@ -871,7 +872,12 @@ verification_result verify_results(const model& scene, const verification_input&
             result.entries.push_back(check_characteristic(scene, *input.linearization, *input.characteristic, numeric));
         if (input.modes)
             check_modes(scene, *input.modes, numeric, shown, result.entries);
+        if (input.damping)
+            for (verification_entry& entry : verify_damping(scene, *input.linearization, *input.damping))
+                result.entries.push_back(std::move(entry));
     }
+    check_symmetries(scene, *input.lagrangian,
+                     symmetry_input{input.conserved, input.hamiltonian, input.reduced, input.steady}, result.entries);
     return result;
 }
 

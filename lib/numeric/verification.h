@@ -7,11 +7,14 @@
 #pragma once
 
 #include "core/model.h"
+#include "mechanics/damping.h"
 #include "mechanics/equations_of_motion.h"
 #include "mechanics/equilibrium.h"
 #include "mechanics/lagrangian.h"
 #include "mechanics/linearization.h"
 #include "mechanics/modes.h"
+#include "mechanics/steady_motion.h"
+#include "mechanics/symmetries.h"
 
 #include <set>
 #include <string>
@@ -39,6 +42,11 @@ struct verification_input {
     const linearization_result* linearization = nullptr;
     const characteristic_result* characteristic = nullptr;
     const modes_result* modes = nullptr;
+    const damping_result* damping = nullptr;
+    const conserved_result* conserved = nullptr;
+    const hamiltonian_result* hamiltonian = nullptr;
+    const reduced_result* reduced = nullptr;
+    const steady_motion_result* steady = nullptr;
 };
 
 /// Checks every result given (`shown`: the products printed, which name the entries of
@@ -47,5 +55,13 @@ struct verification_input {
 /// with its numeric reference.
 verification_result verify_results(const model& scene, const verification_input& input,
                                    const std::set<product>& shown);
+
+/// The damping matrix C against the Rayleigh function and the forces as the scene wrote
+/// them (beside the equilibrium, at up to two parameter points), and det(K + sC + s²M)
+/// against the printed polynomial at complex s: the entries `damping` and
+/// `damped_characteristic` (verification_damping.cpp). Throws computation_error
+/// "verification failed: …" on a disagreement.
+std::vector<verification_entry> verify_damping(const model& scene, const linearization_result& linear,
+                                               const damping_result& damping);
 
 } // namespace lagrange

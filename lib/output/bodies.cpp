@@ -265,6 +265,18 @@ void write_tops_text(std::ostream& out, const analysis& result)
         out << "  V_eff ≈ const + (" << print(top.curvature, syntax::text, order) << ")·"
             << print(top.nutation, syntax::text) << "²\n";
         out << "  the sleeping top is stable when " << print(top.condition, syntax::text, order) << " > 0\n";
+        if (!top.precession_quadratic.empty()) {
+            const term_order by_rate{{{top.precession}, {top.spin}}};
+            const GiNaC::ex& w = top.precession;
+            const std::vector<GiNaC::ex>& a = top.precession_quadratic;
+            out << "  steady precession at " << print(top.nutation, syntax::text) << ": "
+                << print(a[2] * w * w + a[1] * w + a[0], syntax::text, by_rate) << " = 0\n"
+                << "    slow Ω = " << print(top.slow_precession, syntax::text, order) << '\n'
+                << "    fast Ω = " << print(top.fast_precession, syntax::text, order) << '\n';
+            if (!top.nutation_frequency_squared.is_zero())
+                out << "  nutation about it: ω² = " << print(top.nutation_frequency_squared, syntax::text, by_rate)
+                    << '\n';
+        }
     }
 }
 
@@ -281,6 +293,19 @@ void write_tops_latex(std::ostream& out, const analysis& result)
             << latex_line("V_{\\mathrm{eff}} = " + print(top.effective_potential, syntax::latex, order))
             << "about $" << print(top.nutation, syntax::latex) << " = 0$ its curvature gives the sleeping-top condition\n"
             << latex_line(print(top.condition, syntax::latex, order) + " > 0.");
+        if (!top.precession_quadratic.empty()) {
+            const term_order by_rate{{{top.precession}, {top.spin}}};
+            const GiNaC::ex& w = top.precession;
+            const std::vector<GiNaC::ex>& a = top.precession_quadratic;
+            out << "Steady precession at $" << print(top.nutation, syntax::latex) << "$:\n"
+                << latex_line(print(a[2] * w * w + a[1] * w + a[0], syntax::latex, by_rate) + " = 0,")
+                << latex_line("\\Omega_{\\mathrm{slow}} = " + print(top.slow_precession, syntax::latex, order) +
+                              ",\\quad \\Omega_{\\mathrm{fast}} = " + print(top.fast_precession, syntax::latex, order));
+            if (!top.nutation_frequency_squared.is_zero())
+                out << "Nutation about it:\n"
+                    << latex_line("\\omega^2 = " +
+                                  print(top.nutation_frequency_squared, syntax::latex, by_rate));
+        }
     }
 }
 
@@ -447,6 +472,18 @@ void write_bodies_json(nlohmann::ordered_json& doc, const analysis& result)
                              {"effective_potential", print(top.effective_potential, syntax::plain, order)},
                              {"curvature", print(top.curvature, syntax::plain, order)},
                              {"sleeping_condition", print(top.condition, syntax::plain, order) + " > 0"}};
+            if (!top.precession_quadratic.empty()) {
+                const term_order by_rate{{{top.precession}, {top.spin}}};
+                const GiNaC::ex& w = top.precession;
+                const std::vector<GiNaC::ex>& a = top.precession_quadratic;
+                all[top.body]["precession_condition"] =
+                    print(a[2] * w * w + a[1] * w + a[0], syntax::plain, by_rate) + " = 0";
+                all[top.body]["slow_precession"] = print(top.slow_precession, syntax::plain, order);
+                all[top.body]["fast_precession"] = print(top.fast_precession, syntax::plain, order);
+                if (!top.nutation_frequency_squared.is_zero())
+                    all[top.body]["nutation_frequency_squared"] =
+                        print(top.nutation_frequency_squared, syntax::plain, by_rate);
+            }
         }
         doc["top"] = all;
     }

@@ -5,6 +5,9 @@
 #include "output/latex_blocks.h"
 #include "output/print.h"
 
+#include <charconv>
+#include <cmath>
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -167,6 +170,86 @@ void write_damping_json(nlohmann::ordered_json& doc, const model& scene, const d
         proportional["modal_damping_ratios"] = ratios;
     }
     doc["proportional_damping"] = proportional;
+}
+
+namespace {
+
+/// The shortest decimal that reads back as the same double.
+std::string shortest(double x)
+{
+    if (x == 0)
+        x = 0; // no −0
+    char buffer[64];
+    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return error == std::errc() ? std::string(buffer, end) : std::string("?");
+}
+
+/// The eigenvalues to print: every real one and the upper member of each conjugate pair
+/// (the lower one is its exact conjugate), in quadratic_modes order.
+std::vector<std::size_t> printed_eigenvalues(const numeric_modes& n)
+{
+    std::vector<std::size_t> chosen;
+    for (std::size_t k = 0; k < n.eigenvalues.size(); ++k)
+        if (n.eigenvalues[k].imag() >= 0)
+            chosen.push_back(k);
+    return chosen;
+}
+
+std::string ratio_text(double ratio) { return std::isnan(ratio) ? "none (s = 0)" : shortest(ratio); }
+
+} // namespace
+
+void write_damped_eigenvalues_text(std::ostream& out, const numeric_modes& n)
+{
+    out << "    damped eigenvalues s (q ∝ e^{st}, first-order system): " << n.stability << '\n';
+    for (std::size_t k : printed_eigenvalues(n)) {
+        const std::complex<double> z = n.eigenvalues[k];
+        out << "    s = " << shortest(z.real());
+        if (z.imag() != 0)
+            out << " ± " << shortest(z.imag()) << "i";
+        out << "  (error ≤ " << shortest(n.eigenvalue_error[k]) << ")  ζ = " << ratio_text(n.damping_ratio[k])
+            << '\n';
+    }
+}
+
+void write_damped_eigenvalues_latex(std::ostream& out, const numeric_modes& n)
+{
+    const syntax s = syntax::latex;
+    out << "Damped eigenvalues $s$ ($q \\propto e^{st}$), " << n.stability << ":\n\\begin{align*}\n";
+    const std::vector<std::size_t> chosen = printed_eigenvalues(n);
+    for (std::size_t j = 0; j < chosen.size(); ++j) {
+        const std::complex<double> z = n.eigenvalues[chosen[j]];
+        out << "s &= " << print(GiNaC::numeric(z.real() == 0 ? 0.0 : z.real()), s);
+        if (z.imag() != 0)
+            out << " \\pm " << print(GiNaC::numeric(z.imag()), s) << "\\,i";
+        out << " & \\text{(error} &\\le " << print(GiNaC::numeric(n.eigenvalue_error[chosen[j]]), s) << ")"
+            << " & \\zeta &= ";
+        const double ratio = n.damping_ratio[chosen[j]];
+        out << (std::isnan(ratio) ? std::string("\\text{none}") : print(GiNaC::numeric(ratio == 0 ? 0.0 : ratio), s))
+            << (j + 1 < chosen.size() ? "\\\\\n" : "\n");
+    }
+    out << "\\end{align*}\n";
+}
+
+void write_damped_eigenvalues_json(nlohmann::ordered_json& entry, const numeric_modes& n)
+{
+    entry["eigenvalue_error"] = n.eigenvalue_error;
+    nlohmann::ordered_json ratios = nlohmann::ordered_json::array();
+    for (double r : n.damping_ratio)
+        ratios.push_back(std::isnan(r) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r));
+    entry["damping_ratio"] = ratios;
+}
+
+bool modes_are_undamped(const analysis& result)
+{
+    if (result.damping)
+        return !is_zero_matrix(result.damping->damping);
+    if (result.numeric)
+        for (const numeric_modes& n : *result.numeric)
+            if (n.damped)
+                return true;
+    const model& scene = *result.scene;
+    return !scene.dampers.empty() || !scene.dissipation.is_zero();
 }
 
 } // namespace lagrange

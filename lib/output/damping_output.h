@@ -18,4 +18,16 @@ void write_damping_latex(std::ostream& out, const model& scene, const damping_re
 /// `proportional_damping` to `doc`.
 void write_damping_json(nlohmann::ordered_json& doc, const model& scene, const damping_result& damping);
 
+/// The damped eigenvalues of one numeric entry (`n.damped`): a line with the stability,
+/// then each real s and each conjugate pair re ± im·i with its error and damping ratio.
+void write_damped_eigenvalues_text(std::ostream& out, const numeric_modes& n);
+void write_damped_eigenvalues_latex(std::ostream& out, const numeric_modes& n);
+/// Adds `eigenvalue_error` and `damping_ratio` (null for s = 0) to a numeric entry's JSON
+/// (which already holds `eigenvalues` and `stability`).
+void write_damped_eigenvalues_json(nlohmann::ordered_json& entry, const numeric_modes& n);
+
+/// Whether the printed normal modes are those of the undamped system, not the motion:
+/// C ≠ 0 (or, when the damping stage did not run, the scene has dissipation or dampers).
+bool modes_are_undamped(const analysis& result);
+
 } // namespace lagrange

@@ -6,6 +6,8 @@
 #include "output/bodies.h"
 #include "output/floquet_output.h"
 #include "output/damping_output.h"
+#include "output/linear_system_output.h"
+#include "output/symmetries_output.h"
 #include "output/print.h"
 #include "output/simulation_output.h"
 
@@ -312,7 +314,7 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
             out << "\nNormal modes\n  no closed form found (see the numeric modes)\n";
         } else {
             std::string w2 = print_name(result.characteristic->omega.get_name(), s) + (m.gyroscopic ? "" : "²");
-            out << "\nNormal modes\n";
+            out << "\nNormal modes" << (modes_are_undamped(result) ? " (of the undamped system, C = 0)" : "") << '\n';
             for (std::size_t k = 0; k < m.frequencies.size(); ++k) {
                 out << "  " << w2 << " = " << print(m.frequencies[k], s) << '\n';
                 if (k < m.modes.size())
@@ -352,13 +354,14 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
                 << b.lower + 1 << ") → " << print(b.period, s) << '\n';
     }
     if (result.numeric) {
-        out << "\nNumeric modes\n";
+        out << "\nNumeric modes" << (modes_are_undamped(result) ? " (ω and modes of the undamped system, C = 0)" : "")
+            << '\n';
         for (const numeric_modes& n : *result.numeric) {
             out << "  at";
             for (const auto& [name, value] : n.values)
                 out << ' ' << print_name(name, s) << " = " << number(value);
             out << "  (" << n.method << ")\n";
-            if (!n.stability.empty())
+            if (!n.stability.empty() && !n.damped)
                 out << "    " << n.stability << '\n';
             for (std::size_t k = 0; k < n.omega.size(); ++k) {
                 out << "    ω = " << number(n.omega[k]) << "  (relative error ≤ " << number(n.error[k])
@@ -369,6 +372,8 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
                     out << (i ? ", " : "") << complex_text(n.complex_modes(i, static_cast<Eigen::Index>(k)));
                 out << ")\n";
             }
+            if (n.damped)
+                write_damped_eigenvalues_text(out, n);
         }
     }
 }
@@ -403,6 +408,8 @@ void write_text(std::ostream& out, const analysis& result, const document_option
     write_floquet_text(out, result);
     if (result.damping)
         write_damping_text(out, scene, *result.damping);
+    write_linear_system_text(out, result);
+    write_symmetries_text(out, result);
     write_bodies_text(out, result);
     if (result.simulation)
         write_simulation_text(out, *result.simulation, options.timings);
@@ -445,6 +452,8 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
         if (m.gyroscopic)
             w2 = print_name(result.characteristic->omega.get_name(), s);
         out << "\\subsection*{Normal modes}\n";
+        if (modes_are_undamped(result))
+            out << "These are the modes of the undamped system ($C = 0$); the damping is below.\n\n";
         for (std::size_t k = 0; k < m.frequencies.size(); ++k) {
             out << latex_display(w2 + index(k), print_terms(m.frequencies[k], s), "");
             if (k < m.modes.size())
@@ -477,17 +486,21 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
     }
     if (result.numeric) {
         out << "\\subsection*{Numeric modes}\n";
+        if (modes_are_undamped(result))
+            out << "The frequencies $\\omega$ are those of the undamped system ($C = 0$).\n\n";
         for (const numeric_modes& n : *result.numeric) {
             out << "\\noindent At $";
             for (std::size_t i = 0; i < n.values.size(); ++i)
                 out << (i ? ",\\ " : "") << print_name(n.values[i].first, s) << " = "
                     << print(GiNaC::numeric(n.values[i].second), s);
-            out << "$" << (n.stability.empty() ? "" : " (" + n.stability + ")") << ":\n\\begin{align*}\n";
+            out << "$" << (n.stability.empty() || n.damped ? "" : " (" + n.stability + ")") << ":\n\\begin{align*}\n";
             for (std::size_t k = 0; k < n.omega.size(); ++k)
                 out << "\\omega_{" << k + 1 << "} &= " << print(GiNaC::numeric(n.omega[k]), s)
                     << " & \\text{(relative error} &\\le " << print(GiNaC::numeric(n.error[k]), s) << ")"
                     << (k + 1 < n.omega.size() ? "\\\\\n" : "\n");
             out << "\\end{align*}\n";
+            if (n.damped)
+                write_damped_eigenvalues_latex(out, n);
         }
     }
     for (const std::string& note : result.notes)
@@ -529,6 +542,8 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
     write_floquet_latex(out, result);
     if (result.damping)
         write_damping_latex(out, scene, *result.damping);
+    write_linear_system_latex(out, result);
+    write_symmetries_latex(out, result);
     write_bodies_latex(out, result);
     if (result.simulation)
         write_simulation_latex(out, *result.simulation, options.timings);
@@ -658,6 +673,8 @@ void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result
                     eigenvalues.push_back({e.real(), e.imag()});
                 points.back()["eigenvalues"] = eigenvalues;
                 points.back()["stability"] = n.stability;
+                if (n.damped)
+                    write_damped_eigenvalues_json(points.back(), n);
             }
         }
         doc["numeric"] = points;
@@ -699,6 +716,8 @@ void write_json(std::ostream& out, const analysis& result, const document_option
     write_floquet_json(doc, result);
     if (result.damping)
         write_damping_json(doc, scene, *result.damping);
+    write_linear_system_json(doc, result);
+    write_symmetries_json(doc, result);
     write_bodies_json(doc, result);
     if (result.simulation)
         doc["simulation"] = simulation_json(*result.simulation, options.timings);

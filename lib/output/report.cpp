@@ -5,6 +5,7 @@
  *  done here is for presentation (picking the coefficients of q̈ out of an
  *  equation, evaluating positions to draw them). */
 #include "output/report.h"
+#include "output/damping_output.h"
 
 #include "mechanics/lagrangian.h"
 #include "system/external.h"
@@ -372,6 +373,11 @@ void write_modes(report_writer& w)
     const std::string omega = report_writer::name(result.characteristic->omega.get_name());
     const std::string w2 = m.gyroscopic ? omega : omega + "^{2}";
     w.latex("\\section{Frequencies and normal modes}\n");
+    if (modes_are_undamped(result)) {
+        w.text("These are the small oscillations without the damping (C = 0); the damped motion is in the section "
+               "on damping.");
+        w.latex("\n");
+    }
     if (!m.closed_form) {
         w.text("The characteristic polynomial has no closed-form roots the engine finds; the numeric modes are in "
                "the section on numeric values.");
@@ -476,6 +482,9 @@ void write_numeric(report_writer& w)
         .text(". (A negative ")
         .latex("$\\omega$")
         .text(" is the growth rate of an unstable mode.)");
+    if (modes_are_undamped(result))
+        w.text(" These are the frequencies and modes of the undamped system (C = 0); the damped eigenvalues are in "
+               "the section on damping.");
     w.latex("\n");
     for (const numeric_modes& nm : *result.numeric) {
         const std::string at = values_latex(nm);
@@ -695,7 +704,29 @@ const std::vector<report_section>& report_sections()
         {"gyroscopic numeric",
          [](const analysis& r) { return r.numeric.has_value() && r.linearization->has_gyroscopic(); },
          write_gyroscopic_numeric},
+        {"damping",
+         [](const analysis& r) {
+             if (r.damping)
+                 return true;
+             if (r.numeric)
+                 for (const numeric_modes& n : *r.numeric)
+                     if (n.damped)
+                         return true;
+             return false;
+         },
+         write_damping_section},
+        {"linear system",
+         [](const analysis& r) {
+             return (r.state_space && wants(r, product::state_space)) || (r.transfer && wants(r, product::transfer));
+         },
+         write_linear_system_section},
         {"floquet", [](const analysis& r) { return r.floquet.has_value(); }, write_floquet_section},
+        {"symmetries",
+         [](const analysis& r) {
+             return r.conserved.has_value() || r.hamiltonian.has_value() || r.steady.has_value() ||
+                    (r.reduced.has_value() && r.wanted.count(product::reduced));
+         },
+         write_symmetries_section},
         // Rigid bodies (inertia integrals, Euler's equations) and the simulation
         // (beats, polhode, work-precision) add their section writers here.
         {"bodies",

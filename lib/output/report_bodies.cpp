@@ -453,6 +453,28 @@ void write_tops(report_writer& w)
                                                   "\\right)" + theta + "^{2} + O(" + theta + "^{4})"});
         w.text("so the sleeping top is stable when the curvature is positive, that is when");
         w.display_rows({{"", print_terms(top.condition, syntax::latex, order), " > 0."}});
+        if (!top.precession_quadratic.empty()) {
+            const term_order by_rate{{{top.precession}, {top.spin}}};
+            const GiNaC::ex& rate = top.precession;
+            const std::vector<GiNaC::ex>& a = top.precession_quadratic;
+            w.text("The top precesses steadily at the angle ")
+                .latex("$" + theta + "$")
+                .text(" (with ")
+                .latex("$\\dot{" + theta + "} = 0$")
+                .text(") at a rate ")
+                .latex("$\\Omega = \\dot{\\phi}$")
+                .text(" that makes the nutation equation vanish, a quadratic in the rate:");
+            w.display_rows({{"", print_terms(a[2] * rate * rate + a[1] * rate + a[0], syntax::latex, by_rate), " = 0."}});
+            w.text("Its two roots are the slow and the fast precession (for a positive spin):");
+            w.display("\\Omega_{\\mathrm{slow}}", top.slow_precession);
+            w.display("\\Omega_{\\mathrm{fast}}", top.fast_precession);
+            if (!top.nutation_frequency_squared.is_zero()) {
+                w.text("About a steady precession, with both cyclic momenta at their values there, the "
+                       "curvature of the effective potential over the moment about the pivot gives the "
+                       "frequency of small nutation:");
+                w.display("\\omega_{\\mathrm{nut}}^{2}", top.nutation_frequency_squared);
+            }
+        }
     }
 }
 

@@ -31,6 +31,15 @@ void write_gyroscopic_numeric(report_writer& w);
 /// that solve the equations at every t.
 void write_floquet_section(report_writer& w);
 
+/// Damped small oscillations (report_damping.cpp): C, det(K + sC + s²M) with its roots and
+/// regimes, proportional damping, and the damped eigenvalues at the `values` points.
+void write_damping_section(report_writer& w);
+/// The linearized input–output system (report_damping.cpp): A, B and the transfer functions.
+void write_linear_system_section(report_writer& w);
+/// Symmetries (report_symmetries.cpp): the conserved quantities, the Hamiltonian, Routh's
+/// reduction and the steady motion.
+void write_symmetries_section(report_writer& w);
+
 /// The parameter values of a numeric point as LaTeX, "m = 1,\ k = 4" (the numeric sections'
 /// subsection titles).
 std::string values_latex(const numeric_modes& point);

@@ -5,6 +5,7 @@
 #include "output/simulation_output.h"
 
 #include "system/external.h"
+#include "system/files.h"
 #include "output/print.h"
 #include "core/errors.h"
 
@@ -95,20 +96,22 @@ std::string gnuplot_string(const std::string& text)
     return out + "'";
 }
 
-/// Copies the plot out of the temporary folder to `path` through a temporary name.
-void deliver(const private_directory& folder, const std::string& path)
-{
-    std::string temporary = path + ".tmp";
-    std::error_code error;
-    std::filesystem::copy_file(folder.path() + "/plot.svg", temporary,
-                               std::filesystem::copy_options::overwrite_existing, error);
-    if (error || std::rename(temporary.c_str(), path.c_str()) != 0) {
-        std::remove(temporary.c_str());
-        throw computation_error("cannot write the plot to `" + path + "`");
-    }
-}
+/// Copies the plot out of the temporary folder to `path` (see output_file).
+void deliver(const private_directory& folder, const std::string& path) { write_output(path, folder.read("plot.svg")); }
 
 } // namespace
+
+void draw_gnuplot_svg(const std::string& path, const std::string& script,
+                      const std::vector<std::pair<std::string, std::string>>& files)
+{
+    private_directory folder;
+    for (const auto& [name, bytes] : files)
+        folder.write(name, bytes);
+    run_gnuplot(folder, script);
+    deliver(folder, path);
+}
+
+std::string gnuplot_quoted(const std::string& text) { return gnuplot_string(text); }
 
 void write_simulation_text(std::ostream& out, const simulation_result& s, bool timings)
 {

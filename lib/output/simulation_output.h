@@ -9,6 +9,8 @@
 
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace lagrange {
 
@@ -29,5 +31,13 @@ void plot_trajectory(const std::string& path, const simulation_result& s, const 
 
 /// Error against run time, log–log, one line per method, as SVG drawn by gnuplot.
 void plot_workprecision(const std::string& path, const workprecision_result& w, const std::string& title);
+
+/// Runs the gnuplot `script` (which must write 'plot.svg') in a private folder that holds
+/// `files` (name, bytes) and copies the SVG to `path`. Throws computation_error if gnuplot
+/// is missing or fails, or the SVG cannot be written.
+void draw_gnuplot_svg(const std::string& path, const std::string& script,
+                      const std::vector<std::pair<std::string, std::string>>& files);
+/// A string literal for a gnuplot script: single quotes, quotes and control characters dropped.
+std::string gnuplot_quoted(const std::string& text);
 
 } // namespace lagrange

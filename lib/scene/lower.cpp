@@ -8,6 +8,7 @@
 #include "scene/lexer.h"
 #include "scene/lower_expression.h"
 #include "scene/parser.h"
+#include "system/files.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -17,6 +18,10 @@
 namespace lagrange {
 
 namespace {
+
+constexpr std::size_t max_rules_bytes = 16u << 20;
+/// A rules file that is a named pipe or a device must give its data within this time.
+constexpr double rules_wait_seconds = 30;
 
 /// Lowers the statements of a scene, in order, into the model.
 class lowering : public expression_lowering {
@@ -489,16 +494,23 @@ private:
 
     void lower_equilibrium(const statement& s)
     {
-        if (scene_.equilibrium)
+        if (scene_.equilibrium || scene_.steady)
             throw scene_error(s.where, "the equilibrium is given twice");
-        std::vector<std::optional<GiNaC::ex>> values(coordinates_.size());
+        std::vector<std::optional<GiNaC::ex>> values(coordinates_.size()), rates(coordinates_.size());
+        bool steady = false;
         for (const assignment& a : s.assignments) {
-            if (a.velocity)
-                throw scene_error(a.target.where, "an equilibrium gives positions only, not velocities");
             std::size_t i = coordinate_named(a.target).index;
-            if (values[i])
+            if (values[i] || rates[i])
                 throw scene_error(a.target.where, quote(a.target.name) + " is given twice");
-            values[i] = lower(*a.value, expr_context{"an equilibrium value", false, false, true, false});
+            const GiNaC::ex value = lower(*a.value, expr_context{a.velocity ? "a steady rate" : "an equilibrium value",
+                                                                 false, false, true, false});
+            (a.velocity ? rates[i] : values[i]) = value;
+            steady = steady || a.velocity;
+        }
+        if (steady) {
+            // A steady motion: coordinates without a value are cyclic (checked by the stage).
+            scene_.steady = steady_motion_request{values, rates, s.where};
+            return;
         }
         std::vector<GiNaC::ex> equilibrium;
         for (std::size_t i = 0; i < values.size(); ++i) {
@@ -618,8 +630,12 @@ private:
             throw scene_error(s.where, "`simulate` is given twice");
         simulation_request r;
         r.until = positive_constant(*s.value, "the end time");
-        if (s.step)
+        if (s.step) {
             r.step = positive_constant(*s.step, "the step");
+            const double outputs = GiNaC::ex_to<GiNaC::numeric>((r.until / *r.step).evalf()).to_double();
+            if (!(outputs <= 1e7))
+                throw scene_error(s.step->where, "the step gives more than 10^7 output times up to the end time");
+        }
         if (s.tolerance)
             r.tolerance = positive_constant(*s.tolerance, "the tolerance");
         if (s.method) {
@@ -648,21 +664,29 @@ private:
         }
         std::string text = read_file_ ? read_file_(path, s.where) : read_from_disk(path, s.where);
         source_text rules_source(path, text);
-        std::vector<rewrite_rule> rules = load_rules(rules_source, &scene_);
+        std::vector<rewrite_rule> rules;
+        try {
+            rules = load_rules(rules_source, &scene_);
+        } catch (const scene_error& error) {
+            // A file not named as a rules file may be anything (`use "/etc/passwd"`): its
+            // error is told at the `use`, quoting no line of it.
+            const std::string suffix = ".rules";
+            if (path.size() > suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0)
+                throw;
+            throw scene_error(s.where, quote(path) + " is not a rules file: line " +
+                                           std::to_string(error.where().line) + ", column " +
+                                           std::to_string(error.where().column) + ": " + error.what());
+        }
         scene_.rules.insert(scene_.rules.end(), rules.begin(), rules.end());
     }
 
     static std::string read_from_disk(const std::string& path, const source_location& where)
     {
-        std::ifstream in(path, std::ios::binary);
-        if (!in)
-            throw scene_error(where, "cannot read the rules file `" + path + "`");
-        std::ostringstream text;
-        text << in.rdbuf();
-        constexpr std::size_t max_size = 16u << 20;
-        if (text.str().size() > max_size)
-            throw scene_error(where, "the rules file `" + path + "` is larger than 16 MB");
-        return text.str();
+        try {
+            return read_bounded(path, max_rules_bytes, rules_wait_seconds);
+        } catch (const file_error& error) {
+            throw scene_error(where, std::string("cannot read the rules file: ") + error.what());
+        }
     }
 
     void lower_want(const statement& s)

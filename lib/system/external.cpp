@@ -32,6 +32,7 @@ private_directory::private_directory(const std::string& prefix)
     if (!mkdtemp(buffer.data()))
         throw computation_error("cannot create a temporary folder (" + std::string(std::strerror(errno)) + ")");
     path_ = buffer.data();
+    guard_ = removed_on_signal(path_, true);
 }
 
 private_directory::~private_directory()
@@ -79,7 +80,7 @@ bool program_available(const std::string& program)
 
 program_result run_program(const std::vector<std::string>& arguments, const std::string& directory,
                            const std::string& log_name, const std::vector<std::string>& environment,
-                           int timeout_seconds)
+                           double timeout_seconds)
 {
     program_result result;
     if (arguments.empty())
@@ -116,12 +117,24 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
                     posix_spawn_file_actions_addopen(&actions, 1, log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
                                                      0600) == 0 &&
                     posix_spawn_file_actions_adddup2(&actions, 1, 2) == 0;
+    // A process group of its own: a timeout or a signal kills the compiler's own children too.
+    posix_spawnattr_t attributes;
+    if (posix_spawnattr_init(&attributes) != 0) {
+        posix_spawn_file_actions_destroy(&actions);
+        return result;
+    }
+    prepared = prepared && posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP) == 0 &&
+               posix_spawnattr_setpgroup(&attributes, 0) == 0;
     pid_t child = -1;
-    int started = prepared ? posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), envp.data()) : -1;
+    int started = prepared ? posix_spawnp(&child, argv[0], &actions, &attributes, argv.data(), envp.data()) : -1;
     posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attributes);
     if (started != 0)
         return result; // not found, not executable, or no folder or log: it could not be started
-    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout_seconds);
+    killed_on_signal guard(child);
+    auto deadline = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(timeout_seconds));
     int status = 0;
     for (;;) {
         pid_t done = waitpid(child, &status, WNOHANG);
@@ -130,7 +143,7 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
         if (done < 0 && errno != EINTR)
             return result;
         if (std::chrono::steady_clock::now() > deadline) {
-            kill(child, SIGKILL);
+            kill(-child, SIGKILL);
             waitpid(child, &status, 0);
             result.timed_out = true;
             return result;

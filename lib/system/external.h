@@ -5,6 +5,8 @@
  *  reaches a command line. Below the other modules: numeric/ and output/ both use it. */
 #pragma once
 
+#include "system/signals.h"
+
 #include <string>
 #include <vector>
 
@@ -27,6 +29,7 @@ public:
 
 private:
     std::string path_;
+    removed_on_signal guard_;
 };
 
 /// Whether `program` is an executable file in one of the folders of $PATH.
@@ -39,11 +42,12 @@ struct program_result {
 
 /// Runs `arguments` (arguments[0] found through $PATH, no shell) in `directory`,
 /// with standard input from /dev/null and its output into `log_name` in that
-/// folder, `environment` entries (NAME=value) added to ours. Killed after
-/// `timeout_seconds`.
+/// folder, `environment` entries (NAME=value) added to ours. It runs in a process group
+/// of its own, which is killed (with everything it started) after `timeout_seconds`, or
+/// when SIGINT or SIGTERM ends this process.
 program_result run_program(const std::vector<std::string>& arguments, const std::string& directory,
                            const std::string& log_name, const std::vector<std::string>& environment = {},
-                           int timeout_seconds = 120);
+                           double timeout_seconds = 120);
 
 /// Replaces this process by a new run of the same program (/proc/self/exe) with the
 /// same arguments and environment; returns only if the exec was refused.

@@ -1,0 +1,36 @@
+/** @file damped_modes.h
+ *  Numeric damped small oscillations at each `values` point: M, K, C (and G) compiled
+ *  once, then the quadratic eigenproblem (s²M + s(C − G) + K)x = 0 of
+ *  M q̈ + (C − G) q̇ + K q = 0 (numeric/quadratic_modes.h) per point, with the damping
+ *  ratio −Re s/|s| of each eigenvalue. */
+#pragma once
+
+#include "core/model.h"
+#include "mechanics/linearization.h"
+#include "numeric/compiled_modes.h"
+
+#include <ginac/ginac.h>
+
+#include <vector>
+
+namespace lagrange {
+
+/// Adds to `entries` (the numeric modes, one per `values` point in scene order) the damped
+/// eigenvalues with the damping matrix `damping` at the same equilibrium: `eigenvalues` (all
+/// 2n s, quadratic_modes order), `eigenvalue_error`, `damping_ratio` and `stability`, and
+/// sets `damped`. `omega` and `modes` stay those of the undamped system (C = 0). Throws
+/// computation_error as numeric_normal_modes does.
+void add_damped_eigenvalues(const model& scene, const linearization_result& linear, const GiNaC::matrix& damping,
+                            std::vector<numeric_modes>& entries);
+
+/// −Re s/|s|; NaN for s = 0, which has no damping ratio.
+double damping_ratio(std::complex<double> s);
+
+/// Evaluates `matrices` (entries in the scene's parameters) at one `values` point: each
+/// result row-major in a matrix of the same size. `used_only`: a parameter that none of them
+/// uses needs no value. Throws computation_error naming the parameter without a value, or
+/// an entry that is not finite, with `where`.
+std::vector<Eigen::MatrixXd> matrices_at(const model& scene, const std::vector<const GiNaC::matrix*>& matrices,
+                                         const value_point& point);
+
+} // namespace lagrange

@@ -1,0 +1,228 @@
+/** @file linear_system_output.cpp
+ *  Printers of the state-space form and the transfer functions. */
+#include "output/linear_system_output.h"
+
+#include "output/latex_blocks.h"
+#include "output/print.h"
+
+#include <charconv>
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+namespace {
+
+/// The shortest decimal that reads back as the same double.
+std::string shortest(double x)
+{
+    if (x == 0)
+        x = 0; // no −0
+    char buffer[64];
+    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return error == std::errc() ? std::string(buffer, end) : std::string("?");
+}
+
+bool shows(const analysis& result, product p) { return result.wanted.count(p) > 0; }
+
+std::vector<std::string> state_names(const analysis& result, syntax how)
+{
+    std::vector<std::string> names;
+    for (const GiNaC::ex& x : result.state_space->state)
+        names.push_back(print(x, how));
+    return names;
+}
+
+std::vector<std::string> input_names(const model& scene, syntax how)
+{
+    std::vector<std::string> names;
+    for (const input_signal& u : scene.inputs)
+        names.push_back(print_name(u.name, how));
+    return names;
+}
+
+std::string joined(const std::vector<std::string>& parts)
+{
+    std::string out;
+    for (const std::string& p : parts)
+        out += (out.empty() ? "" : ", ") + p;
+    return out;
+}
+
+void matrix_text(std::ostream& out, const std::string& label, const GiNaC::matrix& m, const std::string& indent)
+{
+    out << indent << label << " =";
+    for (unsigned i = 0; i < m.rows(); ++i) {
+        out << (i ? indent + std::string(label.size() + 3, ' ') : std::string(" ")) << "[";
+        for (unsigned j = 0; j < m.cols(); ++j)
+            out << (j ? ", " : "") << print(m(i, j), syntax::text);
+        out << "]\n";
+    }
+}
+
+void numbers_text(std::ostream& out, const std::string& label, const Eigen::MatrixXd& m, const std::string& indent)
+{
+    out << indent << label << " =";
+    for (Eigen::Index i = 0; i < m.rows(); ++i) {
+        out << (i ? indent + std::string(label.size() + 3, ' ') : std::string(" ")) << "[";
+        for (Eigen::Index j = 0; j < m.cols(); ++j)
+            out << (j ? ", " : "") << shortest(m(i, j));
+        out << "]\n";
+    }
+}
+
+std::string numbers_latex(const Eigen::MatrixXd& m)
+{
+    std::string out = "\\begin{pmatrix}";
+    for (Eigen::Index i = 0; i < m.rows(); ++i) {
+        for (Eigen::Index j = 0; j < m.cols(); ++j)
+            out += (j ? " & " : "") + print(GiNaC::numeric(m(i, j) == 0 ? 0.0 : m(i, j)), syntax::latex);
+        out += i + 1 < m.rows() ? " \\\\ " : "";
+    }
+    return out + "\\end{pmatrix}";
+}
+
+std::string values_text(const std::vector<std::pair<std::string, double>>& values, syntax how)
+{
+    std::string out;
+    for (const auto& [name, value] : values)
+        out += (out.empty() ? "" : how == syntax::latex ? ",\\ " : " ") + print_name(name, how) + " = " +
+               (how == syntax::latex ? print(GiNaC::numeric(value), how) : shortest(value));
+    return out;
+}
+
+/// A polynomial in s, printed in descending powers, in parentheses when it is a sum.
+std::string polynomial_part(const GiNaC::ex& e, const GiNaC::symbol& s, syntax how, bool parenthesize)
+{
+    const std::string printed = print(e, how, term_order{{{s}}});
+    if (parenthesize && GiNaC::is_a<GiNaC::add>(e))
+        return "(" + printed + ")";
+    return printed;
+}
+
+} // namespace
+
+std::string transfer_text(const transfer_function& h, const GiNaC::symbol& s, syntax how)
+{
+    if (h.numerator.is_zero())
+        return "0";
+    if (how == syntax::latex)
+        return "\\frac{" + polynomial_part(h.numerator, s, how, false) + "}{" +
+               polynomial_part(h.denominator, s, how, false) + "}";
+    const bool simple_denominator =
+        GiNaC::is_a<GiNaC::symbol>(h.denominator) || GiNaC::is_a<GiNaC::numeric>(h.denominator);
+    if (h.denominator == 1)
+        return polynomial_part(h.numerator, s, how, false);
+    return polynomial_part(h.numerator, s, how, true) + "/" +
+           (simple_denominator ? print(h.denominator, how) : "(" + print(h.denominator, how, term_order{{{s}}}) + ")");
+}
+
+void write_linear_system_text(std::ostream& out, const analysis& result)
+{
+    const model& scene = *result.scene;
+    const syntax how = syntax::text;
+    if (result.state_space && shows(result, product::state_space)) {
+        const state_space_result& ss = *result.state_space;
+        out << "\nState space (ẋ = A x + B u at the equilibrium)\n";
+        out << "  x = (" << joined(state_names(result, how)) << "),  u = (" << joined(input_names(scene, how))
+            << ")\n";
+        matrix_text(out, "A", ss.a, "  ");
+        matrix_text(out, "B", ss.b, "  ");
+        for (const state_space_point& p : result.state_space_values) {
+            out << "  at " << values_text(p.values, how) << "\n";
+            numbers_text(out, "A", p.a, "    ");
+            numbers_text(out, "B", p.b, "    ");
+        }
+    }
+    if (result.transfer && shows(result, product::transfer)) {
+        const transfer_result& tr = *result.transfer;
+        const std::string s = print_name(tr.s.get_name(), how);
+        out << "\nTransfer functions (X(" << s << ") = H(" << s << ") U(" << s << "), q ∝ e^{" << s << "t})\n";
+        for (const transfer_function& h : tr.entries)
+            out << "  " << print_name(scene.inputs[h.input].name, how) << " → "
+                << print_name(scene.coordinates[h.coordinate].name, how) << ":  H(" << s
+                << ") = " << transfer_text(h, tr.s, how) << '\n';
+    }
+}
+
+void write_linear_system_latex(std::ostream& out, const analysis& result)
+{
+    const model& scene = *result.scene;
+    const syntax how = syntax::latex;
+    if (result.state_space && shows(result, product::state_space)) {
+        const state_space_result& ss = *result.state_space;
+        out << "\\subsection*{State space}\n$\\dot{x} = A x + B u$ at the equilibrium, with $x = ("
+            << joined(state_names(result, how)) << ")$ and $u = (" << joined(input_names(scene, how)) << ")$:\n"
+            << "\\begin{align*}\nA &= " << latex_matrix(ss.a) << ",\\\\\nB &= " << latex_matrix(ss.b)
+            << "\n\\end{align*}\n";
+        for (const state_space_point& p : result.state_space_values)
+            out << "At $" << values_text(p.values, how) << "$:\n\\begin{align*}\nA &= " << numbers_latex(p.a)
+                << ",\\\\\nB &= " << numbers_latex(p.b) << "\n\\end{align*}\n";
+    }
+    if (result.transfer && shows(result, product::transfer)) {
+        const transfer_result& tr = *result.transfer;
+        const std::string s = print_name(tr.s.get_name(), how);
+        out << "\\subsection*{Transfer functions}\n$X(" << s << ") = H(" << s << ")\\,U(" << s
+            << ")$, one for each input and coordinate:\n\\begin{align*}\n";
+        for (std::size_t k = 0; k < tr.entries.size(); ++k) {
+            const transfer_function& h = tr.entries[k];
+            out << "H_{" << print_name(scene.inputs[h.input].name, how) << " \\to "
+                << print_name(scene.coordinates[h.coordinate].name, how) << "}(" << s
+                << ") &= " << transfer_text(h, tr.s, how) << (k + 1 < tr.entries.size() ? "\\\\\n" : "\n");
+        }
+        out << "\\end{align*}\n";
+    }
+}
+
+void write_linear_system_json(nlohmann::ordered_json& doc, const analysis& result)
+{
+    const model& scene = *result.scene;
+    const syntax how = syntax::plain;
+    auto symbolic = [&](const GiNaC::matrix& m) {
+        nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+        for (unsigned i = 0; i < m.rows(); ++i) {
+            nlohmann::ordered_json row = nlohmann::ordered_json::array();
+            for (unsigned j = 0; j < m.cols(); ++j)
+                row.push_back(print(m(i, j), how));
+            rows.push_back(row);
+        }
+        return rows;
+    };
+    auto numbers = [](const Eigen::MatrixXd& m) {
+        nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+        for (Eigen::Index i = 0; i < m.rows(); ++i) {
+            nlohmann::ordered_json row = nlohmann::ordered_json::array();
+            for (Eigen::Index j = 0; j < m.cols(); ++j)
+                row.push_back(m(i, j) == 0 ? 0.0 : m(i, j));
+            rows.push_back(row);
+        }
+        return rows;
+    };
+    if (result.state_space && shows(result, product::state_space)) {
+        const state_space_result& ss = *result.state_space;
+        nlohmann::ordered_json entry;
+        entry["state"] = state_names(result, how);
+        entry["inputs"] = input_names(scene, how);
+        entry["A"] = symbolic(ss.a);
+        entry["B"] = symbolic(ss.b);
+        nlohmann::ordered_json points = nlohmann::ordered_json::array();
+        for (const state_space_point& p : result.state_space_values) {
+            nlohmann::ordered_json values = nlohmann::ordered_json::object();
+            for (const auto& [name, value] : p.values)
+                values[name] = value;
+            points.push_back({{"values", values}, {"A", numbers(p.a)}, {"B", numbers(p.b)}});
+        }
+        entry["numeric"] = points;
+        doc["state_space"] = entry;
+    }
+    if (result.transfer && shows(result, product::transfer)) {
+        const transfer_result& tr = *result.transfer;
+        nlohmann::ordered_json entry = nlohmann::ordered_json::object();
+        for (const transfer_function& h : tr.entries)
+            entry[scene.inputs[h.input].name + " -> " + scene.coordinates[h.coordinate].name] =
+                transfer_text(h, tr.s, how);
+        doc["transfer"] = entry;
+    }
+}
+
+} // namespace lagrange
