@@ -2,6 +2,7 @@
  *  Size and time budgets of the symbolic stages (see budget.h). */
 #include "algebra/budget.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
@@ -87,7 +88,7 @@ void start_budget_watchdog(const std::string& prefix, int exit_code, void (*befo
             if (!w.open)
                 continue;
             const double grace = 0.08 * w.open->limits.max_seconds; // + one 20 ms poll: within a tenth
-            const auto late = w.open->deadline + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+            const auto late = w.open->stage_deadline + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                                      std::chrono::duration<double>(grace));
             if (std::chrono::steady_clock::now() <= late)
                 continue;
@@ -113,6 +114,7 @@ budget_scope::budget_scope(std::string stage, const budget_limits& limits, bool 
         seconds = 1e7;
     current_.deadline = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                   std::chrono::duration<double>(seconds));
+    current_.stage_deadline = current_.deadline;
     current_.watched = watched;
     current_budget = &current_;
     watch_scope(current_budget);
@@ -120,6 +122,27 @@ budget_scope::budget_scope(std::string stage, const budget_limits& limits, bool 
 
 budget_scope::~budget_scope()
 {
+    current_budget = previous_;
+    watch_scope(current_budget);
+}
+
+budget_share::budget_share(double fraction) : previous_(current_budget)
+{
+    if (!previous_)
+        return;
+    current_ = *previous_;
+    const auto now = std::chrono::steady_clock::now();
+    if (current_.deadline > now)
+        current_.deadline = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      (current_.deadline - now) * std::clamp(fraction, 0.0, 1.0));
+    current_budget = &current_;
+    watch_scope(current_budget);
+}
+
+budget_share::~budget_share()
+{
+    if (!previous_)
+        return;
     current_budget = previous_;
     watch_scope(current_budget);
 }

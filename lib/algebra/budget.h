@@ -68,13 +68,31 @@ public:
     struct state {
         std::string stage;
         budget_limits limits;
-        std::chrono::steady_clock::time_point deadline;
+        std::chrono::steady_clock::time_point deadline;       ///< where budget_check() throws
+        std::chrono::steady_clock::time_point stage_deadline; ///< the stage's own, which the watchdog holds
         bool watched = true;
     };
 
 private:
     state current_;
     state* previous_;
+};
+
+/// A share of the open stage's time for a step that has a cheaper way out (factoring the
+/// coefficients of the characteristic polynomial, which can be printed unfactored):
+/// budget_check() inside throws budget_exceeded once `fraction` of the stage's remaining
+/// time has passed, which leaves the stage the rest to finish without the step. The
+/// watchdog still holds the stage's own deadline. Nothing when no budget is open.
+class budget_share {
+public:
+    explicit budget_share(double fraction);
+    ~budget_share();
+    budget_share(const budget_share&) = delete;
+    budget_share& operator=(const budget_share&) = delete;
+
+private:
+    budget_scope::state current_;
+    budget_scope::state* previous_;
 };
 
 /// Throws budget_exceeded if the current stage is past its time budget.

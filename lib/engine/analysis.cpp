@@ -162,7 +162,12 @@ const std::vector<stage_definition>& stage_table()
                  linearize(c.scene, *c.result.lagrangian, point.position, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
         {"characteristic", {product::characteristic}, {}, {"linearization"}, has_static_point,
-         [](stage_context& c) { c.result.characteristic = characteristic_polynomial(c.scene, *c.result.linearization); },
+         [](stage_context& c) {
+             c.result.characteristic = characteristic_polynomial(c.scene, *c.result.linearization);
+             if (!c.result.characteristic->factored)
+                 c.result.notes.push_back("the characteristic polynomial's coefficients are not factored: factoring "
+                                          "them exceeded half of the stage's time budget (--max-seconds)");
+         },
          "small oscillations", "symbolic modes"},
         {"modes", {product::frequencies, product::modes, product::normal_coordinates}, {}, {"characteristic"},
          has_static_point,
@@ -414,6 +419,20 @@ void run_stage(stage_context& context, const stage_definition& stage, const budg
     context.result.stages.push_back({stage.name, elapsed.count()});
 }
 
+/// Whether the wanted frequencies, not found in closed form, can be given numerically
+/// instead: the numeric modes were not asked for, and the scene has `values` points.
+bool numeric_frequencies_possible(const model& scene, const analysis& result)
+{
+    return result.wanted.count(product::frequencies) && !result.wanted.count(product::numeric) &&
+           !scene.values.empty() && result.linearization;
+}
+
+/// Whether a budget overrun in `stage` leaves the wanted frequencies to be given numerically.
+bool numeric_frequencies_instead(const model& scene, const analysis& result, const stage_definition& stage)
+{
+    return stage.budget_note == "symbolic modes" && !result.modes && numeric_frequencies_possible(scene, result);
+}
+
 /// Runs the planned stages in table order. A stage runs once all that it needs has
 /// run; a budget overrun leaves out the stage (and so what needs it) with a note, and
 /// in a default run a failure leaves out the rest of the stage's group with a note.
@@ -432,7 +451,7 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
                                 "(only `inertia` and `euler`)");
 
     stage_context context{scene, result, simulation, by_default, std::nullopt};
-    const std::set<std::string> planned = plan(scene, result.wanted);
+    std::set<std::string> planned = plan(scene, result.wanted);
     std::set<std::string> done, failed_groups;
     for (const stage_definition& stage : stage_table()) {
         if (!planned.count(stage.name) || failed_groups.count(stage.group))
@@ -445,6 +464,13 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
         try {
             run_stage(context, stage, limits);
             done.insert(stage.name);
+            if (stage.name == "modes" && result.modes && !result.modes->closed_form &&
+                numeric_frequencies_possible(scene, result)) {
+                result.wanted.insert(product::numeric);
+                planned.insert("numeric");
+                result.notes.push_back("the frequencies have no closed form; they are given numerically at the "
+                                       "`values` points");
+            }
         } catch (const budget_exceeded& error) {
             if (stage.budget_note.empty()) {
                 if (stage.group.empty() || !by_default)
@@ -456,6 +482,12 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
             std::string note = stage.budget_note + " not computed: " + error.what();
             if (stage.budget_note == "symbolic modes" && result.wanted.count(product::numeric))
                 note += "; the numeric modes are still computed";
+            else if (numeric_frequencies_instead(scene, result, stage)) {
+                // degrade: the frequencies at the `values` points instead of in closed form
+                result.wanted.insert(product::numeric);
+                planned.insert("numeric");
+                note += "; the frequencies are given numerically at the `values` points instead";
+            }
             result.notes.push_back(note);
             exceeded = error;
         } catch (const computation_error& error) {

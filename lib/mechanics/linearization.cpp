@@ -4,6 +4,7 @@
 #include "mechanics/linearization.h"
 #include "core/names.h"
 
+#include "algebra/budget.h"
 #include "algebra/calculus.h"
 #include "algebra/exact_matrix.h"
 #include "algebra/factor.h"
@@ -23,17 +24,31 @@ namespace {
 
 using GiNaC::ex;
 
+/// Whether e is a number times a product of powers of symbols.
+bool is_monomial(const ex& e)
+{
+    if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::symbol>(e))
+        return true;
+    if (GiNaC::is_a<GiNaC::power>(e))
+        return GiNaC::is_a<GiNaC::symbol>(e.op(0)) && e.op(1).info(GiNaC::info_flags::posint);
+    if (!GiNaC::is_a<GiNaC::mul>(e))
+        return false;
+    for (const ex& factor : e)
+        if (!is_monomial(factor))
+            return false;
+    return true;
+}
+
 /// The coefficients of a polynomial, lowest degree first, with every common factor
 /// removed and the leading one positive; `denominator_sign` is the sign of the
 /// denominator that was cleared to get them, `atoms` the functions of the parameters
-/// that to_rational made symbols (put back at the end).
+/// that to_rational made symbols (put back at the end). Each coefficient is factored;
+/// with `factored`, the factoring has half the stage's remaining time, and past it the
+/// coefficients are left unfactored and *factored is set to false.
 std::vector<ex> primitive(std::vector<ex> coefficients, std::optional<int> denominator_sign,
-                          const GiNaC::exmap& atoms)
+                          const GiNaC::exmap& atoms, bool* factored)
 {
-    ex content = 0;
-    for (const ex& c : coefficients)
-        if (!c.is_zero())
-            content = content.is_zero() ? c : GiNaC::gcd(content, c);
+    ex content = polynomial_content(coefficients);
     if (content.is_zero()) {
         for (ex& c : coefficients)
             c = c.subs(atoms);
@@ -58,11 +73,61 @@ std::vector<ex> primitive(std::vector<ex> coefficients, std::optional<int> denom
     }
     for (ex& c : coefficients) {
         ex quotient;
-        if (!GiNaC::divide(c, content, quotient))
+        if (is_monomial(content))
+            quotient = (c / content).expand(); // term by term
+        else if (!GiNaC::divide(c, content, quotient))
             quotient = (c / content).normal();
-        c = factor_if_quick(flip * quotient).subs(atoms);
+        c = flip * quotient;
     }
+    if (!factored) {
+        for (ex& c : coefficients)
+            c = factor_if_quick(c).subs(atoms);
+        return coefficients;
+    }
+    std::vector<ex> factors;
+    try {
+        budget_share share(0.5);
+        for (const ex& c : coefficients)
+            factors.push_back(factor_if_quick(c).subs(atoms));
+    } catch (const budget_exceeded&) {
+        *factored = false;
+        for (ex& c : coefficients)
+            c = c.subs(atoms);
+        return coefficients;
+    }
+    return factors;
+}
+
+/// The coefficients of an expanded polynomial in w, lowest degree first, in one pass
+/// over its terms.
+std::vector<ex> coefficients_in(const ex& p, const GiNaC::symbol& w)
+{
+    std::vector<GiNaC::exvector> terms(std::max(p.degree(w), 0) + 1);
+    for (const ex& term : GiNaC::is_a<GiNaC::add>(p) ? GiNaC::exvector(p.begin(), p.end()) : GiNaC::exvector{p}) {
+        const int k = term.degree(w);
+        terms.at(k).push_back(k == 0 ? term : term.coeff(w, k));
+    }
+    std::vector<ex> coefficients;
+    for (const GiNaC::exvector& t : terms)
+        coefficients.push_back(ex(GiNaC::add(t)).expand());
     return coefficients;
+}
+
+/// det(pencil) as {numerator, denominator} with a numerator of integer coefficients: by
+/// minor expansion when every entry is a polynomial, else by fraction-free elimination
+/// brought over one denominator.
+ex pencil_determinant(const GiNaC::matrix& pencil)
+{
+    bool polynomial = true;
+    for (std::size_t i = 0; i < pencil.rows() && polynomial; ++i)
+        for (std::size_t j = 0; j < pencil.cols() && polynomial; ++j)
+            polynomial = pencil(i, j).info(GiNaC::info_flags::rational_polynomial);
+    if (polynomial) {
+        // integer coefficients with no common factor, as normal() would leave them
+        ex det = expansion_determinant(pencil);
+        return GiNaC::lst{det.is_zero() ? det : (det / det.integer_content()).expand(), 1};
+    }
+    return fraction_free_determinant(pencil).normal().numer_denom();
 }
 
 } // namespace
@@ -77,7 +142,7 @@ bool linearization_result::has_gyroscopic() const
 }
 
 std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
-                                            const GiNaC::symbol& w)
+                                            const GiNaC::symbol& w, bool* factored)
 {
     std::size_t n = kinetic.rows();
     // gcd and divide take polynomials: functions of the parameters (cos(th0) at an
@@ -87,17 +152,13 @@ std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const 
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j)
             pencil(i, j) = (potential(i, j) - w * kinetic(i, j)).to_rational(atoms);
-    ex det = fraction_free_determinant(pencil).normal();
-    ex fraction = det.numer_denom();
-    ex numerator = fraction.op(0).expand();
-    std::vector<ex> coefficients;
-    for (int k = 0; k <= numerator.degree(w); ++k)
-        coefficients.push_back(numerator.coeff(w, k).expand());
-    return primitive(coefficients, sign_of(fraction.op(1)), atoms);
+    ex fraction = pencil_determinant(pencil);
+    std::vector<ex> coefficients = coefficients_in(fraction.op(0).expand(), w);
+    return primitive(coefficients, sign_of(fraction.op(1)), atoms, factored);
 }
 
 std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
-                                            const GiNaC::matrix& gyroscopic, const GiNaC::symbol& w)
+                                            const GiNaC::matrix& gyroscopic, const GiNaC::symbol& w, bool* factored)
 {
     std::size_t n = kinetic.rows();
     GiNaC::symbol x("x");
@@ -106,8 +167,7 @@ std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const 
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j)
             pencil(i, j) = (potential(i, j) + x * gyroscopic(i, j) + x * x * kinetic(i, j)).to_rational(atoms);
-    ex det = fraction_free_determinant(pencil).normal();
-    ex fraction = det.numer_denom();
+    ex fraction = pencil_determinant(pencil);
     ex numerator = fraction.op(0).expand();
     std::vector<ex> coefficients;
     for (int k = 0; k <= numerator.degree(x); ++k) {
@@ -119,7 +179,7 @@ std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const 
         }
         coefficients.push_back((k % 4 == 0 ? c : -c).expand());
     }
-    return primitive(coefficients, sign_of(fraction.op(1)), atoms);
+    return primitive(coefficients, sign_of(fraction.op(1)), atoms, factored);
 }
 
 linearization_result linearize(const model& scene, const lagrangian_result& lagrangian, const std::vector<ex>& at,
@@ -165,8 +225,9 @@ characteristic_result characteristic_polynomial(const model& scene, const linear
     characteristic_result result{GiNaC::possymbol(unused_name(scene, "omega")), 0};
     GiNaC::possymbol w("W");
     std::vector<ex> coefficients =
-        linear.has_gyroscopic() ? characteristic_coefficients(linear.kinetic, linear.potential, linear.gyroscopic, w)
-                                : characteristic_coefficients(linear.kinetic, linear.potential, w);
+        linear.has_gyroscopic()
+            ? characteristic_coefficients(linear.kinetic, linear.potential, linear.gyroscopic, w, &result.factored)
+            : characteristic_coefficients(linear.kinetic, linear.potential, w, &result.factored);
     ex polynomial = 0;
     for (std::size_t k = 0; k < coefficients.size(); ++k)
         polynomial += coefficients[k] * GiNaC::pow(result.omega, static_cast<int>(2 * k));

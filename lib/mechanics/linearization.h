@@ -35,19 +35,25 @@ struct characteristic_result {
     /// det(V − ω²T + iωG) made primitive, coefficients factored: real, and even in ω
     /// (G is antisymmetric), so a polynomial in ω² whether or not G is 0.
     GiNaC::ex polynomial;
+    /// false: factoring the coefficients ran out of its share of the time budget, so they
+    /// are primitive but not factored
+    bool factored = true;
 };
 
 /// det(V − ω²T + iωG) as a polynomial in ω, made primitive (see characteristic_coefficients).
 characteristic_result characteristic_polynomial(const model& scene, const linearization_result& linear);
 
 /// The primitive polynomial in w = ω² from det(V − w T): its coefficients, lowest
-/// degree first, with every common factor removed and the leading one positive.
+/// degree first, with every common factor removed and the leading one positive, each
+/// factored. With `factored`, factoring that runs past half the stage's remaining time
+/// budget is given up: the coefficients come unfactored and *factored is set to false.
 std::vector<GiNaC::ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
-                                                   const GiNaC::symbol& w);
+                                                   const GiNaC::symbol& w, bool* factored = nullptr);
 
 /// The same for det(V − wT + i√w G), w = ω²: det(V + xG + x²T) in x = iω, whose odd
 /// coefficients vanish for an antisymmetric G, with x² = −w.
 std::vector<GiNaC::ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
-                                                   const GiNaC::matrix& gyroscopic, const GiNaC::symbol& w);
+                                                   const GiNaC::matrix& gyroscopic, const GiNaC::symbol& w,
+                                                   bool* factored = nullptr);
 
 } // namespace lagrange
