@@ -28,6 +28,7 @@ const std::vector<std::pair<product, std::string>>& product_names()
         {product::conserved, "conserved"},
         {product::hamiltonian, "hamiltonian"},
         {product::reduced, "reduced"},
+        {product::multipliers, "multipliers"},
     };
     return names;
 }

@@ -86,6 +86,21 @@ struct point_force {
     source_location where;
 };
 
+/// `constraint NAME: lhs = rhs` (§5 of the spec). With f = lhs − rhs, its velocity form is
+/// Σ_j a_j(q, t) q̇_j + b(q, t) = 0: for a holonomic constraint f(q, t) = 0, a_j = ∂f/∂q_j and
+/// b = ∂f/∂t; for a Pfaffian one (linear in the velocities) f itself. It adds a_j λ to the
+/// generalized force on q_j, with the multiplier λ named `lambda_NAME`.
+struct constraint {
+    enum class kind { holonomic, pfaffian };
+    std::string name;
+    kind constraint_kind = kind::holonomic;
+    GiNaC::ex function;                  ///< f = lhs − rhs
+    std::vector<GiNaC::ex> coefficients; ///< a_j, one per coordinate
+    GiNaC::ex rest;                      ///< b
+    GiNaC::realsymbol multiplier;        ///< lambda_NAME
+    source_location where;               ///< the constraint's name
+};
+
 /// A rigid body (§2 of the spec). Its inertia is derived later (bodies/inertia.h);
 /// the model keeps what the scene said.
 struct rigid_body {
@@ -176,6 +191,7 @@ enum class product {
     conserved,
     hamiltonian,
     reduced,
+    multipliers,
 };
 
 /// Spec names of the products, in order.
@@ -204,6 +220,7 @@ struct model {
     std::vector<generalized_force> forces;
     std::vector<point_force> point_forces;
     std::vector<input_signal> inputs;
+    std::vector<constraint> constraints; ///< in the order written
 
     std::optional<std::vector<GiNaC::ex>> equilibrium; ///< one value per coordinate
     std::optional<steady_motion_request> steady; ///< an `equilibrium` line that names a rate

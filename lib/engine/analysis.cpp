@@ -5,6 +5,7 @@
 #include "scene/lower.h"
 
 #include "numeric/damped_modes.h"
+#include "numeric/constrained_motion.h"
 #include "numeric/free_body_motion.h"
 #include "numeric/gyroscopic_modes.h"
 
@@ -72,6 +73,28 @@ bool any_scene(const model&) { return true; }
 bool has_static_point(const model& scene) { return !scene.coordinates.empty() && !scene.steady; }
 bool has_steady(const model& scene) { return !scene.coordinates.empty() && scene.steady; }
 bool has_time(const model& scene) { return !scene.coordinates.empty() && mentions_time(scene); }
+/// Modes of a constrained scene are in its independent coordinates: their displacements and
+/// normal coordinates name them (the modes stage numbers them from the first coordinate).
+void name_independent_coordinates(const model& scene, const std::vector<std::size_t>& independent, modes_result& modes)
+{
+    GiNaC::exmap rename;
+    for (std::size_t i = 0; i < independent.size(); ++i)
+        rename[scene.coordinates[i].position] = scene.coordinates[independent[i]].position;
+    for (GiNaC::ex& e : modes.displacements)
+        e = e.subs(rename);
+    for (GiNaC::ex& e : modes.normal_coordinates)
+        e = e.subs(rename);
+    for (GiNaC::ex& e : modes.normal_coordinates_in_ratio)
+        e = e.subs(rename);
+}
+
+/// The stages that do not handle constraints yet say so instead of ignoring them.
+void refuse_constraints(const model& scene, const std::string& what)
+{
+    if (!scene.constraints.empty())
+        throw computation_error(what + " with constraints (`constraint`) is not computed by this version");
+}
+
 bool has_top(const model& scene)
 {
     if (scene.coordinates.empty())
@@ -86,13 +109,14 @@ const std::vector<product> coordinate_products = {
     product::equations, product::equilibrium, product::linearization, product::characteristic,
     product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
     product::floquet, product::damping, product::state_space, product::transfer, product::conserved,
-    product::hamiltonian, product::reduced};
+    product::hamiltonian, product::reduced, product::multipliers};
 
 const std::vector<product> every_product = {
     product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
     product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
     product::euler,      product::simulation, product::workprecision, product::floquet, product::damping,
-    product::state_space, product::transfer, product::conserved, product::hamiltonian, product::reduced};
+    product::state_space, product::transfer, product::conserved, product::hamiltonian, product::reduced,
+    product::multipliers};
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
@@ -130,6 +154,13 @@ const std::vector<stage_definition>& stage_table()
              c.result.equations = derive_equations_of_motion(c.scene, *c.result.lagrangian, c.simplifier_for_scene(),
                                                              c.wants(product::equations));
          }, "", "equations"},
+        {"multipliers", {product::multipliers}, {}, {"equations"}, has_coordinates,
+         [](stage_context& c) {
+             if (c.scene.constraints.empty())
+                 throw computation_error("`multipliers` needs a constraint (`constraint NAME: lhs = rhs`)");
+             c.result.multipliers = derive_multipliers(c.scene, c.result.equations->mass, c.result.equations->forcing,
+                                                       *c.result.equations->constraints, c.simplifier_for_scene());
+         }, "", "multipliers"},
         {"top", {}, {product::equations, product::inertia}, {"lagrangian"}, has_top,
          [](stage_context& c) { c.result.tops = analyze_tops(c.scene, *c.result.lagrangian, c.simplifier_for_scene()); },
          "", ""},
@@ -153,10 +184,20 @@ const std::vector<stage_definition>& stage_table()
              if (c.wants(product::numeric) && c.scene.values.empty())
                  throw computation_error("`numeric` needs a `values` line or --values");
              require_forces_vanish_at_rest(c.scene, c.simplifier_for_scene());
+             if (!c.scene.constraints.empty()) {
+                 c.result.constrained =
+                     linearize_with_constraints(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
+                 c.result.equilibria = c.result.constrained->equilibria;
+                 return;
+             }
              c.result.equilibria = find_equilibria(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
         {"linearization", {product::linearization}, {}, {"equilibrium"}, has_static_point,
          [](stage_context& c) {
+             if (c.result.constrained) {
+                 c.result.linearization = c.result.constrained->linear;
+                 return;
+             }
              const equilibrium_point& point = c.result.equilibria->points.at(c.result.equilibria->chosen);
              c.result.linearization =
                  linearize(c.scene, *c.result.lagrangian, point.position, c.simplifier_for_scene());
@@ -183,12 +224,15 @@ const std::vector<stage_definition>& stage_table()
              c.result.modes = c.result.linearization->has_gyroscopic()
                                   ? gyroscopic_modes(c.scene, *c.result.linearization, *c.result.characteristic)
                                   : symbolic_modes(c.scene, *c.result.linearization, *c.result.characteristic);
+             if (c.result.constrained)
+                 name_independent_coordinates(c.scene, c.result.constrained->independent, *c.result.modes);
          }, "small oscillations", "symbolic modes"},
         {"asymptotic", {product::asymptotic}, {}, {"modes"}, has_static_point,
          [](stage_context& c) {
              if (c.result.modes->gyroscopic)
                  throw computation_error("`asymptotic` is not computed for a Lagrangian with a part linear in the "
                                          "velocities (gyroscopic terms)");
+             refuse_constraints(c.scene, "`asymptotic`");
              c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes);
          },
          "small oscillations", "symbolic modes"},
@@ -197,6 +241,7 @@ const std::vector<stage_definition>& stage_table()
              if (c.result.linearization->has_gyroscopic())
                  throw computation_error("damped small oscillations with gyroscopic terms (G ≠ 0) are not "
                                          "computed");
+             refuse_constraints(c.scene, "`damping`");
              c.result.damping = damped_oscillations(c.scene, *c.result.linearization, c.simplifier_for_scene(),
                                                     c.result.modes ? &*c.result.modes : nullptr);
          }, "small oscillations", "small oscillations"},
@@ -217,6 +262,7 @@ const std::vector<stage_definition>& stage_table()
         // The linearized input–output system: A, B (and at the `values` points), then H(s).
         {"state_space", {product::state_space}, {}, {"linearization"}, has_coordinates,
          [](stage_context& c) {
+             refuse_constraints(c.scene, "`state_space`");
              const GiNaC::matrix damping =
                  c.result.damping ? c.result.damping->damping
                                   : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
@@ -235,26 +281,31 @@ const std::vector<stage_definition>& stage_table()
                      return;
                  throw computation_error("`floquet` needs an L that depends on t, and this L does not");
              }
+             refuse_constraints(c.scene, "`floquet`");
              c.result.floquet = floquet_multipliers(c.scene, *c.result.equations, *c.result.time);
          }, "", ""},
         {"conserved", {product::conserved}, {}, {"equations"}, has_coordinates,
          [](stage_context& c) {
+             refuse_constraints(c.scene, "`conserved`");
              c.result.conserved = conserved_quantities(c.scene, *c.result.lagrangian, *c.result.equations,
                                                        c.simplifier_for_scene());
          }, "symmetries", "symmetries"},
         {"hamiltonian", {product::hamiltonian}, {}, {"equations"}, has_coordinates,
          [](stage_context& c) {
+             refuse_constraints(c.scene, "`hamiltonian`");
              c.result.hamiltonian = derive_hamiltonian(c.scene, *c.result.lagrangian, *c.result.equations,
                                                        c.simplifier_for_scene());
          }, "", "hamiltonian"},
         {"reduced", {product::reduced}, {}, {"lagrangian"}, has_coordinates,
          [](stage_context& c) {
+             refuse_constraints(c.scene, "`reduced`");
              c.result.reduced = reduce_cyclic(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
          }, "symmetries", "symmetries"},
         // An `equilibrium` line that names a steady rate: the motion on the reduced system.
         {"steady", {}, {product::equilibrium, product::linearization, product::characteristic, product::frequencies,
                         product::reduced}, {"reduced"}, has_steady,
          [](stage_context& c) {
+             refuse_constraints(c.scene, "a steady motion");
              c.result.steady = steady_motion(c.scene, *c.result.lagrangian, *c.result.reduced, c.simplifier_for_scene());
          }, "", ""},
         {"simulation", {product::simulation}, {}, {"equations"}, any_scene,
@@ -264,7 +315,9 @@ const std::vector<stage_definition>& stage_table()
                      throw computation_error("the scene has no coordinates to simulate");
                  c.result.simulation = simulate_free_body(c.scene, c.simulation);
              } else {
-                 c.result.simulation = simulate(c.scene, *c.result.equations, equilibrium_of(c), c.simulation);
+                 c.result.simulation = !c.scene.constraints.empty()
+                     ? simulate_constrained(c.scene, *c.result.equations, c.simulation)
+                     : simulate(c.scene, *c.result.equations, equilibrium_of(c), c.simulation);
              }
          }, "simulation", ""},
         {"workprecision", {product::workprecision}, {}, {"equations"}, any_scene,
@@ -274,6 +327,7 @@ const std::vector<stage_definition>& stage_table()
                      throw computation_error("the scene has no coordinates to simulate");
                  c.result.workprecision = free_body_work_precision(c.scene, c.simulation);
              } else {
+                 refuse_constraints(c.scene, "`workprecision`");
                  c.result.workprecision =
                      scene_work_precision(c.scene, *c.result.equations, equilibrium_of(c), c.simulation);
              }
@@ -305,6 +359,8 @@ verification_input verification_input_of(const analysis& r)
     input.steady = r.steady ? &*r.steady : nullptr;
     input.state_space = r.state_space ? &*r.state_space : nullptr;
     input.transfer = r.transfer ? &*r.transfer : nullptr;
+    input.multipliers = r.multipliers ? &*r.multipliers : nullptr;
+    input.constrained = r.constrained ? &*r.constrained : nullptr;
     return input;
 }
 
@@ -356,6 +412,8 @@ std::set<product> default_products(const model& scene)
         products.insert(product::damping);
     if (!scene.inputs.empty())
         products.insert({product::state_space, product::transfer});
+    if (!scene.constraints.empty())
+        products.insert(product::multipliers);
     if (scene.simulation)
         products.insert(product::simulation);
     return products;

@@ -7,6 +7,7 @@
 #include "mechanics/equations_of_motion.h"
 #include "mechanics/lagrangian.h"
 #include "mechanics/asymptotic.h"
+#include "mechanics/constrained_linearization.h"
 #include "mechanics/damping.h"
 #include "mechanics/equilibrium.h"
 #include "mechanics/gyroscopic.h"
@@ -69,6 +70,9 @@ struct analysis {
     std::optional<hamiltonian_result> hamiltonian; ///< H(q, p) and Hamilton's equations
     std::optional<reduced_result> reduced;         ///< Routh's reduction of the cyclic coordinates
     std::optional<steady_motion_result> steady;    ///< the `equilibrium` line's steady motion, reduced
+    std::optional<multipliers_result> multipliers; ///< constraint multipliers and forces (scenes with constraints)
+    /// Small oscillations with constraints: `linearization` is then in the independent coordinates.
+    std::optional<constrained_linearization> constrained;
 };
 
 /// What verify_results reads of an analysis: a pointer to each result it computed.

@@ -121,11 +121,21 @@ equations_of_motion derive_equations_of_motion(const model& scene, const lagrang
         result.forcing.push_back(f + result.forces.total[i]);
         result.energy += scene.coordinates[i].velocity * p;
     }
+    if (!scene.constraints.empty())
+        result.constraints = derive_constraint_equations(scene);
     if (printed) {
         result.residuals = derive_equations(scene, lagrangian, simplify);
         if (result.forces.any)
             for (std::size_t i = 0; i < n; ++i)
                 (*result.residuals)[i] = simplify((*result.residuals)[i] - result.forces.total[i]);
+        if (result.constraints)
+            for (std::size_t i = 0; i < n; ++i) {
+                GiNaC::ex reaction = 0;
+                for (std::size_t k = 0; k < scene.constraints.size(); ++k)
+                    reaction += result.constraints->matrix(static_cast<unsigned>(k), static_cast<unsigned>(i)) *
+                                scene.constraints[k].multiplier;
+                (*result.residuals)[i] = simplify((*result.residuals)[i] - reaction);
+            }
         result.grouped = group_by_accelerations(scene, *result.residuals);
     }
     return result;

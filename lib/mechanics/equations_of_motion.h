@@ -6,6 +6,7 @@
 
 #include "algebra/simplify.h"
 #include "core/model.h"
+#include "mechanics/constraints.h"
 #include "mechanics/forces.h"
 #include "mechanics/lagrangian.h"
 
@@ -36,6 +37,9 @@ struct equations_of_motion {
     /// Q: dissipation, dampers and applied forces (mechanics/forces.h), in `forcing` and the residuals.
     generalized_forces forces;
     GiNaC::ex energy;                    ///< the energy function h = Σ q̇_i p_i − L
+    /// The scene's constraints, when it has some: then M q̈ = f + Aᵀλ with A q̈ = −c, and the
+    /// residuals below less Σ_k a_ki λ_k.
+    std::optional<constraint_equations> constraints;
     /// d/dt ∂L/∂q̇ − ∂L/∂q − Q, each meaning `expr = 0`, simplified: set when they are printed.
     std::optional<std::vector<GiNaC::ex>> residuals;
     /// The residuals as 𝓜(q) q̈ + f = 0, when they are linear in the accelerations.

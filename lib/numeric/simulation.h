@@ -41,6 +41,14 @@ struct beat_measurement {
     std::size_t minima = 0;  ///< how many minima were found
 };
 
+/// A constraint's multiplier changes sign (a ladder leaves its wall): the time, found by
+/// bisection, and the state (q, q̇) then.
+struct constraint_event {
+    std::string constraint;
+    double time = 0;
+    std::vector<double> state;
+};
+
 struct simulation_result {
     std::vector<std::string> coordinates;
     std::map<std::string, GiNaC::ex> values;  ///< the parameter point
@@ -60,6 +68,10 @@ struct simulation_result {
     /// A free body: the state is (ω1, ω2, ω3) named by `coordinates`, without velocities.
     bool first_order = false;
     std::string evaluation;                   ///< empty: native code; else how, and why not native
+    /// Scenes with constraints: the largest residual of the constraints before each projection.
+    std::optional<double> constraint_residual;
+    std::optional<double> initial_residual;   ///< of the `initial` state, when it was projected
+    std::vector<constraint_event> constraint_events;
 };
 
 /// Frequency spread above which `auto` picks the implicit BDF method.

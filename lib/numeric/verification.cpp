@@ -1,6 +1,7 @@
 /** @file verification.cpp
  *  Numeric checks of the symbolic results against the Lagrangian as built. */
 #include "numeric/verification.h"
+#include "numeric/verification_constraints.h"
 
 #include "numeric/double_double.h"
 #include "numeric/expression_program.h"
@@ -428,6 +429,12 @@ verification_entry check_equations(checker& c, const equations_of_motion& equati
     std::vector<ex> outputs;
     if (equations.residuals)
         outputs = *equations.residuals;
+    // The multipliers' terms Σ a_ki λ_k are checked with the multipliers (verify_multipliers).
+    GiNaC::exmap no_multipliers;
+    for (const constraint& k : c.scene.constraints)
+        no_multipliers[k.multiplier] = 0;
+    for (ex& e : outputs)
+        e = e.subs(no_multipliers);
     for (std::size_t i = 0; i < n; ++i) {
         ex ma = 0;
         for (std::size_t j = 0; j < n; ++j)
@@ -665,7 +672,8 @@ verification_entry check_characteristic(const model& scene, const linearization_
                                         const characteristic_result& characteristic,
                                         const std::vector<numeric_pencil>& pencils)
 {
-    const std::size_t n = scene.coordinates.size();
+    (void)scene;
+    const std::size_t n = linear.kinetic.rows(); // with constraints: the independent coordinates
     const ex& p = characteristic.polynomial;
     if (!p.is_polynomial(characteristic.omega) || p.degree(characteristic.omega) != static_cast<int>(2 * n))
         throw computation_error("verification failed: the characteristic polynomial is not of degree " +
@@ -758,7 +766,7 @@ void check_gyroscopic_frequencies(const model& scene, const modes_result& modes,
 void check_modes(const model& scene, const modes_result& modes, const std::vector<numeric_pencil>& pencils,
                  const std::set<product>& shown, std::vector<verification_entry>& entries)
 {
-    const std::size_t n = scene.coordinates.size();
+    const std::size_t n = modes.displacements.size(); // with constraints: the independent coordinates
     if (!modes.closed_form)
         return;
     if (modes.gyroscopic) {
@@ -808,8 +816,13 @@ void check_modes(const model& scene, const modes_result& modes, const std::vecto
             Eigen::MatrixXd rows(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
             for (std::size_t k = 0; k < n; ++k)
                 for (std::size_t j = 0; j < n; ++j) {
+                    // The coordinate of displacement j (with constraints: the j-th independent one).
+                    GiNaC::ex q = scene.coordinates[j].position;
+                    for (const coordinate& c : scene.coordinates)
+                        if (modes.displacements[j].has(c.position))
+                            q = c.position;
                     std::optional<double> x =
-                        real_at(modes.normal_coordinates[k].diff(scene.coordinates[j].position), p.map);
+                        real_at(modes.normal_coordinates[k].diff(GiNaC::ex_to<GiNaC::symbol>(q)), p.map);
                     if (!x)
                         not_real("the normal coordinates", "a coefficient of ζ" + std::to_string(k + 1), at_point(p));
                     rows(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(j)) = *x;
@@ -858,9 +871,13 @@ verification_result verify_results(const model& scene, const verification_input&
         else
             not_checked("equations");
     }
+    if (input.multipliers && input.equations)
+        result.entries.push_back(check_multipliers(scene, *input.equations, *input.multipliers));
     if (input.linearization) {
         const bool point = input.equilibria != nullptr;
-        if (c.lagrangian) {
+        if (input.constrained) {
+            check_constrained_linearization(scene, *input.lagrangian, *input.constrained, point, result.entries);
+        } else if (c.lagrangian) {
             check_linearization(c, *input.linearization, point, result.entries);
         } else {
             if (point)

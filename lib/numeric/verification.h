@@ -8,6 +8,8 @@
 
 #include "core/model.h"
 #include "mechanics/damping.h"
+#include "mechanics/constrained_linearization.h"
+#include "mechanics/constraints.h"
 #include "mechanics/equations_of_motion.h"
 #include "mechanics/equilibrium.h"
 #include "mechanics/lagrangian.h"
@@ -50,6 +52,8 @@ struct verification_input {
     const steady_motion_result* steady = nullptr;
     const state_space_result* state_space = nullptr;
     const transfer_result* transfer = nullptr; ///< checked only with state_space
+    const multipliers_result* multipliers = nullptr;
+    const constrained_linearization* constrained = nullptr; ///< then `linearization` is the reduced one
 };
 
 /// Checks every result given (`shown`: the products printed, which name the entries of

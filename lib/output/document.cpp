@@ -5,6 +5,7 @@
 #include "output/latex_blocks.h"
 #include "output/bodies.h"
 #include "output/floquet_output.h"
+#include "output/constraints_output.h"
 #include "output/damping_output.h"
 #include "output/linear_system_output.h"
 #include "output/symmetries_output.h"
@@ -397,6 +398,7 @@ void write_text(std::ostream& out, const analysis& result, const document_option
             out << "  " << print_name(scene.coordinates[i].name, syntax::text) << ":  "
                 << print((*result.equations->residuals)[i], syntax::text, equation_order(scene)) << " = 0\n";
     }
+    write_constraints_text(out, result);
     write_oscillations_text(out, result);
     write_floquet_text(out, result);
     if (result.damping)
@@ -531,6 +533,7 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
         for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
             out << latex_display("", print_terms((*result.equations->residuals)[i], syntax::latex, equation_order(scene)), " = 0");
     }
+    write_constraints_latex(out, result);
     write_oscillations_latex(out, result);
     write_floquet_latex(out, result);
     if (result.damping)
@@ -705,6 +708,7 @@ void write_json(std::ostream& out, const analysis& result, const document_option
         for (const GiNaC::ex& e : *result.equations->residuals)
             doc["equations"].push_back(print(e, syntax::plain, equation_order(scene)));
     }
+    write_constraints_json(doc, result);
     write_oscillations_json(doc, result);
     write_floquet_json(doc, result);
     if (result.damping)

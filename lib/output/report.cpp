@@ -681,6 +681,8 @@ const std::vector<report_section>& report_sections()
         {"coordinates", [](const analysis&) { return true; }, write_coordinates},
         {"lagrangian", [](const analysis& r) { return r.lagrangian.has_value(); }, write_lagrangian},
         {"equations", [](const analysis& r) { return r.equations && r.equations->residuals; }, write_equations},
+        {"constraints", [](const analysis& r) { return !r.scene->constraints.empty() && (r.multipliers || r.equations); },
+         write_constraints_section},
         {"equilibrium", [](const analysis& r) { return r.equilibria.has_value(); }, write_equilibria},
         {"linearization",
          [](const analysis& r) {

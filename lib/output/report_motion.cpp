@@ -54,11 +54,23 @@ void write_simulation(report_writer& w, const simulation_result& s)
     w.text(" equations of motion are integrated numerically");
     if (!s.run.states.empty() && s.run.states.front().size() >= 2 * n && !s.run.times.empty()) {
         const std::vector<double>& x0 = s.run.states.front();
+        std::vector<std::string> entries;
+        for (std::size_t i = 0; i < n; ++i)
+            entries.push_back(report_writer::name(s.coordinates[i]) + "(0) = " + report_writer::number(x0[i]));
+        for (std::size_t i = 0; i < n; ++i)
+            entries.push_back("\\dot{" + report_writer::name(s.coordinates[i]) + "}(0) = " + report_writer::number(x0[n + i]));
         std::string initial;
-        for (std::size_t i = 0; i < n; ++i)
-            initial += (i ? ",\\ " : "") + report_writer::name(s.coordinates[i]) + "(0) = " + report_writer::number(x0[i]);
-        for (std::size_t i = 0; i < n; ++i)
-            initial += ",\\ \\dot{" + report_writer::name(s.coordinates[i]) + "}(0) = " + report_writer::number(x0[n + i]);
+        for (std::size_t i = 0; i < entries.size(); ++i)
+            initial += (i ? ",\\ " : "") + entries[i];
+        // Wider than a line: one formula per entry, so that the line can break between them,
+        // each number to 6 digits.
+        if (latex_math_width(initial) > 75) {
+            initial.clear();
+            for (std::size_t i = 0; i < 2 * n; ++i)
+                initial += (i ? "$, $" : "") + std::string(i < n ? "" : "\\dot{") +
+                           report_writer::name(s.coordinates[i % n]) + (i < n ? "" : "}") + "(0) = " +
+                           report_writer::number(x0[i], 6);
+        }
         w.text(" from ").latex("$" + initial + "$");
     }
     if (!s.run.times.empty())

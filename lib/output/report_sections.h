@@ -39,6 +39,9 @@ void write_linear_system_section(report_writer& w);
 /// Symmetries (report_symmetries.cpp): the conserved quantities, the Hamiltonian, Routh's
 /// reduction and the steady motion.
 void write_symmetries_section(report_writer& w);
+/// Scenes with constraints (report_constraints.cpp): the constraints with their kind and
+/// integrability, the multipliers and the constraint forces.
+void write_constraints_section(report_writer& w);
 
 /// The parameter values of a numeric point as LaTeX, "m = 1,\ k = 4" (the numeric sections'
 /// subsection titles).

@@ -143,6 +143,18 @@ void write_simulation_text(std::ostream& out, const simulation_result& s, bool t
         else
             out << "  " << name << " drift: " << number(drift, 3) << " relative\n";
     }
+    if (s.constraint_residual)
+        out << "  constraint residual: " << number(*s.constraint_residual, 3)
+            << " (largest |f| and |A q' + b| before each projection onto the constraints)\n";
+    if (s.initial_residual)
+        out << "  the initial state missed the constraints by " << number(*s.initial_residual, 3)
+            << " and was projected onto them\n";
+    for (const constraint_event& e : s.constraint_events) {
+        out << "  λ_" << e.constraint << " changes sign at t = " << number(e.time) << ":";
+        for (std::size_t i = 0; i < n && i < e.state.size(); ++i)
+            out << (i ? ", " : " ") << print_name(s.coordinates[i], syntax::text) << " = " << number(e.state[i]);
+        out << '\n';
+    }
     if (!s.evaluation.empty())
         out << "  evaluation: " << s.evaluation << '\n';
     if (timings)
@@ -211,6 +223,11 @@ void write_simulation_latex(std::ostream& out, const simulation_result& s, bool 
         else
             out << latex_text(name) << " drift & $" << latex_number(drift) << "$ relative\\\\\n";
     }
+    if (s.constraint_residual)
+        out << "constraint residual & $" << latex_number(*s.constraint_residual) << "$\\\\\n";
+    for (const constraint_event& e : s.constraint_events)
+        out << "$\\lambda_{" << latex_text(e.constraint) << "}$ changes sign & $t = " << latex_number(e.time)
+            << "$\\\\\n";
     if (timings)
         out << "run time & " << number(run.seconds, 3) << " s\\\\\n";
     if (s.beats)
@@ -254,7 +271,23 @@ nlohmann::ordered_json simulation_json(const simulation_result& s, bool timings)
     nlohmann::ordered_json invariants = nlohmann::ordered_json::object();
     for (const auto& [name, drift] : run.invariant_drift)
         invariants[name == "energy_balance" ? name : name + "_drift"] = drift;
+    if (s.constraint_residual)
+        invariants["constraint_residual"] = *s.constraint_residual;
     doc["invariants"] = invariants;
+    if (!s.constraint_events.empty()) {
+        nlohmann::ordered_json events = nlohmann::ordered_json::array();
+        for (const constraint_event& e : s.constraint_events) {
+            nlohmann::ordered_json state = nlohmann::ordered_json::object();
+            for (std::size_t i = 0; i < n && i < e.state.size(); ++i)
+                state[s.coordinates[i]] = e.state[i];
+            for (std::size_t i = 0; i < n && n + i < e.state.size(); ++i)
+                state[s.coordinates[i] + "_dot"] = e.state[n + i];
+            events.push_back({{"multiplier_changes_sign", e.constraint}, {"t", e.time}, {"state", state}});
+        }
+        doc["events"] = events;
+    }
+    if (s.initial_residual)
+        doc["initial_residual"] = *s.initial_residual;
     doc["choice"] = s.choice;
     doc["tolerance"] = s.tolerance;
     doc["run_tolerance"] = s.run_tolerance;

@@ -25,6 +25,7 @@ std::string describe(token_kind kind)
     case token_kind::caret: return "`^`";
     case token_kind::prime: return "`'`";
     case token_kind::arrow: return "`->`";
+    case token_kind::colon: return "`:`";
     case token_kind::newline: return "the end of the line";
     case token_kind::end: return "the end of the file";
     }
@@ -242,6 +243,7 @@ private:
         case '/': kind = token_kind::slash; break;
         case '^': kind = token_kind::caret; break;
         case '\'': kind = token_kind::prime; break;
+        case ':': kind = token_kind::colon; break;
         default: unexpected(c, at);
         }
         advance();

@@ -26,6 +26,7 @@ enum class token_kind {
     caret,      ///< ^
     prime,      ///< '
     arrow,      ///< ->
+    colon,      ///< : (after a constraint's name)
     newline,    ///< end of a statement
     end,        ///< end of the text
 };

@@ -6,6 +6,7 @@
 #include "scene/lower.h"
 
 #include "scene/lexer.h"
+#include "scene/lower_constraint.h"
 #include "scene/lower_expression.h"
 #include "scene/parser.h"
 #include "system/files.h"
@@ -104,6 +105,8 @@ private:
         } else if (k == "input") {
             for (const name_ref& n : s.names)
                 declare_input(n);
+        } else if (k == "constraint") {
+            lower_constraint(s);
         }
     }
 
@@ -288,6 +291,22 @@ private:
             }
         throw scene_error(n.where, "unknown point " + quote(n.name) + ": declare it with `point` first (a point "
                                    "that only carries a force has `mass 0`)");
+    }
+
+    void lower_constraint(const statement& s)
+    {
+        const name_ref& n = s.names[0];
+        for (const constraint& c : scene_.constraints)
+            if (c.name == n.name)
+                throw scene_error(n.where, "constraint " + quote(n.name) + " is already declared at line " +
+                                               std::to_string(c.where.line));
+        if (names_.count("lambda_" + n.name))
+            throw scene_error(n.where, "the multiplier of constraint " + quote(n.name) + " is `lambda_" + n.name +
+                                           "`, which is already declared");
+        expr_context context{"a constraint"};
+        context.velocities = true;
+        GiNaC::ex f = lower(*s.value, context) - lower(*s.right, context);
+        scene_.constraints.push_back(classify_constraint(n, f, s.value->where, scene_));
     }
 
     const name_entry& coordinate_named(const name_ref& n)
@@ -717,6 +736,7 @@ private:
                                                  "`(dx, dy)`; give the points three components to use a third");
         for (std::size_t k = 0; k < value_statements_.size(); ++k)
             check_physical(scene_, scene_.values[k], *value_statements_[k]);
+        check_constraints(scene_);
     }
 
 public:

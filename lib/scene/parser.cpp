@@ -115,7 +115,7 @@ private:
     // statement := scene | parameters | coordinates | let | energy | point | gravity
     //            | spring | body | omega | torque | equilibrium | ratio | limit
     //            | values | initial | simulate | use | want
-    //            | dissipation | damper | force | input
+    //            | dissipation | damper | force | input | constraint
     statement parse_statement()
     {
         const token& first = current();
@@ -150,6 +150,7 @@ private:
         else if (k == "damper") parse_damper(s);
         else if (k == "force") parse_force(s);
         else if (k == "input") parse_name_list(s, k);
+        else if (k == "constraint") parse_constraint(s);
         else
             throw scene_error(first.where, "unknown statement " + quote(k));
         return s;
@@ -237,6 +238,16 @@ private:
         s.names.push_back(expect_name("a coordinate, as in `force x = -c*x'`, or `on` and a point"));
         expect(token_kind::equals, "`=`");
         s.value = parse_expr();
+    }
+
+    // constraint := 'constraint' NAME ':' expr '=' expr
+    void parse_constraint(statement& s)
+    {
+        s.names.push_back(expect_name("the constraint's name, as in `constraint rope: y1 + y2 = -l`"));
+        expect(token_kind::colon, "`:` after the constraint's name");
+        s.value = parse_expr();
+        expect(token_kind::equals, "`=` between the two sides of the constraint");
+        s.right = parse_expr();
     }
 
     // endpoint := NAME | vector

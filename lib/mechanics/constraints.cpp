@@ -1,0 +1,237 @@
+/** @file constraints.cpp
+ *  The constraint matrix and its derivative, integrability by Frobenius at random
+ *  points, and the multipliers and constraint forces solved symbolically. */
+#include "mechanics/constraints.h"
+
+#include "algebra/calculus.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <random>
+
+namespace lagrange {
+
+namespace {
+
+/// The value of `e` at `at` as a double, or NaN.
+double number_at(const GiNaC::ex& e, const GiNaC::exmap& at)
+{
+    try {
+        GiNaC::ex v = e.subs(at).evalf();
+        if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real())
+            return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+    } catch (const std::exception&) {
+    }
+    return std::nan("");
+}
+
+/// Frobenius at random points for the one-forms ω_k = Σ a_kj dq_j + b_k dt of the constraints
+/// `which`: their common kernel N is involutive when Nᵀ dω_k N = 0 for each k.
+bool involutive(const model& scene, const std::vector<std::size_t>& which)
+{
+    const std::size_t n = scene.coordinates.size(), dim = n + 1;
+    std::vector<GiNaC::ex> variables; // kept as ex: a copy into a plain symbol would be another type
+    for (const coordinate& c : scene.coordinates)
+        variables.push_back(c.position);
+    variables.push_back(scene.time);
+    auto d = [&](const GiNaC::ex& e, std::size_t i) { return differentiate(e, GiNaC::ex_to<GiNaC::symbol>(variables[i])); };
+    // ω and dω: W_ij = ∂_i ω_j − ∂_j ω_i.
+    std::vector<std::vector<GiNaC::ex>> forms;
+    std::vector<std::vector<GiNaC::ex>> curls;
+    for (std::size_t k : which) {
+        const constraint& c = scene.constraints[k];
+        std::vector<GiNaC::ex> omega = c.coefficients;
+        omega.push_back(c.rest);
+        std::vector<GiNaC::ex> w(dim * dim, 0);
+        for (std::size_t i = 0; i < dim; ++i)
+            for (std::size_t j = i + 1; j < dim; ++j) {
+                w[i * dim + j] = d(omega[j], i) - d(omega[i], j);
+                w[j * dim + i] = -w[i * dim + j];
+            }
+        forms.push_back(omega);
+        curls.push_back(w);
+    }
+    std::mt19937 random(112026);
+    std::uniform_real_distribution<double> centred(-1.0, 1.0), positive(0.5, 2.0);
+    int tested = 0;
+    for (int attempt = 0; attempt < 12 && tested < 3; ++attempt) {
+        GiNaC::exmap at;
+        for (const parameter& p : scene.parameters)
+            at[p.symbol] = positive(random);
+        for (const input_signal& u : scene.inputs)
+            at[u.symbol] = centred(random);
+        for (const GiNaC::ex& v : variables)
+            at[v] = centred(random);
+        Eigen::MatrixXd omega(static_cast<Eigen::Index>(which.size()), static_cast<Eigen::Index>(dim));
+        std::vector<Eigen::MatrixXd> w(which.size(), Eigen::MatrixXd(dim, dim));
+        bool finite = true;
+        for (std::size_t k = 0; k < which.size(); ++k)
+            for (std::size_t j = 0; j < dim; ++j) {
+                omega(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(j)) = number_at(forms[k][j], at);
+                for (std::size_t i = 0; i < dim; ++i)
+                    w[k](static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+                        number_at(curls[k][i * dim + j], at);
+            }
+        for (std::size_t k = 0; k < which.size(); ++k)
+            finite = finite && omega.allFinite() && w[k].allFinite();
+        if (!finite)
+            continue;
+        ++tested;
+        Eigen::JacobiSVD<Eigen::MatrixXd> svd(omega, Eigen::ComputeFullV);
+        const auto rank = svd.rank();
+        Eigen::MatrixXd kernel = svd.matrixV().rightCols(static_cast<Eigen::Index>(dim) - rank);
+        for (const Eigen::MatrixXd& curl : w) {
+            double scale = 1 + curl.lpNorm<Eigen::Infinity>() + omega.lpNorm<Eigen::Infinity>();
+            if ((kernel.transpose() * curl * kernel).lpNorm<Eigen::Infinity>() > 1e-9 * scale)
+                return false;
+        }
+    }
+    return true;
+}
+
+/// The coordinates a position depends on, in coordinate order.
+std::vector<std::size_t> coordinates_in(const model& scene, const std::vector<GiNaC::ex>& position)
+{
+    std::vector<std::size_t> used;
+    for (std::size_t j = 0; j < scene.coordinates.size(); ++j)
+        for (const GiNaC::ex& x : position)
+            if (x.has(scene.coordinates[j].position)) {
+                used.push_back(j);
+                break;
+            }
+    return used;
+}
+
+} // namespace
+
+GiNaC::ex simplify_ratio(const GiNaC::ex& e, const simplifier& simplify)
+{
+    GiNaC::ex fraction = e.normal().numer_denom();
+    GiNaC::ex numerator = simplify(fraction.op(0));
+    GiNaC::ex denominator = simplify(fraction.op(1));
+    if (denominator.is_equal(1))
+        return numerator;
+    return numerator / denominator;
+}
+
+constraint_equations derive_constraint_equations(const model& scene)
+{
+    const std::size_t n = scene.coordinates.size(), m = scene.constraints.size();
+    constraint_equations result;
+    result.matrix = GiNaC::matrix(static_cast<unsigned>(m), static_cast<unsigned>(n));
+    GiNaC::exmap no_acceleration;
+    for (const coordinate& c : scene.coordinates)
+        no_acceleration[c.acceleration] = 0;
+    std::vector<std::size_t> all;
+    for (std::size_t k = 0; k < m; ++k) {
+        const constraint& c = scene.constraints[k];
+        GiNaC::ex velocity_form = c.rest;
+        for (std::size_t j = 0; j < n; ++j) {
+            result.matrix(static_cast<unsigned>(k), static_cast<unsigned>(j)) = c.coefficients[j];
+            velocity_form += c.coefficients[j] * scene.coordinates[j].velocity;
+        }
+        result.bias.push_back(time_derivative(velocity_form, scene).subs(no_acceleration));
+        result.integrable.push_back(c.constraint_kind == constraint::kind::holonomic || involutive(scene, {k}));
+        all.push_back(k);
+    }
+    result.jointly_integrable = m == 0 || involutive(scene, all);
+    return result;
+}
+
+multipliers_result derive_multipliers(const model& scene, const GiNaC::matrix& mass,
+                                      const std::vector<GiNaC::ex>& forcing, const constraint_equations& constraints,
+                                      const simplifier& simplify)
+{
+    const unsigned n = static_cast<unsigned>(scene.coordinates.size());
+    const unsigned m = static_cast<unsigned>(scene.constraints.size());
+    GiNaC::matrix system(n + m, n + m), unknowns(n + m, 1), right(n + m, 1);
+    for (unsigned i = 0; i < n; ++i) {
+        for (unsigned j = 0; j < n; ++j)
+            system(i, j) = mass(i, j);
+        for (unsigned k = 0; k < m; ++k) {
+            system(i, n + k) = -constraints.matrix(k, i);
+            system(n + k, i) = constraints.matrix(k, i);
+        }
+        right(i, 0) = forcing[i];
+        unknowns(i, 0) = scene.coordinates[i].acceleration;
+    }
+    for (unsigned k = 0; k < m; ++k) {
+        right(n + k, 0) = -constraints.bias[k];
+        unknowns(n + k, 0) = scene.constraints[k].multiplier;
+    }
+    GiNaC::matrix solution;
+    try {
+        solution = system.solve(unknowns, right);
+    } catch (const std::runtime_error&) {
+        throw computation_error("the constraints and the mass matrix give no unique accelerations and multipliers "
+                                "(the matrix [M −Aᵀ; A 0] is singular)");
+    }
+    multipliers_result result;
+    for (unsigned i = 0; i < n; ++i)
+        result.accelerations.push_back(solution(i, 0));
+    std::vector<GiNaC::ex> lambda;
+    for (unsigned k = 0; k < m; ++k) {
+        lambda.push_back(simplify_ratio(solution(n + k, 0), simplify));
+        result.constraints.push_back({scene.constraints[k].name, lambda.back(), {}});
+    }
+
+    // Forces on points that own their coordinates.
+    bool planar = scene.bodies.empty();
+    for (const point_mass& p : scene.points)
+        planar = planar && p.position.size() >= 3 && p.position[2].is_zero();
+    for (std::size_t p = 0; p < scene.points.size(); ++p) {
+        const point_mass& point = scene.points[p];
+        const std::vector<std::size_t> own = coordinates_in(scene, point.position);
+        bool acted_on = false;
+        for (unsigned k = 0; k < m; ++k)
+            for (std::size_t j : own)
+                acted_on = acted_on || !constraints.matrix(k, static_cast<unsigned>(j)).is_zero();
+        if (!acted_on)
+            continue;
+        bool owned = true;
+        for (std::size_t j : own) {
+            const GiNaC::ex& q = scene.coordinates[j].position;
+            for (std::size_t other = 0; other < scene.points.size(); ++other)
+                for (const GiNaC::ex& x : scene.points[other].position)
+                    owned = owned && (other == p || !x.has(q));
+            for (const rigid_body& b : scene.bodies) {
+                if (b.position)
+                    for (const GiNaC::ex& x : *b.position)
+                        owned = owned && !x.has(q);
+                if (b.orientation)
+                    for (const GiNaC::ex& x : *b.orientation)
+                        owned = owned && !x.has(q);
+            }
+        }
+        const unsigned s = static_cast<unsigned>(own.size());
+        GiNaC::matrix jacobian(3, s);
+        for (unsigned r = 0; r < 3; ++r)
+            for (unsigned j = 0; j < s; ++j)
+                jacobian(r, j) = differentiate(point.position[r], scene.coordinates[own[j]].position);
+        GiNaC::matrix gram = jacobian.transpose().mul(jacobian);
+        if (!owned || gram.determinant().normal().is_zero()) {
+            result.unattributed.push_back(point.name);
+            continue;
+        }
+        GiNaC::matrix pseudo = jacobian.mul(gram.inverse()); // J (JᵀJ)⁻¹
+        for (unsigned k = 0; k < m; ++k) {
+            GiNaC::matrix generalized(s, 1);
+            bool any = false;
+            for (unsigned j = 0; j < s; ++j) {
+                generalized(j, 0) = constraints.matrix(k, static_cast<unsigned>(own[j])) * lambda[k];
+                any = any || !generalized(j, 0).is_zero();
+            }
+            if (!any)
+                continue;
+            GiNaC::matrix force = pseudo.mul(generalized);
+            constraint_point_force entry{point.name, {}};
+            for (unsigned r = 0; r < (planar ? 2u : 3u); ++r)
+                entry.force.push_back(simplify_ratio(force(r, 0), simplify));
+            result.constraints[k].forces.push_back(entry);
+        }
+    }
+    return result;
+}
+
+} // namespace lagrange

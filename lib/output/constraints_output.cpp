@@ -1,0 +1,154 @@
+/** @file constraints_output.cpp
+ *  Printers of the constraints, their multipliers and forces. */
+#include "output/constraints_output.h"
+
+#include "output/latex_blocks.h"
+#include "output/print.h"
+
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+namespace {
+
+/// "holonomic", "Pfaffian, integrable" or "Pfaffian, not integrable".
+std::string kind_text(const constraint& c, bool integrable)
+{
+    if (c.constraint_kind == constraint::kind::holonomic)
+        return "holonomic";
+    return integrable ? "Pfaffian, integrable" : "Pfaffian, not integrable";
+}
+
+const constraint_equations* constraints_shown(const analysis& result)
+{
+    if (!result.equations || !result.equations->residuals || !result.equations->constraints)
+        return nullptr;
+    return &*result.equations->constraints;
+}
+
+std::string vector_text(const std::vector<GiNaC::ex>& v, syntax s)
+{
+    std::string text = s == syntax::latex ? "\\left(" : "(";
+    for (std::size_t k = 0; k < v.size(); ++k)
+        text += (k ? ", " : "") + print(v[k], s);
+    return text + (s == syntax::latex ? "\\right)" : ")");
+}
+
+} // namespace
+
+void write_constraints_text(std::ostream& out, const analysis& result)
+{
+    const model& scene = *result.scene;
+    const syntax s = syntax::text;
+    if (const constraint_equations* shown = constraints_shown(result)) {
+        out << "\nConstraints (M q'' = f + Aᵀλ)\n";
+        for (std::size_t k = 0; k < scene.constraints.size(); ++k) {
+            const constraint& c = scene.constraints[k];
+            out << "  " << c.name << " (" << kind_text(c, shown->integrable[k]) << "):  "
+                << print(c.function, s, velocity_order(scene)) << " = 0\n";
+        }
+        if (!shown->jointly_integrable)
+            out << "  together the constraints are not integrable: the motion is nonholonomic\n";
+    }
+    if (result.constrained && result.linearization) {
+        out << "\nSmall oscillations in the independent coordinates";
+        for (std::size_t k = 0; k < result.constrained->independent.size(); ++k)
+            out << (k ? ", " : " ") << print_name(scene.coordinates[result.constrained->independent[k]].name, s);
+        out << " (the others follow from the constraints)\n";
+    }
+    if (!result.multipliers)
+        return;
+    out << "\nMultipliers\n";
+    for (std::size_t k = 0; k < result.multipliers->constraints.size(); ++k) {
+        const constraint_multiplier& m = result.multipliers->constraints[k];
+        out << "  " << print_name(scene.constraints[k].multiplier.get_name(), s) << " = "
+            << print(m.multiplier, s, velocity_order(scene)) << '\n';
+    }
+    bool any = false;
+    for (const constraint_multiplier& m : result.multipliers->constraints)
+        any = any || !m.forces.empty();
+    if (any) {
+        out << "\nConstraint forces\n";
+        for (const constraint_multiplier& m : result.multipliers->constraints)
+            for (const constraint_point_force& f : m.forces)
+                out << "  " << m.name << " on " << f.point << ":  " << vector_text(f.force, s) << '\n';
+    }
+    for (const std::string& point : result.multipliers->unattributed)
+        out << "  " << point << ": its coordinates also move other points or bodies, so the force is not split\n";
+}
+
+void write_constraints_latex(std::ostream& out, const analysis& result)
+{
+    const model& scene = *result.scene;
+    const syntax s = syntax::latex;
+    if (const constraint_equations* shown = constraints_shown(result)) {
+        out << "\\subsection*{Constraints}\n";
+        for (std::size_t k = 0; k < scene.constraints.size(); ++k) {
+            const constraint& c = scene.constraints[k];
+            out << latex_text(c.name + " (" + kind_text(c, shown->integrable[k]) + "):") << "\n";
+            out << latex_equation("", print_terms(c.function, s, velocity_order(scene)), " = 0");
+        }
+        if (!shown->jointly_integrable)
+            out << latex_text("Together the constraints are not integrable: the motion is nonholonomic.") << "\n\n";
+    }
+    if (result.constrained && result.linearization) {
+        std::string names;
+        for (std::size_t k : result.constrained->independent)
+            names += (names.empty() ? "" : ", ") + scene.coordinates[k].name;
+        out << latex_text("Small oscillations in the independent coordinates " + names +
+                          " (the others follow from the constraints).") << "\n\n";
+    }
+    if (!result.multipliers)
+        return;
+    out << "\\subsection*{Multipliers}\n";
+    for (std::size_t k = 0; k < result.multipliers->constraints.size(); ++k)
+        out << latex_equation(print_name(scene.constraints[k].multiplier.get_name(), s),
+                              {print(result.multipliers->constraints[k].multiplier, s, velocity_order(scene))}, "");
+    for (const constraint_multiplier& m : result.multipliers->constraints)
+        for (const constraint_point_force& f : m.forces)
+            out << latex_text("Force of " + m.name + " on " + f.point + ":") << "\n"
+                << latex_equation("F", {vector_text(f.force, s)}, "");
+}
+
+void write_constraints_json(nlohmann::ordered_json& doc, const analysis& result)
+{
+    const model& scene = *result.scene;
+    if (const constraint_equations* shown = constraints_shown(result)) {
+        nlohmann::ordered_json constraints = nlohmann::ordered_json::object();
+        for (std::size_t k = 0; k < scene.constraints.size(); ++k) {
+            const constraint& c = scene.constraints[k];
+            constraints[c.name] = {
+                {"kind", c.constraint_kind == constraint::kind::holonomic ? "holonomic" : "pfaffian"},
+                {"equation", print(c.function, syntax::plain, velocity_order(scene))},
+                {"integrable", static_cast<bool>(shown->integrable[k])}};
+        }
+        doc["constraints"] = constraints;
+        doc["constraints_integrable"] = shown->jointly_integrable;
+    }
+    if (result.constrained && result.linearization) {
+        nlohmann::ordered_json names = nlohmann::ordered_json::array();
+        for (std::size_t k : result.constrained->independent)
+            names.push_back(scene.coordinates[k].name);
+        doc["independent_coordinates"] = names;
+    }
+    if (!result.multipliers)
+        return;
+    nlohmann::ordered_json multipliers = nlohmann::ordered_json::object();
+    nlohmann::ordered_json forces = nlohmann::ordered_json::object();
+    for (const constraint_multiplier& m : result.multipliers->constraints) {
+        multipliers[m.name] = print(m.multiplier, syntax::plain, velocity_order(scene));
+        nlohmann::ordered_json on = nlohmann::ordered_json::object();
+        for (const constraint_point_force& f : m.forces) {
+            nlohmann::ordered_json components = nlohmann::ordered_json::array();
+            for (const GiNaC::ex& x : f.force)
+                components.push_back(print(x, syntax::plain, velocity_order(scene)));
+            on[f.point] = components;
+        }
+        forces[m.name] = on;
+    }
+    doc["multipliers"] = multipliers;
+    doc["constraint_forces"] = forces;
+}
+
+} // namespace lagrange
