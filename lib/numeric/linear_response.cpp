@@ -97,13 +97,13 @@ frequency_response frequency_response_of(const model& scene, const linearization
             throw computation_error("a frequency response needs numbers: give a `values` line or --values");
         // Every `values` line overlaid in order: later ones (and --values) override earlier ones.
         for (const value_point& line : scene.values) {
-            for (const auto& [name, value] : line.values) {
+            for (const auto& given : line.values) {
                 auto same = std::find_if(merged.values.begin(), merged.values.end(),
-                                         [&](const auto& entry) { return entry.first == name; });
+                                         [&](const auto& entry) { return entry.first == given.first; });
                 if (same == merged.values.end())
-                    merged.values.push_back({name, value});
+                    merged.values.push_back(given);
                 else
-                    same->second = value;
+                    same->second = given.second;
             }
             merged.where = line.where;
         }
