@@ -35,5 +35,8 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 if [ "${LAGRANGE_SETUP_ONLY:-0}" = 1 ]; then exit 0; fi
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@" >&2
+# ccache, when installed, keeps repeated clean-clone builds (CI) from compiling all again.
+launcher=()
+if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"; fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" "$@" >&2
 cmake --build build -j "$(nproc)" >&2
