@@ -10,38 +10,6 @@
 
 namespace lagrange {
 
-namespace {
-
-/// Substitutes the inputs' and parameters' values; throws computation_error naming a parameter
-/// that L uses without one, and scene_error at an input without a value.
-GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values)
-{
-    GiNaC::exmap inputs;
-    for (const input_signal& u : scene.inputs) {
-        auto found = values.find(u.name);
-        if (found == values.end()) {
-            scene_error error(u.where, "input `" + u.name + "` has no value: give it in a `values` line, "
-                                       "as a number or an expression in t (`values " + u.name + " = sin(2*t)`)");
-            error.attach_line_text(u.line_text);
-            throw error;
-        }
-        inputs[u.symbol] = found->second;
-    }
-    GiNaC::ex with_inputs = inputs.empty() ? e : e.subs(inputs);
-    GiNaC::lst substitutions;
-    for (const parameter& p : scene.parameters) {
-        auto found = values.find(p.name);
-        if (found != values.end())
-            substitutions.append(p.symbol == found->second);
-        else if (with_inputs.has(p.symbol))
-            throw computation_error("the simulation needs a value for the parameter `" + p.name +
-                                    "` (a `values` line or --values)");
-    }
-    return with_inputs.subs(substitutions);
-}
-
-} // namespace
-
 compiled_motion::compiled_motion(const model& scene, const equations_of_motion& equations,
                                  const std::map<std::string, GiNaC::ex>& values)
 {

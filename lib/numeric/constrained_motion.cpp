@@ -14,45 +14,6 @@
 
 namespace lagrange {
 
-namespace {
-
-/// The parameters' and inputs' values substituted; computation_error for a parameter without one.
-GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values)
-{
-    GiNaC::exmap at;
-    for (const input_signal& u : scene.inputs) {
-        auto found = values.find(u.name);
-        if (found == values.end())
-            throw computation_error("the simulation needs a value for the input `" + u.name + "`");
-        at[u.symbol] = found->second;
-    }
-    GiNaC::ex with_inputs = at.empty() ? e : e.subs(at);
-    GiNaC::exmap parameters;
-    for (const parameter& p : scene.parameters) {
-        auto found = values.find(p.name);
-        if (found != values.end())
-            parameters[p.symbol] = found->second;
-        else if (with_inputs.has(p.symbol))
-            throw computation_error("the simulation needs a value for the parameter `" + p.name +
-                                    "` (a `values` line or --values)");
-    }
-    return with_inputs.subs(parameters);
-}
-
-std::map<std::string, GiNaC::ex> merged_values(const model& scene)
-{
-    std::map<std::string, GiNaC::ex> values;
-    for (const value_point& point : scene.values) {
-        for (const auto& [name, value] : point.values)
-            values[name] = value;
-        for (const auto& [name, value] : point.inputs)
-            values[name] = value;
-    }
-    return values;
-}
-
-} // namespace
-
 constrained_motion::constrained_motion(const model& scene, const equations_of_motion& equations,
                                        const std::map<std::string, GiNaC::ex>& values)
 {

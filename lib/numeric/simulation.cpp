@@ -17,20 +17,6 @@ namespace lagrange {
 
 namespace {
 
-/// Every `values` line overlaid in order: later points (and --values) override earlier ones;
-/// the inputs' values (expressions in t) are among them, by name.
-std::map<std::string, GiNaC::ex> merged_values(const model& scene)
-{
-    std::map<std::string, GiNaC::ex> values;
-    for (const value_point& point : scene.values) {
-        for (const auto& [name, value] : point.values)
-            values[name] = value;
-        for (const auto& [name, value] : point.inputs)
-            values[name] = value;
-    }
-    return values;
-}
-
 GiNaC::ex substitute(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values)
 {
     GiNaC::lst substitutions;

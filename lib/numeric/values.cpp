@@ -1,8 +1,9 @@
 /** @file values.cpp
- *  Expressions at the parameter values as doubles, and numbers for messages. */
+ *  Expressions at the parameter values as doubles, numbers for messages, merged values. */
 #include "numeric/values.h"
 
 #include "core/errors.h"
+#include "core/model.h"
 
 #include <cmath>
 #include <cstdio>
@@ -25,6 +26,44 @@ std::string message_number(double x, int digits)
     char buffer[40];
     std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
     return buffer;
+}
+
+std::map<std::string, GiNaC::ex> merged_values(const model& scene)
+{
+    std::map<std::string, GiNaC::ex> values;
+    for (const value_point& point : scene.values) {
+        for (const auto& [name, value] : point.values)
+            values[name] = value;
+        for (const auto& [name, value] : point.inputs)
+            values[name] = value;
+    }
+    return values;
+}
+
+GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values)
+{
+    GiNaC::exmap inputs;
+    for (const input_signal& u : scene.inputs) {
+        auto found = values.find(u.name);
+        if (found == values.end()) {
+            scene_error error(u.where, "input `" + u.name + "` has no value: give it in a `values` line, "
+                                       "as a number or an expression in t (`values " + u.name + " = sin(2*t)`)");
+            error.attach_line_text(u.line_text);
+            throw error;
+        }
+        inputs[u.symbol] = found->second;
+    }
+    GiNaC::ex with_inputs = inputs.empty() ? e : e.subs(inputs);
+    GiNaC::lst substitutions;
+    for (const parameter& p : scene.parameters) {
+        auto found = values.find(p.name);
+        if (found != values.end())
+            substitutions.append(p.symbol == found->second);
+        else if (with_inputs.has(p.symbol))
+            throw computation_error("the simulation needs a value for the parameter `" + p.name +
+                                    "` (a `values` line or --values)");
+    }
+    return with_inputs.subs(substitutions);
 }
 
 } // namespace lagrange

@@ -1,14 +1,17 @@
 /** @file values.h
  *  Small helpers shared by the numeric stages: an expression at the parameter values
  *  as a double, with a message naming what it was when it is not a finite real number,
- *  and numbers for messages. */
+ *  numbers for messages, and the `values` of a scene merged and substituted. */
 #pragma once
 
 #include <ginac/ginac.h>
 
+#include <map>
 #include <string>
 
 namespace lagrange {
+
+struct model;
 
 /// `e` evaluated (evalf) to a double; throws computation_error "`what` is not a real
 /// number" (a symbol left, or a complex value) or "… is not a finite number".
@@ -16,5 +19,13 @@ double real_value(const GiNaC::ex& e, const std::string& what);
 
 /// x with `digits` significant digits (printf's %g), for messages.
 std::string message_number(double x, int digits = 6);
+
+/// Every `values` line overlaid in order: later points (and --values) override earlier ones;
+/// the inputs' values (expressions in t) are among them, by name.
+std::map<std::string, GiNaC::ex> merged_values(const model& scene);
+
+/// Substitutes the inputs' and parameters' values; throws computation_error naming a parameter
+/// that `e` uses without one, and scene_error at an input without a value.
+GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values);
 
 } // namespace lagrange
