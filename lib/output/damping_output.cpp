@@ -198,14 +198,13 @@ std::string component_text(std::complex<double> z, syntax s)
     return number(re) + (z.imag() < 0 ? " - " : " + ") + number(std::abs(z.imag())) + (latex ? "\\,i" : "i");
 }
 
-/// Column k of the damped modes as (x₁, x₂, …).
-std::string damped_mode_text(const numeric_modes& n, std::size_t k, syntax s)
+/// Column k of the damped modes as (x₁, x₂, …), in text.
+std::string damped_mode_text(const numeric_modes& n, std::size_t k)
 {
-    std::string text = s == syntax::latex ? "\\left(" : "(";
+    std::string text = "(";
     for (Eigen::Index i = 0; i < n.damped_modes.rows(); ++i)
-        text += (i ? (s == syntax::latex ? ",\\ " : ", ") : "") +
-                component_text(n.damped_modes(i, static_cast<Eigen::Index>(k)), s);
-    return text + (s == syntax::latex ? "\\right)" : ")");
+        text += (i ? ", " : "") + component_text(n.damped_modes(i, static_cast<Eigen::Index>(k)), syntax::text);
+    return text + ")";
 }
 
 bool has_damped_modes(const numeric_modes& n)
@@ -226,7 +225,7 @@ void write_damped_eigenvalues_text(std::ostream& out, const numeric_modes& n)
         out << "  (error ≤ " << round_trip(n.eigenvalue_error[k]) << ")  ζ = " << ratio_text(n.damping_ratio[k])
             << '\n';
         if (has_damped_modes(n))
-            out << "      mode " << damped_mode_text(n, k, syntax::text) << '\n';
+            out << "      mode " << damped_mode_text(n, k) << '\n';
     }
     if (!has_damped_modes(n))
         return;
@@ -246,22 +245,30 @@ void write_damped_eigenvalues_latex(std::ostream& out, const numeric_modes& n)
         out << "s &= " << print(GiNaC::numeric(z.real() == 0 ? 0.0 : z.real()), s);
         if (z.imag() != 0)
             out << " \\pm " << print(GiNaC::numeric(z.imag()), s) << "\\,i";
-        out << " & \\text{(error} &\\le " << print(GiNaC::numeric(n.eigenvalue_error[chosen[j]]), s) << ")"
-            << " & \\zeta &= ";
+        // The error and ζ on a line of their own: 17-digit parts leave no room beside s.
+        out << "\\\\\n&\\qquad \\text{(error } \\le " << print(GiNaC::numeric(n.eigenvalue_error[chosen[j]]), s)
+            << "\\text{)},\\quad \\zeta = ";
         const double ratio = n.damping_ratio[chosen[j]];
         out << (std::isnan(ratio) ? std::string("\\text{none}") : print(GiNaC::numeric(ratio == 0 ? 0.0 : ratio), s));
-        if (has_damped_modes(n))
-            out << " & x &= " << damped_mode_text(n, chosen[j], s);
         out << (j + 1 < chosen.size() ? "\\\\\n" : "\n");
     }
     out << "\\end{align*}\n";
     if (!has_damped_modes(n))
         return;
-    out << "Modes $x$ with $(s^{2}M + " << (n.complex_modes.size() ? "s(C - G)" : "sC")
-        << " + K)x = 0$, largest component 1; $\\bar s$ has the conjugate mode.";
+    // The modes as columns, one per line, so that the width does not grow with n.
+    out << "Their modes $x$, in the same order, with $(s^{2}M + " << (n.complex_modes.size() ? "s(C - G)" : "sC")
+        << " + K)x = 0$ and the largest component 1 ($\\bar s$ has the conjugate mode)";
     if (n.proportional_damping)
-        out << " The damping is proportional: the damped modes are the undamped (real) mode shapes.";
-    out << "\n\n";
+        out << "; the damping is proportional, so they are the undamped (real) mode shapes";
+    out << ":\n\\begin{align*}\n";
+    for (std::size_t j = 0; j < chosen.size(); ++j) {
+        out << "x &= \\begin{pmatrix}";
+        for (Eigen::Index i = 0; i < n.damped_modes.rows(); ++i)
+            out << (i ? " \\\\ " : "")
+                << component_text(n.damped_modes(i, static_cast<Eigen::Index>(chosen[j])), s);
+        out << "\\end{pmatrix}" << (j + 1 < chosen.size() ? "\\\\\n" : "\n");
+    }
+    out << "\\end{align*}\n";
 }
 
 void write_damped_eigenvalues_json(nlohmann::ordered_json& entry, const numeric_modes& n)
