@@ -29,6 +29,7 @@ const std::vector<std::pair<product, std::string>>& product_names()
         {product::hamiltonian, "hamiltonian"},
         {product::reduced, "reduced"},
         {product::multipliers, "multipliers"},
+        {product::eliminated, "eliminated"},
     };
     return names;
 }

@@ -192,6 +192,7 @@ enum class product {
     hamiltonian,
     reduced,
     multipliers,
+    eliminated,
 };
 
 /// Spec names of the products, in order.

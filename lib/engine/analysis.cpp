@@ -70,6 +70,7 @@ bool has_coordinates(const model& scene) { return !scene.coordinates.empty(); }
 bool any_scene(const model&) { return true; }
 /// Static equilibria and small oscillations about them: not for a scene whose
 /// `equilibrium` line names a steady rate (the `steady` stage studies that motion).
+bool has_constraints(const model& scene) { return !scene.coordinates.empty() && !scene.constraints.empty(); }
 bool has_static_point(const model& scene) { return !scene.coordinates.empty() && !scene.steady; }
 bool has_steady(const model& scene) { return !scene.coordinates.empty() && scene.steady; }
 bool has_time(const model& scene) { return !scene.coordinates.empty() && mentions_time(scene); }
@@ -109,14 +110,14 @@ const std::vector<product> coordinate_products = {
     product::equations, product::equilibrium, product::linearization, product::characteristic,
     product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
     product::floquet, product::damping, product::state_space, product::transfer, product::conserved,
-    product::hamiltonian, product::reduced, product::multipliers};
+    product::hamiltonian, product::reduced, product::multipliers, product::eliminated};
 
 const std::vector<product> every_product = {
     product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
     product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
     product::euler,      product::simulation, product::workprecision, product::floquet, product::damping,
     product::state_space, product::transfer, product::conserved, product::hamiltonian, product::reduced,
-    product::multipliers};
+    product::multipliers, product::eliminated};
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
@@ -161,6 +162,17 @@ const std::vector<stage_definition>& stage_table()
              c.result.multipliers = derive_multipliers(c.scene, c.result.equations->mass, c.result.equations->forcing,
                                                        *c.result.equations->constraints, c.simplifier_for_scene());
          }, "", "multipliers"},
+        // Which constraints can be solved for a coordinate (shown with the constraints), and
+        // the equations of the coordinates kept when `eliminated` is asked for.
+        {"elimination", {product::eliminated}, {product::equations, product::multipliers}, {"equations"},
+         has_constraints,
+         [](stage_context& c) {
+             c.result.elimination = find_eliminations(c.scene, c.simplifier_for_scene());
+             if (!c.wants(product::eliminated) || (c.by_default && !c.result.elimination->complete))
+                 return;
+             c.result.elimination->equations =
+                 reduced_equations(c.scene, *c.result.equations, *c.result.elimination, c.simplifier_for_scene());
+         }, "", "eliminated"},
         {"top", {}, {product::equations, product::inertia}, {"lagrangian"}, has_top,
          [](stage_context& c) { c.result.tops = analyze_tops(c.scene, *c.result.lagrangian, c.simplifier_for_scene()); },
          "", ""},
@@ -415,7 +427,7 @@ std::set<product> default_products(const model& scene)
     if (!scene.inputs.empty())
         products.insert({product::state_space, product::transfer});
     if (!scene.constraints.empty())
-        products.insert(product::multipliers);
+        products.insert({product::multipliers, product::eliminated});
     if (scene.simulation)
         products.insert(product::simulation);
     return products;

@@ -7,6 +7,7 @@
 #include "mechanics/equations_of_motion.h"
 #include "mechanics/lagrangian.h"
 #include "mechanics/asymptotic.h"
+#include "mechanics/elimination.h"
 #include "mechanics/constrained_linearization.h"
 #include "mechanics/damping.h"
 #include "mechanics/equilibrium.h"
@@ -71,6 +72,8 @@ struct analysis {
     std::optional<reduced_result> reduced;         ///< Routh's reduction of the cyclic coordinates
     std::optional<steady_motion_result> steady;    ///< the `equilibrium` line's steady motion, reduced
     std::optional<multipliers_result> multipliers; ///< constraint multipliers and forces (scenes with constraints)
+    /// The constraints that can be solved for a coordinate, and the reduced equations when asked for.
+    std::optional<elimination_result> elimination;
     /// Small oscillations with constraints: `linearization` is then in the independent coordinates.
     std::optional<constrained_linearization> constrained;
 };

@@ -35,6 +35,24 @@ std::string vector_text(const std::vector<GiNaC::ex>& v, syntax s)
     return text + (s == syntax::latex ? "\\right)" : ")");
 }
 
+/// The coordinate constraint k was solved for, if it was.
+const eliminated_coordinate* solved_by(const analysis& result, std::size_t k)
+{
+    if (result.elimination)
+        for (const eliminated_coordinate& e : result.elimination->eliminated)
+            if (e.constraint == k)
+                return &e;
+    return nullptr;
+}
+
+std::string kept_names(const analysis& result)
+{
+    std::string names;
+    for (std::size_t k : result.elimination->kept)
+        names += (names.empty() ? "" : ", ") + result.scene->coordinates[k].name;
+    return names;
+}
+
 } // namespace
 
 void write_constraints_text(std::ostream& out, const analysis& result)
@@ -48,6 +66,11 @@ void write_constraints_text(std::ostream& out, const analysis& result)
             out << "  " << c.name << " (" << kind_text(c, shown->integrable[k]) << "):  "
                 << print(c.function, s, velocity_order(scene)) << " = 0\n";
         }
+        for (std::size_t k = 0; k < scene.constraints.size(); ++k)
+            if (const eliminated_coordinate* e = solved_by(result, k))
+                out << "  " << scene.constraints[k].name << " can be eliminated: "
+                    << print_name(scene.coordinates[e->coordinate].name, s) << " = "
+                    << print(e->value, s, velocity_order(scene)) << '\n';
         if (!shown->jointly_integrable)
             out << "  together the constraints are not integrable: the motion is nonholonomic\n";
     }
@@ -56,6 +79,12 @@ void write_constraints_text(std::ostream& out, const analysis& result)
         for (std::size_t k = 0; k < result.constrained->independent.size(); ++k)
             out << (k ? ", " : " ") << print_name(scene.coordinates[result.constrained->independent[k]].name, s);
         out << " (the others follow from the constraints)\n";
+    }
+    if (result.elimination && !result.elimination->equations.empty()) {
+        out << "\nEquations with the constraints eliminated\n";
+        for (std::size_t k = 0; k < result.elimination->kept.size(); ++k)
+            out << "  " << print_name(scene.coordinates[result.elimination->kept[k]].name, s) << ":  "
+                << print(result.elimination->equations[k], s, velocity_order(scene)) << " = 0\n";
     }
     if (!result.multipliers)
         return;
@@ -89,6 +118,11 @@ void write_constraints_latex(std::ostream& out, const analysis& result)
             out << latex_text(c.name + " (" + kind_text(c, shown->integrable[k]) + "):") << "\n";
             out << latex_equation("", print_terms(c.function, s, velocity_order(scene)), " = 0");
         }
+        for (std::size_t k = 0; k < scene.constraints.size(); ++k)
+            if (const eliminated_coordinate* e = solved_by(result, k))
+                out << latex_text(scene.constraints[k].name + " can be eliminated:") << "\n"
+                    << latex_equation(print_name(scene.coordinates[e->coordinate].name, s),
+                                      {print(e->value, s, velocity_order(scene))}, "");
         if (!shown->jointly_integrable)
             out << latex_text("Together the constraints are not integrable: the motion is nonholonomic.") << "\n\n";
     }
@@ -98,6 +132,12 @@ void write_constraints_latex(std::ostream& out, const analysis& result)
             names += (names.empty() ? "" : ", ") + scene.coordinates[k].name;
         out << latex_text("Small oscillations in the independent coordinates " + names +
                           " (the others follow from the constraints).") << "\n\n";
+    }
+    if (result.elimination && !result.elimination->equations.empty()) {
+        out << "\\subsection*{Equations with the constraints eliminated}\n";
+        out << latex_text("In the coordinates " + kept_names(result) + ":") << "\n";
+        for (const GiNaC::ex& e : result.elimination->equations)
+            out << latex_equation("", print_terms(e, s, velocity_order(scene)), " = 0");
     }
     if (!result.multipliers)
         return;
@@ -122,6 +162,10 @@ void write_constraints_json(nlohmann::ordered_json& doc, const analysis& result)
                 {"kind", c.constraint_kind == constraint::kind::holonomic ? "holonomic" : "pfaffian"},
                 {"equation", print(c.function, syntax::plain, velocity_order(scene))},
                 {"integrable", static_cast<bool>(shown->integrable[k])}};
+            if (const eliminated_coordinate* e = solved_by(result, k))
+                constraints[c.name]["eliminates"] = {
+                    {"coordinate", scene.coordinates[e->coordinate].name},
+                    {"value", print(e->value, syntax::plain, velocity_order(scene))}};
         }
         doc["constraints"] = constraints;
         doc["constraints_integrable"] = shown->jointly_integrable;
@@ -131,6 +175,13 @@ void write_constraints_json(nlohmann::ordered_json& doc, const analysis& result)
         for (std::size_t k : result.constrained->independent)
             names.push_back(scene.coordinates[k].name);
         doc["independent_coordinates"] = names;
+    }
+    if (result.elimination && !result.elimination->equations.empty()) {
+        nlohmann::ordered_json eliminated = nlohmann::ordered_json::object();
+        for (std::size_t k = 0; k < result.elimination->kept.size(); ++k)
+            eliminated[scene.coordinates[result.elimination->kept[k]].name] =
+                print(result.elimination->equations[k], syntax::plain, velocity_order(scene));
+        doc["eliminated"] = eliminated;
     }
     if (!result.multipliers)
         return;
