@@ -351,7 +351,16 @@ inertia_result derive_inertia(const rigid_body& body)
         result.coordinates = "given";
         result.mass = body.mass;
         result.density = 0;
-        result.tensor = diagonal_tensor(body.moments);
+        if (body.tensor.size() == 9) {
+            for (unsigned i = 0; i < 3; ++i)
+                for (unsigned j = 0; j < 3; ++j)
+                    result.tensor(i, j) = body.tensor[3 * i + j];
+        } else {
+            result.tensor = diagonal_tensor(body.moments);
+        }
+        // Given about a body point a from the centre of mass: I_cm = I_a − M (|a|² 1 − a aᵀ).
+        if (body.about)
+            result.tensor = shifted_tensor(result.tensor, -body.mass, *body.about);
     } else {
         region_map region = region_of(body.shape, body.dimensions);
         result.coordinates = region.coordinates;
