@@ -149,6 +149,10 @@ TEST_CASE("bodies of §5: input errors at their position", "[lower_body][lower]"
     require_error(h + "body B disk(l) mass m orientation xyz(q, 0, 0)\n", 3, 35, "rotations(z q1, x q2, ...)");
     // tensors
     require_error(h + "body B inertia ((1, 2, 0), (3, 1, 0), (0, 0, 1)) mass m\n", 3, 29, "symmetric");
+    // Entries too large to expand are compared at random values of their parameters.
+    CHECK_NOTHROW(load(h + "body B inertia ((1, (m+l)^400*(m-l), 0), ((m^2-l^2)*(m+l)^399, 1, 0), (0, 0, 1)) mass m\n"));
+    require_error(h + "body B inertia ((1, (m+l)^400*(m-l), 0), ((m^2-l^2)*(m+l)^398, 1, 0), (0, 0, 1)) mass m\n", 3,
+                  43, "symmetric");
     require_error(h + "body B inertia ((-1, 0, 0), (0, 1, 0), (0, 0, 1)) mass m\n", 3, 18, "cannot be negative");
     require_error(h + "body B inertia (1, 1, 3) mass m\n", 3, 16, "triangle inequality");
     require_error(h + "body B inertia ((1, 0, 0), (0, 1, 0)) mass m\n", 3, 16, "three rows");

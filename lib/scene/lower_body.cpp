@@ -3,12 +3,15 @@
  *  inertia tensors checked, orientations, and `attached to` chains composed. */
 #include "scene/lower_body.h"
 
+#include "algebra/budget.h"
 #include "algebra/rotation.h"
 #include "scene/lexer.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <random>
+#include <set>
 #include <vector>
 
 namespace lagrange {
@@ -142,6 +145,41 @@ long degree_bound(const GiNaC::ex& e, const std::vector<GiNaC::ex>& variables)
     return inner;
 }
 
+void collect_symbols(const GiNaC::ex& e, std::set<GiNaC::ex, GiNaC::ex_is_less>& found)
+{
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+        found.insert(e);
+        return;
+    }
+    for (const GiNaC::ex& operand : e)
+        collect_symbols(operand, found);
+}
+
+/// Whether two entries of a tensor (parameters and numbers) are equal: expanded when that
+/// stays small, otherwise compared at seeded random values of their parameters.
+bool same_entry(const GiNaC::ex& a, const GiNaC::ex& b)
+{
+    if (a.is_equal(b))
+        return true;
+    const GiNaC::ex difference = a - b;
+    constexpr std::size_t max_expanded_terms = 2000;
+    if (expanded_terms(difference, max_expanded_terms) < max_expanded_terms)
+        return difference.expand().is_zero();
+    std::set<GiNaC::ex, GiNaC::ex_is_less> parameters;
+    collect_symbols(difference, parameters);
+    std::mt19937 random(1);
+    std::uniform_real_distribution<double> value(0.5, 1.5);
+    for (int trial = 0; trial < 3; ++trial) {
+        GiNaC::exmap at;
+        for (const GiNaC::ex& p : parameters)
+            at[p] = value(random);
+        std::optional<double> x = number_at(a, at), y = number_at(b, at);
+        if (!x || !y || std::abs(*x - *y) > 1e-9 * std::max({1.0, std::abs(*x), std::abs(*y)}))
+            return false;
+    }
+    return true;
+}
+
 } // namespace
 
 GiNaC::matrix given_tensor(const rigid_body& body)
@@ -214,7 +252,7 @@ void check_tensor_symmetric(const std::vector<GiNaC::ex>& entries, const body_st
 {
     for (unsigned i = 0; i < 3; ++i)
         for (unsigned j = i + 1; j < 3; ++j)
-            if (!(entries[3 * i + j] - entries[3 * j + i]).expand().is_zero())
+            if (!same_entry(entries[3 * i + j], entries[3 * j + i]))
                 throw scene_error(b.tensor_rows[j].components[i]->where,
                                   "an inertia tensor is symmetric: this entry (row " + std::to_string(j + 1) +
                                       ", column " + std::to_string(i + 1) + ") differs from its mirror in row " +
