@@ -3,6 +3,7 @@
  *  moments) against ½ ωᵀ I ω computed here and against SymPy's parallel-axis tests
  *  (physics/mechanics/tests/test_rigidbody.py and test_particle.py); and the input
  *  errors of §5 bodies at their position. */
+#include "bodies/euler.h"
 #include "bodies/inertia.h"
 #include "mechanics/lagrangian.h"
 #include "scene_helpers.h"
@@ -125,6 +126,16 @@ TEST_CASE("given tensors: zero moments of a thin rod and numbers about a point",
     // there, diag(0, 1, 1) = (1/12)·3·2² about the centre.
     model end = load("coordinates q\nbody S inertia (0, 4, 4) mass 3 about (1, 0, 0)\n");
     require_tensor(derive_inertia(end.bodies[0]).tensor, GiNaC::matrix{{0, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+}
+
+TEST_CASE("given tensors: a free thin body has no Euler equations (exit 1)", "[lower_body][euler]")
+{
+    for (const char* body : {"body B inertia (0, 1, 1) mass m\n", "body B stick(l) mass m\n",
+                             "body B inertia ((1, 1, 0), (1, 1, 0), (0, 0, 2)) mass m\n"}) {
+        model scene = load(std::string("parameters m l\n") + body + "omega B (w1, w2, w3)\n");
+        const inertia_result inertia = derive_inertia(scene.bodies[0]);
+        REQUIRE_THROWS_AS(derive_euler(scene.bodies[0], inertia, scene.initial, {}), computation_error);
+    }
 }
 
 TEST_CASE("bodies of §5: input errors at their position", "[lower_body][lower]")
