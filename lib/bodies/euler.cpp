@@ -2,6 +2,7 @@
  *  Euler's equations, torque-free motion (symmetric and elliptic), Poinsot. */
 #include "bodies/euler.h"
 
+#include "algebra/budget.h"
 #include "algebra/factor.h"
 #include "algebra/sign.h"
 
@@ -114,6 +115,14 @@ euler_result derive_euler(const rigid_body& body, const inertia_result& inertia,
         }
         return equations;
     };
+    // A thin body (a zero principal moment, det I = 0) has no equation for its spin about
+    // that axis: Euler's equations would print 0 = 0 and a "solution" nothing determines.
+    const GiNaC::ex determinant = inertia.tensor.determinant();
+    budget_check_terms(determinant, "the determinant of the inertia tensor");
+    if (determinant.expand().is_zero())
+        throw computation_error("body `" + body.name + "` has a zero principal moment of inertia (a thin body): "
+                                "Euler's equations do not determine its spin about that axis; give its "
+                                "orientation by coordinates (`orientation`) instead of `omega`");
     result.equations = euler_equations(inertia.tensor);
     if (inertia.diagonal) {
         result.moments = inertia.principal;

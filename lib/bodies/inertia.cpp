@@ -2,6 +2,7 @@
  *  Inertia by exact integration over the body, principal moments and axes. */
 #include "bodies/inertia.h"
 
+#include "algebra/budget.h"
 #include "algebra/calculus.h"
 #include "algebra/factor.h"
 #include "algebra/sign.h"
@@ -351,7 +352,23 @@ inertia_result derive_inertia(const rigid_body& body)
         result.coordinates = "given";
         result.mass = body.mass;
         result.density = 0;
-        result.tensor = diagonal_tensor(body.moments);
+        if (body.tensor.size() == 9) {
+            for (unsigned i = 0; i < 3; ++i)
+                for (unsigned j = 0; j < 3; ++j)
+                    result.tensor(i, j) = body.tensor[3 * i + j];
+        } else {
+            result.tensor = diagonal_tensor(body.moments);
+        }
+        // Given about a body point a from the centre of mass: I_cm = I_a − M (|a|² 1 − a aᵀ).
+        if (body.about) {
+            const std::vector<GiNaC::ex>& a = *body.about;
+            for (unsigned i = 0; i < 3; ++i)
+                for (unsigned j = 0; j < 3; ++j)
+                    budget_check_terms(result.tensor(i, j) - body.mass * ((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) -
+                                                                          a[i] * a[j]),
+                                       "the tensor moved to the centre of mass");
+            result.tensor = shifted_tensor(result.tensor, -body.mass, a);
+        }
     } else {
         region_map region = region_of(body.shape, body.dimensions);
         result.coordinates = region.coordinates;

@@ -53,7 +53,8 @@ struct inertia_result {
     GiNaC::ex kinetic_energy;          ///< ½ ωᵀ I ω
 };
 
-/// Derives the inertia of `body` by integration (or takes the given principal moments).
+/// Derives the inertia of `body` by integration (or takes the given moments or tensor,
+/// moved to the centre of mass by parallel axes when given `about` a body point).
 /// Throws computation_error when the density cannot be integrated exactly.
 inertia_result derive_inertia(const rigid_body& body);
 

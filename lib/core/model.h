@@ -112,9 +112,16 @@ struct rigid_body {
     GiNaC::ex mass;                        ///< shape and inertia bodies (region bodies: derived)
     GiNaC::ex density;                     ///< region bodies, in the body coordinates below
     std::vector<GiNaC::ex> moments;        ///< inertia bodies: (I1, I2, I3)
+    /// inertia bodies given a full tensor: its nine entries, row by row, about `about`
+    std::vector<GiNaC::ex> tensor;
+    std::optional<std::vector<GiNaC::ex>> about; ///< the body point of `tensor`, from the centre of mass
     char axis = 'z';                       ///< the body axis that is the shape's symmetry axis
-    std::optional<std::vector<GiNaC::ex>> position;    ///< `at`: the centre of mass (3 components)
-    std::optional<std::vector<GiNaC::ex>> orientation; ///< `orientation zxz(φ, θ, ψ)`
+    std::optional<std::vector<GiNaC::ex>> position;    ///< `at`: the centre of mass (3 components), scene frame
+    /// The angles of `orientation zxz(φ, θ, ψ)` or `rotations(a1 q1, …)`, in the scene's frame:
+    /// with `attached to A`, A's angles come first. R = R_{a1}(q1) R_{a2}(q2) ⋯.
+    std::optional<std::vector<GiNaC::ex>> orientation;
+    std::vector<char> rotation_axes;       ///< the axis of each angle of `orientation`: 'x', 'y' or 'z'
+    std::string attached_to;               ///< `attached to A`: position and orientation composed with A's
     std::optional<std::vector<GiNaC::realsymbol>> omega; ///< `omega B (w1, w2, w3)`, free bodies
     std::vector<GiNaC::realsymbol> omega_rates;         ///< w1_dot, w2_dot, w3_dot
     std::vector<GiNaC::ex> torque{0, 0, 0};            ///< `torque B (N1, N2, N3)`, body frame

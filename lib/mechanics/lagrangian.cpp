@@ -5,6 +5,7 @@
 #include "mechanics/harmonic_lagrangian.h"
 #include "mechanics/time_dependence.h"
 #include "bodies/inertia.h"
+#include "bodies/orientation.h"
 
 #include <map>
 #include <memory>
@@ -93,7 +94,9 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
         }
     }
     // Rigid bodies placed in the coordinates: ½ M v² of the centre of mass, ½ ωᵀ I ω with
-    // ω from the Euler-angle rates (bodies/inertia.cpp), and gravity on the centre.
+    // ω from the rates of the rotation sequence (bodies/orientation.cpp), and gravity on the
+    // centre. The reference T replaces ½ ωᵀ I ω by ½ tr(Ṙ J Ṙᵀ), which does not use ω.
+    GiNaC::ex kinetic_reference = 0;
     for (const rigid_body& b : scene.bodies) {
         if (b.omega || (!b.position && !b.orientation))
             continue;
@@ -112,13 +115,21 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
         }
         if (b.orientation) {
             const std::vector<GiNaC::ex>& angles = *b.orientation;
+            // z-x-z Euler angles keep the axial vector of Rᵀ Ṙ, the form their results were
+            // first computed in; other sequences sum the rates about each axis.
             std::vector<GiNaC::ex> omega =
-                body_angular_velocity(euler_rotation(angles[0], angles[1], angles[2]), scene);
+                b.rotation_axes == std::vector<char>{'z', 'x', 'z'}
+                    ? body_angular_velocity(euler_rotation(angles[0], angles[1], angles[2]), scene)
+                    : sequence_angular_velocity(b.rotation_axes, angles, scene);
             for (GiNaC::ex& w : omega)
                 w = simplify.canonical(w);
+            GiNaC::ex rotational = 0;
             for (unsigned i = 0; i < 3; ++i)
                 for (unsigned j = 0; j < 3; ++j)
-                    kinetic += GiNaC::numeric(1, 2) * omega[i] * inertia.tensor(i, j) * omega[j];
+                    rotational += GiNaC::numeric(1, 2) * omega[i] * inertia.tensor(i, j) * omega[j];
+            kinetic += rotational;
+            kinetic_reference += rotational_energy_from_rate(rotation_sequence(b.rotation_axes, angles),
+                                                             inertia.tensor, scene) - rotational;
         }
     }
     for (const spring& s : scene.springs) {
@@ -134,6 +145,7 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
         }
     }
     result.kinetic_built = kinetic;
+    result.kinetic_reference = kinetic + kinetic_reference;
     result.potential_built = potential;
     result.gyroscopic = 0;
     // With explicit time (a moving support, a turning frame) the velocity-free part of

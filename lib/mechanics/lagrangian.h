@@ -19,6 +19,9 @@ struct harmonic_lagrangian;
 struct lagrangian_result {
     GiNaC::ex kinetic_built;   ///< T as built from points and `T` lines, before simplification
     GiNaC::ex potential_built; ///< V as built from gravity, springs and `V` lines
+    /// T as built, but with each body's ½ ωᵀ I ω replaced by ½ tr(Ṙ J Ṙᵀ) (J = ½ tr(I) 1 − I),
+    /// which does not go through ω: the reference of the numeric checks.
+    GiNaC::ex kinetic_reference;
     GiNaC::ex kinetic;         ///< L2, the part of L quadratic in the velocities, simplified
     /// The effective potential U = −L0, minus the part of L free of velocities: V, less the
     /// velocity-free part of T where positions move with t or `T` lines have one (a rotating

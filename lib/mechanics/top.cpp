@@ -74,7 +74,7 @@ std::vector<top_result> analyze_tops(const model& scene, const lagrangian_result
         return nullptr;
     };
     for (const rigid_body& b : scene.bodies) {
-        if (!b.orientation)
+        if (!b.orientation || b.rotation_axes != std::vector<char>{'z', 'x', 'z'})
             continue;
         const coordinate* phi = coordinate_of((*b.orientation)[0]);
         const coordinate* theta = coordinate_of((*b.orientation)[1]);

@@ -244,7 +244,7 @@ double rounding_allowance(double energy_size) { return 64 * 0x1p-52 * energy_siz
 /// The Lagrangian as built, before any simplification: the reference of every check.
 ex built_lagrangian(const model& scene, const lagrangian_result& lagrangian)
 {
-    ex l = lagrangian.kinetic_built - lagrangian.potential_built;
+    ex l = lagrangian.kinetic_reference - lagrangian.potential_built;
     if (scene.lagrangian_terms)
         l += *scene.lagrangian_terms;
     return l;

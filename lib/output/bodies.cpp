@@ -45,14 +45,23 @@ const rigid_body& body_named(const model& scene, const std::string& name)
 /// How the body was given, as the scene wrote it: `disk(R)`, `region ball(R)`, `inertia (…)`.
 std::string description(const rigid_body& b, syntax s)
 {
-    if (b.body_kind == rigid_body::kind::inertia)
-        return "given by its principal moments";
+    const std::string attached =
+        b.attached_to.empty() ? ""
+        : s == syntax::latex  ? ", attached to $" + print_name(b.attached_to, s) + "$"
+                              : ", attached to " + print_name(b.attached_to, s);
+    if (b.body_kind == rigid_body::kind::inertia && b.tensor.empty() && !b.about)
+        return "given by its principal moments" + attached;
+    if (b.body_kind == rigid_body::kind::inertia) {
+        const std::string about = b.about ? join(printed(*b.about, s), ", ") : "";
+        return std::string(b.tensor.empty() ? "given by its principal moments" : "given by its inertia tensor") +
+               (b.about ? (s == syntax::latex ? " about $(" + about + ")$" : " about (" + about + ")") : "") + attached;
+    }
     const std::string dimensions = join(printed(b.dimensions, s), ", ");
     std::string text = (b.body_kind == rigid_body::kind::region ? "region " : "") + b.shape +
                        (s == syntax::latex ? "$(" + dimensions + ")$" : "(" + dimensions + ")");
     if (b.axis != 'z')
         text += ", axis " + std::string(1, b.axis);
-    return text;
+    return text + attached;
 }
 
 term_order euler_order(const euler_result& e)

@@ -36,8 +36,16 @@ std::string body_title(const std::string& name) { return "$" + report_writer::na
 /// How the body was given, as the scene wrote it.
 std::string description(const rigid_body& b)
 {
-    if (b.body_kind == rigid_body::kind::inertia)
-        return "given by its principal moments";
+    const std::string attached =
+        b.attached_to.empty() ? "" : ", attached to $" + report_writer::name(b.attached_to) + "$";
+    if (b.body_kind == rigid_body::kind::inertia) {
+        std::string about;
+        if (b.about)
+            for (std::size_t i = 0; i < 3; ++i)
+                about += (i ? ", " : "") + report_writer::math((*b.about)[i]);
+        return std::string(b.tensor.empty() ? "given by its principal moments" : "given by its inertia tensor") +
+               (b.about ? " about the body point $(" + about + ")$" : "") + attached;
+    }
     std::string dimensions;
     for (std::size_t i = 0; i < b.dimensions.size(); ++i)
         dimensions += (i ? ", " : "") + report_writer::math(b.dimensions[i]);
@@ -45,7 +53,7 @@ std::string description(const rigid_body& b)
                        latex_text(b.shape) + "$(" + dimensions + ")$";
     if (b.axis != 'z')
         text += std::string(" with its symmetry axis along body $") + b.axis + "$";
-    return text;
+    return text + attached;
 }
 
 /// The density ϱ with its deltas, `\frac{M}{\pi R^2}\,\delta(z)`. (ϱ, because ρ

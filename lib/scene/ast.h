@@ -72,11 +72,16 @@ struct body_statement {
     name_ref name;
     std::optional<shape_expr> shape;           ///< shape or region
     std::optional<vector_expr> moments;        ///< inertia (I1, I2, I3)
+    std::vector<vector_expr> tensor_rows;      ///< inertia ((Ixx, Ixy, Ixz), …): the rows
+    source_location tensor_where;              ///< the tensor's opening parenthesis
+    std::optional<vector_expr> about;          ///< about (x, y, z)
+    std::optional<name_ref> attached_to;       ///< attached to A
     expr_ptr mass;                             ///< shape, inertia
     expr_ptr density;                          ///< region
     std::optional<name_ref> axis;              ///< x | y | z
     std::optional<vector_expr> at;
-    std::optional<shape_expr> orientation;     ///< zxz(phi, theta, psi)
+    std::optional<shape_expr> orientation;     ///< zxz(phi, theta, psi) or rotations(z q1, x q2, …)
+    std::vector<name_ref> rotation_axes;       ///< rotations: the axis before each angle
 };
 
 /// One statement; `keyword` says which, and only the matching fields are set.

@@ -1,11 +1,12 @@
 /** @file lower.cpp
  *  Semantic checks and lowering of a scene's statements: declared names only, no
- *  duplicates, each statement's own rules (a body's shape and dimensions, an
- *  equilibrium that gives every coordinate, ...). Expressions are lowered by
- *  lower_expression.cpp. */
+ *  duplicates, each statement's own rules (an equilibrium that gives every
+ *  coordinate, ...). Expressions are lowered by lower_expression.cpp, bodies by
+ *  lower_body.cpp. */
 #include "scene/lower.h"
 
 #include "scene/lexer.h"
+#include "scene/lower_body.h"
 #include "scene/lower_constraint.h"
 #include "scene/lower_expression.h"
 #include "scene/parser.h"
@@ -25,7 +26,7 @@ constexpr std::size_t max_rules_bytes = 16u << 20;
 constexpr double rules_wait_seconds = 30;
 
 /// Lowers the statements of a scene, in order, into the model.
-class lowering : public expression_lowering {
+class lowering : public body_lowering {
 public:
     lowering(const source_text& source, file_reader read_file)
         : source_(source), read_file_(std::move(read_file)) {}
@@ -152,16 +153,6 @@ private:
             energy_keyword_ = s.keyword;
         }
         (s.keyword == "T" ? scene_.kinetic_terms : scene_.potential_terms) += value;
-    }
-
-    std::vector<GiNaC::ex> lower_vector(const vector_expr& v, const expr_context& context)
-    {
-        std::vector<GiNaC::ex> components;
-        for (const expr_ptr& c : v.components)
-            components.push_back(lower(*c, context));
-        while (components.size() < 3)
-            components.push_back(0);
-        return components;
     }
 
     void lower_point(const statement& s)
@@ -315,200 +306,6 @@ private:
         if (found == names_.end() || found->second.name_kind != name_entry::kind::coordinate)
             throw scene_error(n.where, quote(n.name) + " is not a coordinate");
         return found->second;
-    }
-
-    // ---- rigid bodies (§2) ------------------------------------------------------------
-
-    /// Shapes and regions with their number of dimensions.
-    static const std::map<std::string, std::size_t>& shape_arities(bool region)
-    {
-        static const std::map<std::string, std::size_t> shapes = {
-            {"stick", 1}, {"ring", 1},     {"disk", 1}, {"sphere", 1},   {"ball", 1},
-            {"box", 3},   {"cylinder", 2}, {"cone", 2}, {"ellipsoid", 3}};
-        static const std::map<std::string, std::size_t> regions = {
-            {"segment", 1}, {"circle", 1}, {"disk", 1}, {"shell", 1}, {"ball", 1}, {"box", 3}, {"cylinder", 2}};
-        return region ? regions : shapes;
-    }
-
-    static std::string list_of(const std::map<std::string, std::size_t>& m)
-    {
-        std::string all;
-        for (const auto& [name, arity] : m)
-            all += (all.empty() ? "`" : ", `") + name + "`";
-        return all;
-    }
-
-    /// A constant of a body (dimension, mass, moment): parameters and numbers; a number must be positive.
-    GiNaC::ex body_constant(const expr_node& node, const char* what)
-    {
-        GiNaC::ex value = lower(node, expr_context{what, false, false, true, false});
-        GiNaC::ex number = value.evalf();
-        if (GiNaC::is_a<GiNaC::numeric>(number) && !GiNaC::ex_to<GiNaC::numeric>(number).is_positive())
-            throw scene_error(node.where, std::string(what) + " must be positive");
-        return value;
-    }
-
-    rigid_body* body_named(const name_ref& n)
-    {
-        for (rigid_body& b : scene_.bodies)
-            if (b.name == n.name)
-                return &b;
-        throw scene_error(n.where, "unknown body " + quote(n.name) + ": declare it with `body` first");
-    }
-
-    void lower_body(const statement& s)
-    {
-        const body_statement& b = *s.body;
-        if (reserved_names().count(b.name.name))
-            throw scene_error(b.name.where, quote(b.name.name) + " is reserved and cannot name a body");
-        for (const rigid_body& other : scene_.bodies)
-            if (other.name == b.name.name)
-                throw scene_error(b.name.where, "body " + quote(b.name.name) + " is already declared at line " +
-                                                    std::to_string(other.where.line));
-        rigid_body body;
-        body.name = b.name.name;
-        body.where = b.name.where;
-        if (b.body_kind == body_statement::kind::inertia) {
-            body.body_kind = rigid_body::kind::inertia;
-            if (b.moments->components.size() != 3)
-                throw scene_error(b.moments->where, "give the three principal moments `(I1, I2, I3)`");
-            for (const expr_ptr& c : b.moments->components)
-                body.moments.push_back(body_constant(*c, "a moment of inertia"));
-            body.mass = body_constant(*b.mass, "a mass");
-        } else {
-            const bool region = b.body_kind == body_statement::kind::region;
-            body.body_kind = region ? rigid_body::kind::region : rigid_body::kind::shape;
-            const auto& arities = shape_arities(region);
-            auto found = arities.find(b.shape->name.name);
-            if (found == arities.end())
-                throw scene_error(b.shape->name.where, std::string("unknown ") + (region ? "region " : "shape ") +
-                                                           quote(b.shape->name.name) + "; the " +
-                                                           (region ? "regions" : "shapes") + " are " + list_of(arities));
-            body.shape = found->first;
-            if (b.shape->arguments.size() != found->second)
-                throw scene_error(b.shape->name.where, quote(body.shape) + " takes " + std::to_string(found->second) +
-                                                           (found->second == 1 ? " dimension" : " dimensions"));
-            for (const expr_ptr& a : b.shape->arguments)
-                body.dimensions.push_back(body_constant(*a, "a dimension"));
-            if (region) {
-                body.density = lower_density(*b.density, body);
-                if (body.density.is_zero())
-                    throw scene_error(b.density->where, "the density is zero");
-            } else {
-                body.mass = body_constant(*b.mass, "a mass");
-            }
-        }
-        if (b.axis) {
-            if (body.body_kind == rigid_body::kind::inertia)
-                throw scene_error(b.axis->where, "`axis` applies to shapes and regions; a body given by "
-                                                 "`inertia` is already in its principal axes");
-            if (b.axis->name != "x" && b.axis->name != "y" && b.axis->name != "z")
-                throw scene_error(b.axis->where, "the axis is `x`, `y` or `z`, not " + quote(b.axis->name));
-            body.axis = b.axis->name[0];
-        }
-        if (b.at) {
-            if (b.at->components.size() != 3)
-                throw scene_error(b.at->where, "a body's position has three components `(x, y, z)`");
-            body.position = lower_vector(*b.at, expr_context{"a position"});
-        }
-        if (b.orientation) {
-            if (b.orientation->name.name != "zxz")
-                throw scene_error(b.orientation->name.where, "the orientation is given as Euler angles "
-                                                             "`zxz(phi, theta, psi)`");
-            if (b.orientation->arguments.size() != 3)
-                throw scene_error(b.orientation->name.where, "`zxz` takes three angles");
-            std::vector<GiNaC::ex> angles;
-            for (const expr_ptr& a : b.orientation->arguments)
-                angles.push_back(lower(*a, expr_context{"an angle", true, false, true, true}));
-            body.orientation = angles;
-        }
-        scene_.bodies.push_back(std::move(body));
-    }
-
-    /// The density of a region body: parameters, numbers and the body coordinates x, y, z, r
-    /// (which hide any scene name of the same spelling inside the density).
-    GiNaC::ex lower_density(const expr_node& node, const rigid_body& body)
-    {
-        std::map<std::string, name_entry> saved = names_;
-        names_["x"] = {name_entry::kind::parameter, body.x, 0, {}};
-        names_["y"] = {name_entry::kind::parameter, body.y, 0, {}};
-        names_["z"] = {name_entry::kind::parameter, body.z, 0, {}};
-        names_["r"] = {name_entry::kind::parameter, body.r, 0, {}};
-        try {
-            GiNaC::ex value = lower(node, expr_context{"a density", false, false, true, false});
-            names_ = std::move(saved);
-            // Integration expands the density: keep its degree in x, y, z, r small enough to expand.
-            constexpr long max_density_degree = 8;
-            if (degree_bound(value, {body.x, body.y, body.z, body.r}) > max_density_degree)
-                throw scene_error(node.where, "the density's degree in x, y, z, r is above " +
-                                                  std::to_string(max_density_degree));
-            return value;
-        } catch (...) {
-            names_ = std::move(saved);
-            throw;
-        }
-    }
-
-    /// An upper bound of the polynomial degree of `e` in `variables` (without expanding).
-    static long degree_bound(const GiNaC::ex& e, const std::vector<GiNaC::ex>& variables)
-    {
-        for (const GiNaC::ex& v : variables)
-            if (e.is_equal(v))
-                return 1;
-        if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
-            long total = 0;
-            for (const GiNaC::ex& operand : e) {
-                long d = degree_bound(operand, variables);
-                total = GiNaC::is_a<GiNaC::add>(e) ? std::max(total, d) : total + d;
-            }
-            return total;
-        }
-        if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1))) {
-            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e.op(1));
-            long base = degree_bound(e.op(0), variables);
-            return n.is_integer() ? base * std::abs(n.to_long()) : base;
-        }
-        long inner = 0;
-        for (const GiNaC::ex& operand : e)
-            inner = std::max(inner, degree_bound(operand, variables));
-        return inner;
-    }
-
-    void lower_omega(const statement& s)
-    {
-        rigid_body& body = *body_named(s.names[0]);
-        if (body.omega)
-            throw scene_error(s.where, "the angular velocity of " + quote(body.name) + " is named twice");
-        if (body.orientation)
-            throw scene_error(s.where, "body " + quote(body.name) + " has an orientation in the coordinates, so its "
-                                       "angular velocity is derived from them; `omega` names that of a free body");
-        if (s.vector->components.size() != 3)
-            throw scene_error(s.vector->where, "name the three body-frame components, as `(w1, w2, w3)`");
-        std::vector<GiNaC::realsymbol> omega;
-        for (const expr_ptr& c : s.vector->components) {
-            if (c->node_kind != expr_node::kind::name)
-                throw scene_error(c->where, "a component of `omega` is a new name, such as `w1`");
-            name_ref n{c->text, c->where};
-            declare_name(n, "angular velocity");
-            GiNaC::realsymbol w(n.name);
-            names_[n.name] = {name_entry::kind::angular, w, 0, n.where};
-            omega.push_back(w);
-            body.omega_rates.push_back(GiNaC::realsymbol(n.name + "_dot"));
-        }
-        body.omega = omega;
-    }
-
-    void lower_torque(const statement& s)
-    {
-        rigid_body& body = *body_named(s.names[0]);
-        if (!body.omega)
-            throw scene_error(s.where, "a torque acts on a free body: name its angular velocity first, as "
-                                       "`omega " + body.name + " (w1, w2, w3)`");
-        if (s.vector->components.size() != 3)
-            throw scene_error(s.vector->where, "a torque has three body-frame components `(N1, N2, N3)`");
-        expr_context context{"a torque", false, false, true, true};
-        context.angular = true;
-        body.torque = lower_vector(*s.vector, context);
     }
 
     void lower_equilibrium(const statement& s)
@@ -736,6 +533,7 @@ private:
                                                  "`(dx, dy)`; give the points three components to use a third");
         for (std::size_t k = 0; k < value_statements_.size(); ++k)
             check_physical(scene_, scene_.values[k], *value_statements_[k]);
+        resolve_body_attachments();
         check_constraints(scene_);
     }
 
@@ -779,8 +577,24 @@ public:
                 check(b.mass, "the mass of body " + quote(b.name));
             for (const GiNaC::ex& d : b.dimensions)
                 check(d, "a dimension of body " + quote(b.name));
-            for (const GiNaC::ex& m : b.moments)
-                check(m, "a moment of inertia of body " + quote(b.name));
+            if (std::optional<inertia_problem> problem = check_inertia(b, at)) {
+                // The caret goes to a value the broken quantity depends on.
+                const GiNaC::matrix given = given_tensor(b);
+                GiNaC::lst inputs{given};
+                if (problem->at == inertia_problem::place::entry)
+                    inputs = GiNaC::lst{given(static_cast<unsigned>(problem->entry),
+                                              static_cast<unsigned>(problem->entry))};
+                if (problem->at == inertia_problem::place::about) {
+                    inputs.append(b.mass);
+                    inputs.append(GiNaC::lst(b.about->begin(), b.about->end()));
+                }
+                for (const assignment& a : s.assignments)
+                    for (const parameter& p : scene.parameters)
+                        if (p.name == a.target.name && inputs.has(p.symbol))
+                            throw scene_error(a.value->where,
+                                              "these values make " + inertia_message(*problem, b.name, true));
+                throw scene_error(s.where, "these values make " + inertia_message(*problem, b.name, true));
+            }
         }
     }
 

@@ -110,6 +110,16 @@ void expression_lowering::declare_name(const name_ref& n, const char* what)
                                        std::to_string(found->second.declared.line));
 }
 
+std::vector<GiNaC::ex> expression_lowering::lower_vector(const vector_expr& v, const expr_context& context)
+{
+    std::vector<GiNaC::ex> components;
+    for (const expr_ptr& c : v.components)
+        components.push_back(lower(*c, context));
+    while (components.size() < 3)
+        components.push_back(0);
+    return components;
+}
+
 GiNaC::ex expression_lowering::lower(const expr_node& node, const expr_context& context)
 {
     using kind = expr_node::kind;

@@ -55,6 +55,9 @@ public:
     /// `node` as an expression; throws scene_error where it breaks `context` or a limit.
     GiNaC::ex lower(const expr_node& node, const expr_context& context);
 
+    /// A vector's components, padded with zeros to three.
+    std::vector<GiNaC::ex> lower_vector(const vector_expr& v, const expr_context& context);
+
 protected:
     /// Checks that `n` may name a new `what` (not reserved, not declared before).
     void declare_name(const name_ref& n, const char* what);

@@ -263,7 +263,7 @@ private:
 
     // body := 'body' NAME ( SHAPE '(' args ')' 'mass' expr
     //                     | 'region' REGION '(' args ')' 'density' expr
-    //                     | 'inertia' vector 'mass' expr ) { body_option }
+    //                     | 'inertia' ( vector | tensor ) 'mass' expr ) { body_option }
     void parse_body(statement& s)
     {
         body_statement b;
@@ -275,7 +275,10 @@ private:
             b.density = parse_expr();
         } else if (accept_name("inertia")) {
             b.body_kind = body_statement::kind::inertia;
-            b.moments = parse_vector();
+            if (at_tensor())
+                parse_tensor(b);
+            else
+                b.moments = parse_vector();
             expect_keyword("mass");
             b.mass = parse_expr();
         } else {
@@ -287,7 +290,57 @@ private:
         s.body = std::move(b);
     }
 
-    // body_option := 'axis' NAME | 'at' vector | 'orientation' NAME '(' args ')'
+    /// Whether a tensor `((…, …), …)` starts here: `((` whose inner parenthesis holds a
+    /// comma at its own depth (`((a + b), c, d)` is a vector).
+    bool at_tensor() const
+    {
+        if (!at(token_kind::left_paren) || tokens_[pos_ + 1].kind != token_kind::left_paren)
+            return false;
+        int depth = 0;
+        for (std::size_t k = pos_ + 1; tokens_[k].kind != token_kind::end; ++k) {
+            const token_kind kind = tokens_[k].kind;
+            if (kind == token_kind::left_paren)
+                ++depth;
+            else if (kind == token_kind::right_paren && --depth == 0)
+                return false;
+            else if (kind == token_kind::comma && depth == 1)
+                return true;
+            else if (kind == token_kind::newline)
+                return false;
+        }
+        return false;
+    }
+
+    // tensor := '(' vector { ',' vector } ')'
+    void parse_tensor(body_statement& b)
+    {
+        b.tensor_where = current().where;
+        expect(token_kind::left_paren, "`(` to start the tensor");
+        b.tensor_rows.push_back(parse_vector());
+        while (accept(token_kind::comma)) {
+            if (b.tensor_rows.size() == 3)
+                throw scene_error(tokens_[pos_ - 1].where, "an inertia tensor has three rows");
+            b.tensor_rows.push_back(parse_vector());
+        }
+        expect(token_kind::right_paren, "`)` to close the tensor");
+    }
+
+    // rotations := 'rotations' '(' NAME expr { ',' NAME expr } ')'
+    shape_expr parse_rotations(body_statement& b)
+    {
+        shape_expr rotations;
+        rotations.name = expect_name("`rotations`");
+        expect(token_kind::left_paren, "`(` after `rotations`");
+        do {
+            b.rotation_axes.push_back(expect_name("an axis `x`, `y` or `z` before the angle"));
+            rotations.arguments.push_back(parse_expr());
+        } while (accept(token_kind::comma));
+        expect(token_kind::right_paren, "`)`");
+        return rotations;
+    }
+
+    // body_option := 'axis' NAME | 'at' vector | 'orientation' ( NAME '(' args ')' | rotations )
+    //              | 'about' vector | 'attached' 'to' NAME
     void parse_body_options(body_statement& b)
     {
         std::set<std::string> seen;
@@ -300,9 +353,15 @@ private:
             else if (accept_name("at"))
                 b.at = parse_vector();
             else if (accept_name("orientation"))
-                b.orientation = parse_shape("`zxz(phi, theta, psi)`");
-            else
-                fail_here("`axis`, `at`, `orientation` or the end of the statement");
+                b.orientation = at_name("rotations") ? parse_rotations(b)
+                                                     : parse_shape("`zxz(phi, theta, psi)` or `rotations(z q1, x q2, ...)`");
+            else if (accept_name("about"))
+                b.about = parse_vector();
+            else if (accept_name("attached")) {
+                expect_keyword("to");
+                b.attached_to = expect_name("the name of a body");
+            } else
+                fail_here("`axis`, `at`, `orientation`, `about`, `attached to` or the end of the statement");
         }
     }
 
