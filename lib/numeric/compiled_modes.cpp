@@ -66,6 +66,35 @@ cln::cl_F to_cl(const GiNaC::ex& e, const cln::float_format_t& format)
     return cln::cl_float(cln::realpart(GiNaC::ex_to<GiNaC::numeric>(e).to_cl_N()), format);
 }
 
+/// ⌊e/2⌋ for either sign of e.
+long floor_half(long e) { return e >= 0 ? e / 2 : -((1 - e) / 2); }
+
+/// Whether |x| is at most the largest double (a CLN float has no such limit).
+bool within_double_range(const cln::cl_F& x)
+{
+    return cln::zerop(x) || cln::float_exponent(x) <= std::numeric_limits<double>::max_exponent;
+}
+
+/// Whether x rounds to a normal double: neither overflow nor a subnormal's lost digits.
+bool within_normal_range(const cln::cl_F& x)
+{
+    long e = cln::float_exponent(x);
+    return e < std::numeric_limits<double>::max_exponent && e > std::numeric_limits<double>::min_exponent;
+}
+
+/// The widest relative error bound (for ω = 0: absolute, against the largest ω, as
+/// mode_within measures it) with which the automatic route still gives its numbers as an
+/// answer; past it, it refuses.
+constexpr double answer_limit = 1e-6;
+
+std::string number_text(double x)
+{
+    std::ostringstream out;
+    out.precision(3);
+    out << x;
+    return out.str();
+}
+
 /// Index of T's upper triangle entry (i ≤ j) in row-major order.
 std::size_t upper_index(std::size_t i, std::size_t j, std::size_t n) { return i * n - i * (i + 1) / 2 + j; }
 
@@ -215,13 +244,14 @@ void compiled_modes::set_a_priori_bounds()
     a_priori_ = true;
 }
 
-void compiled_modes::not_positive_definite(std::size_t coordinate) const
+void compiled_modes::not_positive_definite(std::size_t coordinate, int digits) const
 {
     if (coordinate < size_) {
         std::string name = coordinate < coordinate_names_.size() ? coordinate_names_[coordinate]
                                                                  : "#" + std::to_string(coordinate + 1);
         throw computation_error("the kinetic matrix is not positive definite at these values: coordinate `" + name
-                                + "` has no kinetic energy independent of the coordinates before it");
+                                + "` has no kinetic energy independent of the coordinates before it"
+                                + (digits > 0 ? " (to " + std::to_string(digits) + " digits)" : ""));
     }
     throw computation_error("the kinetic matrix is singular or indefinite at these values");
 }
@@ -269,18 +299,43 @@ modes_method compiled_modes::evaluate(const double* p, double* w2, double* w, do
     }
     modes_method used;
     bool distrusted = false;
-    if (has_closed_ && closed_.algebraic()) {
-        used = closed_form(p, w2, w, error, modes, &distrusted);
-    } else if (has_normalized_) {
-        used = normalized(p, w2, w, error, modes);
-    } else {
-        used = generalized(p, w2, w, error, modes);
+    try {
+        if (has_closed_ && closed_.algebraic()) {
+            used = closed_form(p, w2, w, error, modes, &distrusted);
+        } else if (has_normalized_) {
+            used = normalized(p, w2, w, error, modes);
+        } else {
+            used = generalized(p, w2, w, error, modes);
+        }
+    } catch (const computation_error&) {
+        // The double routes test T in double: where its entries, or their products, leave
+        // the range of double (M = m = 1e-300, l = g = 1e150), a positive definite T can
+        // fail that test. High precision, with T equilibrated first, decides (and its
+        // message stands when it fails too).
+        used = high_precision(p, w2, w, error, modes, options_.digits);
     }
     return refine(p, used, distrusted, w2, w, error, modes);
 }
 
 modes_method compiled_modes::refine(const double* p, modes_method route, bool distrusted, double* w2, double* w,
                                     double* error, double* modes)
+{
+    modes_method used = refine_route(p, route, distrusted, w2, w, error, modes);
+    // The best bound there is may still be too wide to call the numbers an answer (at
+    // 1e45 the printed ω said nothing at all): refuse rather than print them.
+    double largest = 0;
+    for (std::size_t k = 0; k < size_; ++k)
+        largest = std::max(largest, std::abs(w2[k]));
+    for (std::size_t k = 0; k < size_; ++k)
+        if (!mode_within(error[k], w2[k], largest, answer_limit))
+            throw computation_error("the numeric modes cannot be computed reliably at these values: the error "
+                                    "bound of a frequency stays at " + number_text(error[k]) + " even with "
+                                    + std::to_string(4 * options_.digits) + " digits");
+    return used;
+}
+
+modes_method compiled_modes::refine_route(const double* p, modes_method route, bool distrusted, double* w2,
+                                          double* w, double* error, double* modes)
 {
     if (!distrusted && acceptable(error, w2))
         return route;
@@ -385,45 +440,64 @@ void compiled_modes::evaluate_batch(std::size_t count, const double* p, std::siz
     const double* rows[16]; // of the closed program's outputs
     for (std::size_t start = 0; start < count; start += B) {
         std::size_t block = std::min(B, count - start);
-        const double* p_block = p + start * stride;
-        double* modes_block = modes ? modes + start * n * n : nullptr;
-        bool running_bounds = !a_priori_;
-        if (a_priori_) {
-            // a priori bounds where every parameter is positive (nearly always), the running
-            // bound on the other lanes, as closed_form() decides for one point
-            using status = expression_program::a_priori_status;
-            closed_.run_batch_a_priori(p_block, stride, block, batch_scratch_, rows, batch_status_.data());
-            for (std::size_t j = 0; j < block; ++j) {
-                batch_use_[j] = batch_status_[j] == status::holds ? lane_use::use : lane_use::skip;
-                running_bounds = running_bounds || batch_status_[j] != status::holds;
+        try {
+            evaluate_block(start, block, p, stride, w2, w, error, modes, used, rows);
+        } catch (const computation_error&) {
+            // a lane whose T failed the double test: point by point, as evaluate() decides
+            for (std::size_t point = start; point < start + block; ++point) {
+                modes_method route = evaluate(p + point * stride, w2 + point * n, w + point * n,
+                                              error + point * n, modes ? modes + point * n * n : nullptr);
+                if (used)
+                    used[point] = route;
             }
-            closed_form_block(rows, B, block, true, batch_use_.data(), w2 + start * n,
-                              w + start * n, error + start * n, modes_block);
-            for (std::size_t j = 0; j < block; ++j)
-                batch_use_[j] = batch_status_[j] == status::holds ? lane_use::skip : lane_use::use;
         }
-        if (running_bounds) {
-            closed_.run_batch(p_block, stride, block, batch_scratch_, batch_out_.data());
-            for (std::size_t k = 0; k < closed_.output_count(); ++k)
-                rows[k] = batch_out_.data() + 4 * k * B;
-            closed_form_block(rows, B, block, false, a_priori_ ? batch_use_.data() : nullptr,
-                              w2 + start * n, w + start * n, error + start * n, modes_block);
-        }
-        if (!running_bounds && n == 2 && all_acceptable(block, w2 + start * n, error + start * n)) {
-            if (used)
-                std::fill(used + start, used + start + block, modes_method::closed_form);
-            continue;
-        }
+    }
+}
+
+void compiled_modes::evaluate_block(std::size_t start, std::size_t block, const double* p, std::size_t stride,
+                                    double* w2, double* w, double* error, double* modes, modes_method* used,
+                                    const double** rows)
+{
+    constexpr std::size_t B = expression_program::batch_size;
+    const std::size_t n = size_;
+    const double* p_block = p + start * stride;
+    double* modes_block = modes ? modes + start * n * n : nullptr;
+    bool running_bounds = !a_priori_;
+    if (a_priori_) {
+        // a priori bounds where every parameter is positive (nearly always), the running
+        // bound on the other lanes, as closed_form() decides for one point
+        using status = expression_program::a_priori_status;
+        closed_.run_batch_a_priori(p_block, stride, block, batch_scratch_, rows, batch_status_.data());
         for (std::size_t j = 0; j < block; ++j) {
-            std::size_t point = start + j;
-            double *w2_j = w2 + point * n, *w_j = w + point * n, *error_j = error + point * n;
-            double* modes_j = modes ? modes + point * n * n : nullptr;
-            bool distrusted = a_priori_ && batch_status_[j] == expression_program::a_priori_status::out_of_range;
-            modes_method route = refine(p + point * stride, modes_method::closed_form, distrusted, w2_j, w_j,
-                                        error_j, modes_j);
-            if (used)
-                used[point] = route;
+            batch_use_[j] = batch_status_[j] == status::holds ? lane_use::use : lane_use::skip;
+            running_bounds = running_bounds || batch_status_[j] != status::holds;
         }
+        closed_form_block(rows, B, block, true, batch_use_.data(), w2 + start * n,
+                          w + start * n, error + start * n, modes_block);
+        for (std::size_t j = 0; j < block; ++j)
+            batch_use_[j] = batch_status_[j] == status::holds ? lane_use::skip : lane_use::use;
+    }
+    if (running_bounds) {
+        closed_.run_batch(p_block, stride, block, batch_scratch_, batch_out_.data());
+        for (std::size_t k = 0; k < closed_.output_count(); ++k)
+            rows[k] = batch_out_.data() + 4 * k * B;
+        closed_form_block(rows, B, block, false, a_priori_ ? batch_use_.data() : nullptr,
+                          w2 + start * n, w + start * n, error + start * n, modes_block);
+    }
+    if (!running_bounds && n == 2 && all_acceptable(block, w2 + start * n, error + start * n)) {
+        if (used)
+            std::fill(used + start, used + start + block, modes_method::closed_form);
+        return;
+    }
+    for (std::size_t j = 0; j < block; ++j) {
+        std::size_t point = start + j;
+        double *w2_j = w2 + point * n, *w_j = w + point * n, *error_j = error + point * n;
+        double* modes_j = modes ? modes + point * n * n : nullptr;
+        bool distrusted = a_priori_ && batch_status_[j] == expression_program::a_priori_status::out_of_range;
+        modes_method route = refine(p + point * stride, modes_method::closed_form, distrusted, w2_j, w_j,
+                                    error_j, modes_j);
+        if (used)
+            used[point] = route;
     }
 }
 
@@ -590,11 +664,55 @@ modes_method compiled_modes::high_precision(const double* p, double* w2, double*
         throw;
     }
     GiNaC::Digits = saved;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i; j < n; ++j)
+            if (!within_double_range(T[i][j]) || !within_double_range(V[i][j]))
+                throw computation_error(std::string("an entry of the ") + (within_double_range(T[i][j]) ? "potential"
+                                                                                                        : "kinetic")
+                                        + " matrix is beyond the range of double precision at these values");
+    // Equilibrate: D T D and D V D with D = diag(2^s), T's diagonal scaled into [1/4, 1).
+    // Powers of two scale exactly and leave the eigenvalues as they are (the modes become
+    // D⁻¹ a); without it a T whose diagonal spans many decades (m/M = 1e-300) has a
+    // Cholesky factor whose conditioning, squared, swamps any precision in the error bound.
+    std::vector<long> shift(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        if (cln::plusp(T[i][i]))
+            shift[i] = -floor_half(cln::float_exponent(T[i][i]));
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            T[i][j] = cln::scale_float(T[i][j], shift[i] + shift[j]);
+            V[i][j] = cln::scale_float(V[i][j], shift[i] + shift[j]);
+        }
     const cln_eigen_result eigen = cln_generalized_eigen(T, V, format, modes != nullptr);
-    if (eigen.failed_pivot < n)
-        not_positive_definite(eigen.failed_pivot);
+    const bool more_digits = digits < 4 * options_.digits;
+    if (eigen.failed_pivot < n) {
+        // a pivot within rounding: T singular, or so ill-conditioned (M = 1, m = 1e120) that
+        // more digits tell
+        if (more_digits)
+            return high_precision(p, w2, w, error, modes, 2 * digits);
+        not_positive_definite(eigen.failed_pivot, digits);
+    }
+    // ω² ≠ 0 whose bound would print it as 0: more digits give it a relative bound
+    for (std::size_t k = 0; k < n && more_digits; ++k)
+        if (!cln::zerop(eigen.eigenvalues[k]) &&
+            !(cln::double_approx(cln::abs(eigen.eigenvalues[k])) > eigen.error))
+            return high_precision(p, w2, w, error, modes, 2 * digits);
+    // A mode vector errs by about the rounding of K over the gap to the next eigenvalue:
+    // two frequencies 1e-150 apart (m/M = 1e-300) need about 170 digits to tell their
+    // modes apart, while the frequencies themselves are exact at 50.
+    if (modes && more_digits) {
+        cl_F largest = cln::cl_float(0, format);
+        for (const cl_F& W : eigen.eigenvalues)
+            largest = cln::max(largest, cln::abs(W));
+        const cl_F resolved = largest * cln::float_epsilon(format) * cln::cl_float(0x1p60, format);
+        for (std::size_t k = 0; k + 1 < n; ++k)
+            if (eigen.eigenvalues[k + 1] - eigen.eigenvalues[k] < resolved)
+                return high_precision(p, w2, w, error, modes, 2 * digits);
+    }
     for (std::size_t k = 0; k < n; ++k) {
         const cl_F& W = eigen.eigenvalues[k];
+        if (!cln::zerop(W) && !within_normal_range(W))
+            throw computation_error("a frequency squared is beyond the range of double precision at these values");
         cl_F root = cln::sqrt(cln::abs(W));
         double rounded = cln::double_approx(root);
         double extra = rounded != 0 ? cln::double_approx(cln::abs(root - cln::cl_float(rounded, format))) / rounded : 0;
@@ -603,7 +721,13 @@ modes_method compiled_modes::high_precision(const double* p, double* w2, double*
             w[k] = std::copysign(rounded, w[k]);
     }
     if (modes)
-        std::copy(eigen.modes.begin(), eigen.modes.end(), modes);
+        for (std::size_t c = 0; c < n; ++c)
+            for (std::size_t i = 0; i < n; ++i) {
+                double entry = std::ldexp(eigen.modes[c * n + i], static_cast<int>(shift[i]));
+                if (!std::isfinite(entry) || (entry != 0 && std::abs(entry) < std::numeric_limits<double>::min()))
+                    throw computation_error("a mode vector is beyond the range of double precision at these values");
+                modes[c * n + i] = entry;
+            }
     return modes_method::high_precision;
 }
 
