@@ -337,6 +337,9 @@ modes_method compiled_modes::refine(const double* p, modes_method route, bool di
 modes_method compiled_modes::refine_route(const double* p, modes_method route, bool distrusted, double* w2,
                                           double* w, double* error, double* modes)
 {
+    // a mode vector that over- or underflowed inside the closed form (M = 1, m = 1e60)
+    if (modes && !std::all_of(modes, modes + size_ * size_, [](double x) { return std::isfinite(x); }))
+        distrusted = true;
     if (!distrusted && acceptable(error, w2))
         return route;
     if (!distrusted) {
@@ -484,7 +487,9 @@ void compiled_modes::evaluate_block(std::size_t start, std::size_t block, const 
         closed_form_block(rows, B, block, false, a_priori_ ? batch_use_.data() : nullptr,
                           w2 + start * n, w + start * n, error + start * n, modes_block);
     }
-    if (!running_bounds && n == 2 && all_acceptable(block, w2 + start * n, error + start * n)) {
+    if (!running_bounds && n == 2 && all_acceptable(block, w2 + start * n, error + start * n) &&
+        (!modes_block || std::all_of(modes_block, modes_block + block * n * n,
+                                     [](double x) { return std::isfinite(x); }))) {
         if (used)
             std::fill(used + start, used + start + block, modes_method::closed_form);
         return;
@@ -692,11 +697,25 @@ modes_method compiled_modes::high_precision(const double* p, double* w2, double*
             return high_precision(p, w2, w, error, modes, 2 * digits);
         not_positive_definite(eigen.failed_pivot, digits);
     }
-    // ω² ≠ 0 whose bound would print it as 0: more digits give it a relative bound
-    for (std::size_t k = 0; k < n && more_digits; ++k)
-        if (!cln::zerop(eigen.eigenvalues[k]) &&
-            !(cln::double_approx(cln::abs(eigen.eigenvalues[k])) > eigen.error))
-            return high_precision(p, w2, w, error, modes, 2 * digits);
+    // An ω² that this precision tells from 0 (above its rounding) but whose bound would print
+    // it as 0 (M = 1, m = 1e60: the bound grows with T's conditioning squared): more digits
+    // give it a relative bound; at the most digits, the answer is refused rather than ω = 0.
+    {
+        cl_F largest = cln::cl_float(0, format);
+        for (const cl_F& W : eigen.eigenvalues)
+            largest = cln::max(largest, cln::abs(W));
+        const cl_F rounding = largest * cln::float_epsilon(format) * cln::cl_float(64.0 * n, format);
+        for (const cl_F& W : eigen.eigenvalues)
+            if (cln::abs(W) > rounding &&
+                (!std::isfinite(eigen.error) || cln::abs(W) <= cln::cl_float(eigen.error, format))) {
+                if (more_digits)
+                    return high_precision(p, w2, w, error, modes, 2 * digits);
+                throw computation_error("the numeric modes cannot be computed reliably at these values: a "
+                                        "frequency is not zero, but its error bound exceeds it even with "
+                                        + std::to_string(digits) + " digits (the kinetic matrix is too "
+                                        "ill-conditioned)");
+            }
+    }
     // A mode vector errs by about the rounding of K over the gap to the next eigenvalue:
     // two frequencies 1e-150 apart (m/M = 1e-300) need about 170 digits to tell their
     // modes apart, while the frequencies themselves are exact at 50.
