@@ -112,7 +112,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         lagrange::model scene = lagrange::load_model(source, read_odd_file);
         lagrange::budget_limits limits;
         limits.max_terms = 2000;
-        limits.max_seconds = 0.3; // per stage: all of them well inside the 5 s -timeout under ASan
+        limits.max_seconds = 0.3; // per stage: all of them well inside the 20 s -timeout under ASan
         // The motion stages run too, but briefly, interpreted (no compiler per input) and
         // without the second run that estimates the error.
         lagrange::simulation_settings motion;

@@ -24,7 +24,10 @@ done
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1:malloc_context_size=5}"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="suppressions=$PWD/scripts/sanitizers/ubsan.supp:print_stacktrace=1:halt_on_error=1"
-# -timeout=5: an input that runs longer is a hang; -rss_limit_mb: swell is a bug too.
-exec nice -n 19 build-fuzz/fuzz/lagrange_fuzz -timeout=5 -rss_limit_mb=2048 -max_len=4096 \
+# -timeout=20: an input that runs longer is a hang. The budgets' cooperative checks run
+# between GiNaC calls, and one call (a symbolic solve of a rolling coin's 7 × 7 system with
+# its constants changed) can take seconds under ASan on a shared machine; in the program
+# the watchdog ends such a call at --max-seconds. -rss_limit_mb: swell is a bug too.
+exec nice -n 19 build-fuzz/fuzz/lagrange_fuzz -timeout=20 -rss_limit_mb=2048 -max_len=4096 \
   -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix=fuzz/crashes/ \
   -dict=fuzz/scene.dict ${FUZZ_FLAGS:-} fuzz/corpus

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <random>
@@ -239,4 +240,43 @@ TEST_CASE("cli: response writes JSON with the resonance peak, CSV and a Bode plo
     CHECK(unknown.err.find("no input `v`") != std::string::npos);
     cli_result missing = run_cli("response " + scene + " --input u");
     CHECK(missing.exit_code == 2);
+}
+
+TEST_CASE("cli: damped modes in JSON, text and LaTeX", "[cli][damped_modes]")
+{
+    const std::string scene = examples + "damped_double_pendulum.lag";
+    cli_result json = run_cli(scene + " --format json --want numeric", "", 60);
+    REQUIRE(json.exit_code == 0);
+    nlohmann::json doc = nlohmann::json::parse(json.out);
+    const nlohmann::json& entry = doc["numeric"][0];
+    REQUIRE(entry["eigenvalues"].size() == 4);
+    REQUIRE(entry["damped_modes"].size() == 4);
+    REQUIRE(entry["damped_mode_backward_error"].size() == 4);
+    CHECK(entry["proportional_damping"] == false);
+    for (std::size_t k = 0; k < 4; ++k) {
+        const nlohmann::json& mode = entry["damped_modes"][k];
+        REQUIRE(mode.size() == 2);
+        // [re, im] pairs; the largest component is exactly 1, the other has an imaginary part.
+        double largest = 0;
+        bool complex_component = false;
+        for (const nlohmann::json& component : mode) {
+            REQUIRE(component.size() == 2);
+            largest = std::max(largest, std::hypot(component[0].get<double>(), component[1].get<double>()));
+            complex_component = complex_component || component[1].get<double>() != 0;
+        }
+        CHECK(largest == 1);
+        CHECK(complex_component);
+        CHECK(entry["damped_mode_backward_error"][k].get<double>() < 1e-14);
+    }
+    // Conjugate eigenvalues, conjugate modes.
+    CHECK(entry["damped_modes"][0][0][1].get<double>() == -entry["damped_modes"][3][0][1].get<double>());
+
+    cli_result text = run_cli(scene + " --want numeric", "", 60);
+    REQUIRE(text.exit_code == 0);
+    CHECK(text.out.find("      mode (") != std::string::npos);
+    CHECK(text.out.find("modes x: (s²M + sC + K)x = 0, largest component 1") != std::string::npos);
+    cli_result latex = run_cli(scene + " --want numeric --format latex", "", 60);
+    REQUIRE(latex.exit_code == 0);
+    CHECK(latex.out.find("Their modes $x$, in the same order") != std::string::npos);
+    CHECK(latex.out.find("x &= \\begin{pmatrix}") != std::string::npos);
 }

@@ -154,3 +154,129 @@ values m = 2, b = 3
     CHECK(std::isnan(damping_ratio(0.0)));
     CHECK(n.stability == "marginal");
 }
+
+namespace {
+
+/// x scaled so that its first component of largest modulus is 1 (to a relative 10⁻⁸).
+Eigen::VectorXcd largest_one(Eigen::VectorXcd x)
+{
+    const double largest = x.cwiseAbs().maxCoeff();
+    for (Eigen::Index i = 0; i < x.size(); ++i)
+        if (std::abs(x(i)) >= (1 - 1e-8) * largest)
+            return x / x(i);
+    return x;
+}
+
+const std::string damped_double_pendulum = R"(parameters M m l g alpha c
+coordinates theta phi
+point upper mass M at (l*sin(theta), -l*cos(theta))
+point lower mass m at (l*sin(theta) + l*sin(phi), -l*cos(theta) - l*cos(phi))
+gravity g along (0, -1)
+equilibrium theta = 0, phi = 0
+values M = 2, m = 1, l = 1, g = 10, alpha = 0.3, c = 0.5
+)";
+
+} // namespace
+
+TEST_CASE("damped modes: a damped double pendulum with C on the upper angle has complex modes",
+          "[damped_modes]")
+{
+    model scene = load(damped_double_pendulum + "dissipation F = 1/2*c*theta'^2\n");
+    analysis a = analyze(scene, {product::numeric, product::damping});
+    REQUIRE(a.damping);
+    CHECK_FALSE(a.damping->proportional);
+    const numeric_modes& n = only_entry(a);
+    REQUIRE(n.damped);
+    CHECK_FALSE(n.proportional_damping);
+    REQUIRE(n.damped_modes.rows() == 2);
+    REQUIRE(n.damped_modes.cols() == 4);
+    REQUIRE(n.damped_mode_backward_error.size() == 4);
+
+    // M, K, C of the double pendulum at rest, written out: M = l²[[M + m, m], [m, m]],
+    // K = g l diag(M + m, m), C = diag(c, 0).
+    Eigen::Matrix2d mass, stiffness, damping;
+    mass << 3, 1, 1, 1;
+    stiffness << 30, 0, 0, 10;
+    damping << 0.5, 0, 0, 0;
+    // The first-order system ẋ = A x, x = (q, q̇), A = [[0, I], [−M⁻¹K, −M⁻¹C]]: its
+    // eigenvectors are (v, s v), so the top half is the mode.
+    Eigen::Matrix4d companion = Eigen::Matrix4d::Zero();
+    companion.block<2, 2>(0, 2) = Eigen::Matrix2d::Identity();
+    companion.block<2, 2>(2, 0) = -mass.inverse() * stiffness;
+    companion.block<2, 2>(2, 2) = -mass.inverse() * damping;
+    Eigen::ComplexEigenSolver<Eigen::Matrix4cd> solver(companion.cast<complex>());
+    REQUIRE(solver.info() == Eigen::Success);
+
+    for (Eigen::Index k = 0; k < 4; ++k) {
+        const complex s = n.eigenvalues[static_cast<std::size_t>(k)];
+        const Eigen::Vector2cd x = n.damped_modes.col(k);
+        INFO("eigenvalue " << s << ", mode (" << x(0) << ", " << x(1) << ")");
+        // The stated normalization: the largest component is exactly 1.
+        CHECK(x.cwiseAbs().maxCoeff() == 1);
+        CHECK((x(0) == complex(1) || x(1) == complex(1)));
+        // (s²M + sC + K) x = 0 relative to the sizes of its terms.
+        const Eigen::Vector2cd residual =
+            (s * s * mass.cast<complex>() + s * damping.cast<complex>() + stiffness.cast<complex>()) * x;
+        const double scale = (std::norm(s) * mass.norm() + std::abs(s) * damping.norm() + stiffness.norm()) * x.norm();
+        CHECK(residual.norm() < 1e-13 * scale);
+        CHECK(n.damped_mode_backward_error[static_cast<std::size_t>(k)] < 1e-14);
+        // The same vector from the companion matrix's eigenvector of the nearest eigenvalue.
+        Eigen::Index nearest = 0;
+        for (Eigen::Index j = 1; j < 4; ++j)
+            if (std::abs(solver.eigenvalues()(j) - s) < std::abs(solver.eigenvalues()(nearest) - s))
+                nearest = j;
+        CHECK(std::abs(solver.eigenvalues()(nearest) - s) < 1e-12 * std::abs(s));
+        const Eigen::VectorXcd reference = largest_one(solver.eigenvectors().col(nearest).head(2));
+        CHECK((reference - x).norm() < 1e-11);
+        // Non-proportional damping: the two angles swing out of phase by neither 0 nor π.
+        const complex ratio = x(0) / x(1);
+        CHECK(std::abs(ratio.imag()) > 1e-3 * std::abs(ratio));
+    }
+    // A conjugate pair has conjugate modes.
+    CHECK((n.damped_modes.col(0) - n.damped_modes.col(3).conjugate()).norm() == 0);
+    CHECK((n.damped_modes.col(1) - n.damped_modes.col(2).conjugate()).norm() == 0);
+}
+
+TEST_CASE("damped modes: proportional damping keeps the real undamped mode shapes", "[damped_modes]")
+{
+    // C = αM + cK: the Rayleigh function αT + c·(½ q̇ᵀK q̇) (Rayleigh damping).
+    model scene = load(damped_double_pendulum +
+                       "dissipation F = alpha*(1/2*(M+m)*l^2*theta'^2 + m*l^2*cos(theta-phi)*theta'*phi' + "
+                       "1/2*m*l^2*phi'^2) + c*(1/2*(M+m)*g*l*theta'^2 + 1/2*m*g*l*phi'^2)\n");
+    analysis a = analyze(scene, {product::numeric, product::damping});
+    REQUIRE(a.damping);
+    CHECK(a.damping->proportional);
+    const numeric_modes& n = only_entry(a);
+    REQUIRE(n.damped);
+    CHECK(n.proportional_damping);
+    REQUIRE(n.damped_modes.cols() == 4);
+
+    // The undamped modes of M = [[3, 1], [1, 1]], K = diag(30, 10), independently: ω² solves
+    // det(K − ω²M) = 2ω⁴ − 60ω² + 300 = 0, ω² = 15 ∓ √75, mode (1, (30 − 3ω²)/ω²)
+    // from the first row, scaled so that the largest component is 1.
+    std::vector<double> omega_squared{15 - std::sqrt(75.0), 15 + std::sqrt(75.0)};
+    std::vector<Eigen::Vector2d> undamped;
+    for (double w2 : omega_squared)
+        undamped.push_back(largest_one(Eigen::Vector2cd(1, (30 - 3 * w2) / w2)).real());
+    int matched[2] = {0, 0};
+    for (Eigen::Index k = 0; k < 4; ++k) {
+        const complex s = n.eigenvalues[static_cast<std::size_t>(k)];
+        INFO("eigenvalue " << s);
+        CHECK(n.damped_modes.col(k).imag().isZero(0)); // exactly real
+        const Eigen::Vector2d x = n.damped_modes.col(k).real();
+        for (std::size_t j = 0; j < 2; ++j)
+            if ((x - undamped[j]).norm() < 1e-12) {
+                ++matched[j];
+                // Mode j's pair solves s² + (α + cω²)s + ω² = 0.
+                const double w2 = omega_squared[j];
+                CHECK(std::abs(s * s + (0.3 + 0.5 * w2) * s + w2) < 1e-12 * w2);
+            }
+    }
+    CHECK(matched[0] == 2);
+    CHECK(matched[1] == 2);
+    // The printed undamped modes (columns with Aᵀ T A = I) agree, up to scale.
+    for (Eigen::Index j = 0; j < 2; ++j) {
+        const Eigen::Vector2d printed = largest_one(n.modes.col(j).cast<complex>()).real();
+        CHECK((printed - undamped[static_cast<std::size_t>(j)]).norm() < 1e-12);
+    }
+}

@@ -5,6 +5,7 @@
  *  and growth rate, and a constant-coefficient oscillator against exp(A T). */
 #include "engine/analysis.h"
 #include "numeric/floquet.h"
+#include "numeric/verification.h"
 #include "scene_helpers.h"
 
 #include <catch2/catch.hpp>
@@ -153,4 +154,33 @@ TEST_CASE("floquet: errors", "[floquet]")
                                      "values a = 1\n"),
                                 {product::floquet}),
                         Catch::Contains("not periodic"));
+}
+
+TEST_CASE("floquet: verified against the nonlinear flow, and a wrong multiplier is caught", "[floquet][verification]")
+{
+    for (const std::string& text : {kapitza(120), kapitza(60), mathieu(1.0, 0.1)}) {
+        const model scene = load(text);
+        const analysis result = analyze(scene, {product::floquet});
+        REQUIRE(result.floquet);
+        REQUIRE(result.verification);
+        bool found = false;
+        for (const verification_entry& e : result.verification->entries)
+            if (e.item == "floquet") {
+                INFO(e.how);
+                CHECK(e.checked);
+                found = true;
+            }
+        CHECK(found);
+
+        // One multiplier moved by 1 % (its partner kept, as a wrong linearization would not):
+        // the characteristic polynomial no longer matches the flow's.
+        std::vector<floquet_point> wrong = *result.floquet;
+        wrong[0].multipliers[0] *= 1.01;
+        try {
+            verify_floquet(scene, *result.equations, wrong);
+            FAIL("a wrong multiplier passed verification");
+        } catch (const computation_error& e) {
+            CHECK_THAT(std::string(e.what()), Catch::Matchers::Contains("verification failed: floquet"));
+        }
+    }
 }

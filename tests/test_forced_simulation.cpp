@@ -1,7 +1,7 @@
 /** @file test_forced_simulation.cpp
  *  Simulations with dissipation, forces and inputs: the damped oscillator against its
  *  closed form, the steady state of a driven damped oscillator against its amplitude and
- *  phase, a pendulum with a driving torque against a long-double Runge–Kutta reference at a
+ *  phase (closed form, and from `transfer` at s = iw), a pendulum with a driving torque against a long-double Runge–Kutta reference at a
  *  tiny step, the energy balance, the automatic choice on a stiff damper, and an input
  *  without a value. */
 #include "engine/analysis.h"
@@ -12,10 +12,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <complex>
 
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using lagrange_test::load;
+using lagrange_test::symbol_of;
 
 namespace {
 
@@ -87,14 +89,32 @@ simulate until 60 tolerance 1e-10
     lagrange::simulation_result s = run(scene);
     const double m = 1, k = 4, b = 0.8, F0 = 1.5, w = 1.7;
     const double amplitude = F0 / std::hypot(k - m * w * w, b * w), phase = std::atan2(b * w, k - m * w * w);
-    double worst = 0;
+
+    // The same steady state from `transfer`: x → F0 |H(iw)| cos(w t + arg H(iw)).
+    lagrange::analysis linear = lagrange::analyze(scene, {lagrange::product::transfer});
+    REQUIRE(linear.transfer);
+    REQUIRE(linear.transfer->entries.size() == 1);
+    const GiNaC::exmap at{{symbol_of(scene, "m"), 1}, {symbol_of(scene, "k"), 4},
+                          {symbol_of(scene, "b"), GiNaC::numeric(4, 5)}};
+    const GiNaC::ex h = GiNaC::evalf(
+        linear.transfer->entries[0].function().subs(at).subs(linear.transfer->s == GiNaC::I * GiNaC::numeric(17, 10)));
+    REQUIRE(GiNaC::is_a<GiNaC::numeric>(h));
+    const std::complex<double> response(GiNaC::real(GiNaC::ex_to<GiNaC::numeric>(h)).to_double(),
+                                        GiNaC::imag(GiNaC::ex_to<GiNaC::numeric>(h)).to_double());
+    CHECK_THAT(F0 * std::abs(response), WithinRel(amplitude, 1e-12));
+    CHECK_THAT(-std::arg(response), WithinAbs(phase, 1e-12));
+
+    double worst = 0, worst_transfer = 0;
     for (std::size_t i = 0; i < s.run.times.size(); ++i) {
         double t = s.run.times[i];
         if (t < 40) // the transient decays like e^{−0.4 t}: below 1e-7 here
             continue;
         worst = std::max(worst, std::abs(s.run.states[i][0] - amplitude * std::cos(w * t - phase)));
+        worst_transfer = std::max(worst_transfer, std::abs(s.run.states[i][0] - F0 * std::abs(response) *
+                                                                                   std::cos(w * t + std::arg(response))));
     }
     CHECK(worst < 1e-6);
+    CHECK(worst_transfer < 1e-6);
     CHECK(drift_named(s, "energy_balance") < 1e-8);
 }
 

@@ -486,3 +486,28 @@ TEST_CASE("fuzz regressions: factor() only where it is quick", "[fuzz][budget]")
     CHECK(a.equilibria->points.size() == 3);
 }
 
+
+// The sixth (2026-11-24): a rolling coin with its lean offset changed, whose multipliers
+// come from one symbolic solve of a 7 × 7 system; their size is checked before the
+// normal() and the simplification that follow. The example's own multipliers pass that
+// check under the same size budget.
+TEST_CASE("fuzz regressions: the multipliers stage checks its size budget", "[fuzz][budget]")
+{
+    budget_limits limits;
+    limits.max_terms = 1000;
+    model coin = load(read_file(std::string(LAGRANGE_SOURCE_DIR) + "/examples/rolling_coin.lag"));
+    analysis fits = analyze(coin, {product::multipliers}, limits);
+    CHECK(fits.multipliers);
+    CHECK(fits.notes.empty());
+
+    model changed = load(read_file(std::string(LAGRANGE_SOURCE_DIR) +
+                                   "/tests/fuzz_regressions/slow_multipliers_rolling_coin.lag"));
+    try {
+        analysis a = analyze(changed, {product::multipliers}, limits);
+        CHECK_FALSE(a.multipliers);
+        REQUIRE_FALSE(a.notes.empty());
+        CHECK_THAT(a.notes.front(), Catch::Matchers::Contains("a multiplier has more than 1000 terms"));
+    } catch (const budget_exceeded& e) { // nothing else was asked for: the run stops
+        CHECK_THAT(std::string(e.what()), Catch::Matchers::Contains("a multiplier has more than 1000 terms"));
+    }
+}

@@ -672,3 +672,27 @@ TEST_CASE("report: the damped driven oscillator shows C, the damped eigenvalues 
     CHECK(contains(tex, "frequencies and modes of the undamped system"));
     CHECK(contains(tex, "small oscillations without the damping"));
 }
+
+TEST_CASE("report: the damped double pendulum's table gives each eigenvalue its complex mode",
+          "[report][damping]")
+{
+    auto built = report_of("damped_double_pendulum.lag");
+    const std::string& tex = built->document.latex;
+    CHECK(contains(tex, "The damping is not proportional ("));
+    CHECK(contains(tex, " & mode $x_{k}$"));
+    CHECK(contains(tex, "The damping is not proportional here: a mode is in general complex"));
+    REQUIRE(built->result.numeric);
+    const lagrange::numeric_modes& n = built->result.numeric->front();
+    REQUIRE(n.damped_modes.cols() == 4);
+    CHECK_FALSE(n.proportional_damping);
+    // Every row of the table carries a mode with an imaginary part.
+    const std::string table = section_of(tex, "\\subsection*{Damped eigenvalues at");
+    std::size_t rows = 0;
+    for (std::size_t at = table.find("& $("); at != std::string::npos; at = table.find("& $(", at + 1)) {
+        const std::string mode = table.substr(at, table.find(")$", at) - at);
+        INFO("mode " << mode);
+        CHECK(contains(mode, "\\,i"));
+        ++rows;
+    }
+    CHECK(rows == 4);
+}

@@ -152,3 +152,34 @@ L = m/2*(x'^2 + y'^2) + q*B/2*(x*y' - y*x') - k/2*(x^2 + y^2)
     input.equations = &wrong;
     require_caught(scene, input, "the equations of motion");
 }
+
+TEST_CASE("verification checks the asymptotic frequencies near the limit, and catches a wrong one",
+          "[verification][asymptotic]")
+{
+    for (const char* limit : {"limit rho -> 0", "limit rho -> oo"}) {
+        INFO(limit);
+        model scene = load(double_pendulum + "ratio rho = m/M\n" + limit + "\nvalues M = 1, m = 0.5, l = 1, g = 9.81\n");
+        analysis a = analyze(scene, {product::asymptotic});
+        REQUIRE(a.asymptotic);
+        REQUIRE(a.verification);
+        bool found = false;
+        for (const verification_entry& e : a.verification->entries)
+            if (e.item == "asymptotic") {
+                INFO(e.how);
+                CHECK(e.checked);
+                found = true;
+            }
+        CHECK(found);
+
+        // The leading term off by 1 %, and a frequency swapped for the other's: both caught.
+        verification_input input = verification_input_of(a);
+        asymptotic_result off = *a.asymptotic;
+        off.frequencies[0] = off.frequencies[0] * GiNaC::numeric(101, 100);
+        input.asymptotic = &off;
+        require_caught(scene, input, "asymptotic");
+        asymptotic_result swapped = *a.asymptotic;
+        swapped.frequencies[1] = swapped.frequencies[0] * 3;
+        input.asymptotic = &swapped;
+        require_caught(scene, input, "asymptotic");
+    }
+}

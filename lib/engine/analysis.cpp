@@ -361,6 +361,8 @@ verification_input verification_input_of(const analysis& r)
     input.transfer = r.transfer ? &*r.transfer : nullptr;
     input.multipliers = r.multipliers ? &*r.multipliers : nullptr;
     input.constrained = r.constrained ? &*r.constrained : nullptr;
+    input.asymptotic = r.asymptotic ? &*r.asymptotic : nullptr;
+    input.floquet = r.floquet ? &*r.floquet : nullptr;
     return input;
 }
 

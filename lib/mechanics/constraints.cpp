@@ -3,6 +3,7 @@
  *  points, and the multipliers and constraint forces solved symbolically. */
 #include "mechanics/constraints.h"
 
+#include "algebra/budget.h"
 #include "algebra/calculus.h"
 
 #include <Eigen/Dense>
@@ -171,7 +172,9 @@ multipliers_result derive_multipliers(const model& scene, const GiNaC::matrix& m
     for (unsigned i = 0; i < n; ++i)
         result.accelerations.push_back(solution(i, 0));
     std::vector<GiNaC::ex> lambda;
+    // GiNaC's solve and normal() cannot be interrupted: check the budgets between them.
     for (unsigned k = 0; k < m; ++k) {
+        budget_check_terms(solution(n + k, 0), "a multiplier");
         lambda.push_back(simplify_ratio(solution(n + k, 0), simplify));
         result.constraints.push_back({scene.constraints[k].name, lambda.back(), {}});
     }
@@ -226,8 +229,10 @@ multipliers_result derive_multipliers(const model& scene, const GiNaC::matrix& m
                 continue;
             GiNaC::matrix force = pseudo.mul(generalized);
             constraint_point_force entry{point.name, {}};
-            for (unsigned r = 0; r < (planar ? 2u : 3u); ++r)
+            for (unsigned r = 0; r < (planar ? 2u : 3u); ++r) {
+                budget_check_terms(force(r, 0), "a constraint force");
                 entry.force.push_back(simplify_ratio(force(r, 0), simplify));
+            }
             result.constraints[k].forces.push_back(entry);
         }
     }

@@ -39,6 +39,13 @@ struct numeric_modes {
     bool damped = false;
     std::vector<double> eigenvalue_error; ///< estimated absolute error of each damped eigenvalue
     std::vector<double> damping_ratio;    ///< −Re s/|s| of each damped eigenvalue (NaN for s = 0)
+    /// n × 2n: column k is the mode x of eigenvalues[k], (s²M + s(C − G) + K)x = 0, scaled so
+    /// that its first component of largest modulus (to a relative 10⁻⁸) is exactly 1.
+    Eigen::MatrixXcd damped_modes;
+    std::vector<double> damped_mode_backward_error; ///< of each (s, x), quadratic_modes.h
+    /// C M⁻¹K = K M⁻¹C at this point (to rounding) and G = 0: the damped modes are the real
+    /// undamped mode shapes.
+    bool proportional_damping = false;
 };
 
 /// The numeric routes from T and V to the modes.

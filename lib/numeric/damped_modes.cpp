@@ -7,6 +7,7 @@
 #include "numeric/expression_program.h"
 #include "numeric/quadratic_modes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -65,6 +66,80 @@ std::vector<Eigen::MatrixXd> matrices_at(const model& scene, const std::vector<c
     return result;
 }
 
+namespace {
+
+/// x scaled so that its first component of largest modulus (to a relative 10⁻⁸, so that
+/// rounding does not pick between equal components) is exactly 1.
+Eigen::VectorXcd unit_largest(Eigen::VectorXcd x)
+{
+    const double largest = x.cwiseAbs().maxCoeff();
+    if (largest == 0)
+        return x;
+    for (Eigen::Index k = 0; k < x.size(); ++k)
+        if (std::abs(x(k)) >= (1 - 1e-8) * largest) {
+            const std::complex<double> pivot = x(k);
+            x /= pivot;
+            x(k) = 1;
+            break;
+        }
+    return x;
+}
+
+/// ‖(s²M + sD + K)x‖ / ((|s|²‖M‖ + |s|‖D‖ + ‖K‖)‖x‖), Frobenius norms.
+double pencil_backward_error(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& velocity_matrix,
+                             const Eigen::MatrixXd& stiffness, std::complex<double> s, const Eigen::VectorXcd& x)
+{
+    using complex = std::complex<double>;
+    const Eigen::VectorXcd residual = (s * s) * (mass.cast<complex>() * x) +
+                                      s * (velocity_matrix.cast<complex>() * x) + stiffness.cast<complex>() * x;
+    const double scale =
+        (std::norm(s) * mass.norm() + std::abs(s) * velocity_matrix.norm() + stiffness.norm()) * x.norm();
+    if (scale == 0)
+        return residual.norm() == 0 ? 0 : std::numeric_limits<double>::infinity();
+    return residual.norm() / scale;
+}
+
+/// Caughey–O'Kelly at one point: ‖C M⁻¹K − K M⁻¹C‖ within rounding of ‖C‖‖M⁻¹‖‖K‖.
+bool proportional_at(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& damping, const Eigen::MatrixXd& stiffness)
+{
+    const Eigen::MatrixXd inverse_mass = mass.inverse();
+    if (!inverse_mass.allFinite())
+        return false;
+    const Eigen::MatrixXd commutator = damping * inverse_mass * stiffness - stiffness * inverse_mass * damping;
+    const double scale = damping.norm() * inverse_mass.norm() * stiffness.norm();
+    const double rounding = 1e3 * static_cast<double>(mass.rows()) * std::numeric_limits<double>::epsilon();
+    return commutator.norm() <= rounding * scale;
+}
+
+/// The damped modes of one point into `entry`: each vector of `q` scaled by unit_largest;
+/// with proportional damping made real where its real part is as good an eigenvector (a
+/// multiple eigenvalue may have a genuinely complex vector in its eigenspace, kept as is).
+void set_damped_modes(numeric_modes& entry, const quadratic_modes& q, const Eigen::MatrixXd& mass,
+                      const Eigen::MatrixXd& velocity_matrix, const Eigen::MatrixXd& stiffness, bool proportional)
+{
+    const double rounding = 1e3 * std::numeric_limits<double>::epsilon();
+    entry.proportional_damping = proportional;
+    entry.damped_modes.resize(q.vectors.rows(), q.vectors.cols());
+    entry.damped_mode_backward_error.clear();
+    for (Eigen::Index k = 0; k < q.vectors.cols(); ++k) {
+        const std::complex<double> s = q.eigenvalues[static_cast<std::size_t>(k)];
+        Eigen::VectorXcd x = unit_largest(q.vectors.col(k));
+        double eta = pencil_backward_error(mass, velocity_matrix, stiffness, s, x);
+        if (proportional) {
+            const Eigen::VectorXcd real_part = x.real().cast<std::complex<double>>();
+            const double real_eta = pencil_backward_error(mass, velocity_matrix, stiffness, s, real_part);
+            if (real_eta <= std::max(8 * eta, rounding)) {
+                x = real_part;
+                eta = real_eta;
+            }
+        }
+        entry.damped_modes.col(k) = x;
+        entry.damped_mode_backward_error.push_back(eta);
+    }
+}
+
+} // namespace
+
 void add_damped_eigenvalues(const model& scene, const linearization_result& linear, const GiNaC::matrix& damping,
                             std::vector<numeric_modes>& entries)
 {
@@ -86,6 +161,8 @@ void add_damped_eigenvalues(const model& scene, const linearization_result& line
         entry.eigenvalues = q.eigenvalues;
         entry.eigenvalue_error = q.error;
         entry.damping_ratio.clear();
+        const bool proportional = at[3].isZero(0) && proportional_at(at[0], at[2], at[1]);
+        set_damped_modes(entry, q, at[0], at[2] - at[3], at[1], proportional);
         bool unstable = false, marginal = false;
         for (std::size_t k = 0; k < q.eigenvalues.size(); ++k) {
             const std::complex<double> s = q.eigenvalues[k];

@@ -17,8 +17,10 @@ namespace lagrange {
 
 /// Adds to `entries` (the numeric modes, one per `values` point in scene order) the damped
 /// eigenvalues with the damping matrix `damping` at the same equilibrium: `eigenvalues` (all
-/// 2n s, quadratic_modes order), `eigenvalue_error`, `damping_ratio` and `stability`, and
-/// sets `damped`. `omega` and `modes` stay those of the undamped system (C = 0). Throws
+/// 2n s, quadratic_modes order), `eigenvalue_error`, `damping_ratio`, `stability`, the mode
+/// of each eigenvalue (`damped_modes`, largest component 1, with its backward error) and
+/// whether the damping is proportional at the point (then the modes are real), and sets
+/// `damped`. `omega` and `modes` stay those of the undamped system (C = 0). Throws
 /// computation_error as numeric_normal_modes does.
 void add_damped_eigenvalues(const model& scene, const linearization_result& linear, const GiNaC::matrix& damping,
                             std::vector<numeric_modes>& entries);

@@ -3,6 +3,7 @@
 #include "numeric/native_code.h"
 
 #include "core/errors.h"
+#include "system/cache.h"
 #include "system/external.h"
 
 #include <dlfcn.h>
@@ -59,7 +60,9 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     // -ffp-contract=off: no fused multiply-adds where the interpreter has none (with -mfma, or
     // on a CPU where FMA is the baseline), so native code rounds as the interpreter does;
     // only SLEEF's sines and cosines may differ from libm's, by an ulp or two.
-    bool too_large = false, timed_out = false;
+    bool too_large = false, timed_out = false, load_failed = false;
+    const file_cache cache("native");
+    void* handle = nullptr; // the loaded library: compiled now, or found in the cache
     auto build = [&](bool with_sleef) {
         std::ostringstream code;
         code << "#include <math.h>\n";
@@ -75,11 +78,6 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
             too_large = true;
             return false;
         }
-        try {
-            folder->write("programs.c", code.str());
-        } catch (const computation_error&) {
-            return false;
-        }
         std::vector<std::string> arguments = {cc, "-O2", "-fno-math-errno", "-ffp-contract=off", "-shared", "-fPIC"};
         if (with_sleef)
             arguments.insert(arguments.end(), {"-mavx2", "-mfma"});
@@ -87,11 +85,30 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         if (with_sleef)
             arguments.push_back("-lsleef");
         arguments.push_back("-lm");
+        // The cache's key: the command (without the private folder's paths) and the source.
+        std::string key;
+        for (const std::string& a : arguments)
+            key += (a == library ? "OUTPUT" : a == source ? "SOURCE" : a) + "\n";
+        key += code.str();
+        if (std::string found = cache.find(key); !found.empty() && (handle = dlopen(found.c_str(), RTLD_NOW | RTLD_LOCAL)))
+            return true;
+        try {
+            folder->write("programs.c", code.str());
+        } catch (const computation_error&) {
+            return false;
+        }
         // TMPDIR: the compiler's own temporary files go into the private folder too.
         program_result run = run_program(arguments, folder->path(), "cc.log", {"TMPDIR=" + folder->path()},
                                           limits.seconds);
         timed_out = timed_out || run.timed_out;
-        return run.exit_code == 0;
+        if (run.exit_code != 0)
+            return false;
+        handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+        load_failed = !handle;
+        if (!handle)
+            return false;
+        cache.store(key, library);
+        return true;
     };
     bool built = sleef && build(true);
     if (sleef && !built && !too_large && !timed_out) {
@@ -105,11 +122,10 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
                                       std::to_string(limits.max_source_bytes >> 20) +
                                       " MB, too large for compiling to pay off"
                       : timed_out ? "compiling the equations took longer than the time budget"
-                                  : "no C compiler was found to compile the equations");
+                      : load_failed ? "the compiled equations could not be loaded"
+                                    : "no C compiler was found to compile the equations");
     std::shared_ptr<native_module> module(new native_module());
-    module->handle_ = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!module->handle_)
-        return refuse("the compiled equations could not be loaded");
+    module->handle_ = handle;
     auto* table = static_cast<function*>(dlsym(module->handle_, "lagrange_programs"));
     if (!table)
         return refuse("the compiled equations could not be loaded");

@@ -889,6 +889,8 @@ verification_result verify_results(const model& scene, const verification_input&
             result.entries.push_back(check_characteristic(scene, *input.linearization, *input.characteristic, numeric));
         if (input.modes)
             check_modes(scene, *input.modes, numeric, shown, result.entries);
+        if (input.asymptotic && !input.constrained)
+            result.entries.push_back(verify_asymptotic(scene, *input.linearization, *input.asymptotic));
         if (input.damping)
             for (verification_entry& entry : verify_damping(scene, *input.linearization, *input.damping))
                 result.entries.push_back(std::move(entry));
@@ -897,6 +899,8 @@ verification_result verify_results(const model& scene, const verification_input&
                  verify_linear_system(scene, *input.linearization, *input.state_space, input.transfer))
                 result.entries.push_back(std::move(entry));
     }
+    if (input.floquet && input.equations)
+        result.entries.push_back(verify_floquet(scene, *input.equations, *input.floquet));
     check_symmetries(scene, *input.lagrangian,
                      symmetry_input{input.conserved, input.hamiltonian, input.reduced, input.steady}, result.entries);
     return result;

@@ -7,6 +7,8 @@
 #pragma once
 
 #include "core/model.h"
+#include "mechanics/asymptotic.h"
+#include "numeric/floquet.h"
 #include "mechanics/damping.h"
 #include "mechanics/constrained_linearization.h"
 #include "mechanics/constraints.h"
@@ -54,6 +56,8 @@ struct verification_input {
     const transfer_result* transfer = nullptr; ///< checked only with state_space
     const multipliers_result* multipliers = nullptr;
     const constrained_linearization* constrained = nullptr; ///< then `linearization` is the reduced one
+    const asymptotic_result* asymptotic = nullptr;
+    const std::vector<floquet_point>* floquet = nullptr;
 };
 
 /// Checks every result given (`shown`: the products printed, which name the entries of
@@ -78,5 +82,20 @@ std::vector<verification_entry> verify_damping(const model& scene, const lineari
 std::vector<verification_entry> verify_linear_system(const model& scene, const linearization_result& linear,
                                                      const state_space_result& system,
                                                      const transfer_result* transfer);
+
+/// The asymptotic ω² against the eigenvalues of (V, T) with the limit's variable (a
+/// parameter, or a ratio of two) at 10⁻⁴ and 10⁻⁸ (10⁴ and 10⁸ for a limit at ∞), the other
+/// parameters at the first `values` line: the entry `asymptotic`
+/// (verification_asymptotic.cpp). Throws computation_error "verification failed: …" when
+/// the leading terms do not approach the eigenvalues.
+verification_entry verify_asymptotic(const model& scene, const linearization_result& linear,
+                                     const asymptotic_result& limit);
+
+/// The Floquet multipliers of each point and `values` line against the monodromy of the
+/// nonlinear equations' own flow, by central differences of solutions started beside the
+/// point (verification_floquet.cpp): the entry `floquet`. Throws computation_error
+/// "verification failed: …" on a disagreement.
+verification_entry verify_floquet(const model& scene, const equations_of_motion& equations,
+                                  const std::vector<floquet_point>& points);
 
 } // namespace lagrange

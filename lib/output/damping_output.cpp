@@ -187,6 +187,31 @@ std::vector<std::size_t> printed_eigenvalues(const numeric_modes& n)
 
 std::string ratio_text(double ratio) { return std::isnan(ratio) ? "none (s = 0)" : round_trip(ratio); }
 
+/// One mode component as a + bi (b omitted when 0), in `s`.
+std::string component_text(std::complex<double> z, syntax s)
+{
+    const double re = z.real() == 0 ? 0.0 : z.real(); // no −0
+    const bool latex = s == syntax::latex;
+    auto number = [&](double v) { return latex ? print(GiNaC::numeric(v), s) : round_trip(v); };
+    if (z.imag() == 0)
+        return number(re);
+    return number(re) + (z.imag() < 0 ? " - " : " + ") + number(std::abs(z.imag())) + (latex ? "\\,i" : "i");
+}
+
+/// Column k of the damped modes as (x₁, x₂, …), in text.
+std::string damped_mode_text(const numeric_modes& n, std::size_t k)
+{
+    std::string text = "(";
+    for (Eigen::Index i = 0; i < n.damped_modes.rows(); ++i)
+        text += (i ? ", " : "") + component_text(n.damped_modes(i, static_cast<Eigen::Index>(k)), syntax::text);
+    return text + ")";
+}
+
+bool has_damped_modes(const numeric_modes& n)
+{
+    return n.damped_modes.cols() == static_cast<Eigen::Index>(n.eigenvalues.size()) && n.damped_modes.cols() > 0;
+}
+
 } // namespace
 
 void write_damped_eigenvalues_text(std::ostream& out, const numeric_modes& n)
@@ -199,7 +224,15 @@ void write_damped_eigenvalues_text(std::ostream& out, const numeric_modes& n)
             out << " ± " << round_trip(z.imag()) << "i";
         out << "  (error ≤ " << round_trip(n.eigenvalue_error[k]) << ")  ζ = " << ratio_text(n.damping_ratio[k])
             << '\n';
+        if (has_damped_modes(n))
+            out << "      mode " << damped_mode_text(n, k) << '\n';
     }
+    if (!has_damped_modes(n))
+        return;
+    out << "    modes x: (s²M + " << (n.complex_modes.size() ? "s(C − G)" : "sC")
+        << " + K)x = 0, largest component 1; s̄ has the conjugate mode\n";
+    if (n.proportional_damping)
+        out << "    proportional damping: the damped modes are the undamped (real) mode shapes\n";
 }
 
 void write_damped_eigenvalues_latex(std::ostream& out, const numeric_modes& n)
@@ -212,11 +245,28 @@ void write_damped_eigenvalues_latex(std::ostream& out, const numeric_modes& n)
         out << "s &= " << print(GiNaC::numeric(z.real() == 0 ? 0.0 : z.real()), s);
         if (z.imag() != 0)
             out << " \\pm " << print(GiNaC::numeric(z.imag()), s) << "\\,i";
-        out << " & \\text{(error} &\\le " << print(GiNaC::numeric(n.eigenvalue_error[chosen[j]]), s) << ")"
-            << " & \\zeta &= ";
+        // The error and ζ on a line of their own: 17-digit parts leave no room beside s.
+        out << "\\\\\n&\\qquad \\text{(error } \\le " << print(GiNaC::numeric(n.eigenvalue_error[chosen[j]]), s)
+            << "\\text{)},\\quad \\zeta = ";
         const double ratio = n.damping_ratio[chosen[j]];
-        out << (std::isnan(ratio) ? std::string("\\text{none}") : print(GiNaC::numeric(ratio == 0 ? 0.0 : ratio), s))
-            << (j + 1 < chosen.size() ? "\\\\\n" : "\n");
+        out << (std::isnan(ratio) ? std::string("\\text{none}") : print(GiNaC::numeric(ratio == 0 ? 0.0 : ratio), s));
+        out << (j + 1 < chosen.size() ? "\\\\\n" : "\n");
+    }
+    out << "\\end{align*}\n";
+    if (!has_damped_modes(n))
+        return;
+    // The modes as columns, one per line, so that the width does not grow with n.
+    out << "Their modes $x$, in the same order, with $(s^{2}M + " << (n.complex_modes.size() ? "s(C - G)" : "sC")
+        << " + K)x = 0$ and the largest component 1 ($\\bar s$ has the conjugate mode)";
+    if (n.proportional_damping)
+        out << "; the damping is proportional, so they are the undamped (real) mode shapes";
+    out << ":\n\\begin{align*}\n";
+    for (std::size_t j = 0; j < chosen.size(); ++j) {
+        out << "x &= \\begin{pmatrix}";
+        for (Eigen::Index i = 0; i < n.damped_modes.rows(); ++i)
+            out << (i ? " \\\\ " : "")
+                << component_text(n.damped_modes(i, static_cast<Eigen::Index>(chosen[j])), s);
+        out << "\\end{pmatrix}" << (j + 1 < chosen.size() ? "\\\\\n" : "\n");
     }
     out << "\\end{align*}\n";
 }
@@ -228,6 +278,20 @@ void write_damped_eigenvalues_json(nlohmann::ordered_json& entry, const numeric_
     for (double r : n.damping_ratio)
         ratios.push_back(std::isnan(r) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r));
     entry["damping_ratio"] = ratios;
+    if (!has_damped_modes(n))
+        return;
+    nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+    for (Eigen::Index k = 0; k < n.damped_modes.cols(); ++k) {
+        nlohmann::ordered_json column = nlohmann::ordered_json::array();
+        for (Eigen::Index i = 0; i < n.damped_modes.rows(); ++i) {
+            const std::complex<double> z = n.damped_modes(i, k);
+            column.push_back({z.real() == 0 ? 0.0 : z.real(), z.imag() == 0 ? 0.0 : z.imag()});
+        }
+        modes.push_back(column);
+    }
+    entry["damped_modes"] = modes;
+    entry["damped_mode_backward_error"] = n.damped_mode_backward_error;
+    entry["proportional_damping"] = n.proportional_damping;
 }
 
 bool modes_are_undamped(const analysis& result)

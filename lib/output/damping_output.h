@@ -19,11 +19,15 @@ void write_damping_latex(std::ostream& out, const model& scene, const damping_re
 void write_damping_json(nlohmann::ordered_json& doc, const model& scene, const damping_result& damping);
 
 /// The damped eigenvalues of one numeric entry (`n.damped`): a line with the stability,
-/// then each real s and each conjugate pair re ± im·i with its error and damping ratio.
+/// then each real s and each conjugate pair re ± im·i with its error, damping ratio and mode
+/// (the lower member of a pair has the conjugate mode), and whether the damping is
+/// proportional there.
 void write_damped_eigenvalues_text(std::ostream& out, const numeric_modes& n);
 void write_damped_eigenvalues_latex(std::ostream& out, const numeric_modes& n);
-/// Adds `eigenvalue_error` and `damping_ratio` (null for s = 0) to a numeric entry's JSON
-/// (which already holds `eigenvalues` and `stability`).
+/// Adds `eigenvalue_error`, `damping_ratio` (null for s = 0), `damped_modes` (one vector of
+/// [re, im] per eigenvalue, largest component 1), `damped_mode_backward_error` and
+/// `proportional_damping` to a numeric entry's JSON (which already holds `eigenvalues` and
+/// `stability`).
 void write_damped_eigenvalues_json(nlohmann::ordered_json& entry, const numeric_modes& n);
 
 /// Whether the printed normal modes are those of the undamped system, not the motion:

@@ -16,11 +16,11 @@ namespace lagrange {
 
 namespace {
 
-std::string complex_latex(std::complex<double> z)
+std::string complex_latex(std::complex<double> z, int digits = 10)
 {
-    std::string value = report_writer::number(z.real() == 0 ? 0.0 : z.real(), 10);
+    std::string value = report_writer::number(z.real() == 0 ? 0.0 : z.real(), digits);
     if (z.imag() != 0)
-        value += (z.imag() < 0 ? " - " : " + ") + report_writer::number(std::abs(z.imag()), 10) + "\\,i";
+        value += (z.imag() < 0 ? " - " : " + ") + report_writer::number(std::abs(z.imag()), digits) + "\\,i";
     return value;
 }
 
@@ -108,16 +108,38 @@ void write_damping_section(report_writer& w)
         if (!nm.damped)
             continue;
         w.latex("\\subsection*{Damped eigenvalues at $" + values_latex(nm) + "$: " + nm.stability + "}\n");
-        w.latex("\\begin{center}\n\\renewcommand{\\arraystretch}{1.3}\n\\begin{tabular}{rlll}\n\\hline\n"
-                "$k$ & $s_{k}$ & error & $\\zeta_{k}$\\\\\n\\hline\n");
+        const bool modes = nm.damped_modes.cols() == static_cast<Eigen::Index>(nm.eigenvalues.size());
+        w.latex(std::string("\\begin{center}\n\\renewcommand{\\arraystretch}{1.3}\n\\begin{tabular}{") +
+                (modes ? "rllll" : "rlll") + "}\n\\hline\n$k$ & $s_{k}$ & error & $\\zeta_{k}$" +
+                (modes ? " & mode $x_{k}$" : "") + "\\\\\n\\hline\n");
         for (std::size_t k = 0; k < nm.eigenvalues.size(); ++k) {
             const double ratio = nm.damping_ratio[k];
+            std::string mode;
+            if (modes) {
+                for (Eigen::Index i = 0; i < nm.damped_modes.rows(); ++i)
+                    mode += (i ? ",\\ " : "") + complex_latex(nm.damped_modes(i, static_cast<Eigen::Index>(k)), 6);
+                mode = " & $(" + mode + ")$";
+            }
             w.latex(std::to_string(k + 1) + " & $" + complex_latex(nm.eigenvalues[k]) + "$ & $\\le " +
                     report_writer::number(nm.eigenvalue_error[k], 2) + "$ & " +
-                    (std::isnan(ratio) ? std::string("---") : "$" + report_writer::number(ratio, 10) + "$") +
+                    (std::isnan(ratio) ? std::string("---") : "$" + report_writer::number(ratio, 10) + "$") + mode +
                     "\\\\\n");
         }
         w.latex("\\hline\n\\end{tabular}\n\\end{center}\n");
+        if (modes) {
+            w.text("Each mode ")
+                .latex("$x_{k}$")
+                .text(" solves ")
+                .latex(nm.complex_modes.size() ? "$(s_{k}^{2}M + s_{k}(C - G) + K)x_{k} = 0$"
+                                                : "$(s_{k}^{2}M + s_{k}C + K)x_{k} = 0$")
+                .text(" and is scaled so that its largest component is 1 (shown to 6 digits).");
+            if (nm.proportional_damping)
+                w.text(" The damping is proportional here: the modes are the real undamped mode shapes.");
+            else
+                w.text(" The damping is not proportional here: a mode is in general complex, its coordinates "
+                       "oscillating with different phases.");
+            w.latex("\n");
+        }
     }
 }
 

@@ -9,6 +9,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace lagrange {
@@ -85,9 +86,22 @@ void plot_response(const std::string& path, const frequency_response& r, const s
               "set multiplot layout 2,1 title "
            << gnuplot_quoted(title + ": Bode diagram of " + name) << " noenhanced\n"
            << "set logscale x\nset autoscale xfix\nset grid\nunset key\nset format x '%g'\n"
-              "set logscale y\nset ylabel '|H(iω)|'\n"
-              "plot 'data.txt' using 1:2 with lines lw 1.5\n"
-              "unset logscale y\nset ylabel 'phase (degrees)'\nset xlabel 'ω'\n"
+              "set lmargin 12\n" // the same left margin in both panels, so that their ω axes line up
+              "set logscale y\nset ylabel '|H(iω)|'\n";
+    // The resonance peak, marked where the search found one inside the range.
+    const bool peak = std::isfinite(r.peak_omega) && std::isfinite(r.peak_magnitude) && r.peak_magnitude > 0;
+    if (peak) {
+        std::ostringstream shown;
+        shown << std::setprecision(6) << r.peak_omega;
+        script << "set label 1 " << gnuplot_quoted("resonance ω_r = " + shown.str()) << " at "
+               << round_trip(r.peak_omega) << ", " << round_trip(r.peak_magnitude)
+               << " offset 1.5,0.6 noenhanced\n";
+    }
+    script << "plot 'data.txt' using 1:2 with lines lw 1.5";
+    if (peak)
+        script << ", '-' using 1:2 with points pt 7 ps 0.8\n"
+               << round_trip(r.peak_omega) << ' ' << round_trip(r.peak_magnitude) << "\ne";
+    script << "\nunset label 1\nunset logscale y\nset ylabel 'phase (degrees)'\nset xlabel 'ω'\n"
               "plot 'data.txt' using 1:3 with lines lw 1.5\n"
               "unset multiplot\n";
     draw_gnuplot_svg(path, script.str(), {{"data.txt", data.str()}});
