@@ -2,16 +2,13 @@
  *  Numeric normal modes: T and V simplified and compiled once, then per point the
  *  closed form (one or two coordinates, numeric/pair_kernels.h), the symbolically
  *  mass-normalized symmetric problem, or Eigen's generalized solver, each with a
- *  running error bound, and a CLN route at high precision (numeric/cln_eigen.h) when
- *  that bound is above the tolerance. */
+ *  running error bound, and a CLN route at high precision (compiled_modes_precise.cpp)
+ *  when that bound is above the tolerance. */
 #include "numeric/compiled_modes.h"
 
 #include "algebra/factor.h"
 #include "core/errors.h"
-#include "numeric/cln_eigen.h"
 #include "numeric/pair_kernels.h"
-
-#include <cln/cln.h>
 
 #include <algorithm>
 #include <cmath>
@@ -58,12 +55,17 @@ inline bool mode_within(double e, double w2, double largest, double tolerance)
     return finite & within;
 }
 
-cln::cl_F to_cl(const GiNaC::ex& e, const cln::float_format_t& format)
+/// The widest relative error bound (for ω = 0: absolute, against the largest ω, as
+/// mode_within measures it) with which the automatic route still gives its numbers as an
+/// answer; past it, it refuses.
+constexpr double answer_limit = 1e-6;
+
+std::string number_text(double x)
 {
-    if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_real())
-        throw computation_error("cannot evaluate " + [&] { std::ostringstream o; o << e; return o.str(); }()
-                                + " to a real number");
-    return cln::cl_float(cln::realpart(GiNaC::ex_to<GiNaC::numeric>(e).to_cl_N()), format);
+    std::ostringstream out;
+    out.precision(3);
+    out << x;
+    return out.str();
 }
 
 /// Index of T's upper triangle entry (i ≤ j) in row-major order.
@@ -215,13 +217,14 @@ void compiled_modes::set_a_priori_bounds()
     a_priori_ = true;
 }
 
-void compiled_modes::not_positive_definite(std::size_t coordinate) const
+void compiled_modes::not_positive_definite(std::size_t coordinate, int digits) const
 {
     if (coordinate < size_) {
         std::string name = coordinate < coordinate_names_.size() ? coordinate_names_[coordinate]
                                                                  : "#" + std::to_string(coordinate + 1);
         throw computation_error("the kinetic matrix is not positive definite at these values: coordinate `" + name
-                                + "` has no kinetic energy independent of the coordinates before it");
+                                + "` has no kinetic energy independent of the coordinates before it"
+                                + (digits > 0 ? " (to " + std::to_string(digits) + " digits)" : ""));
     }
     throw computation_error("the kinetic matrix is singular or indefinite at these values");
 }
@@ -269,12 +272,20 @@ modes_method compiled_modes::evaluate(const double* p, double* w2, double* w, do
     }
     modes_method used;
     bool distrusted = false;
-    if (has_closed_ && closed_.algebraic()) {
-        used = closed_form(p, w2, w, error, modes, &distrusted);
-    } else if (has_normalized_) {
-        used = normalized(p, w2, w, error, modes);
-    } else {
-        used = generalized(p, w2, w, error, modes);
+    try {
+        if (has_closed_ && closed_.algebraic()) {
+            used = closed_form(p, w2, w, error, modes, &distrusted);
+        } else if (has_normalized_) {
+            used = normalized(p, w2, w, error, modes);
+        } else {
+            used = generalized(p, w2, w, error, modes);
+        }
+    } catch (const computation_error&) {
+        // The double routes test T in double: where its entries, or their products, leave
+        // the range of double (M = m = 1e-300, l = g = 1e150), a positive definite T can
+        // fail that test. High precision, with T equilibrated first, decides (and its
+        // message stands when it fails too).
+        used = high_precision(p, w2, w, error, modes, options_.digits);
     }
     return refine(p, used, distrusted, w2, w, error, modes);
 }
@@ -282,6 +293,26 @@ modes_method compiled_modes::evaluate(const double* p, double* w2, double* w, do
 modes_method compiled_modes::refine(const double* p, modes_method route, bool distrusted, double* w2, double* w,
                                     double* error, double* modes)
 {
+    modes_method used = refine_route(p, route, distrusted, w2, w, error, modes);
+    // The best bound there is may still be too wide to call the numbers an answer (at
+    // 1e45 the printed ω said nothing at all): refuse rather than print them.
+    double largest = 0;
+    for (std::size_t k = 0; k < size_; ++k)
+        largest = std::max(largest, std::abs(w2[k]));
+    for (std::size_t k = 0; k < size_; ++k)
+        if (!mode_within(error[k], w2[k], largest, answer_limit))
+            throw computation_error("the numeric modes cannot be computed reliably at these values: the error "
+                                    "bound of a frequency stays at " + number_text(error[k]) + " even with "
+                                    + std::to_string(4 * options_.digits) + " digits");
+    return used;
+}
+
+modes_method compiled_modes::refine_route(const double* p, modes_method route, bool distrusted, double* w2,
+                                          double* w, double* error, double* modes)
+{
+    // a mode vector that over- or underflowed inside the closed form (M = 1, m = 1e60)
+    if (modes && !std::all_of(modes, modes + size_ * size_, [](double x) { return std::isfinite(x); }))
+        distrusted = true;
     if (!distrusted && acceptable(error, w2))
         return route;
     if (!distrusted) {
@@ -385,45 +416,66 @@ void compiled_modes::evaluate_batch(std::size_t count, const double* p, std::siz
     const double* rows[16]; // of the closed program's outputs
     for (std::size_t start = 0; start < count; start += B) {
         std::size_t block = std::min(B, count - start);
-        const double* p_block = p + start * stride;
-        double* modes_block = modes ? modes + start * n * n : nullptr;
-        bool running_bounds = !a_priori_;
-        if (a_priori_) {
-            // a priori bounds where every parameter is positive (nearly always), the running
-            // bound on the other lanes, as closed_form() decides for one point
-            using status = expression_program::a_priori_status;
-            closed_.run_batch_a_priori(p_block, stride, block, batch_scratch_, rows, batch_status_.data());
-            for (std::size_t j = 0; j < block; ++j) {
-                batch_use_[j] = batch_status_[j] == status::holds ? lane_use::use : lane_use::skip;
-                running_bounds = running_bounds || batch_status_[j] != status::holds;
+        try {
+            evaluate_block(start, block, p, stride, w2, w, error, modes, used, rows);
+        } catch (const computation_error&) {
+            // a lane whose T failed the double test: point by point, as evaluate() decides
+            for (std::size_t point = start; point < start + block; ++point) {
+                modes_method route = evaluate(p + point * stride, w2 + point * n, w + point * n,
+                                              error + point * n, modes ? modes + point * n * n : nullptr);
+                if (used)
+                    used[point] = route;
             }
-            closed_form_block(rows, B, block, true, batch_use_.data(), w2 + start * n,
-                              w + start * n, error + start * n, modes_block);
-            for (std::size_t j = 0; j < block; ++j)
-                batch_use_[j] = batch_status_[j] == status::holds ? lane_use::skip : lane_use::use;
         }
-        if (running_bounds) {
-            closed_.run_batch(p_block, stride, block, batch_scratch_, batch_out_.data());
-            for (std::size_t k = 0; k < closed_.output_count(); ++k)
-                rows[k] = batch_out_.data() + 4 * k * B;
-            closed_form_block(rows, B, block, false, a_priori_ ? batch_use_.data() : nullptr,
-                              w2 + start * n, w + start * n, error + start * n, modes_block);
-        }
-        if (!running_bounds && n == 2 && all_acceptable(block, w2 + start * n, error + start * n)) {
-            if (used)
-                std::fill(used + start, used + start + block, modes_method::closed_form);
-            continue;
-        }
+    }
+}
+
+void compiled_modes::evaluate_block(std::size_t start, std::size_t block, const double* p, std::size_t stride,
+                                    double* w2, double* w, double* error, double* modes, modes_method* used,
+                                    const double** rows)
+{
+    constexpr std::size_t B = expression_program::batch_size;
+    const std::size_t n = size_;
+    const double* p_block = p + start * stride;
+    double* modes_block = modes ? modes + start * n * n : nullptr;
+    bool running_bounds = !a_priori_;
+    if (a_priori_) {
+        // a priori bounds where every parameter is positive (nearly always), the running
+        // bound on the other lanes, as closed_form() decides for one point
+        using status = expression_program::a_priori_status;
+        closed_.run_batch_a_priori(p_block, stride, block, batch_scratch_, rows, batch_status_.data());
         for (std::size_t j = 0; j < block; ++j) {
-            std::size_t point = start + j;
-            double *w2_j = w2 + point * n, *w_j = w + point * n, *error_j = error + point * n;
-            double* modes_j = modes ? modes + point * n * n : nullptr;
-            bool distrusted = a_priori_ && batch_status_[j] == expression_program::a_priori_status::out_of_range;
-            modes_method route = refine(p + point * stride, modes_method::closed_form, distrusted, w2_j, w_j,
-                                        error_j, modes_j);
-            if (used)
-                used[point] = route;
+            batch_use_[j] = batch_status_[j] == status::holds ? lane_use::use : lane_use::skip;
+            running_bounds = running_bounds || batch_status_[j] != status::holds;
         }
+        closed_form_block(rows, B, block, true, batch_use_.data(), w2 + start * n,
+                          w + start * n, error + start * n, modes_block);
+        for (std::size_t j = 0; j < block; ++j)
+            batch_use_[j] = batch_status_[j] == status::holds ? lane_use::skip : lane_use::use;
+    }
+    if (running_bounds) {
+        closed_.run_batch(p_block, stride, block, batch_scratch_, batch_out_.data());
+        for (std::size_t k = 0; k < closed_.output_count(); ++k)
+            rows[k] = batch_out_.data() + 4 * k * B;
+        closed_form_block(rows, B, block, false, a_priori_ ? batch_use_.data() : nullptr,
+                          w2 + start * n, w + start * n, error + start * n, modes_block);
+    }
+    if (!running_bounds && n == 2 && all_acceptable(block, w2 + start * n, error + start * n) &&
+        (!modes_block || std::all_of(modes_block, modes_block + block * n * n,
+                                     [](double x) { return std::isfinite(x); }))) {
+        if (used)
+            std::fill(used + start, used + start + block, modes_method::closed_form);
+        return;
+    }
+    for (std::size_t j = 0; j < block; ++j) {
+        std::size_t point = start + j;
+        double *w2_j = w2 + point * n, *w_j = w + point * n, *error_j = error + point * n;
+        double* modes_j = modes ? modes + point * n * n : nullptr;
+        bool distrusted = a_priori_ && batch_status_[j] == expression_program::a_priori_status::out_of_range;
+        modes_method route = refine(p + point * stride, modes_method::closed_form, distrusted, w2_j, w_j,
+                                    error_j, modes_j);
+        if (used)
+            used[point] = route;
     }
 }
 
@@ -564,47 +616,6 @@ modes_method compiled_modes::generalized(const double* p, double* w2, double* w,
     if (modes)
         Eigen::Map<Eigen::MatrixXd>(modes, n, n) = solver.eigenvectors();
     return modes_method::eigen_generalized;
-}
-
-modes_method compiled_modes::high_precision(const double* p, double* w2, double* w, double* error, double* modes,
-                                            int digits)
-{
-    using cln::cl_F;
-    const std::size_t n = size_;
-    const cln::float_format_t format = cln::float_format(digits);
-    GiNaC::exmap point;
-    for (std::size_t k = 0; k < parameters_.size(); ++k)
-        if (used_[k])
-            point[parameters_[k].symbol] = GiNaC::numeric(cln::rational(cln::cl_DF(p[k])));
-    int saved = GiNaC::Digits;
-    GiNaC::Digits = digits + 10;
-    cln_matrix T(n, std::vector<cl_F>(n)), V = T;
-    try {
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = 0; j < n; ++j) {
-                T[i][j] = to_cl(kinetic_(i, j).subs(point).evalf(), format);
-                V[i][j] = to_cl(potential_(i, j).subs(point).evalf(), format);
-            }
-    } catch (...) {
-        GiNaC::Digits = saved;
-        throw;
-    }
-    GiNaC::Digits = saved;
-    const cln_eigen_result eigen = cln_generalized_eigen(T, V, format, modes != nullptr);
-    if (eigen.failed_pivot < n)
-        not_positive_definite(eigen.failed_pivot);
-    for (std::size_t k = 0; k < n; ++k) {
-        const cl_F& W = eigen.eigenvalues[k];
-        cl_F root = cln::sqrt(cln::abs(W));
-        double rounded = cln::double_approx(root);
-        double extra = rounded != 0 ? cln::double_approx(cln::abs(root - cln::cl_float(rounded, format))) / rounded : 0;
-        set_frequency(cln::double_approx(W), eigen.error, extra, w2[k], w[k], error[k]);
-        if (w[k] != 0)
-            w[k] = std::copysign(rounded, w[k]);
-    }
-    if (modes)
-        std::copy(eigen.modes.begin(), eigen.modes.end(), modes);
-    return modes_method::high_precision;
 }
 
 namespace {

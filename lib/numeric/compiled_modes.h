@@ -116,9 +116,17 @@ private:
     /// its bound is `distrusted` (then the result stands only if high precision cannot do better).
     modes_method refine(const double* p, modes_method route, bool distrusted, double* w2, double* w, double* error,
                         double* modes);
+    /// refine()'s search for a route within the tolerance; refine() then refuses a result whose
+    /// bound is too wide to be an answer.
+    modes_method refine_route(const double* p, modes_method route, bool distrusted, double* w2, double* w,
+                              double* error, double* modes);
+    /// evaluate_batch on the `block` points from `start`; `rows`: room for the closed program's outputs.
+    void evaluate_block(std::size_t start, std::size_t block, const double* p, std::size_t stride, double* w2,
+                        double* w, double* error, double* modes, modes_method* used, const double** rows);
     bool acceptable(const double* error, const double* w) const;
     bool all_acceptable(std::size_t count, const double* w2, const double* error) const;
-    [[noreturn]] void not_positive_definite(std::size_t coordinate) const;
+    /// `digits`: the precision at which high precision found it so (0: a double route).
+    [[noreturn]] void not_positive_definite(std::size_t coordinate, int digits = 0) const;
 
     std::size_t size_ = 0;
     compiled_modes_options options_;

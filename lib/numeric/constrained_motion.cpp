@@ -185,6 +185,7 @@ simulation_result simulate_constrained(const model& scene, const equations_of_mo
     if (!(result.tolerance >= 1e-14 && result.tolerance < 1))
         throw computation_error("the tolerance " + message_number(result.tolerance, 3) + " is outside 1e-14 … 1");
     result.run_tolerance = result.tolerance;
+    result.absolute_tolerance = result.tolerance; // projected pieces: absolute as relative
     const std::string method_name =
         settings.method ? *settings.method : scene.simulation ? scene.simulation->method : "auto";
     ode_method method = ode_method::dop853;

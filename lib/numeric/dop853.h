@@ -138,9 +138,11 @@ constexpr int all_stages = 16;  ///< with the three that only the dense output n
 template <int Dim, bool Fused = false>
 class dop853_stepper {
 public:
-    /// Relative and absolute tolerance `tolerance` per step (Hairer's error norm: the
-    /// root mean square of error_i / (tolerance (1 + max(|x_i|, |x_new_i|)))).
-    dop853_stepper(std::size_t dimension, double tolerance) : tolerance_(tolerance)
+    /// Relative tolerance `tolerance` and absolute tolerance `tolerance` × `absolute_scale`
+    /// per step (Hairer's error norm: the root mean square of
+    /// error_i / (tolerance (absolute_scale + max(|x_i|, |x_new_i|)))).
+    dop853_stepper(std::size_t dimension, double tolerance, double absolute_scale = 1)
+        : tolerance_(tolerance), absolute_scale_(absolute_scale)
     {
         if constexpr (Dim == 0) {
             n_ = dimension;
@@ -180,7 +182,7 @@ public:
         f(t_ + h, trial_.data(), row(12));
         double err5 = 0, err3 = 0;
         for (std::size_t i = 0; i < m; ++i) {
-            double scale = tolerance_ * (1 + std::max(std::abs(x_[i]), std::abs(trial_[i])));
+            double scale = tolerance_ * (absolute_scale_ + std::max(std::abs(x_[i]), std::abs(trial_[i])));
             double e5 = weighted<error5_weights>(i, std::make_integer_sequence<int, 13>()) / scale;
             double e3 = weighted<error3_weights>(i, std::make_integer_sequence<int, 12>()) / scale;
             err5 = madd(e5, e5, err5);
@@ -395,7 +397,7 @@ private:
         const std::size_t m = n();
         double d0 = 0, d1 = 0;
         for (std::size_t i = 0; i < m; ++i) {
-            double scale = tolerance_ * (1 + std::abs(x_[i]));
+            double scale = tolerance_ * (absolute_scale_ + std::abs(x_[i]));
             d0 += (x_[i] / scale) * (x_[i] / scale);
             d1 += (k_[i] / scale) * (k_[i] / scale);
         }
@@ -408,7 +410,7 @@ private:
         f(t_ + h0, stage_.data(), row(1));
         double d2 = 0;
         for (std::size_t i = 0; i < m; ++i) {
-            double scale = tolerance_ * (1 + std::abs(x_[i]));
+            double scale = tolerance_ * (absolute_scale_ + std::abs(x_[i]));
             double second = (k_[m + i] - k_[i]) / scale;
             d2 += second * second;
         }
@@ -420,6 +422,7 @@ private:
 
     std::size_t n_ = Dim;
     double tolerance_;
+    double absolute_scale_;
     double t_ = 0, t_old_ = 0, h_ = 0, h_last_ = 0;
     double t_low_ = 0, t_old_low_ = 0; ///< the time is t_ + t_low_ (and t_old_ + t_old_low_)
     bool stale_ = false, dense_ready_ = false;

@@ -75,6 +75,26 @@ std::optional<ode_method> ode_method_from_name(const std::string& name)
 
 namespace {
 
+/// ‖v‖₂ of the n entries v(i) without under- or overflow in the squares: scaled by the power
+/// of two of the largest first. That is exact, so in range it is the plain sum's to the bit,
+/// while a motion of size 1e-300, whose squares underflow to 0, still has its norm.
+template <class Entry>
+double euclidean_norm(std::size_t n, Entry v)
+{
+    double largest = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        largest = std::max(largest, std::abs(v(i)));
+    if (largest == 0 || !std::isfinite(largest))
+        return largest;
+    int exponent = std::ilogb(largest);
+    double sum = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        double scaled = std::ldexp(v(i), -exponent);
+        sum += scaled * scaled;
+    }
+    return std::ldexp(std::sqrt(sum), exponent);
+}
+
 /// Counts evaluations and enforces the step and time limits; records the output.
 class run_state {
 public:
@@ -139,13 +159,10 @@ public:
         if (system_.exact) {
             std::vector<double> exact(n);
             system_.exact(t, exact.data());
-            double difference = 0, size = 0;
-            for (std::size_t i = 0; i < n; ++i) {
-                difference += (x[i] - exact[i]) * (x[i] - exact[i]);
-                size += exact[i] * exact[i];
-            }
-            exact_difference_ = std::max(exact_difference_, std::sqrt(difference));
-            exact_size_ = std::max(exact_size_, std::sqrt(size));
+            exact_difference_ = std::max(exact_difference_, euclidean_norm(n, [&](std::size_t i) {
+                                                 return x[i] - exact[i];
+                                             }));
+            exact_size_ = std::max(exact_size_, euclidean_norm(n, [&](std::size_t i) { return exact[i]; }));
         }
         result_.times.push_back(t);
         if (options_.keep_states)
@@ -209,13 +226,13 @@ void run_odeint(ode_method method, const std::vector<double>& x0, const integrat
     auto rhs = [&](const state_type& state, state_type& dxdt, double t) { run.rhs(t, state.data(), dxdt.data()); };
     auto observer = [&](const state_type& state, double t) { run.observe(t, state.data()); };
     std::vector<double> times = output_times(options);
-    double tol = options.tolerance;
+    double tol = options.tolerance, absolute = options.tolerance * options.absolute_scale;
     double first_step = std::min(1e-3, (options.until - options.start) / 100) * std::cbrt(tol);
     odeint::max_step_checker checker(static_cast<int>(std::min<std::size_t>(options.max_steps, 2'000'000'000)));
     try {
         switch (method) {
         case ode_method::dopri5: {
-            auto stepper = odeint::make_dense_output(tol, tol, odeint::runge_kutta_dopri5<state_type>());
+            auto stepper = odeint::make_dense_output(absolute, tol, odeint::runge_kutta_dopri5<state_type>());
             result.steps = options.outputs ? odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(),
                                                                      first_step, observer, checker)
                                            : odeint::integrate_adaptive(stepper, rhs, x, options.start,
@@ -223,7 +240,7 @@ void run_odeint(ode_method method, const std::vector<double>& x0, const integrat
             break;
         }
         case ode_method::rkf78: {
-            auto stepper = odeint::make_controlled(tol, tol, odeint::runge_kutta_fehlberg78<state_type>());
+            auto stepper = odeint::make_controlled(absolute, tol, odeint::runge_kutta_fehlberg78<state_type>());
             result.steps = options.outputs ? odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(),
                                                                      first_step, observer, checker)
                                            : odeint::integrate_adaptive(stepper, rhs, x, options.start,
@@ -233,7 +250,7 @@ void run_odeint(ode_method method, const std::vector<double>& x0, const integrat
         case ode_method::bulirsch_stoer: {
             // control_interpolation: the dense output's error is part of the step control too (else
             // long steps interpolate 1000 output times with errors far above the tolerance).
-            odeint::bulirsch_stoer_dense_out<state_type> stepper(tol, tol, 1.0, 0.0, 0.0, true);
+            odeint::bulirsch_stoer_dense_out<state_type> stepper(absolute, tol, 1.0, 0.0, 0.0, true);
             result.steps = options.outputs ? odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(),
                                                                      first_step, observer, checker)
                                            : odeint::integrate_adaptive(stepper, rhs, x, options.start,
@@ -334,7 +351,7 @@ template <int Dim, bool Fused, class F>
 LAGRANGE_DOP853_INLINE void run_dop853_with(F& f, const std::vector<double>& x0, const integration_options& options,
                                             run_state& run, trajectory& result)
 {
-    dop853_stepper<Dim, Fused> stepper(x0.size(), options.tolerance);
+    dop853_stepper<Dim, Fused> stepper(x0.size(), options.tolerance, options.absolute_scale);
     stepper.start(f, options.start, x0.data(), options.until);
     run.observe(options.start, x0.data());
     auto advance = [&]() LAGRANGE_LAMBDA_INLINE {
@@ -504,7 +521,7 @@ void run_cvode(const ode_system& system, const std::vector<double>& x0, const in
         throw computation_error("SUNDIALS could not allocate its workspace");
     CVodeSetErrHandlerFn(s.memory, cvode_silent, nullptr);
     CVodeInit(s.memory, cvode_rhs, options.start, s.y);
-    CVodeSStolerances(s.memory, options.tolerance, options.tolerance);
+    CVodeSStolerances(s.memory, options.tolerance, options.tolerance * options.absolute_scale);
     CVodeSetUserData(s.memory, &data);
     CVodeSetLinearSolver(s.memory, s.solver, s.matrix);
     CVodeSetJacFn(s.memory, cvode_jacobian);
@@ -672,13 +689,9 @@ double trajectory_difference(const trajectory& a, const trajectory& b)
         throw std::invalid_argument("the trajectories have different output times");
     double difference = 0, size = 0;
     for (std::size_t k = 0; k < a.states.size(); ++k) {
-        double d = 0, s = 0;
-        for (std::size_t i = 0; i < a.states[k].size(); ++i) {
-            d += (a.states[k][i] - b.states[k][i]) * (a.states[k][i] - b.states[k][i]);
-            s += b.states[k][i] * b.states[k][i];
-        }
-        difference = std::max(difference, std::sqrt(d));
-        size = std::max(size, std::sqrt(s));
+        const std::vector<double>&x = a.states[k], &y = b.states[k];
+        difference = std::max(difference, euclidean_norm(x.size(), [&](std::size_t i) { return x[i] - y[i]; }));
+        size = std::max(size, euclidean_norm(y.size(), [&](std::size_t i) { return y[i]; }));
     }
     return size > 0 ? difference / size : difference;
 }

@@ -68,7 +68,10 @@ const std::vector<ode_method>& all_ode_methods();
 struct integration_options {
     double start = 0;
     double until = 1;
-    double tolerance = 1e-8;      ///< relative and absolute tolerance per step
+    double tolerance = 1e-8;      ///< relative tolerance per step
+    /// The absolute tolerance per step is tolerance × absolute_scale: 1 for motions of order
+    /// one, the size of the motion for small ones (so that the control stays relative to it).
+    double absolute_scale = 1;
     double output_step = 0;       ///< spacing of the output times (0: until/1000)
     double fixed_step = 0;        ///< implicit midpoint: its step (0: from the tolerance and `frequency`)
     double frequency = 1;         ///< largest angular frequency of the motion (sets the fixed step)

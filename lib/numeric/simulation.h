@@ -55,6 +55,9 @@ struct simulation_result {
     std::string method;                       ///< the method that ran
     std::string choice;                       ///< why (for `auto`)
     double tolerance = 0;                     ///< the tolerance asked for (a target for the global error)
+    /// The absolute tolerance that goes with it: `tolerance` for motions of order one, less
+    /// for small ones (integration_options::absolute_scale); a tighter rerun scales it alike.
+    double absolute_tolerance = 0;
     /// The tolerance setting of the run reported: `tolerance`, or tighter when the error
     /// estimate of a first run missed `tolerance` and the run was repeated.
     double run_tolerance = 0;

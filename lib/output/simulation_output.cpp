@@ -120,7 +120,8 @@ void write_simulation_text(std::ostream& out, const simulation_result& s, bool t
     out << "\nSimulation\n";
     out << "  method: " << s.method << " (" << s.choice << ")\n";
     out << "  from t = 0 to " << number(run.times.empty() ? 0 : run.times.back()) << ", tolerance "
-        << number(s.tolerance, 3) << ", " << run.times.size() << " output times\n";
+        << number(s.tolerance, 3) << " relative, " << number(s.absolute_tolerance, 3) << " absolute, "
+        << run.times.size() << " output times\n";
     if (s.missed_error)
         out << "  run again at tolerance " << number(s.run_tolerance, 3) << ": the first run's error, "
             << number(*s.missed_error, 3) << ", missed the tolerance\n";
@@ -206,7 +207,7 @@ void write_simulation_latex(std::ostream& out, const simulation_result& s, bool 
     out << "\\subsection*{Simulation}\n";
     out << "Method " << latex_text(s.method) << " (" << latex_text(s.choice) << "), from $t = 0$ to $"
         << latex_number(run.times.empty() ? 0 : run.times.back(), 6) << "$, tolerance $" << latex_number(s.tolerance)
-        << "$.";
+        << "$ relative and $" << latex_number(s.absolute_tolerance) << "$ absolute.";
     if (s.missed_error)
         out << " Run again at tolerance $" << latex_number(s.run_tolerance) << "$: the first run's error, $"
             << latex_number(*s.missed_error) << "$, missed the tolerance.";
@@ -290,6 +291,7 @@ nlohmann::ordered_json simulation_json(const simulation_result& s, bool timings)
         doc["initial_residual"] = *s.initial_residual;
     doc["choice"] = s.choice;
     doc["tolerance"] = s.tolerance;
+    doc["absolute_tolerance"] = s.absolute_tolerance;
     doc["run_tolerance"] = s.run_tolerance;
     if (s.missed_error)
         doc["missed_error"] = *s.missed_error;
