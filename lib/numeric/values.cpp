@@ -21,6 +21,23 @@ double real_value(const GiNaC::ex& e, const std::string& what)
     return d;
 }
 
+std::optional<double> real_at(const GiNaC::ex& e, const GiNaC::exmap& at)
+{
+    GiNaC::ex value;
+    try {
+        value = e.subs(at).evalf();
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    if (!GiNaC::is_a<GiNaC::numeric>(value))
+        return std::nullopt;
+    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(value);
+    const double re = GiNaC::real(n).to_double(), im = GiNaC::imag(n).to_double();
+    if (!std::isfinite(re) || !std::isfinite(im) || std::abs(im) > 1e-12 * (1 + std::abs(re)))
+        return std::nullopt;
+    return re;
+}
+
 std::string message_number(double x, int digits)
 {
     char buffer[40];

@@ -106,15 +106,6 @@ std::optional<std::complex<double>> complex_at(const ex& e, const GiNaC::exmap& 
     return z;
 }
 
-/// A real value at the point; nothing if complex (beyond rounding) or not a number.
-std::optional<double> real_at(const ex& e, const GiNaC::exmap& at)
-{
-    std::optional<std::complex<double>> z = complex_at(e, at);
-    if (!z || std::abs(z->imag()) > 1e-12 * (1 + std::abs(z->real())))
-        return std::nullopt;
-    return z->real();
-}
-
 std::optional<Eigen::MatrixXd> matrix_at(const GiNaC::matrix& m, const GiNaC::exmap& at)
 {
     Eigen::MatrixXd result(m.rows(), m.cols());

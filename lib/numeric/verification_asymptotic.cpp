@@ -22,23 +22,6 @@ namespace {
 
 using GiNaC::ex;
 
-std::optional<double> real_value(const ex& e, const GiNaC::exmap& at)
-{
-    ex value;
-    try {
-        value = e.subs(at).evalf();
-    } catch (const std::exception&) {
-        return std::nullopt;
-    }
-    if (!GiNaC::is_a<GiNaC::numeric>(value))
-        return std::nullopt;
-    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(value);
-    const double re = GiNaC::real(n).to_double(), im = GiNaC::imag(n).to_double();
-    if (!std::isfinite(re) || std::abs(im) > 1e-9 * (1 + std::abs(re)))
-        return std::nullopt;
-    return re;
-}
-
 /// The parameters at the `values` line (else 1) with the limit's variable at `x`: a
 /// parameter directly, or a ratio p/q through p = x·q (or q = p/x). Nothing if the ratio
 /// is not a quotient of two parameters.
@@ -51,7 +34,7 @@ std::optional<GiNaC::exmap> point_at(const model& scene, double x)
     for (const parameter& p : scene.parameters) {
         std::optional<double> v;
         if (auto found = given.find(p.symbol); found != given.end())
-            v = real_value(found->second, {});
+            v = real_at(found->second, {});
         at[p.symbol] = GiNaC::numeric(v && *v > 0 ? *v : 1.0);
     }
     const std::string& name = scene.limit->variable;
@@ -65,14 +48,14 @@ std::optional<GiNaC::exmap> point_at(const model& scene, double x)
     const ex top = scene.ratio->definition.numer(), bottom = scene.ratio->definition.denom();
     at[scene.ratio->symbol] = GiNaC::numeric(x);
     if (GiNaC::is_a<GiNaC::symbol>(top) && at.count(top) && !bottom.has(top)) {
-        std::optional<double> b = real_value(bottom, at);
+        std::optional<double> b = real_at(bottom, at);
         if (!b)
             return std::nullopt;
         at[top] = GiNaC::numeric(x * *b);
         return at;
     }
     if (GiNaC::is_a<GiNaC::symbol>(bottom) && at.count(bottom) && !top.has(bottom)) {
-        std::optional<double> t = real_value(top, at);
+        std::optional<double> t = real_at(top, at);
         if (!t)
             return std::nullopt;
         at[bottom] = GiNaC::numeric(*t / x);
@@ -93,7 +76,7 @@ std::optional<double> difference_at(const model& scene, const linearization_resu
     Eigen::MatrixXd t(n, n), v(n, n);
     for (unsigned i = 0; i < n; ++i)
         for (unsigned j = 0; j < n; ++j) {
-            std::optional<double> a = real_value(linear.kinetic(i, j), *at), b = real_value(linear.potential(i, j), *at);
+            std::optional<double> a = real_at(linear.kinetic(i, j), *at), b = real_at(linear.potential(i, j), *at);
             if (!a || !b)
                 return std::nullopt;
             t(i, j) = *a;
@@ -104,7 +87,7 @@ std::optional<double> difference_at(const model& scene, const linearization_resu
         return std::nullopt;
     std::vector<double> asymptotic;
     for (const ex& w : limit.frequencies) {
-        std::optional<double> value = real_value(w, *at);
+        std::optional<double> value = real_at(w, *at);
         if (!value)
             return std::nullopt;
         asymptotic.push_back(*value);

@@ -67,23 +67,6 @@ std::string point_text(const model& scene, const GiNaC::exmap& point)
     return text.empty() ? "the check" : text;
 }
 
-std::optional<double> real_value(const ex& e, const GiNaC::exmap& at)
-{
-    ex v;
-    try {
-        v = e.subs(at).evalf();
-    } catch (const std::exception&) {
-        return std::nullopt;
-    }
-    if (!GiNaC::is_a<GiNaC::numeric>(v))
-        return std::nullopt;
-    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(v);
-    const double re = GiNaC::real(n).to_double(), im = GiNaC::imag(n).to_double();
-    if (!std::isfinite(re) || std::abs(im) > 1e-12 * (1 + std::abs(re)))
-        return std::nullopt;
-    return re;
-}
-
 /// A state of the scene: coordinates, velocities, inputs 0, t = 0, at a parameter point.
 struct state_point {
     const model& scene;
@@ -103,7 +86,7 @@ struct state_point {
         at[scene.time] = 0;
         return at;
     }
-    std::optional<double> operator()(const ex& e) const { return real_value(e, map()); }
+    std::optional<double> operator()(const ex& e) const { return real_at(e, map()); }
 };
 
 /// d/dt of a point's position along the velocities: Σ_k ∂r/∂q_k q̇_k by central differences.
@@ -229,7 +212,7 @@ std::optional<Eigen::MatrixXd> matrix_value(const GiNaC::matrix& m, const GiNaC:
     Eigen::MatrixXd result(m.rows(), m.cols());
     for (unsigned i = 0; i < m.rows(); ++i)
         for (unsigned j = 0; j < m.cols(); ++j) {
-            std::optional<double> x = real_value(m(i, j), at);
+            std::optional<double> x = real_at(m(i, j), at);
             if (!x)
                 return std::nullopt;
             result(i, j) = *x;
@@ -272,7 +255,7 @@ std::vector<verification_entry> verify_damping(const model& scene, const lineari
     for (const GiNaC::exmap& parameters : parameter_points(scene)) {
         std::vector<double> q0;
         for (const ex& x : linear.at)
-            if (std::optional<double> v = real_value(x, parameters))
+            if (std::optional<double> v = real_at(x, parameters))
                 q0.push_back(*v);
         std::optional<Eigen::MatrixXd> symbolic = matrix_value(damping.damping, parameters);
         std::optional<Eigen::MatrixXd> mass = matrix_value(linear.kinetic, parameters);
@@ -387,7 +370,7 @@ std::vector<verification_entry> verify_linear_system(const model& scene, const l
     for (const GiNaC::exmap& parameters : parameter_points(scene)) {
         std::vector<double> q0;
         for (const ex& x : linear.at)
-            if (std::optional<double> v = real_value(x, parameters))
+            if (std::optional<double> v = real_at(x, parameters))
                 q0.push_back(*v);
         std::optional<Eigen::MatrixXd> a = matrix_value(system.a, parameters), b = matrix_value(system.b, parameters);
         std::optional<Eigen::MatrixXd> mass = matrix_value(linear.kinetic, parameters);
