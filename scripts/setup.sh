@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libboost-dev libsundials-dev)
+packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libboost-dev libsundials-dev libflint-dev)
 # SLEEF: vectorized sines and cosines in the natively compiled equations of motion (without it, libm's)
 packages+=(libsleef-dev)
 # gnuplot draws the figures of `lagrange report` and `--plot` (without it they are left out)

@@ -4,6 +4,7 @@
 #include "algebra/budget.h"
 #include "algebra/exact_matrix.h"
 #include "algebra/factor.h"
+#include "algebra/integer_polynomial.h"
 #include "engine/analysis.h"
 #include "cli_runner.h"
 #include "scene_helpers.h"
@@ -75,7 +76,7 @@ TEST_CASE("scaling: the minor expansion gives GiNaC's determinant", "[scaling]")
     // rational coefficients and a function of a parameter: the expression path
     GiNaC::matrix rational{{a / 2 + w, GiNaC::cos(b), 0}, {GiNaC::cos(b), c - w / 3, 1}, {0, 1, a * c}};
     CHECK((expansion_determinant(rational) - rational.determinant(GiNaC::determinant_algo::laplace)).expand().is_zero());
-    // large integer coefficients: past the overflow bound, the expression path
+    // large integer coefficients, far past 64 bits
     GiNaC::matrix large{{GiNaC::numeric("1000000000000") * a, b}, {b, GiNaC::numeric("3000000000000") * c + w}};
     CHECK((expansion_determinant(large) - large.determinant(GiNaC::determinant_algo::laplace)).expand().is_zero());
     // a singular matrix: two equal rows
@@ -107,15 +108,16 @@ TEST_CASE("scaling: large polynomials factor as GiNaC's factor() does", "[scalin
     CHECK(same_factors(squares_ours, GiNaC::factor(squares.expand())));
 }
 
-TEST_CASE("scaling: coprimality is proven by images, and a common factor is not missed", "[scaling]")
+TEST_CASE("scaling: coprimality and the content of several polynomials, exactly", "[scaling]")
 {
     GiNaC::symbol x("x"), y("y"), z("z"), u("u");
     const GiNaC::ex f = x * y + z * u + 1, g = x + y * y * z + u, h = x * z - y * u + 2;
-    CHECK(coprime_by_images((f * g).expand(), h.expand()));
-    CHECK(coprime_by_images(f, g));
-    CHECK_FALSE(coprime_by_images((f * g).expand(), (f * h).expand()));
-    CHECK_FALSE(coprime_by_images((g * g).expand(), (g * h).expand()));
-    CHECK(coprime_by_images(3, f));
+    CHECK(polynomials_coprime((f * g).expand(), h.expand()) == true);
+    CHECK(polynomials_coprime(f, g) == true);
+    CHECK(polynomials_coprime((f * g).expand(), (f * h).expand()) == false);
+    CHECK(polynomials_coprime((g * g).expand(), (g * h).expand()) == false);
+    CHECK(polynomials_coprime(3, f) == true);
+    CHECK_FALSE(polynomials_coprime(GiNaC::sin(x), f).has_value());
     // the content of several polynomials against GiNaC's gcd
     const std::vector<GiNaC::ex> polynomials{(6 * x * x * y * f * g).expand(), (4 * x * y * y * f * h).expand(),
                                              (10 * x * y * f * g * h).expand()};
@@ -125,6 +127,29 @@ TEST_CASE("scaling: coprimality is proven by images, and a common factor is not 
     CHECK((content - 2 * x * y * f).expand().is_zero());
     CHECK((polynomial_content({0, (3 * x * y).expand(), 0}) - 3 * x * y).expand().is_zero());
     CHECK(polynomial_content({0, 0}).is_zero());
+}
+
+TEST_CASE("scaling: FLINT's factors and gcd of rational polynomials, signs fixed by name", "[scaling]")
+{
+    GiNaC::symbol a("a"), b("b"), c("c");
+    // (b/2 − a/3)² (a c − 1): the leading term in the order of names is a's, so the
+    // factors are 2a − 3b (a leads, positive) squared and a c − 1, over 36
+    const GiNaC::ex p = GiNaC::pow(b / 2 - a / 3, 2) * (a * c - 1) * (-5);
+    const std::optional<GiNaC::ex> factored = polynomial_factor(p.expand());
+    REQUIRE(factored);
+    CHECK((*factored - p).expand().is_zero());
+    CHECK(same_factors(*factored, GiNaC::factor(p.expand())));
+    CHECK(factored->has(GiNaC::pow(2 * a - 3 * b, 2)));
+    CHECK(factored->has(a * c - 1));
+    CHECK(factored->has(GiNaC::numeric(-5, 36)));
+    // the gcd keeps the rational content's gcd: gcd(6 a²b, 9/2 a b c) = 3/2 a b
+    const std::optional<GiNaC::ex> gcd = polynomial_gcd({6 * a * a * b, GiNaC::numeric(9, 2) * a * b * c});
+    REQUIRE(gcd);
+    CHECK((*gcd - GiNaC::numeric(3, 2) * a * b).expand().is_zero());
+    CHECK_FALSE(polynomial_factor(GiNaC::cos(a) + b).has_value());
+    // a determinant whose coefficients pass 2^64
+    GiNaC::matrix huge{{GiNaC::numeric("100000000000000000000") * a, b}, {c, GiNaC::numeric("300000000000000000000") * b}};
+    CHECK((expansion_determinant(huge) - huge.determinant(GiNaC::determinant_algo::laplace)).expand().is_zero());
 }
 
 // The chain with every mass and length distinct (issue 23's scaling case), N = 5. The

@@ -10,11 +10,10 @@
  *
  *  GiNaC's factor() is also slow on large polynomials in many symbols, the coefficients
  *  of a chain's characteristic polynomial among them: it factors the leading coefficient
- *  in every symbol before it lifts. Such a polynomial is factored here by its number and
- *  monomial factor, and wherever it has degree 1 in some symbol x, as a x + b =
- *  gcd(a, b)·(irreducible), with gcd(a, b) = 1 proven by univariate images
- *  (coprime_by_images) before GiNaC's gcd is asked. The factors are the same; an
- *  irreducible factor is written expanded rather than in GiNaC's nested form. */
+ *  in every symbol before it lifts. Such a polynomial (more than four terms in more than
+ *  three symbols) is factored by FLINT (algebra/integer_polynomial.h); the factors are
+ *  the same, each irreducible factor written expanded rather than in GiNaC's nested
+ *  form. */
 #pragma once
 
 #include <ginac/ginac.h>
@@ -34,14 +33,8 @@ bool too_large_to_factor(const GiNaC::ex& e);
 /// budget_check(), then GiNaC::factor(e), or `e` itself when too_large_to_factor(e).
 GiNaC::ex factor_if_quick(const GiNaC::ex& e);
 
-/// Whether the polynomials a and b (rational coefficients) are proven to have no common
-/// factor of positive degree: for each symbol y of both, the images of a and b at a point
-/// of the other symbols (one keeping a's degree in y) have no common factor in y. False
-/// when not proven (a common factor, or unlucky points).
-bool coprime_by_images(const GiNaC::ex& a, const GiNaC::ex& b);
-
-/// The gcd of polynomials (zeros skipped; 0 if all are zero): their common number and
-/// monomial, times the gcd of what is left unless coprime_by_images proves that it is 1.
+/// The gcd of polynomials (zeros skipped; 0 if all are zero): by FLINT for polynomials
+/// with integer coefficients, with a positive leading coefficient; else GiNaC's gcd.
 GiNaC::ex polynomial_content(const std::vector<GiNaC::ex>& polynomials);
 
 /// e.normal() and factor_if_quick(e.normal()) of an expression with π: GiNaC's gcd wants

@@ -8,12 +8,14 @@
 #include "algebra/calculus.h"
 #include "algebra/exact_matrix.h"
 #include "algebra/factor.h"
+#include "algebra/integer_polynomial.h"
 #include "algebra/message_text.h"
 #include "algebra/sign.h"
 #include "core/errors.h"
 #include "mechanics/equilibrium.h"
 #include "mechanics/gyroscopic.h"
 
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -39,28 +41,23 @@ bool is_monomial(const ex& e)
     return true;
 }
 
-/// The coefficients of a polynomial, lowest degree first, with every common factor
-/// removed and the leading one positive; `denominator_sign` is the sign of the
-/// denominator that was cleared to get them, `atoms` the functions of the parameters
-/// that to_rational made symbols (put back at the end). Each coefficient is factored;
-/// with `factored`, the factoring has half the stage's remaining time, and past it the
-/// coefficients are left unfactored and *factored is set to false.
-std::vector<ex> primitive(std::vector<ex> coefficients, std::optional<int> denominator_sign,
-                          const GiNaC::exmap& atoms, bool* factored)
+/// Coefficients without a common factor (lowest degree first) with the leading one made
+/// positive; `denominator_sign` is the sign of the denominator that was cleared to get
+/// them, `atoms` the functions of the parameters that to_rational made symbols (put back
+/// at the end). Each coefficient is factored; with `factored`, the factoring has half the
+/// stage's remaining time, and past it the coefficients are left unfactored and
+/// *factored is set to false.
+std::vector<ex> signed_and_factored(std::vector<ex> coefficients, std::optional<int> denominator_sign,
+                                    const GiNaC::exmap& atoms, bool* factored,
+                                    const std::function<ex(std::size_t)>& factor_of)
 {
-    ex content = polynomial_content(coefficients);
-    if (content.is_zero()) {
-        for (ex& c : coefficients)
-            c = c.subs(atoms);
-        return coefficients;
-    }
     int flip = (denominator_sign && *denominator_sign < 0) ? -1 : 1;
-    std::optional<int> leading = sign_of((coefficients.back() / content).subs(atoms));
+    std::optional<int> leading = sign_of(coefficients.back().subs(atoms));
     if (leading && *leading < 0)
         flip = -flip;
     if (!leading) {
         // sign undecidable (−l·cos(th0)): at least no leading coefficient whose every term is negative
-        ex top = (coefficients.back() / content).normal().numer().expand();
+        ex top = coefficients.back().normal().numer().expand();
         bool all_negative = true;
         for (const ex& term : GiNaC::is_a<GiNaC::add>(top) ? GiNaC::exvector(top.begin(), top.end())
                                                             : GiNaC::exvector{top}) {
@@ -71,31 +68,47 @@ std::vector<ex> primitive(std::vector<ex> coefficients, std::optional<int> denom
         if (all_negative)
             flip = -flip;
     }
+    if (!factored) {
+        for (std::size_t k = 0; k < coefficients.size(); ++k)
+            coefficients[k] = (flip * factor_of(k)).subs(atoms);
+        return coefficients;
+    }
+    std::vector<ex> factors;
+    try {
+        budget_share share(0.5);
+        for (std::size_t k = 0; k < coefficients.size(); ++k)
+            factors.push_back((flip * factor_of(k)).subs(atoms));
+    } catch (const budget_exceeded&) {
+        *factored = false;
+        for (ex& c : coefficients)
+            c = (flip * c).subs(atoms);
+        return coefficients;
+    }
+    return factors;
+}
+
+/// The coefficients of a polynomial, lowest degree first, with every common factor
+/// removed, then signed_and_factored.
+std::vector<ex> primitive(std::vector<ex> coefficients, std::optional<int> denominator_sign,
+                          const GiNaC::exmap& atoms, bool* factored)
+{
+    ex content = polynomial_content(coefficients);
+    if (content.is_zero()) {
+        for (ex& c : coefficients)
+            c = c.subs(atoms);
+        return coefficients;
+    }
     for (ex& c : coefficients) {
         ex quotient;
         if (is_monomial(content))
             quotient = (c / content).expand(); // term by term
         else if (!GiNaC::divide(c, content, quotient))
             quotient = (c / content).normal();
-        c = flip * quotient;
+        c = quotient;
     }
-    if (!factored) {
-        for (ex& c : coefficients)
-            c = factor_if_quick(c).subs(atoms);
-        return coefficients;
-    }
-    std::vector<ex> factors;
-    try {
-        budget_share share(0.5);
-        for (const ex& c : coefficients)
-            factors.push_back(factor_if_quick(c).subs(atoms));
-    } catch (const budget_exceeded&) {
-        *factored = false;
-        for (ex& c : coefficients)
-            c = c.subs(atoms);
-        return coefficients;
-    }
-    return factors;
+    const std::vector<ex> parts = coefficients;
+    return signed_and_factored(std::move(coefficients), denominator_sign, atoms, factored,
+                               [&](std::size_t k) { return factor_if_quick(parts[k]); });
 }
 
 /// The coefficients of an expanded polynomial in w, lowest degree first, in one pass
@@ -152,6 +165,16 @@ std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const 
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j)
             pencil(i, j) = (potential(i, j) - w * kinetic(i, j)).to_rational(atoms);
+    std::vector<std::vector<ex>> entries(n, std::vector<ex>(n));
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            entries[i][j] = pencil(i, j);
+    if (std::optional<polynomial_by_powers> split = determinant_by_powers(entries, w)) {
+        if (split->content().is_zero())
+            return std::vector<ex>{0};
+        return signed_and_factored(split->parts(), std::nullopt, atoms, factored,
+                                   [&](std::size_t k) { return split->factored_part(k); });
+    }
     ex fraction = pencil_determinant(pencil);
     std::vector<ex> coefficients = coefficients_in(fraction.op(0).expand(), w);
     return primitive(coefficients, sign_of(fraction.op(1)), atoms, factored);
