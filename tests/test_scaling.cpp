@@ -10,6 +10,7 @@
 #include "scene_helpers.h"
 
 #include <catch2/catch.hpp>
+#include <Eigen/Dense>
 
 #include <cmath>
 #include <map>
@@ -248,6 +249,37 @@ std::string chain_with_values(int n)
 }
 
 } // namespace
+
+// The closed-form ω² of the 3-link chain with every mass and length distinct: the roots
+// of an irreducible cubic in trigonometric form. Asked for alone they come without the
+// mode vectors; the reference is the generalized eigenvalues of (V, T) at random points.
+TEST_CASE("scaling: the 3-link chain's closed-form frequencies, without mode vectors", "[scaling]")
+{
+    model scene = load(chain_scene(3) + "equilibrium q1 = 0, q2 = 0, q3 = 0\n");
+    analysis a = analyze(scene, {product::frequencies});
+    REQUIRE(a.modes);
+    REQUIRE(a.modes->closed_form);
+    REQUIRE(a.modes->frequencies.size() == 3);
+    CHECK(a.modes->modes.empty());
+    CHECK(a.modes->normal_coordinates.empty());
+    std::mt19937 random(3);
+    for (int trial = 0; trial < 3; ++trial) {
+        GiNaC::exmap at;
+        for (const parameter& parameter : scene.parameters)
+            at[parameter.symbol] = random_rational(random);
+        Eigen::Matrix3d t, v;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                t(i, j) = GiNaC::ex_to<GiNaC::numeric>(a.linearization->kinetic(i, j).subs(at).evalf()).to_double();
+                v(i, j) = GiNaC::ex_to<GiNaC::numeric>(a.linearization->potential(i, j).subs(at).evalf()).to_double();
+            }
+        Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix3d> pencil(v, t);
+        for (int k = 0; k < 3; ++k) {
+            const double w2 = GiNaC::ex_to<GiNaC::numeric>(a.modes->frequencies[k].subs(at).evalf()).to_double();
+            CHECK_THAT(w2, Catch::Matchers::WithinRel(pencil.eigenvalues()(k), 1e-10));
+        }
+    }
+}
 
 TEST_CASE("scaling: a share of the budget ends before the stage's own deadline", "[scaling][budget]")
 {

@@ -233,9 +233,13 @@ const std::vector<stage_definition>& stage_table()
                      throw computation_error("`modes` and `normal_coordinates` are not computed symbolically: " + why);
                  c.result.notes.push_back("modes and normal coordinates not computed: " + why);
              }
+             // the mode vectors only where a product shows or reads them
+             const bool vectors = c.wants(product::modes) || c.wants(product::normal_coordinates) ||
+                                  c.wants(product::asymptotic) || c.wants(product::damping);
              c.result.modes = c.result.linearization->has_gyroscopic()
                                   ? gyroscopic_modes(c.scene, *c.result.linearization, *c.result.characteristic)
-                                  : symbolic_modes(c.scene, *c.result.linearization, *c.result.characteristic);
+                                  : symbolic_modes(c.scene, *c.result.linearization, *c.result.characteristic,
+                                                   vectors);
              if (c.result.constrained)
                  name_independent_coordinates(c.scene, c.result.constrained->independent, *c.result.modes);
          }, "small oscillations", "symbolic modes"},

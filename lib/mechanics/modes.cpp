@@ -198,7 +198,7 @@ std::optional<ex> clean_normal_coordinate(const std::vector<ex>& displacements, 
 }
 
 /// Frequencies, modes and normal coordinates from T, V and the primitive
-/// characteristic coefficients.
+/// characteristic coefficients; the frequencies alone without `vectors`.
 struct closed_modes {
     bool closed_form = false;
     std::vector<ex> frequencies;
@@ -207,12 +207,19 @@ struct closed_modes {
 };
 
 closed_modes solve_modes(const std::vector<ex>& displacements, const GiNaC::matrix& kinetic,
-                         const GiNaC::matrix& potential, const std::vector<ex>& coefficients, const GiNaC::symbol& w)
+                         const GiNaC::matrix& potential, const std::vector<ex>& coefficients, const GiNaC::symbol& w,
+                         bool vectors)
 {
     closed_modes result;
     std::optional<std::vector<closed_root>> roots = closed_form_roots(coefficients, w);
     if (!roots)
         return result;
+    if (!vectors) {
+        result.closed_form = true;
+        for (const closed_root& root : *roots)
+            result.frequencies.push_back(root.root.restore(root.value));
+        return result;
+    }
     std::size_t n = kinetic.rows();
     std::vector<std::vector<ex>> modes;
     std::vector<surd> surds;
@@ -292,7 +299,7 @@ std::optional<GiNaC::exmap> ratio_substitution(const model& scene)
 } // namespace
 
 modes_result symbolic_modes(const model& scene, const linearization_result& linear,
-                            const characteristic_result& characteristic)
+                            const characteristic_result& characteristic, bool vectors)
 {
     modes_result result;
     GiNaC::possymbol w("W");
@@ -305,7 +312,7 @@ modes_result symbolic_modes(const model& scene, const linearization_result& line
     for (std::size_t i = 0; i < n; ++i)
         result.displacements.push_back(i < linear.at.size() ? scene.coordinates[i].position - linear.at[i]
                                                             : ex(scene.coordinates[i].position));
-    closed_modes plain = solve_modes(result.displacements, linear.kinetic, linear.potential, coefficients, w);
+    closed_modes plain = solve_modes(result.displacements, linear.kinetic, linear.potential, coefficients, w, vectors);
     result.closed_form = plain.closed_form;
     result.frequencies = plain.frequencies;
     result.modes = plain.modes;
@@ -319,7 +326,7 @@ modes_result symbolic_modes(const model& scene, const linearization_result& line
         for (const ex& d : result.displacements)
             displacements.push_back(d.subs(*in_ratio));
         closed_modes ratio = solve_modes(displacements, kinetic, potential,
-                                         characteristic_coefficients(kinetic, potential, w), w);
+                                         characteristic_coefficients(kinetic, potential, w), w, vectors);
         if (ratio.closed_form) {
             result.frequencies_in_ratio = ratio.frequencies;
             result.modes_in_ratio = ratio.modes;

@@ -29,8 +29,9 @@ struct modes_result {
 
 /// The roots ω² of the characteristic polynomial in closed form (every factor of
 /// degree ≤ 3 in ω²), a mode vector for each and the normal coordinates; not
-/// closed_form when some factor has a higher degree.
+/// closed_form when some factor has a higher degree. Without `vectors`, the roots
+/// alone: the mode vectors of a cubic's roots cost far more than the roots.
 modes_result symbolic_modes(const model& scene, const linearization_result& linear,
-                            const characteristic_result& characteristic);
+                            const characteristic_result& characteristic, bool vectors = true);
 
 } // namespace lagrange
