@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The results the engine returns to Python: SymPy expressions and matrices for symbolic
 products, numpy arrays for numbers, each with ``_repr_latex_`` so that Jupyter renders it."""
+import re
+
 import numpy
 import sympy
 
@@ -29,6 +31,18 @@ def _text(words):
     return "".join(out)
 
 
+_GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu",
+          "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega", "Gamma", "Delta",
+          "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi", "Omega"}
+_SHORT_NAME = re.compile(r"[A-Za-z]{1,2}[0-9]*")
+
+
+def _is_name(key):
+    """True for what reads as a symbol (theta, p_phi, w1_dot, x, F0), not a word (mass, period)."""
+    head = key.split("_", 1)[0]
+    return head in _GREEK or bool(_SHORT_NAME.fullmatch(head))
+
+
 def _label(key):
     known = {"T": "T", "V": "V", "G": "G", "C": "C", "A": "A", "B": "B", "H": "H",
              "routhian": "R", "effective_potential": r"V_{\mathrm{eff}}", "energy": "h",
@@ -37,8 +51,12 @@ def _label(key):
         return known[key]
     if "->" in key:
         left, right = (part.strip() for part in key.split("->", 1))
-        return "H_{" + latex_name(right) + latex_name(left) + "}(s)" if " " not in left else r"\text{" + _text(key) + "}"
-    return latex_name(key)
+        if _is_name(left) and _is_name(right):
+            return "H_{" + latex_name(right) + latex_name(left) + "}(s)"
+        return r"\text{" + _text(key) + "}"
+    if _is_name(key):
+        return latex_name(key)
+    return r"\text{" + _text(key.replace("_", " ")) + "}"
 
 
 class ExprList(list):
@@ -236,7 +254,7 @@ def _is_number(x):
 # JSON keys whose strings are words or names, never expressions.
 TEXT_KEYS = {"kind", "regime", "coordinates", "method", "choice", "error_basis", "evaluation", "stability",
              "quantity", "note", "notes", "scene", "stages", "state", "inputs", "momenta", "parameters",
-             "multiplier_changes_sign", "name", "variable_name", "proportional", "reason", "how"}
+             "multiplier_changes_sign", "name", "proportional", "reason", "how", "coordinate", "constraint"}
 
 
 def complex_array(pairs):
