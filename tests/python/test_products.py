@@ -251,3 +251,19 @@ def test_documents_as_the_command_line_writes_them(example):
     assert "Characteristic polynomial" in scene.document("text", want=["characteristic"])
     analysis = scene.analyze("characteristic")
     assert same(analysis["characteristic"]["polynomial"], scene.characteristic().polynomial)
+
+
+@pytest.mark.parametrize("scene_file, method", [
+    ("spherical_pendulum.lag", "conserved"), ("spherical_pendulum.lag", "hamiltonian"),
+    ("spherical_pendulum.lag", "reduced"), ("atwood_tension.lag", "multipliers"),
+    ("damped_driven_oscillator.lag", "damping"), ("damped_driven_oscillator.lag", "state_space"),
+    ("damped_driven_oscillator.lag", "transfer"), ("kapitza_pendulum.lag", "floquet"),
+    ("penning_trap.lag", "gyroscopic"), ("homework_bodies.lag", "inertia"),
+    ("free_asymmetric_top.lag", "euler"), ("ladder.lag", "eliminated"),
+    ("spherical_pendulum.lag", "verification")])
+def test_latex_of_each_product(example, scene_file, method):
+    text = getattr(example(scene_file), method)()._repr_latex_()
+    assert text.startswith("$") and text.endswith("$")
+    body = text.strip("$")
+    assert body.count("{") == body.count("}") and body.count(r"\left") == body.count(r"\right")
+    assert "\t" not in text and "_dot" not in text  # velocities print as \dot{q}
