@@ -5,7 +5,7 @@ arrays.
     >>> import lagrange
     >>> scene = lagrange.Scene.from_file("examples/double_pendulum.lag")
     >>> scene.characteristic().polynomial
-    M*g**2 + M*l**2*omega**4 - 2*M*g*l*omega**2 + ...
+    M*l**2*omega**4 + g**2*(M + m) - g*l*omega**2*(2*M + 2*m)
 
 See docs/python.md.
 """
