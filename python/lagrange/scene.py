@@ -7,6 +7,7 @@ import numpy
 import sympy
 
 from . import _lagrange
+from .errors import ComputationError
 from .results import (Characteristic, Converter, Equations, EquationsOf, ExprDict, ExprList, Modes, Result, ResultList, _text, complex_array)
 
 
@@ -125,7 +126,6 @@ class Scene:
         c = self._converter(doc)
         missing = [k for k in keys if k not in doc and k not in optional]
         if missing:
-            from .errors import ComputationError
             notes = "; ".join(doc.get("notes", []))
             raise ComputationError(f"the engine gave no {', '.join(missing)} for `{product}`"
                                    + (f" ({notes})" if notes else ""))
