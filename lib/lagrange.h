@@ -7,8 +7,11 @@
  *  lagrange::write_text(std::cout, result);                // or write_latex, write_json
  *  @endcode
  *  Errors: scene_error (bad input, with file, line and column; format_error prints
- *  it), computation_error and budget_exceeded (core/errors.h, algebra/budget.h). */
+ *  it), computation_error and budget_exceeded (core/errors.h, algebra/budget.h).
+ *  The version: LAGRANGE_VERSION_MAJOR, _MINOR, _PATCH and _STRING (<lagrange/version.h>). */
 #pragma once
+
+#include <lagrange/version.h>
 
 #include "engine/analysis.h"
 #include "output/document.h"

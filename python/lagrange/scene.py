@@ -1,0 +1,366 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Scene: a loaded scene file, and one method per product of the engine."""
+import json
+import os
+
+import numpy
+import sympy
+
+from . import _lagrange
+from .errors import ComputationError
+from .results import (Characteristic, Converter, Equations, EquationsOf, ExprDict, ExprList, Modes, Result, ResultList, _text, complex_array)
+
+
+def _number(value):
+    """A value as the scene language reads it: numbers round-trip (repr), expressions in
+    SymPy's syntax get ``^`` for powers."""
+    if isinstance(value, bool):
+        raise TypeError("a value must be a number or an expression, not a bool")
+    if isinstance(value, (int, numpy.integer)):
+        return str(int(value))
+    if isinstance(value, (float, numpy.floating)):
+        return repr(float(value))
+    return str(value).replace("**", "^")
+
+
+def _values_lines(values):
+    """`values` points as the engine reads them ("a=1,b=2"): from a dict, a string, or a
+    list of either (several points)."""
+    if values is None:
+        return []
+    if isinstance(values, (str, dict)):
+        values = [values]
+    lines = []
+    for point in values:
+        if isinstance(point, str):
+            lines.append(point)
+        else:
+            lines.append(",".join(f"{name}={_number(v)}" for name, v in point.items()))
+    return lines
+
+
+class Scene:
+    """A scene, parsed and checked. Each product method runs the engine in this process
+    (only the stages the product needs) and returns SymPy expressions and numpy arrays;
+    results are kept, so asking twice costs nothing.
+
+    Errors: SceneError (bad input, with .file .line .column .message) when loading or for
+    bad values; ComputationError when a product cannot be computed."""
+
+    def __init__(self, model):
+        self._model = model
+        self._documents = {}
+
+    # ---- loading -------------------------------------------------------------------
+    @classmethod
+    def from_file(cls, path):
+        """Loads a scene file; `use "x.rules"` lines are read relative to its folder."""
+        path = os.fspath(path)
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        return cls(_lagrange.load(path, text))
+
+    @classmethod
+    def from_text(cls, text, name="<text>"):
+        """Loads a scene from a string; `name` is the file name errors give."""
+        return cls(_lagrange.load(name, text))
+
+    # ---- what the scene declares -----------------------------------------------------
+    @property
+    def title(self):
+        return self._model.title
+
+    @property
+    def file(self):
+        return self._model.file
+
+    @property
+    def coordinates(self):
+        """Coordinate names, in declared order."""
+        return list(self._model.coordinates)
+
+    @property
+    def parameters(self):
+        """Parameter names, in declared order."""
+        return list(self._model.parameters)
+
+    def __repr__(self):
+        return f"Scene({self.title or self.file!r}, coordinates={self.coordinates}, parameters={self.parameters})"
+
+    # ---- the engine --------------------------------------------------------------------
+    def document(self, format="text", want=(), values=None, timings=False, **settings):
+        """The whole document as the command line writes it: ``format`` is "text", "latex"
+        (a complete LaTeX document) or "json"; ``want`` a list of items (empty: the scene's
+        `want` line or everything it supports). ``settings``: until, method, tolerance,
+        estimate_error, native, max_terms, max_seconds (as the command-line options)."""
+        if isinstance(want, str):
+            want = [want]
+        return self._model.document(format, want=list(want), values=_values_lines(values), timings=timings,
+                                    **settings)
+
+    def analyze(self, *want, values=None, **settings):
+        """The JSON document of the products `want` (every product the scene supports if
+        none), as a dict with its expressions converted: SymPy for strings, numpy for
+        numbers. The product methods below pick their parts out of it."""
+        return self._convert(self._json(want, values, settings))
+
+    def _json(self, want, values=None, settings=None):
+        settings = dict(settings or {})
+        key = (tuple(want), tuple(_values_lines(values)), tuple(sorted(settings.items())))
+        if key not in self._documents:
+            text = self.document("json", want=list(want), values=values, **settings)
+            self._documents[key] = json.loads(text)
+        return self._documents[key]
+
+    def _converter(self, doc):
+        names = list(doc.get("coordinates", [])) + list(doc.get("parameters", []))
+        return Converter(names)
+
+    def _convert(self, doc):
+        c = self._converter(doc)
+        return {k: (v if k in ("scene", "coordinates", "parameters", "stages", "notes", "timings")
+                    else c.value(v, k)) for k, v in doc.items()}
+
+    def _parts(self, product, keys, values=None, settings=None, optional=()):
+        doc = self._json((product,), values, settings)
+        c = self._converter(doc)
+        missing = [k for k in keys if k not in doc and k not in optional]
+        if missing:
+            notes = "; ".join(doc.get("notes", []))
+            raise ComputationError(f"the engine gave no {', '.join(missing)} for `{product}`"
+                                   + (f" ({notes})" if notes else ""))
+        return doc, c
+
+    # ---- products ----------------------------------------------------------------------
+    def equations(self):
+        """The Euler–Lagrange equations, one SymPy expression per coordinate, each = 0
+        (``theta_ddot``, ``theta_dot`` are the acceleration and velocity symbols)."""
+        doc, c = self._parts("equations", ["equations"])
+        return ExprList(c.exprs(doc["equations"]), equals_zero=True)
+
+    def lagrangian(self):
+        """L = T − V (with ``kinetic_energy`` and ``potential_energy`` when the scene has them)."""
+        doc, c = self._parts("equations", ["lagrangian"])
+        return Result("lagrangian", {k: c.expr(doc[k]) for k in ("lagrangian", "kinetic_energy", "potential_energy")
+                                     if k in doc}, doc)
+
+    def equilibrium(self):
+        """The equilibrium point ``{coordinate: expr}`` and its ``stability``."""
+        doc, c = self._parts("equilibrium", ["equilibrium"])
+        parts = {"equilibrium": ExprDict({k: c.expr(v) for k, v in doc["equilibrium"].items()})}
+        if "stability" in doc:
+            parts["stability"] = doc["stability"]
+        return Result("equilibrium", parts, doc)
+
+    def linearization(self):
+        """The matrices ``T`` and ``V`` (SymPy) of the small oscillations at the equilibrium;
+        ``G`` (gyroscopic) and ``C`` (damping) too when the scene has them."""
+        doc, c = self._parts("linearization", ["T", "V"])
+        parts = {k: c.matrix(doc[k]) for k in ("T", "V") if k in doc}
+        for key, name in (("gyroscopic", "G"), ("damping", "C")):
+            if key in doc:
+                parts[name] = c.matrix(doc[key])
+        return Result("linearization", parts, doc)
+
+    def characteristic(self):
+        """The characteristic polynomial det(V − ω²T) made primitive: ``.polynomial`` (SymPy)
+        in ``.variable`` (the symbol omega)."""
+        doc, c = self._parts("characteristic", ["characteristic"])
+        ch = doc["characteristic"]
+        return Characteristic("characteristic", {"polynomial": c.expr(ch["polynomial"]),
+                                         "variable": c.expr(ch["variable"])}, doc)
+
+    def frequencies(self):
+        """ω² of each mode (ω itself where the scene is gyroscopic), SymPy, ascending where
+        the order is known."""
+        doc, c = self._parts("frequencies", ["frequencies"])
+        label = r"\omega_{{{i}}}" if "gyroscopic" in doc else r"\omega_{{{i}}}^{{2}}"
+        return ExprList(c.exprs(doc["frequencies"]), label=label)
+
+    def modes(self):
+        """The mode vectors, one SymPy column Matrix per mode, in the order of the frequencies."""
+        doc, c = self._parts("modes", ["modes"])
+        return Modes([sympy.Matrix(c.exprs(m)) for m in doc["modes"]])
+
+    def normal_coordinates(self):
+        """ζ of each mode as a combination of the coordinates (SymPy)."""
+        doc, c = self._parts("normal_coordinates", ["normal_coordinates"])
+        return ExprList(c.exprs(doc["normal_coordinates"]), label=r"\zeta_{{{i}}}")
+
+    def asymptotic(self):
+        """Frequencies and modes in each `limit` of the scene: ``{"rho -> 0": Result}``."""
+        doc, c = self._parts("asymptotic", ["asymptotic"])
+        return ExprDict({limit: Result("asymptotic", c.value(v), v) for limit, v in doc["asymptotic"].items()})
+
+    def numeric(self, values=None, **settings):
+        """Frequencies and modes at parameter values: one Result per point with ``values``
+        (dict), ``omega`` (ascending, numpy), ``modes`` (numpy; mode i is ``modes[i]``,
+        normalized so that Aᵀ T A = I), ``error`` (estimated relative error of each ω) and,
+        with damping, ``eigenvalues`` (complex numpy) and ``damping_ratio``. ``values``: a
+        dict ``{"m": 1, ...}``, a string "m=1,l=2" or a list of them (several points); they
+        replace the scene's `values` lines."""
+        doc, c = self._parts("numeric", ["numeric"], values, settings)
+        points = []
+        for p in doc["numeric"]:
+            parts = {}
+            for k, v in p.items():
+                if k == "eigenvalues":
+                    parts[k] = complex_array(v)
+                elif k == "values":
+                    parts[k] = {name: c.value(x) for name, x in v.items()}
+                else:
+                    parts[k] = c.value(v, k)
+            points.append(Result("numeric", parts, p))
+        return ResultList(points)
+
+    def simulate(self, until=None, method=None, tolerance=None, values=None, estimate_error=True, native=True,
+                 **settings):
+        """Integrates the equations of motion from the scene's `initial` state: ``t`` (numpy),
+        ``states`` ({name: numpy array}: each coordinate, then each ``q_dot``), ``y`` (all
+        states as columns, in that order), ``method``, ``steps``, ``invariants`` and the rest
+        of the JSON `simulation` object. ``until``, ``method``, ``tolerance`` override the
+        scene's `simulate` line."""
+        settings = dict(settings, until=until, method=method, tolerance=tolerance, estimate_error=estimate_error,
+                        native=native)
+        settings = {k: v for k, v in settings.items() if v is not None}
+        doc, c = self._parts("simulation", ["simulation"], values, settings)
+        s = doc["simulation"]
+        parts = {}
+        for k, v in s.items():
+            if k == "t":
+                parts[k] = numpy.array(v, dtype=float)
+            elif k == "states":
+                parts[k] = {name: numpy.array(col, dtype=float) for name, col in v.items()}
+            else:
+                parts[k] = c.value(v, k)
+        parts["y"] = numpy.column_stack(list(parts["states"].values())) if parts.get("states") else numpy.zeros((0, 0))
+        return Simulation("simulation", parts, s)
+
+    def workprecision(self, values=None, **settings):
+        """Error against run time of every method over a ladder of tolerances."""
+        doc, c = self._parts("workprecision", ["workprecision"], values, settings)
+        return Result("workprecision", c.value(doc["workprecision"]), doc["workprecision"])
+
+    def inertia(self):
+        """Per body: ``tensor`` (SymPy Matrix), ``principal`` moments and ``mass``."""
+        doc, c = self._parts("inertia", ["inertia"])
+        return ExprDict({body: Result("inertia", c.value(v), v) for body, v in doc["inertia"].items()})
+
+    def euler(self):
+        """Per free body: Euler's ``equations`` (each = 0, in w1 w2 w3 and w1_dot ...) and
+        their closed-form ``solution`` where one exists."""
+        doc, c = self._parts("euler", ["euler"])
+        out = {}
+        for body, v in doc["euler"].items():
+            parts = c.value(v)
+            if "equations" in parts:
+                parts["equations"] = ExprList(c.exprs(v["equations"]), equals_zero=True)
+            out[body] = Result("euler", parts, v)
+        return ExprDict(out)
+
+    def conserved(self):
+        """The energy function ``energy`` (when ∂L/∂t = 0) and the momentum ``p_q`` of each
+        cyclic coordinate: ``{name: expr}``."""
+        doc, c = self._parts("conserved", ["conserved"])
+        return ExprDict({k: c.value(v) for k, v in doc["conserved"].items()})
+
+    def hamiltonian(self):
+        """``H`` in the coordinates and momenta p_q (``momenta``), and Hamilton's
+        ``equations`` as SymPy equations (``Eq(theta_dot, p_theta/(l**2*m))``, …)."""
+        doc, c = self._parts("hamiltonian", ["hamiltonian"])
+        h = doc["hamiltonian"]
+        parts = {}
+        for k, v in h.items():
+            if k == "equations":
+                parts[k] = Equations([sympy.Eq(*(c.expr(side) for side in e.split("=", 1))) for e in v])
+            else:
+                parts[k] = c.value(v, k)
+        return Result("hamiltonian", parts, h)
+
+    def reduced(self):
+        """Routh's reduction: ``routhian``, ``effective_potential`` and the ``momenta`` held fixed."""
+        doc, c = self._parts("reduced", ["reduced"])
+        return Result("reduced", c.value(doc["reduced"]), doc["reduced"])
+
+    def multipliers(self):
+        """Each constraint's multiplier ``{lambda_NAME: expr}``; ``constraint_forces`` with them."""
+        doc, c = self._parts("multipliers", ["multipliers"], optional=("constraint_forces",))
+        parts = {"multipliers": ExprDict({k: c.value(v) for k, v in doc["multipliers"].items()})}
+        if "constraint_forces" in doc:
+            parts["constraint_forces"] = c.value(doc["constraint_forces"])
+        return Result("multipliers", parts, doc)
+
+    def eliminated(self):
+        """The equations of the coordinates kept after eliminating solvable constraints."""
+        doc, c = self._parts("eliminated", ["eliminated"])
+        return EquationsOf({k: c.expr(v) for k, v in doc["eliminated"].items()})
+
+    def damping(self):
+        """The damping matrix ``C`` at the equilibrium (with ``T`` and ``V``)."""
+        doc, c = self._parts("damping", ["damping"])
+        parts = {"C": c.matrix(doc["damping"])}
+        parts.update({k: c.matrix(doc[k]) for k in ("T", "V") if k in doc})
+        return Result("damping", parts, doc)
+
+    def gyroscopic(self):
+        """The gyroscopic matrix ``G`` at the equilibrium (antisymmetric), with ``T`` and ``V``."""
+        doc, c = self._parts("linearization", ["gyroscopic"])
+        parts = {"G": c.matrix(doc["gyroscopic"])}
+        parts.update({k: c.matrix(doc[k]) for k in ("T", "V") if k in doc})
+        return Result("gyroscopic", parts, doc)
+
+    def state_space(self, values=None):
+        """ẋ = A x + B u at the equilibrium: ``state``, ``inputs`` (names), ``A``, ``B`` (SymPy)."""
+        doc, c = self._parts("state_space", ["state_space"], values)
+        s = doc["state_space"]
+        parts = {}
+        for k, v in s.items():
+            if k in ("A", "B"):
+                parts[k] = c.matrix(v)
+            elif k in ("state", "inputs"):
+                parts[k] = list(v)
+            else:
+                parts[k] = c.value(v, k)
+        return Result("state_space", parts, s)
+
+    def transfer(self):
+        """The Laplace transfer function of each input to each coordinate: ``{"u -> q": H(s)}``."""
+        doc, c = self._parts("transfer", ["transfer"])
+        return ExprDict({k: c.expr(v) for k, v in doc["transfer"].items()})
+
+    def floquet(self, values=None, **settings):
+        """Per `values` point: ``period``, Floquet ``multipliers`` (complex numpy) and ``stable``."""
+        doc, c = self._parts("floquet", ["floquet"], values, settings)
+        points = []
+        for p in doc["floquet"]:
+            parts = {k: (complex_array(v) if k == "multipliers" else c.value(v, k)) for k, v in p.items()}
+            points.append(Result("floquet", parts, p))
+        return ResultList(points)
+
+    def verification(self, *want):
+        """How each symbolic result of the products `want` (all the scene supports if none)
+        was checked numerically: ``{item: "how"}``."""
+        doc = self._json(want)
+        return VerificationResult(doc.get("verification", {}))
+
+
+class Simulation(Result):
+    """A simulation: ``t``, ``states``, ``y`` and the JSON `simulation` object's other parts."""
+
+    def _repr_latex_(self):
+        t = self._parts.get("t")
+        span = f"t \\in [{t[0]:g}, {t[-1]:g}]" if t is not None and len(t) else ""
+        lines = [r"\text{method} &: \text{" + _text(self._parts.get("method", "")) + "}",
+                 r"\text{steps} &= " + str(self._parts.get("steps", "")), r"\text{output} &: " + span
+                 + r",\ " + str(len(t) if t is not None else 0) + r"\ \text{times}"]
+        for name, drift in (self._parts.get("invariants") or {}).items():
+            lines.append(r"\text{" + _text(name) + "} &= " + f"{drift:.3g}")
+        return "$$\\begin{aligned}" + " \\\\ ".join(lines) + "\\end{aligned}$$"
+
+
+class VerificationResult(dict):
+    """``{item: how it was checked}``, rendered as text."""
+
+    def _repr_latex_(self):
+        lines = [r"\text{" + _text(k) + r"} &: \text{" + _text(v) + "}" for k, v in self.items()]
+        return "$$\\begin{aligned}" + " \\\\ ".join(lines) + "\\end{aligned}$$"
