@@ -281,4 +281,17 @@ TEST_CASE("verification of bodies: a wrong Euler equation term and wrong solutio
     wrong_top = *b.euler;
     std::swap(wrong_top[0].stability[0], wrong_top[0].stability[1]);
     require_caught(top, input, "Euler's equations", "the rotation about axis 1");
+
+    // Body axes that are not principal: the equations in principal axes are checked too.
+    model tilted = load("parameters rho0 a b c\nbody Q region box(a, b, c) density rho0*(1 + x*y/(a*b))\n"
+                        "omega Q (w1, w2, w3)\n");
+    analysis c = analyze(tilted, {product::inertia, product::euler});
+    REQUIRE(c.euler);
+    REQUIRE(c.euler->at(0).principal_equations.size() == 3);
+    input = verification_input_of(c);
+    CHECK_NOTHROW(verify_results(tilted, input, {product::euler}));
+    std::vector<euler_result> wrong_tilted = *c.euler;
+    wrong_tilted[0].principal_equations[2] = flip_one_term(wrong_tilted[0].principal_equations[2]);
+    input.euler = &wrong_tilted;
+    require_caught(tilted, input, "Euler's equations", "the principal-axes equation of w3_dot of body Q");
 }

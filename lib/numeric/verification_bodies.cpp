@@ -730,6 +730,7 @@ std::vector<verification_entry> verify_bodies(const model& scene, const std::vec
     // Per body: the references at the points used.
     std::map<std::string, std::vector<std::pair<const body_point*, checked_body>>> checked;
     std::size_t used_points = 0, given = 0, integrated = 0;
+    std::vector<std::string> unusable; ///< bodies with no usable point
     for (const inertia_result& in : *inertia) {
         const rigid_body* body = body_named(scene, in.body);
         if (!body)
@@ -745,35 +746,41 @@ std::vector<verification_entry> verify_bodies(const model& scene, const std::vec
             checked[in.body].push_back({&points[k], result});
             ++used;
         }
-        if (used == 0) {
-            entries.push_back({"inertia",
-                               "not checked: the dimensions, mass or density of body " + in.body +
-                                   " are not real numbers at any parameter point tried",
-                               false});
-            return entries;
-        }
+        if (used == 0)
+            unusable.push_back(in.body);
         used_points = std::max(used_points, used);
     }
-    std::string how = "mass, centre of mass, the integrals, the tensor, principal moments (against its eigenvalues, "
-                      "Eigen) and axes, L and T against ";
-    if (integrated)
-        how += "tensor-product Gauss–Legendre cubature of the density over the region";
-    if (integrated && given)
-        how += ", or ";
-    if (given)
-        how += "the parallel-axis shift of the numbers given";
-    how += " at " + std::to_string(used_points) + " parameter points";
-    entries.push_back({"inertia", how, true});
-
+    if (!unusable.empty()) {
+        std::string names;
+        for (const std::string& name : unusable)
+            names += (names.empty() ? "" : ", ") + name;
+        entries.push_back({"inertia",
+                           "not checked: the dimensions, mass or density of body " + names +
+                               " are not real numbers at any parameter point tried",
+                           false});
+    } else {
+        std::string how = "mass, centre of mass, the integrals, the tensor, principal moments (against its "
+                          "eigenvalues, Eigen) and axes, L and T against ";
+        if (integrated)
+            how += "tensor-product Gauss–Legendre cubature of the density over the region";
+        if (integrated && given)
+            how += ", or ";
+        if (given)
+            how += "the parallel-axis shift of the numbers given";
+        how += " at " + std::to_string(used_points) + " parameter points";
+        entries.push_back({"inertia", how, true});
+    }
     if (!euler || euler->empty())
         return entries;
-    bool solution = false;
+    bool solution = false, every_body = true;
     sampler random(0x65756c6572ULL); // "euler"
     for (const euler_result& e : *euler) {
         const rigid_body* body = body_named(scene, e.body);
         auto found = checked.find(e.body);
-        if (!body || found == checked.end())
+        if (!body || found == checked.end()) {
+            every_body = false;
             continue;
+        }
         const inertia_result* in = nullptr;
         for (const inertia_result& candidate : *inertia)
             if (candidate.body == e.body)
@@ -783,6 +790,10 @@ std::vector<verification_entry> verify_bodies(const model& scene, const std::vec
             check_euler(scene, *body, *in, e, reference, *point, first_values_point, random);
         }
         solution = solution || e.symmetric || e.elliptic;
+    }
+    if (!every_body) {
+        entries.push_back({"euler", "not checked: the inertia of a free body could not be evaluated", false});
+        return entries;
     }
     entries.push_back({"euler",
                        std::string("I ω̇ + ω × I ω − N formed numerically from the checked tensor at seeded random ω, ω̇, t") +
