@@ -19,7 +19,7 @@ TEST_CASE("bodies output: the spec's inertia and euler keys", "[bodies][cli]")
     cli_result r = run_cli(examples + "free_asymmetric_top.lag --format json");
     REQUIRE(r.exit_code == 0);
     nlohmann::json doc = nlohmann::json::parse(r.out);
-    CHECK(doc["stages"] == nlohmann::json::array({"inertia", "euler"}));
+    CHECK(doc["stages"] == nlohmann::json::array({"inertia", "euler", "verification"}));
     const nlohmann::json& body = doc["inertia"]["X"];
     CHECK(body["tensor"].size() == 3);
     CHECK(body["tensor"][0][0] == "1/12*M*b^2+1/12*M*c^2");

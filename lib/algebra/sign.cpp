@@ -160,7 +160,10 @@ std::optional<int> sign_at(const GiNaC::ex& e, const GiNaC::exmap& values)
         return 1;
     if ((-n).info(GiNaC::info_flags::positive))
         return -1;
-    if (std::optional<double> x = number_at(n, values)) {
+    // At numbers, e itself and not its factored form: GiNaC's factor() may rewrite a
+    // square root √X as ±i·√(−X) on the wrong branch, with a sign that follows the term
+    // order (so the memory layout); the stability of a free body's rotation came out wrong.
+    if (std::optional<double> x = number_at(e, values)) {
         if (std::abs(*x) < 1e-14 * (1 + std::abs(*x)))
             return 0;
         return *x > 0 ? 1 : -1;

@@ -349,7 +349,8 @@ const std::vector<stage_definition>& stage_table()
              }
          }, "simulation", ""},
         // Last: checks numerically whatever symbolic results the stages above computed.
-        {"verification", {}, every_product, {}, has_coordinates,
+        {"verification", {}, every_product, {},
+         [](const model& scene) { return !scene.coordinates.empty() || !scene.bodies.empty(); },
          [](stage_context& c) {
              c.result.verification = verify_results(c.scene, verification_input_of(c.result), c.result.wanted);
          }, "", ""},
@@ -379,6 +380,8 @@ verification_input verification_input_of(const analysis& r)
     input.constrained = r.constrained ? &*r.constrained : nullptr;
     input.asymptotic = r.asymptotic ? &*r.asymptotic : nullptr;
     input.floquet = r.floquet ? &*r.floquet : nullptr;
+    input.inertia = r.inertia ? &*r.inertia : nullptr;
+    input.euler = r.euler ? &*r.euler : nullptr;
     return input;
 }
 

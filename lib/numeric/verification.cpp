@@ -1,6 +1,7 @@
 /** @file verification.cpp
  *  Numeric checks of the symbolic results against the Lagrangian as built. */
 #include "numeric/verification.h"
+#include "numeric/verification_bodies.h"
 #include "numeric/verification_constraints.h"
 
 #include "numeric/double_double.h"
@@ -852,6 +853,7 @@ verification_result verify_results(const model& scene, const verification_input&
                                    const std::set<product>& shown)
 {
     verification_result result;
+    result.entries = verify_bodies(scene, input.inertia, input.euler);
     if (!input.lagrangian || scene.coordinates.empty())
         return result;
     checker c(scene, *input.lagrangian);

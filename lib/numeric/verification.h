@@ -6,6 +6,8 @@
  *  seeded, so the checks (and their messages) are the same on every run. */
 #pragma once
 
+#include "bodies/euler.h"
+#include "bodies/inertia.h"
 #include "core/model.h"
 #include "mechanics/asymptotic.h"
 #include "numeric/floquet.h"
@@ -58,6 +60,8 @@ struct verification_input {
     const constrained_linearization* constrained = nullptr; ///< then `linearization` is the reduced one
     const asymptotic_result* asymptotic = nullptr;
     const std::vector<floquet_point>* floquet = nullptr;
+    const std::vector<inertia_result>* inertia = nullptr; ///< with `euler`: verification_bodies.h
+    const std::vector<euler_result>* euler = nullptr;
 };
 
 /// Checks every result given (`shown`: the products printed, which name the entries of
