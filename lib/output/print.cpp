@@ -1051,13 +1051,4 @@ std::string print_name(const std::string& name, syntax s)
     return out;
 }
 
-std::string round_trip(double x)
-{
-    if (x == 0)
-        x = 0; // no −0
-    char buffer[64];
-    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return error == std::errc() ? std::string(buffer, end) : std::string("?");
-}
-
 } // namespace lagrange

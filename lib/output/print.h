@@ -3,6 +3,8 @@
  *  can change from run to run; these printers order terms and factors themselves. */
 #pragma once
 
+#include "core/number_text.h"
+
 #include <ginac/ginac.h>
 
 #include <string>
@@ -38,9 +40,5 @@ std::vector<std::string> print_terms(const GiNaC::ex& e, syntax s, const term_or
 /// How a symbol name prints: `theta_dot` -> "θ̇" / "\dot{\theta}", `theta1` ->
 /// "θ1" / "\theta_{1}", `l_2` -> "l_{2}", `M` -> "M", `omega` -> "\omega".
 std::string print_name(const std::string& name, syntax s);
-
-/// The shortest decimal that reads back as the same double (`std::to_chars`): "9.81",
-/// "1e-14"; zero as "0", never "-0". For numbers printed as data (JSON, tables, CSV).
-std::string round_trip(double x);
 
 } // namespace lagrange
