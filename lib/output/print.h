@@ -3,6 +3,7 @@
  *  can change from run to run; these printers order terms and factors themselves. */
 #pragma once
 
+#include "algebra/sorted_terms.h"
 #include "core/number_text.h"
 
 #include <ginac/ginac.h>
@@ -16,15 +17,6 @@ enum class syntax {
     plain, ///< GiNaC's plain syntax (`^` powers, `q_dot`); used in JSON
     text,  ///< for people: Greek letters, dots over velocities (Unicode)
     latex, ///< LaTeX math: \dot{\theta}, \theta_{1}, no 1.5E-20 floats
-};
-
-/// How to order the terms of a sum: groups of symbols in priority order. Terms
-/// are sorted by their total degree in the first group (descending), then by their
-/// exponent vector in that group (lexicographic, descending), then the next group,
-/// and finally by their printed form. Example: {{theta_ddot, phi_ddot},
-/// {theta_dot, phi_dot}} puts accelerations first, then velocities, then the rest.
-struct term_order {
-    std::vector<std::vector<GiNaC::ex>> groups;
 };
 
 /// Prints `e`. Factors of a product are ordered by their printed form (numeric
