@@ -1,7 +1,7 @@
-/** @file bodies.cpp
+/** @file bodies_output.cpp
  *  Printers of inertia tensors (with the integrals they come from), Euler's equations,
  *  their torque-free solutions, Poinsot's construction and the stability of rotations. */
-#include "output/bodies.h"
+#include "output/bodies_output.h"
 
 #include "output/print.h"
 
