@@ -111,18 +111,22 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
     if (result.lagrangian) {
         const lagrangian_result& l = *result.lagrangian;
         out << "\\subsection*{Lagrangian}\n";
+        std::vector<latex_row> rows;
         if (l.split) {
-            out << latex_equation("T", print_terms(l.kinetic, syntax::latex, velocity_order(scene)), "");
+            rows.push_back({"T", print_terms(l.kinetic, syntax::latex, velocity_order(scene))});
             if (!l.gyroscopic.is_zero())
-                out << latex_equation("L_1", print_terms(l.gyroscopic, syntax::latex, velocity_order(scene)), "");
-            out << latex_equation("V", print_terms(l.potential, syntax::latex), "");
+                rows.push_back({"L_1", print_terms(l.gyroscopic, syntax::latex, velocity_order(scene))});
+            rows.push_back({"V", print_terms(l.potential, syntax::latex)});
         }
-        out << latex_equation("L", print_terms(l.lagrangian, syntax::latex, velocity_order(scene)), "");
+        rows.push_back({"L", print_terms(l.lagrangian, syntax::latex, velocity_order(scene))});
+        out << latex_equations(rows);
     }
     if (result.equations && result.equations->residuals) {
         out << "\\subsection*{Equations of motion}\n";
+        std::vector<latex_row> rows;
         for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
-            out << latex_equation("", print_terms((*result.equations->residuals)[i], syntax::latex, equation_order(scene)), " = 0");
+            rows.push_back({"", print_terms((*result.equations->residuals)[i], syntax::latex, equation_order(scene)), " = 0"});
+        out << latex_equations(rows);
     }
     write_constraints_latex(out, result);
     write_oscillations_latex(out, result);

@@ -14,6 +14,10 @@ namespace lagrange {
 
 namespace {
 
+/// Parentheses that grow with what they hold in LaTeX (a fraction, a square root).
+std::string open_parenthesis(syntax s) { return s == syntax::latex ? "\\left(" : "("; }
+std::string close_parenthesis(syntax s) { return s == syntax::latex ? "\\right)" : ")"; }
+
 /// `coordinate = value` pairs of a point, in coordinate order.
 std::string position_text(const model& scene, const std::vector<GiNaC::ex>& position, syntax s)
 {
@@ -25,10 +29,10 @@ std::string position_text(const model& scene, const std::vector<GiNaC::ex>& posi
 
 std::string vector_text(const std::vector<GiNaC::ex>& v, syntax s)
 {
-    std::string out = "(";
+    std::string out = s == syntax::latex ? "\\left(" : "(";
     for (std::size_t i = 0; i < v.size(); ++i)
         out += (i ? ", " : "") + print(v[i], s);
-    return out + ")";
+    return out + (s == syntax::latex ? "\\right)" : ")");
 }
 
 /// An asymptotic ω² in series order: "(1 - √ρ)·g/l" from {g/l, 1, -√ρ}; the leading
@@ -50,7 +54,7 @@ std::string series_text(const std::vector<GiNaC::ex>& series, syntax s)
     if (series[0].is_equal(1))
         return inner;
     std::string times = s == syntax::text ? "·" : s == syntax::latex ? " " : "*";
-    return "(" + inner + ")" + times + print(series[0], s);
+    return open_parenthesis(s) + inner + close_parenthesis(s) + times + print(series[0], s);
 }
 
 /// A normal coordinate ζ = scale·(q1 + c2·q2 + …) as "scale·(q1 + c2·q2 + …)": the
@@ -85,7 +89,7 @@ std::string normal_coordinate_text(const GiNaC::ex& zeta, const model& scene, sy
     if (flip)
         scale = -scale;
     std::string times = s == syntax::text ? "·" : s == syntax::latex ? " " : "*";
-    std::string inner = "(" + (flip ? minus : plus) + ")";
+    std::string inner = open_parenthesis(s) + (flip ? minus : plus) + close_parenthesis(s);
     if (scale.is_equal(-1))
         return "-" + inner;
     return print(scale, s) + times + inner;
@@ -246,12 +250,21 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
             out << "\\item $" << position_text(scene, p.position, s) << "$: " << to_string(p.kind) << "\n";
         out << "\\end{itemize}\n";
     }
-    if (result.linearization)
-        out << "\\subsection*{Linearization}\n\\begin{align*}\nT &= " << latex_matrix(result.linearization->kinetic)
-            << ", & V &= " << latex_matrix(result.linearization->potential)
-            << (result.linearization->has_gyroscopic() ? ", & G &= " + latex_matrix(result.linearization->gyroscopic)
-                                                       : std::string())
-            << "\n\\end{align*}\n";
+    if (result.linearization) {
+        // T and V (and G) side by side when they fit on a line, else one below the other.
+        const linearization_result& l = *result.linearization;
+        std::vector<latex_row> rows{{"T", {latex_matrix(l.kinetic)}}, {"V", {latex_matrix(l.potential)}}};
+        if (l.has_gyroscopic())
+            rows.push_back({"G", {latex_matrix(l.gyroscopic)}});
+        std::string side_by_side;
+        for (const latex_row& r : rows)
+            side_by_side += (side_by_side.empty() ? "" : ", & ") + r.lhs + " &= " + r.terms[0];
+        out << "\\subsection*{Linearization}\n";
+        if (latex_math_width(side_by_side) <= 50) // align*'s gap between the pairs is wide
+            out << "\\begin{align*}\n" << side_by_side << "\n\\end{align*}\n";
+        else
+            out << latex_equations(rows);
+    }
     if (result.characteristic)
         out << "\\subsection*{Characteristic polynomial}\n"
             << latex_equation("", print_terms(result.characteristic->polynomial, s, omega_order(result)), " = 0");
@@ -264,35 +277,40 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
         out << "\\subsection*{Normal modes}\n";
         if (modes_are_undamped(result))
             out << "These are the modes of the undamped system ($C = 0$); the damping is below.\n\n";
+        std::vector<latex_row> rows;
         for (std::size_t k = 0; k < m.frequencies.size(); ++k) {
-            out << latex_equation(w2 + index(k), print_terms(m.frequencies[k], s), "");
+            rows.push_back({w2 + index(k), print_terms(m.frequencies[k], s)});
             if (k < m.modes.size())
-                out << latex_equation("a" + index(k), {vector_text(m.modes[k], s)}, "");
+                rows.push_back({"a" + index(k), {vector_text(m.modes[k], s)}});
         }
         for (std::size_t k = 0; k < m.normal_coordinates.size(); ++k)
-            out << latex_equation("\\zeta" + index(k), {normal_coordinate_text(m.normal_coordinates[k], scene, s)}, "");
+            rows.push_back({"\\zeta" + index(k), {normal_coordinate_text(m.normal_coordinates[k], scene, s)}});
+        out << latex_equations(rows);
         if (scene.ratio && !m.frequencies_in_ratio.empty()) {
             out << "With $" << print_name(scene.ratio->name, s) << " = " << print(scene.ratio->definition, s) << "$:\n";
+            std::vector<latex_row> in_ratio;
             for (std::size_t k = 0; k < m.frequencies_in_ratio.size(); ++k)
-                out << latex_equation(w2 + index(k), print_terms(m.frequencies_in_ratio[k], s), "");
+                in_ratio.push_back({w2 + index(k), print_terms(m.frequencies_in_ratio[k], s)});
+            out << latex_equations(in_ratio);
         }
     }
     if (result.asymptotic) {
         const asymptotic_result& a = *result.asymptotic;
         out << "\\subsection*{Asymptotic behaviour}\n";
+        std::vector<latex_row> rows;
         for (std::size_t k = 0; k < a.frequencies.size(); ++k)
-            out << latex_equation(w2 + index(k),
-                                 k < a.frequency_series.size() ? std::vector<std::string>{series_text(a.frequency_series[k], s)}
-                                                               : print_terms(a.frequencies[k], s),
-                                 "", "\\to");
+            rows.push_back({w2 + index(k),
+                            k < a.frequency_series.size() ? std::vector<std::string>{series_text(a.frequency_series[k], s)}
+                                                          : print_terms(a.frequencies[k], s),
+                            "", "\\to"});
         for (std::size_t k = 0; k < a.normal_coordinates.size(); ++k)
-            out << latex_equation("\\zeta" + index(k), {normal_coordinate_text(a.normal_coordinates[k], scene, s)}, "",
-                                 "\\to");
+            rows.push_back({"\\zeta" + index(k), {normal_coordinate_text(a.normal_coordinates[k], scene, s)}, "", "\\to"});
         for (const beat& b : a.beats) {
             std::string pair = "\\omega" + index(b.upper) + " - \\omega" + index(b.lower);
-            out << latex_equation(pair, {print(b.difference, s)}, "", "\\to")
-                << latex_equation("\\frac{2\\pi}{" + pair + "}", {print(b.period, s)}, "", "\\to");
+            rows.push_back({pair, {print(b.difference, s)}, "", "\\to"});
+            rows.push_back({"\\frac{2\\pi}{" + pair + "}", {print(b.period, s)}, "", "\\to"});
         }
+        out << latex_equations(rows);
     }
     if (result.numeric) {
         out << "\\subsection*{Numeric modes}\n";

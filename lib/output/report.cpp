@@ -218,7 +218,7 @@ void write_equations(report_writer& w)
     const std::vector<GiNaC::ex>& equations = *w.result().equations->residuals;
     const std::size_t n = scene.coordinates.size();
     w.latex("\\section{Equations of motion}\n");
-    w.text("The Euler--Lagrange equations");
+    w.text("The Euler–Lagrange equations");
     w.latex("\n\\[\\frac{d}{dt}\\frac{\\partial L}{\\partial \\dot{q}_{i}} - \\frac{\\partial L}{\\partial q_{i}} = 0\\]\n");
     w.text("give, one for each coordinate, after simplification:");
     w.latex("\n");
@@ -514,7 +514,6 @@ void report_writer::display(const std::string& lhs, const GiNaC::ex& e, const st
 
 namespace {
 
-const std::string align_open = "\\begin{align*}\n", align_close = "\n\\end{align*}\n";
 const std::string scaled_open = "\\[\\resizebox{\\linewidth}{!}{$\\displaystyle ", scaled_close = "$}\\]\n";
 
 /// A display from latex_equation, with a scaled one only ever scaled down
@@ -537,36 +536,24 @@ void report_writer::display_terms(const std::string& lhs, const std::vector<std:
 
 void report_writer::display_rows(const std::vector<row>& rows)
 {
-    // Consecutive aligned rows share one align*; a scaled row stands alone.
-    std::string block;
-    auto flush = [&] {
-        if (!block.empty())
-            out_ << "\n" << align_open << block << align_close;
-        block.clear();
-    };
     // A closed form of thousands of characters (a cubic's roots in many parameters)
     // helps no reader and can exceed what TeX reads in one line: it is named, not printed.
     constexpr std::size_t longest_printed = 3000;
+    std::vector<latex_row> shown;
     for (const row& r : rows) {
         std::size_t length = 0;
         for (const std::string& term : r.terms)
             length += term.size();
-        std::string display =
-            length <= longest_printed
-                ? latex_equation(r.lhs, r.terms, r.rhs, r.relation)
-                : latex_equation(r.lhs, {"\\text{(a closed form of " + std::to_string(length) +
-                                         " characters of \\LaTeX, too long to print)}"},
-                                 "", r.relation);
-        if (display.compare(0, align_open.size(), align_open) == 0 &&
-            display.size() >= align_open.size() + align_close.size()) {
-            block += (block.empty() ? "" : "\\\\[4pt]\n") +
-                     display.substr(align_open.size(), display.size() - align_open.size() - align_close.size());
-        } else {
-            flush();
-            out_ << "\n" << fitted(display);
-        }
+        if (length <= longest_printed)
+            shown.push_back({r.lhs, r.terms, r.rhs, r.relation});
+        else
+            shown.push_back({r.lhs,
+                             {"\\text{(a closed form of " + std::to_string(length) +
+                              " characters of \\LaTeX, too long to print)}"},
+                             "",
+                             r.relation});
     }
-    flush();
+    out_ << latex_equations(shown, fitted, "\n");
 }
 
 void report_writer::display_matrix(const std::string& lhs, const GiNaC::matrix& m)

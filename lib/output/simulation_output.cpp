@@ -7,6 +7,7 @@
 #include "core/number_text.h"
 #include "system/gnuplot.h"
 #include "system/files.h"
+#include "output/latex_blocks.h"
 #include "output/print.h"
 #include "core/errors.h"
 
@@ -29,31 +30,6 @@ std::string short_latex(double x, int digits = 3)
 {
     const std::string text = latex_exponent(significant(x, digits));
     return text.rfind("1\\times", 0) == 0 ? text.substr(7) : text; // 10^{-9}, not 1\times10^{-9}
-}
-
-std::string latex_text(const std::string& text)
-{
-    std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        char c = text[i];
-        if (static_cast<unsigned char>(c) >= 0x80) {
-            if (text.compare(i, 3, "≤") == 0) { out += "$\\le$"; i += 2; continue; }
-            if (text.compare(i, 3, "…") == 0) { out += "\\ldots{}"; i += 2; continue; }
-            out += '?';
-            while (i + 1 < text.size() && (static_cast<unsigned char>(text[i + 1]) & 0xC0) == 0x80)
-                ++i;
-            continue;
-        }
-        if (c == '_' || c == '%' || c == '&' || c == '#' || c == '$' || c == '{' || c == '}')
-            out += std::string("\\") + c;
-        else if (c == '>')
-            out += "$>$";
-        else if (c == '<')
-            out += "$<$";
-        else
-            out += c;
-    }
-    return out;
 }
 
 std::string drift_of(const trajectory& run, const std::string& name)
