@@ -296,9 +296,9 @@ void write_trajectory_csv(std::ostream& out, const simulation_result& s)
             out << ',' << name << "_dot";
     out << '\n';
     for (std::size_t k = 0; k < s.run.states.size(); ++k) {
-        out << significant(s.run.times[k], 17);
+        out << shortest(s.run.times[k]);
         for (std::size_t i = 0; i < (s.first_order ? n : 2 * n); ++i)
-            out << ',' << significant(s.run.states[k][i], 17);
+            out << ',' << shortest(s.run.states[k][i]);
         out << '\n';
     }
 }
