@@ -197,6 +197,49 @@ std::vector<term_piece> term_pieces(const std::string& term)
     return pieces;
 }
 
+/// The end of the brace group that opens at `open` (just past its `}`), or npos.
+std::size_t group_end(const std::string& latex, std::size_t open)
+{
+    int depth = 0;
+    for (std::size_t i = open; i < latex.size(); ++i) {
+        if (latex[i] == '\\') {
+            ++i; // \{ and \} are not braces of the structure
+            continue;
+        }
+        if (latex[i] == '{')
+            ++depth;
+        else if (latex[i] == '}' && --depth == 0)
+            return i + 1;
+    }
+    return std::string::npos;
+}
+
+/// A term that is a fraction whose numerator is a sum, "\frac{a + b}{c} x", as
+/// "\frac{1}{c} \left(a + b\right) x": the sum can then break across lines. Any other
+/// term as it is.
+std::string opened_fraction(const std::string& term)
+{
+    std::size_t start = 0;
+    for (const char* sign : {"- ", "+ ", "-"})
+        if (term.rfind(sign, 0) == 0) {
+            start = std::string(sign).size();
+            break;
+        }
+    if (term.compare(start, 6, "\\frac{") != 0)
+        return term;
+    const std::size_t numerator_end = group_end(term, start + 5);
+    if (numerator_end == std::string::npos || numerator_end >= term.size() || term[numerator_end] != '{')
+        return term;
+    const std::size_t denominator_end = group_end(term, numerator_end);
+    if (denominator_end == std::string::npos)
+        return term;
+    const std::string numerator = term.substr(start + 6, numerator_end - 1 - (start + 6));
+    if (term_pieces("\\left(" + numerator + "\\right)").size() < 2)
+        return term; // not a sum
+    return term.substr(0, start) + "\\frac{1}{" + term.substr(numerator_end + 1, denominator_end - numerator_end - 2) +
+           "} \\left(" + numerator + "\\right)" + term.substr(denominator_end);
+}
+
 std::string repeated(const std::string& s, int times)
 {
     std::string out;
@@ -219,7 +262,7 @@ std::string latex_rows(const std::string& lhs, const std::vector<std::string>& t
             items.push_back({term, 0});
             continue;
         }
-        for (term_piece& piece : term_pieces(term))
+        for (term_piece& piece : term_pieces(opened_fraction(term)))
             items.push_back(std::move(piece));
     }
     std::string out = lhs + (lhs.empty() ? "&" : " &" + relation + " ");
@@ -247,7 +290,7 @@ std::string latex_equation(const std::string& lhs, const std::vector<std::string
     std::size_t widest = 0; // the widest piece a line cannot break
     std::size_t count = 0;
     for (const std::string& term : terms)
-        for (const term_piece& piece : term_pieces(term)) {
+        for (const term_piece& piece : term_pieces(4 + display_width(term) <= line_width ? term : opened_fraction(term))) {
             widest = std::max(widest, display_width(piece.text));
             ++count;
         }
