@@ -11,7 +11,7 @@
 #include "algebra/exact_matrix.h"
 #include "algebra/expression.h"
 #include "algebra/factor.h"
-#include "algebra/message_text.h"
+#include "algebra/sorted_terms.h"
 #include "algebra/sign.h"
 #include "core/errors.h"
 

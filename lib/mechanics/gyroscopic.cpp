@@ -8,7 +8,7 @@
 #include "algebra/calculus.h"
 #include "algebra/exact_matrix.h"
 #include "algebra/factor.h"
-#include "algebra/message_text.h"
+#include "algebra/sorted_terms.h"
 #include "algebra/sign.h"
 #include "algebra/surd.h"
 

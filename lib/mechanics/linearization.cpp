@@ -9,7 +9,7 @@
 #include "algebra/exact_matrix.h"
 #include "algebra/factor.h"
 #include "algebra/integer_polynomial.h"
-#include "algebra/message_text.h"
+#include "algebra/sorted_terms.h"
 #include "algebra/sign.h"
 #include "core/errors.h"
 #include "mechanics/equilibrium.h"

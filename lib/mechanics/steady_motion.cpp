@@ -2,10 +2,12 @@
  *  Steady motions on the reduced system. */
 #include "mechanics/steady_motion.h"
 
+#include "core/number_text.h"
+
 #include "algebra/budget.h"
 #include "algebra/calculus.h"
 #include "algebra/expression.h"
-#include "algebra/message_text.h"
+#include "algebra/sorted_terms.h"
 #include "algebra/sign.h"
 #include "mechanics/equilibrium.h"
 #include "mechanics/gyroscopic.h"
@@ -51,9 +53,7 @@ ex exact_decimals(const ex& e)
         const GiNaC::numeric& x = GiNaC::ex_to<GiNaC::numeric>(e);
         if (x.is_rational() || !x.is_real())
             return e;
-        char text[64];
-        const auto end = std::to_chars(text, text + sizeof text, x.to_double()).ptr;
-        const std::string digits(text, end);
+        const std::string digits = shortest(x.to_double());
         const std::size_t exponent_at = digits.find_first_of("eE");
         std::string mantissa = digits.substr(0, exponent_at);
         long exponent = exponent_at == std::string::npos ? 0 : std::stol(digits.substr(exponent_at + 1));

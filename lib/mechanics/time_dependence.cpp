@@ -7,7 +7,7 @@
 #include "algebra/budget.h"
 #include "algebra/calculus.h"
 #include "algebra/expression.h"
-#include "algebra/message_text.h"
+#include "algebra/sorted_terms.h"
 #include "algebra/sign.h"
 #include "core/errors.h"
 #include "mechanics/equilibrium.h"

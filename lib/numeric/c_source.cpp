@@ -4,6 +4,8 @@
  *  time through SLEEF. */
 #include "numeric/expression_program.h"
 
+#include "core/number_text.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -43,15 +45,13 @@ std::string expression_program::c_source(const std::string& name, bool sleef_sin
 {
     using op = instruction::code;
     std::ostringstream c;
-    char number[40];
     auto emit = [&](std::size_t k) {
         const instruction& i = code_[k];
         c << "    const double v" << k << " = ";
         std::string a = "v" + std::to_string(i.first), b = "v" + std::to_string(i.second);
         switch (i.op) {
         case op::constant:
-            std::snprintf(number, sizeof number, "%a", i.value);
-            c << number;
+            c << hexadecimal(i.value);
             break;
         case op::symbol: c << "s[" << i.first << "]"; break;
         case op::add: c << a << " + " << b; break;
@@ -61,8 +61,7 @@ std::string expression_program::c_source(const std::string& name, bool sleef_sin
         case op::square_root: c << "sqrt(" << a << ")"; break;
         case op::integer_power: c << "__builtin_powi(" << a << ", " << i.second << ")"; break;
         case op::real_power:
-            std::snprintf(number, sizeof number, "%a", i.value);
-            c << "pow(" << a << ", " << number << ")";
+            c << "pow(" << a << ", " << hexadecimal(i.value) << ")";
             break;
         case op::sine: c << "sin(" << a << ")"; break;
         case op::cosine: c << "cos(" << a << ")"; break;

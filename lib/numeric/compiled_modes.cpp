@@ -6,6 +6,8 @@
  *  when that bound is above the tolerance. */
 #include "numeric/compiled_modes.h"
 
+#include "core/number_text.h"
+
 #include "algebra/factor.h"
 #include "core/errors.h"
 #include "numeric/pair_kernels.h"
@@ -60,13 +62,7 @@ inline bool mode_within(double e, double w2, double largest, double tolerance)
 /// answer; past it, it refuses.
 constexpr double answer_limit = 1e-6;
 
-std::string number_text(double x)
-{
-    std::ostringstream out;
-    out.precision(3);
-    out << x;
-    return out.str();
-}
+std::string number_text(double x) { return significant(x, 3); }
 
 /// Index of T's upper triangle entry (i ≤ j) in row-major order.
 std::size_t upper_index(std::size_t i, std::size_t j, std::size_t n) { return i * n - i * (i + 1) / 2 + j; }

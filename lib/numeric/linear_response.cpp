@@ -2,6 +2,8 @@
  *  State-space matrices at numbers and the frequency response by complex LU. */
 #include "numeric/linear_response.h"
 
+#include "core/number_text.h"
+
 #include "core/errors.h"
 #include "numeric/compiled_modes.h"
 #include "numeric/damped_modes.h"
@@ -59,7 +61,7 @@ complex gain_at(double omega, const Eigen::MatrixXd& mass, const Eigen::MatrixXd
                               (i_omega * i_omega) * mass.cast<complex>();
     Eigen::FullPivLU<Eigen::MatrixXcd> lu(pencil);
     if (!lu.isInvertible())
-        throw computation_error("the linearized system is singular at ω = " + std::to_string(omega) +
+        throw computation_error("the linearized system is singular at ω = " + fixed(omega, 6) +
                                 " (an undamped resonance): no frequency response there");
     Eigen::VectorXcd x = lu.solve(forcing.cast<complex>());
     return x(static_cast<Eigen::Index>(output));

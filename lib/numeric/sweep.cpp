@@ -2,6 +2,8 @@
  *  Streamed numeric sweeps (see sweep.h). */
 #include "numeric/sweep.h"
 
+#include "core/number_text.h"
+
 #include "numeric/compiled_modes.h"
 
 #include <cmath>
@@ -36,11 +38,10 @@ double parse_number(const std::string& text, std::size_t begin, std::size_t end)
 
 std::string point_text(const model& scene, const std::vector<double>& values)
 {
-    std::ostringstream out;
-    out.precision(17);
+    std::string out;
     for (std::size_t k = 0; k < scene.parameters.size(); ++k)
-        out << (k ? ", " : "") << scene.parameters[k].name << " = " << values[k];
-    return out.str();
+        out += (k ? ", " : "") + scene.parameters[k].name + " = " + significant(values[k], 17);
+    return out;
 }
 
 } // namespace

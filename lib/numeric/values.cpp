@@ -2,6 +2,8 @@
  *  Expressions at the parameter values as doubles, numbers for messages, merged values. */
 #include "numeric/values.h"
 
+#include "core/number_text.h"
+
 #include "core/errors.h"
 #include "core/model.h"
 
@@ -40,9 +42,7 @@ std::optional<double> real_at(const GiNaC::ex& e, const GiNaC::exmap& at)
 
 std::string message_number(double x, int digits)
 {
-    char buffer[40];
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
-    return buffer;
+    return significant(x, digits);
 }
 
 std::map<std::string, GiNaC::ex> merged_values(const model& scene)

@@ -3,10 +3,10 @@
 #include "numeric/verification.h"
 #include "numeric/verification_bodies.h"
 #include "numeric/verification_constraints.h"
+#include "numeric/verification_points.h"
 
 #include "numeric/double_double.h"
 #include "numeric/expression_program.h"
-#include "numeric/quadratic_modes.h"
 #include "numeric/symmetry_checks.h"
 #include "numeric/values.h"
 
@@ -25,100 +25,12 @@ namespace lagrange {
 namespace {
 
 using GiNaC::ex;
-
-/// Agreement asked of a symbolic result and its reference, relative to the size of the
-/// terms compared: the references reach about 1e-14 (fourth-order differences in
-/// double-double with step 2⁻¹²), so a real disagreement is many orders above this.
-constexpr double tolerance = 1e-7;
-/// Parameter points tried per check, and how many must be usable.
-constexpr int attempts = 10;
-constexpr int points_wanted = 2;
-/// The finite-difference step: a power of two, so that the points stay exact.
-constexpr double step = 0x1p-12;
-
-/// SplitMix64: the same sequence on every platform and standard library, so that the
-/// points, and so every message, are the same on every run.
-class sampler {
-public:
-    std::uint64_t next()
-    {
-        std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return z ^ (z >> 31);
-    }
-    /// A multiple of 1/64 in [lo, hi]: exact in double.
-    double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() % 65) / 64; }
-
-private:
-    std::uint64_t state_ = 0x6c616772616e6765ULL; // "lagrange"
-};
+using namespace verification_points;
 
 double value_of(double_double x) { return x.hi + x.lo; }
 
-/// Parameter values: a `values` line's, else seeded ones in [1/2, 2].
-struct parameter_point {
-    std::vector<double> values; ///< in scene.parameters order
-    GiNaC::exmap map;           ///< the same values, exactly, for GiNaC
-    std::string text;           ///< "a = 1.25, g = 0.75"
-};
-
-std::vector<parameter_point> parameter_points(const model& scene)
-{
-    sampler random;
-    std::vector<parameter_point> points;
-    for (int attempt = 0; attempt < attempts; ++attempt) {
-        GiNaC::exmap given;
-        if (attempt < static_cast<int>(scene.values.size()))
-            given = value_map(scene, scene.values[static_cast<std::size_t>(attempt)]);
-        parameter_point p;
-        for (const parameter& parameter : scene.parameters) {
-            double x = random.uniform(0.5, 2);
-            auto found = given.find(parameter.symbol);
-            if (found != given.end()) {
-                ex v = found->second.evalf();
-                if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real())
-                    x = GiNaC::ex_to<GiNaC::numeric>(v).to_double();
-            }
-            p.values.push_back(x);
-            p.map[parameter.symbol] = GiNaC::numeric(x);
-            p.text += (p.text.empty() ? "" : ", ") + parameter.name + " = " + message_number(x);
-        }
-        points.push_back(std::move(p));
-    }
-    return points;
-}
-
-/// e at the parameter point (and `more`), as a complex number; nothing if a symbol is left.
-std::optional<std::complex<double>> complex_at(const ex& e, const GiNaC::exmap& at)
-{
-    ex value;
-    try {
-        value = e.subs(at).evalf();
-    } catch (const std::exception&) {
-        return std::nullopt;
-    }
-    if (!GiNaC::is_a<GiNaC::numeric>(value))
-        return std::nullopt;
-    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(value);
-    std::complex<double> z(GiNaC::real(n).to_double(), GiNaC::imag(n).to_double());
-    if (!std::isfinite(z.real()) || !std::isfinite(z.imag()))
-        return std::nullopt;
-    return z;
-}
-
-std::optional<Eigen::MatrixXd> matrix_at(const GiNaC::matrix& m, const GiNaC::exmap& at)
-{
-    Eigen::MatrixXd result(m.rows(), m.cols());
-    for (unsigned i = 0; i < m.rows(); ++i)
-        for (unsigned j = 0; j < m.cols(); ++j) {
-            std::optional<double> x = real_at(m(i, j), at);
-            if (!x)
-                return std::nullopt;
-            result(i, j) = *x;
-        }
-    return result;
-}
+/// The finite-difference step: a power of two, so that the points stay exact.
+constexpr double step = 0x1p-12;
 
 /// The symbols of a state, in the order the programs read them.
 struct state_layout {
@@ -210,22 +122,6 @@ std::string state_text(const model& scene, const std::vector<double>& state, boo
     }
     return text;
 }
-
-[[noreturn]] void not_real(const std::string& product, const std::string& what, const std::string& where)
-{
-    throw computation_error("verification failed: " + product + ": " + what + " is not a real number at " + where +
-                            "; the result is not printed");
-}
-
-[[noreturn]] void fail(const std::string& product, const std::string& what, const std::string& where, double here,
-                       double reference)
-{
-    throw computation_error("verification failed: " + product + ": " + what + " at " + where + " is " +
-                            message_number(here, 10) + ", but " + message_number(reference, 10) +
-                            " by the independent check; the result is not printed");
-}
-
-bool close(double a, double b, double scale) { return std::abs(a - b) <= tolerance * scale; }
 
 /// The compiled sines and cosines are correct to double precision only, so L carries a
 /// rounding error of about 2⁻⁵² of the size of its terms; a second difference divides it
@@ -626,227 +522,6 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
                        true});
 }
 
-// ---- the characteristic polynomial, the frequencies, the modes ----
-
-/// The parameter points where T and V are real, with them as numbers.
-struct numeric_pencil {
-    const parameter_point* point;
-    Eigen::MatrixXd kinetic, potential;
-    Eigen::MatrixXd gyroscopic; ///< zero without a part of L linear in the velocities
-};
-
-std::vector<numeric_pencil> pencils(const checker& c, const linearization_result& linear)
-{
-    std::vector<numeric_pencil> result;
-    for (const parameter_point& p : c.points) {
-        std::optional<Eigen::MatrixXd> kinetic = matrix_at(linear.kinetic, p.map);
-        std::optional<Eigen::MatrixXd> potential = matrix_at(linear.potential, p.map);
-        if (!kinetic || !potential || kinetic->ldlt().info() != Eigen::Success ||
-            kinetic->llt().info() != Eigen::Success)
-            continue;
-        Eigen::MatrixXd gyroscopic = Eigen::MatrixXd::Zero(kinetic->rows(), kinetic->cols());
-        if (linear.has_gyroscopic()) {
-            std::optional<Eigen::MatrixXd> g = matrix_at(linear.gyroscopic, p.map);
-            if (!g)
-                continue;
-            gyroscopic = *g;
-        }
-        result.push_back({&p, *kinetic, *potential, gyroscopic});
-        if (result.size() == points_wanted)
-            break;
-    }
-    return result;
-}
-
-std::string at_point(const parameter_point& p) { return p.text.empty() ? "the check" : p.text; }
-
-verification_entry check_characteristic(const model& scene, const linearization_result& linear,
-                                        const characteristic_result& characteristic,
-                                        const std::vector<numeric_pencil>& pencils)
-{
-    (void)scene;
-    const std::size_t n = linear.kinetic.rows(); // with constraints: the independent coordinates
-    const ex& p = characteristic.polynomial;
-    if (!p.is_polynomial(characteristic.omega) || p.degree(characteristic.omega) != static_cast<int>(2 * n))
-        throw computation_error("verification failed: the characteristic polynomial is not of degree " +
-                                std::to_string(2 * n) + " in " + characteristic.omega.get_name());
-    for (const numeric_pencil& pencil : pencils) {
-        // p(ω)/det(V − ω²T) is the same at every ω (the factor removed to make p primitive).
-        std::optional<double> ratio;
-        int compared = 0;
-        for (int k = 0; compared < static_cast<int>(n) + 2 && k < 4 * static_cast<int>(n) + 8; ++k) {
-            const double omega = 0.375 + 0.25 * k;
-            const double w = omega * omega;
-            Eigen::MatrixXcd pencil_at = (pencil.potential - w * pencil.kinetic).cast<std::complex<double>>() +
-                                         std::complex<double>(0, omega) * pencil.gyroscopic.cast<std::complex<double>>();
-            const double det = pencil_at.partialPivLu().determinant().real();
-            const double size = std::pow(
-                pencil.potential.norm() + w * pencil.kinetic.norm() + omega * pencil.gyroscopic.norm(),
-                static_cast<double>(n));
-            if (std::abs(det) < 1e-6 * size)
-                continue; // too near a root for the ratio to be well conditioned
-            GiNaC::exmap at = pencil.point->map;
-            at[characteristic.omega] = GiNaC::numeric(omega);
-            std::optional<double> value = real_at(p, at);
-            if (!value)
-                break;
-            const double r = *value / det;
-            if (!ratio) {
-                ratio = r;
-                if (r == 0 || !std::isfinite(r))
-                    break;
-            } else if (!close(r, *ratio, std::abs(*ratio))) {
-                fail("the characteristic polynomial",
-                     std::string(linear.has_gyroscopic() ? "p(ω)/det(V − ω²T + iωG)" : "p(ω)/det(V − ω²T)") +
-                         " at ω = " + message_number(omega),
-                     at_point(*pencil.point), r, *ratio);
-            }
-            ++compared;
-        }
-    }
-    if (pencils.empty())
-        return {"characteristic", "not checked: T and V are not real at any parameter point tried", false};
-    return {"characteristic", std::string(linear.has_gyroscopic() ? "against det(V − ω²T + iωG)" : "against det(V − ω²T)") +
-                                  " (LU) at " + std::to_string(n + 2) +
-                                  " frequencies and " + std::to_string(pencils.size()) + " parameter points",
-            true};
-}
-
-/// The frequencies ω of a gyroscopic linearization: their squares (complex where the point
-/// is unstable) against −s² of the eigenvalues s of (s²T − sG + V)x = 0 in the upper half
-/// plane (numeric/quadratic_modes.h), matched as multisets.
-void check_gyroscopic_frequencies(const model& scene, const modes_result& modes,
-                                  const std::vector<numeric_pencil>& pencils, const std::set<product>& shown,
-                                  std::vector<verification_entry>& entries)
-{
-    const std::size_t n = scene.coordinates.size();
-    for (const numeric_pencil& pencil : pencils) {
-        const parameter_point& p = *pencil.point;
-        quadratic_modes q = solve_quadratic_modes(pencil.kinetic, -pencil.gyroscopic, pencil.potential);
-        std::vector<std::complex<double>> reference;
-        double scale = 1e-300;
-        for (std::size_t k = n; k < 2 * n; ++k) {
-            reference.push_back(-q.eigenvalues[k] * q.eigenvalues[k]);
-            scale = std::max(scale, std::abs(reference.back()));
-        }
-        if (modes.frequencies.size() != n)
-            throw computation_error("verification failed: the frequencies: " +
-                                    std::to_string(modes.frequencies.size()) + " listed for " + std::to_string(n) +
-                                    " coordinates");
-        std::vector<bool> used(n, false);
-        for (std::size_t k = 0; k < n; ++k) {
-            std::optional<std::complex<double>> omega = complex_at(modes.frequencies[k], p.map);
-            if (!omega)
-                not_real("the frequencies", "an ω", at_point(p));
-            const std::complex<double> w = *omega * *omega;
-            std::size_t best = n;
-            for (std::size_t j = 0; j < n; ++j)
-                if (!used[j] && (best == n || std::abs(reference[j] - w) < std::abs(reference[best] - w)))
-                    best = j;
-            if (std::abs(reference[best] - w) > tolerance * scale)
-                fail("the frequencies", "ω² of frequency " + std::to_string(k + 1), at_point(p), w.real(),
-                     reference[best].real());
-            used[best] = true;
-        }
-    }
-    if (!pencils.empty() && shown.count(product::frequencies))
-        entries.push_back({"frequencies", "ω² against −s² of the quadratic eigenproblem (s²T − sG + V)x = 0 at " +
-                                              std::to_string(pencils.size()) + " parameter points",
-                           true});
-}
-
-void check_modes(const model& scene, const modes_result& modes, const std::vector<numeric_pencil>& pencils,
-                 const std::set<product>& shown, std::vector<verification_entry>& entries)
-{
-    const std::size_t n = modes.displacements.size(); // with constraints: the independent coordinates
-    if (!modes.closed_form)
-        return;
-    if (modes.gyroscopic) {
-        check_gyroscopic_frequencies(scene, modes, pencils, shown, entries);
-        return;
-    }
-    for (const numeric_pencil& pencil : pencils) {
-        const parameter_point& p = *pencil.point;
-        Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(pencil.potential, pencil.kinetic);
-        if (solver.info() != Eigen::Success)
-            continue;
-        std::vector<double> eigenvalues(solver.eigenvalues().data(), solver.eigenvalues().data() + n);
-        const double scale = std::max(std::abs(eigenvalues.front()), std::abs(eigenvalues.back())) + 1e-300;
-        std::vector<double> frequencies;
-        for (const ex& f : modes.frequencies) {
-            std::optional<double> value = real_at(f, p.map);
-            if (!value)
-                not_real("the frequencies", "an ω²", at_point(p));
-            frequencies.push_back(*value);
-        }
-        std::vector<double> sorted = frequencies;
-        std::sort(sorted.begin(), sorted.end());
-        if (sorted.size() != eigenvalues.size())
-            throw computation_error("verification failed: the frequencies: " + std::to_string(sorted.size()) +
-                                    " listed for " + std::to_string(n) + " coordinates");
-        for (std::size_t k = 0; k < n; ++k)
-            if (!close(sorted[k], eigenvalues[k], scale))
-                fail("the frequencies", "ω² number " + std::to_string(k + 1) + " in ascending order", at_point(p),
-                     sorted[k], eigenvalues[k]);
-        const double pencil_size = pencil.potential.norm() + pencil.kinetic.norm() * scale;
-        for (std::size_t k = 0; k < modes.modes.size() && k < n; ++k) {
-            Eigen::VectorXd a(static_cast<Eigen::Index>(n));
-            for (std::size_t i = 0; i < n; ++i) {
-                std::optional<double> x = real_at(modes.modes[k][i], p.map);
-                if (!x)
-                    not_real("the modes", "a component of mode " + std::to_string(k + 1), at_point(p));
-                a[static_cast<Eigen::Index>(i)] = *x;
-            }
-            const double residual =
-                ((pencil.potential - frequencies[k] * pencil.kinetic) * a).norm();
-            if (a.norm() == 0 || residual > tolerance * pencil_size * a.norm())
-                fail("the modes", "|(V − ω²T) a| for mode " + std::to_string(k + 1), at_point(p), residual, 0);
-        }
-        if (modes.normal_coordinates.size() == n) {
-            // ζ = C (q − q₀) with C = Aᵀ T and Aᵀ T A = I, so C T⁻¹ Cᵀ = I and
-            // Aᵀ V A = diag(ω²), with A = T⁻¹ Cᵀ.
-            Eigen::MatrixXd rows(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-            for (std::size_t k = 0; k < n; ++k)
-                for (std::size_t j = 0; j < n; ++j) {
-                    // The coordinate of displacement j (with constraints: the j-th independent one).
-                    GiNaC::ex q = scene.coordinates[j].position;
-                    for (const coordinate& c : scene.coordinates)
-                        if (modes.displacements[j].has(c.position))
-                            q = c.position;
-                    std::optional<double> x =
-                        real_at(modes.normal_coordinates[k].diff(GiNaC::ex_to<GiNaC::symbol>(q)), p.map);
-                    if (!x)
-                        not_real("the normal coordinates", "a coefficient of ζ" + std::to_string(k + 1), at_point(p));
-                    rows(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(j)) = *x;
-                }
-            const Eigen::MatrixXd a = pencil.kinetic.ldlt().solve(rows.transpose());
-            const Eigen::MatrixXd unit = rows * a;
-            const Eigen::MatrixXd diagonal = a.transpose() * pencil.potential * a;
-            for (std::size_t k = 0; k < n; ++k)
-                for (std::size_t j = 0; j < n; ++j) {
-                    const auto r = static_cast<Eigen::Index>(k), s = static_cast<Eigen::Index>(j);
-                    const double expected_unit = k == j ? 1 : 0;
-                    const double expected_diagonal = k == j ? frequencies[k] : 0;
-                    if (!close(unit(r, s), expected_unit, 1))
-                        fail("the normal coordinates", "(C T⁻¹ Cᵀ)" + std::to_string(k + 1) + std::to_string(j + 1),
-                             at_point(p), unit(r, s), expected_unit);
-                    if (!close(diagonal(r, s), expected_diagonal, scale))
-                        fail("the normal coordinates", "(Aᵀ V A)" + std::to_string(k + 1) + std::to_string(j + 1),
-                             at_point(p), diagonal(r, s), expected_diagonal);
-                }
-        }
-    }
-    const std::string points = " at " + std::to_string(pencils.size()) + " parameter points";
-    if (pencils.empty())
-        return;
-    if (shown.count(product::frequencies))
-        entries.push_back({"frequencies", "against the eigenvalues of the pencil (V, T) (Eigen)" + points, true});
-    if (shown.count(product::modes))
-        entries.push_back({"modes", "(V − ω²T) a = 0" + points, true});
-    if (shown.count(product::normal_coordinates) && modes.normal_coordinates.size() == n)
-        entries.push_back({"normal_coordinates", "C T⁻¹ Cᵀ = I and Aᵀ V A = diag(ω²)" + points, true});
-}
-
 } // namespace
 
 verification_result verify_results(const model& scene, const verification_input& input,
@@ -877,11 +552,8 @@ verification_result verify_results(const model& scene, const verification_input&
                 not_checked("equilibrium");
             not_checked("linearization");
         }
-        const std::vector<numeric_pencil> numeric = pencils(c, *input.linearization);
-        if (input.characteristic)
-            result.entries.push_back(check_characteristic(scene, *input.linearization, *input.characteristic, numeric));
-        if (input.modes)
-            check_modes(scene, *input.modes, numeric, shown, result.entries);
+        check_oscillations(scene, c.points, {*input.linearization, input.characteristic, input.modes}, shown,
+                           result.entries);
         if (input.asymptotic && !input.constrained)
             result.entries.push_back(verify_asymptotic(scene, *input.linearization, *input.asymptotic));
         if (input.damping)

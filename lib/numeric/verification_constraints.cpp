@@ -2,6 +2,8 @@
  *  Numeric checks of the multipliers, constraint forces and reduced linearization. */
 #include "numeric/verification_constraints.h"
 
+#include "core/number_text.h"
+
 #include "numeric/values.h"
 
 #include <Eigen/Dense>
@@ -58,10 +60,8 @@ double second_derivative(const std::function<double(double)>& f, double h)
 
 [[noreturn]] void fail(const std::string& what, double got, double expected)
 {
-    std::ostringstream text;
-    text.precision(10);
-    text << "verification failed: " << what << ": " << got << " against " << expected << " by the numeric check";
-    throw computation_error(text.str());
+    throw computation_error("verification failed: " + what + ": " + significant(got, 10) + " against " +
+                            significant(expected, 10) + " by the numeric check");
 }
 
 bool close(double a, double b, double scale, double tolerance) { return std::abs(a - b) <= tolerance * scale; }

@@ -2,6 +2,8 @@
  *  Printers of the Floquet multipliers about points that solve the equations at every t. */
 #include "output/floquet_output.h"
 
+#include "core/number_text.h"
+
 #include "output/print.h"
 
 #include <nlohmann/json.hpp>
@@ -18,21 +20,13 @@ namespace {
 /// Ten significant digits (text and LaTeX): the integration is accurate far beyond them.
 std::string short_number(double x)
 {
-    if (x == 0)
-        return "0";
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.10g", x);
-    return buffer;
+    return x == 0 ? "0" : significant(x, 10);
 }
 
 /// short_number, in LaTeX with the exponent as ×10^{k}.
 std::string number_in(double x, syntax s)
 {
-    std::string text = short_number(x);
-    const std::size_t e = text.find('e');
-    if (s != syntax::latex || e == std::string::npos)
-        return text;
-    return text.substr(0, e) + "\times10^{" + std::to_string(std::stoi(text.substr(e + 1))) + "}";
+    return s == syntax::latex ? latex_exponent(short_number(x)) : short_number(x);
 }
 
 std::string multiplier_text(const std::complex<double>& mu, syntax s)

@@ -8,6 +8,7 @@
 
 #include <ginac/ginac.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,10 +20,27 @@ std::string latex_text(const std::string& text);
 /// A rough width of LaTeX math in characters (for line breaking).
 std::size_t latex_math_width(const std::string& latex);
 
-/// A display `lhs relation terms rhs`: align* broken across lines, or scaled to the
-/// page width when a single term is wider than the page.
+/// A display `lhs relation terms rhs`: align* broken across lines, between terms or,
+/// for a term wider than a line, at the signs of the sum inside its parentheses
+/// (\right. … \left.); scaled to the page width only when a piece that cannot be
+/// broken (a matrix, a long fraction) is wider than the page.
 std::string latex_equation(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs,
                            const std::string& relation = "=");
+
+/// One row of a group of related equations.
+struct latex_row {
+    std::string lhs;
+    std::vector<std::string> terms;
+    std::string rhs;
+    std::string relation = "=";
+};
+
+/// Related equations in one align*, aligned on their relation, rows apart by 4pt; a row
+/// that has to be scaled stands alone, as `scaled` rewrites its display (as is if empty).
+/// `before` goes before each display.
+std::string latex_equations(const std::vector<latex_row>& rows,
+                            const std::function<std::string(const std::string&)>& scaled = {},
+                            const std::string& before = "");
 
 /// A pmatrix of the entries, printed deterministically.
 std::string latex_matrix(const GiNaC::matrix& m);

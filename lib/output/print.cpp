@@ -4,11 +4,10 @@
  *  terms and factors depends on their printed form only. */
 #include "output/print.h"
 
+#include "core/number_text.h"
+
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <sstream>
 #include <utility>
@@ -21,101 +20,8 @@ using GiNaC::ex;
 using GiNaC::is_a;
 using GiNaC::numeric;
 
-// ---------------------------------------------------------------------------
-// Names
-
-struct greek_letter {
-    const char* text;
-    const char* latex;
-};
-
-const std::map<std::string, greek_letter>& greek_letters()
-{
-    static const std::map<std::string, greek_letter> letters = {
-        {"alpha", {"α", "\\alpha"}},     {"beta", {"β", "\\beta"}},
-        {"gamma", {"γ", "\\gamma"}},     {"delta", {"δ", "\\delta"}},
-        {"epsilon", {"ε", "\\epsilon"}}, {"varepsilon", {"ϵ", "\\varepsilon"}},
-        {"zeta", {"ζ", "\\zeta"}},       {"eta", {"η", "\\eta"}},
-        {"theta", {"θ", "\\theta"}},     {"vartheta", {"ϑ", "\\vartheta"}},
-        {"iota", {"ι", "\\iota"}},       {"kappa", {"κ", "\\kappa"}},
-        {"lambda", {"λ", "\\lambda"}},   {"mu", {"μ", "\\mu"}},
-        {"nu", {"ν", "\\nu"}},           {"xi", {"ξ", "\\xi"}},
-        {"omicron", {"ο", "o"}},         {"pi", {"π", "\\pi"}},
-        {"varpi", {"ϖ", "\\varpi"}},     {"rho", {"ρ", "\\rho"}},
-        {"varrho", {"ϱ", "\\varrho"}},   {"sigma", {"σ", "\\sigma"}},
-        {"varsigma", {"ς", "\\varsigma"}}, {"tau", {"τ", "\\tau"}},
-        {"upsilon", {"υ", "\\upsilon"}}, {"phi", {"φ", "\\phi"}},
-        {"varphi", {"ϕ", "\\varphi"}},   {"chi", {"χ", "\\chi"}},
-        {"psi", {"ψ", "\\psi"}},         {"omega", {"ω", "\\omega"}},
-        {"Gamma", {"Γ", "\\Gamma"}},     {"Delta", {"Δ", "\\Delta"}},
-        {"Theta", {"Θ", "\\Theta"}},     {"Lambda", {"Λ", "\\Lambda"}},
-        {"Xi", {"Ξ", "\\Xi"}},           {"Pi", {"Π", "\\Pi"}},
-        {"Sigma", {"Σ", "\\Sigma"}},     {"Upsilon", {"Υ", "\\Upsilon"}},
-        {"Phi", {"Φ", "\\Phi"}},         {"Psi", {"Ψ", "\\Psi"}},
-        {"Omega", {"Ω", "\\Omega"}},
-    };
-    return letters;
-}
-
-bool ends_with(const std::string& s, const std::string& suffix)
-{
-    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-
-/// A name part split into its letters and its trailing digit run: "theta12" -> ("theta", "12").
-std::pair<std::string, std::string> split_trailing_digits(const std::string& part)
-{
-    std::size_t end = part.size();
-    while (end > 0 && is_digit(part[end - 1]))
-        --end;
-    if (end == 0)
-        return {part, ""}; // all digits: a number, not a letter with a subscript
-    return {part.substr(0, end), part.substr(end)};
-}
-
-/// A word as a LaTeX symbol: Greek letter, single letter, or upright multi-letter name.
-std::string latex_word(const std::string& word)
-{
-    auto greek = greek_letters().find(word);
-    if (greek != greek_letters().end())
-        return greek->second.latex;
-    if (word.size() == 1 || std::all_of(word.begin(), word.end(), is_digit))
-        return word;
-    return "\\mathrm{" + word + "}";
-}
-
-/// A word as text: Greek letters in Unicode, anything else unchanged.
-std::string text_word(const std::string& word)
-{
-    auto greek = greek_letters().find(word);
-    return greek != greek_letters().end() ? greek->second.text : word;
-}
-
-/// A subscript part in LaTeX: its own trailing digits become a further subscript.
-std::string latex_part(const std::string& part)
-{
-    auto [letters, digits] = split_trailing_digits(part);
-    std::string out = latex_word(letters);
-    if (!digits.empty())
-        out += "_{" + digits + "}";
-    return out;
-}
-
-/// A name with underscores that do not separate subscripts ("a__b", "a_"), in LaTeX.
-std::string latex_literal(const std::string& name)
-{
-    std::string out = "\\mathrm{";
-    for (char c : name) {
-        if (c == '_')
-            out += "\\_";
-        else
-            out += c;
-    }
-    return out + "}";
-}
 
 // ---------------------------------------------------------------------------
 // Pieces of printed output
@@ -175,46 +81,8 @@ piece negated(const piece& p)
     return n;
 }
 
-/// An integer as Unicode superscript: "-20" -> "⁻²⁰".
-std::string superscript(const std::string& integer)
-{
-    static const char* const digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
-    std::string out;
-    for (char c : integer)
-        out += c == '-' ? "⁻" : digits[c - '0'];
-    return out;
-}
-
 // ---------------------------------------------------------------------------
 // Numbers
-
-/// The shortest decimal that reads back as the same double, in a form GiNaC's
-/// parser takes as a float: "9.81", "0.01", "2.0", "1e-14", "1.5e20".
-std::string shortest_decimal(double value)
-{
-    char buffer[64];
-    for (int digits = 1; digits <= 17; ++digits) {
-        std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
-        if (std::strtod(buffer, nullptr) == value)
-            break;
-    }
-    std::string s = buffer;
-    std::string mantissa = s;
-    std::string exponent;
-    std::size_t e = s.find('e');
-    if (e != std::string::npos) {
-        mantissa = s.substr(0, e);
-        std::string digits = s.substr(e + 1);
-        bool negative = !digits.empty() && digits[0] == '-';
-        if (!digits.empty() && (digits[0] == '-' || digits[0] == '+'))
-            digits.erase(0, 1);
-        digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
-        exponent = (negative ? "-" : "") + digits;
-    }
-    if (exponent.empty() && mantissa.find('.') == std::string::npos)
-        mantissa += ".0";
-    return exponent.empty() ? mantissa : mantissa + "e" + exponent;
-}
 
 /// A nonnegative float in each syntax.
 piece float_piece(const numeric& n, syntax syn)
@@ -222,7 +90,7 @@ piece float_piece(const numeric& n, syntax syn)
     double value = n.to_double();
     std::string plain;
     if (std::isfinite(value)) {
-        plain = shortest_decimal(value);
+        plain = float_decimal(value);
     } else { // beyond the range of a double: CLN's own digits, "1.0E400"
         std::ostringstream os;
         os << ex(n);
@@ -237,9 +105,9 @@ piece float_piece(const numeric& n, syntax syn)
         p.plain_level = product_level;
         p.out_level = product_level;
         if (syn == syntax::latex)
-            p.out = plain.substr(0, e) + "\\times10^{" + plain.substr(e + 1) + "}";
+            p.out = latex_exponent(plain);
         else if (syn == syntax::text)
-            p.out = plain.substr(0, e) + "×10" + superscript(plain.substr(e + 1));
+            p.out = text_exponent(plain);
     }
     return p;
 }
@@ -345,36 +213,6 @@ std::string apply_operator(const std::string& command, const std::string& argume
 // ---------------------------------------------------------------------------
 // Term order
 
-/// The exponent of `s` in a term: 2 in x*s^2, -1 in x/s, the highest in a sum factor.
-numeric exponent_in(const ex& e, const ex& s)
-{
-    if (e.is_equal(s))
-        return 1;
-    if (is_a<GiNaC::power>(e)) {
-        if (!is_a<numeric>(e.op(1)) || !GiNaC::ex_to<numeric>(e.op(1)).is_real())
-            return 0;
-        return exponent_in(e.op(0), s) * GiNaC::ex_to<numeric>(e.op(1));
-    }
-    if (is_a<GiNaC::mul>(e)) {
-        numeric total = 0;
-        for (const ex& factor : e)
-            total += exponent_in(factor, s);
-        return total;
-    }
-    if (is_a<GiNaC::add>(e)) {
-        numeric highest = 0;
-        bool first = true;
-        for (const ex& term : e) {
-            numeric k = exponent_in(term, s);
-            if (first || k > highest)
-                highest = k;
-            first = false;
-        }
-        return highest;
-    }
-    return 0;
-}
-
 /// A term of a sum, printed, with what orders it.
 struct sum_term {
     piece body;                     ///< the term without its sign
@@ -382,22 +220,8 @@ struct sum_term {
     bool constant = false;          ///< a number only
     bool real = true;               ///< a real coefficient: the sign is known
     std::string monomial;           ///< plain form without the numeric coefficient
-    std::vector<numeric> exponents; ///< per group symbol, groups concatenated
-    std::vector<numeric> degrees;   ///< per group
+    term_degrees degrees;           ///< where the term order puts it
 };
-
-/// Compares terms by the term order's groups: total degree, then exponents,
-/// both descending. Negative if `a` comes first.
-int compare_degrees(const sum_term& a, const sum_term& b)
-{
-    for (std::size_t g = 0; g < a.degrees.size(); ++g)
-        if (a.degrees[g] != b.degrees[g])
-            return a.degrees[g] > b.degrees[g] ? -1 : 1;
-    for (std::size_t k = 0; k < a.exponents.size(); ++k)
-        if (a.exponents[k] != b.exponents[k])
-            return a.exponents[k] > b.exponents[k] ? -1 : 1;
-    return 0;
-}
 
 /// Compares terms by their printed form, numbers last. Negative if `a` comes first.
 int compare_forms(const sum_term& a, const sum_term& b)
@@ -425,10 +249,8 @@ public:
         if (is_a<GiNaC::add>(e))
             return sum_piece(e);
         if (is_a<GiNaC::mul>(e)) {
-            numeric coefficient = 1;
-            GiNaC::exvector factors;
-            split_term(e, coefficient, factors);
-            return product_piece(coefficient, factors);
+            term_factors parts = split_term(e);
+            return product_piece(parts.coefficient, parts.factors);
         }
         if (is_a<GiNaC::power>(e))
             return power_piece(e);
@@ -507,19 +329,6 @@ private:
             p.out_level = sum_level;
         }
         return p;
-    }
-
-    /// A term as its numeric coefficient times its other factors (nested products flattened).
-    static void split_term(const ex& e, numeric& coefficient, GiNaC::exvector& factors)
-    {
-        if (is_a<numeric>(e)) {
-            coefficient *= GiNaC::ex_to<numeric>(e);
-        } else if (is_a<GiNaC::mul>(e)) {
-            for (const ex& factor : e)
-                split_term(factor, coefficient, factors);
-        } else {
-            factors.push_back(e);
-        }
     }
 
     /// Joins printed factors, in order, with the syntax's multiplication sign.
@@ -712,24 +521,15 @@ private:
         std::vector<sum_term> terms;
         terms.reserve(e.nops());
         for (const ex& term : e) {
-            numeric coefficient = 1;
-            GiNaC::exvector factors;
-            split_term(term, coefficient, factors);
-            product_result parts = product_parts(coefficient, factors);
+            const term_factors split = split_term(term);
+            product_result parts = product_parts(split.coefficient, split.factors);
             sum_term t;
             t.negative = parts.negative;
-            t.constant = factors.empty();
-            t.real = coefficient.is_real();
+            t.constant = split.factors.empty();
+            t.real = split.coefficient.is_real();
             t.body = wrap(parts.body, product_level, syn_);
             t.monomial = std::move(parts.monomial);
-            for (const auto& group : order_.groups) {
-                numeric degree = 0;
-                for (const ex& s : group) {
-                    t.exponents.push_back(exponent_in(term, s));
-                    degree += t.exponents.back();
-                }
-                t.degrees.push_back(degree);
-            }
+            t.degrees = degrees_of(term, order_);
             terms.push_back(std::move(t));
         }
         return terms;
@@ -740,7 +540,7 @@ private:
     static void sort_terms(std::vector<sum_term>& terms)
     {
         std::sort(terms.begin(), terms.end(), [](const sum_term& a, const sum_term& b) {
-            if (int c = compare_degrees(a, b))
+            if (int c = compare_degrees(a.degrees, b.degrees))
                 return c < 0;
             if (a.negative != b.negative)
                 return b.negative;
@@ -798,7 +598,7 @@ private:
                 leading = &t;
                 continue;
             }
-            int c = compare_degrees(t, *leading);
+            int c = compare_degrees(t.degrees, leading->degrees);
             if (c == 0)
                 c = compare_forms(t, *leading);
             if (c < 0)
@@ -995,69 +795,6 @@ std::string print(const GiNaC::ex& e, syntax s, const term_order& order)
 std::vector<std::string> print_terms(const GiNaC::ex& e, syntax s, const term_order& order)
 {
     return printer(s, order).term_strings(e);
-}
-
-std::string print_name(const std::string& name, syntax s)
-{
-    if (s == syntax::plain)
-        return name;
-
-    int dots = 0;
-    std::string base = name;
-    if (ends_with(name, "_ddot") && name.size() > 5) {
-        dots = 2;
-        base = name.substr(0, name.size() - 5);
-    } else if (ends_with(name, "_dot") && name.size() > 4) {
-        dots = 1;
-        base = name.substr(0, name.size() - 4);
-    }
-
-    std::vector<std::string> parts;
-    for (std::size_t start = 0;;) {
-        std::size_t end = base.find('_', start);
-        parts.push_back(base.substr(start, end == std::string::npos ? std::string::npos : end - start));
-        if (end == std::string::npos)
-            break;
-        start = end + 1;
-    }
-    const bool regular = std::none_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); });
-    auto [letters, digits] = regular ? split_trailing_digits(parts[0]) : std::make_pair(base, std::string());
-
-    if (s == syntax::latex) {
-        std::string head = regular ? latex_word(letters) : latex_literal(base);
-        if (dots > 0)
-            head = (dots == 2 ? "\\ddot{" : "\\dot{") + head + "}";
-        std::vector<std::string> subscripts;
-        if (!digits.empty())
-            subscripts.push_back(digits);
-        for (std::size_t i = 1; regular && i < parts.size(); ++i)
-            subscripts.push_back(latex_part(parts[i]));
-        std::string nested;
-        for (auto it = subscripts.rbegin(); it != subscripts.rend(); ++it)
-            nested = nested.empty() ? *it : *it + "_{" + nested + "}";
-        return nested.empty() ? head : head + "_{" + nested + "}";
-    }
-
-    // text
-    std::string head = regular ? text_word(letters) : base;
-    const bool one_letter = (regular && greek_letters().count(letters) > 0) || (letters.size() == 1 && is_letter(letters[0]));
-    if (dots > 0)
-        head += one_letter ? (dots == 2 ? "\u0308" : "\u0307") : (dots == 2 ? "''" : "'");
-    std::string out = head + digits;
-    for (std::size_t i = 1; regular && i < parts.size(); ++i) {
-        auto [sub_letters, sub_digits] = split_trailing_digits(parts[i]);
-        out += "_" + text_word(sub_letters) + sub_digits;
-    }
-    return out;
-}
-
-std::string round_trip(double x)
-{
-    if (x == 0)
-        x = 0; // no −0
-    char buffer[64];
-    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return error == std::errc() ? std::string(buffer, end) : std::string("?");
 }
 
 } // namespace lagrange

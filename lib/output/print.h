@@ -3,6 +3,9 @@
  *  can change from run to run; these printers order terms and factors themselves. */
 #pragma once
 
+#include "algebra/sorted_terms.h"
+#include "core/number_text.h"
+
 #include <ginac/ginac.h>
 
 #include <string>
@@ -14,15 +17,6 @@ enum class syntax {
     plain, ///< GiNaC's plain syntax (`^` powers, `q_dot`); used in JSON
     text,  ///< for people: Greek letters, dots over velocities (Unicode)
     latex, ///< LaTeX math: \dot{\theta}, \theta_{1}, no 1.5E-20 floats
-};
-
-/// How to order the terms of a sum: groups of symbols in priority order. Terms
-/// are sorted by their total degree in the first group (descending), then by their
-/// exponent vector in that group (lexicographic, descending), then the next group,
-/// and finally by their printed form. Example: {{theta_ddot, phi_ddot},
-/// {theta_dot, phi_dot}} puts accelerations first, then velocities, then the rest.
-struct term_order {
-    std::vector<std::vector<GiNaC::ex>> groups;
 };
 
 /// Prints `e`. Factors of a product are ordered by their printed form (numeric
@@ -38,9 +32,5 @@ std::vector<std::string> print_terms(const GiNaC::ex& e, syntax s, const term_or
 /// How a symbol name prints: `theta_dot` -> "θ̇" / "\dot{\theta}", `theta1` ->
 /// "θ1" / "\theta_{1}", `l_2` -> "l_{2}", `M` -> "M", `omega` -> "\omega".
 std::string print_name(const std::string& name, syntax s);
-
-/// The shortest decimal that reads back as the same double (`std::to_chars`): "9.81",
-/// "1e-14"; zero as "0", never "-0". For numbers printed as data (JSON, tables, CSV).
-std::string round_trip(double x);
 
 } // namespace lagrange

@@ -8,16 +8,16 @@
 #include "output/damping_output.h"
 
 #include "mechanics/lagrangian.h"
-#include "system/external.h"
+#include "core/number_text.h"
+#include "system/gnuplot.h"
+#include "system/latex.h"
 #include "output/latex_blocks.h"
 #include "output/print.h"
 #include "output/report_sections.h"
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 
 namespace lagrange {
@@ -62,38 +62,6 @@ std::string column_latex(const std::vector<GiNaC::ex>& entries)
     for (const GiNaC::ex& e : entries)
         printed.push_back(report_writer::math(e));
     return column_latex(printed);
-}
-
-/// Blanks the creation and modification dates cairo writes into a PDF (same
-/// length, so the cross-reference offsets stay valid): the figures, and so the
-/// report, depend on nothing but the scene.
-std::string strip_pdf_dates(std::string pdf)
-{
-    for (const char* key : {"/CreationDate", "/ModDate"}) {
-        std::size_t at = 0;
-        while ((at = pdf.find(key, at)) != std::string::npos) {
-            std::size_t open = pdf.find('(', at);
-            std::size_t close = open == std::string::npos ? open : pdf.find(')', open);
-            if (close == std::string::npos || close - at > 64)
-                break;
-            std::fill(pdf.begin() + static_cast<std::ptrdiff_t>(at), pdf.begin() + static_cast<std::ptrdiff_t>(close) + 1,
-                      ' ');
-            at = close;
-        }
-    }
-    return pdf;
-}
-
-/// The first LaTeX error of a pdflatex log (the line starting with `!` and the next two).
-std::string first_latex_error(const std::string& log)
-{
-    std::size_t at = log.find("\n!");
-    if (at == std::string::npos)
-        return "see its log";
-    std::size_t end = at + 1;
-    for (int lines = 0; lines < 3 && end != std::string::npos; ++lines)
-        end = log.find('\n', end + 1);
-    return log.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1);
 }
 
 // ---------------------------------------------------------------------------
@@ -250,7 +218,7 @@ void write_equations(report_writer& w)
     const std::vector<GiNaC::ex>& equations = *w.result().equations->residuals;
     const std::size_t n = scene.coordinates.size();
     w.latex("\\section{Equations of motion}\n");
-    w.text("The Euler--Lagrange equations");
+    w.text("The Euler–Lagrange equations");
     w.latex("\n\\[\\frac{d}{dt}\\frac{\\partial L}{\\partial \\dot{q}_{i}} - \\frac{\\partial L}{\\partial q_{i}} = 0\\]\n");
     w.text("give, one for each coordinate, after simplification:");
     w.latex("\n");
@@ -546,7 +514,6 @@ void report_writer::display(const std::string& lhs, const GiNaC::ex& e, const st
 
 namespace {
 
-const std::string align_open = "\\begin{align*}\n", align_close = "\n\\end{align*}\n";
 const std::string scaled_open = "\\[\\resizebox{\\linewidth}{!}{$\\displaystyle ", scaled_close = "$}\\]\n";
 
 /// A display from latex_equation, with a scaled one only ever scaled down
@@ -569,36 +536,24 @@ void report_writer::display_terms(const std::string& lhs, const std::vector<std:
 
 void report_writer::display_rows(const std::vector<row>& rows)
 {
-    // Consecutive aligned rows share one align*; a scaled row stands alone.
-    std::string block;
-    auto flush = [&] {
-        if (!block.empty())
-            out_ << "\n" << align_open << block << align_close;
-        block.clear();
-    };
     // A closed form of thousands of characters (a cubic's roots in many parameters)
     // helps no reader and can exceed what TeX reads in one line: it is named, not printed.
     constexpr std::size_t longest_printed = 3000;
+    std::vector<latex_row> shown;
     for (const row& r : rows) {
         std::size_t length = 0;
         for (const std::string& term : r.terms)
             length += term.size();
-        std::string display =
-            length <= longest_printed
-                ? latex_equation(r.lhs, r.terms, r.rhs, r.relation)
-                : latex_equation(r.lhs, {"\\text{(a closed form of " + std::to_string(length) +
-                                         " characters of \\LaTeX, too long to print)}"},
-                                 "", r.relation);
-        if (display.compare(0, align_open.size(), align_open) == 0 &&
-            display.size() >= align_open.size() + align_close.size()) {
-            block += (block.empty() ? "" : "\\\\[4pt]\n") +
-                     display.substr(align_open.size(), display.size() - align_open.size() - align_close.size());
-        } else {
-            flush();
-            out_ << "\n" << fitted(display);
-        }
+        if (length <= longest_printed)
+            shown.push_back({r.lhs, r.terms, r.rhs, r.relation});
+        else
+            shown.push_back({r.lhs,
+                             {"\\text{(a closed form of " + std::to_string(length) +
+                              " characters of \\LaTeX, too long to print)}"},
+                             "",
+                             r.relation});
     }
-    flush();
+    out_ << latex_equations(shown, fitted, "\n");
 }
 
 void report_writer::display_matrix(const std::string& lhs, const GiNaC::matrix& m)
@@ -610,30 +565,7 @@ std::string report_writer::name(const std::string& symbol_name) { return print_n
 
 std::string report_writer::math(const GiNaC::ex& e) { return print(e, syntax::latex); }
 
-std::string report_writer::number(double x, int digits)
-{
-    if (!std::isfinite(x))
-        return std::isnan(x) ? "\\mathrm{NaN}" : x > 0 ? "\\infty" : "-\\infty";
-    std::string plain;
-    if (digits <= 0) {
-        char buffer[64];
-        auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-        plain = error == std::errc() ? std::string(buffer, end) : "?";
-    } else {
-        char buffer[64];
-        std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
-        plain = buffer;
-    }
-    std::size_t e = plain.find('e');
-    if (e == std::string::npos)
-        return plain;
-    std::string exponent = plain.substr(e + 1);
-    if (!exponent.empty() && exponent[0] == '+')
-        exponent.erase(0, 1);
-    while (exponent.size() > 1 && (exponent[0] == '0' || (exponent[0] == '-' && exponent[1] == '0')))
-        exponent.erase(exponent[0] == '-' ? 1 : 0, 1);
-    return plain.substr(0, e) + "\\times10^{" + exponent + "}";
-}
+std::string report_writer::number(double x, int digits) { return latex_number(x, digits); }
 
 bool report_writer::figure(const std::string& name, const std::string& script, double width_cm, double height_cm,
                            const std::string& caption)
@@ -641,29 +573,21 @@ bool report_writer::figure(const std::string& name, const std::string& script, d
     if (!options_.plots)
         return false;
     if (gnuplot_state_ == 0)
-        gnuplot_state_ = program_available("gnuplot") ? 1 : -1;
+        gnuplot_state_ = gnuplot_available() ? 1 : -1;
     if (gnuplot_state_ < 0) {
         text("(gnuplot was not found, so this figure is left out.)");
         out_ << "\n";
         return false;
     }
-    private_directory folder;
-    char size[96];
-    std::snprintf(size, sizeof size, "%.2fcm,%.2fcm", width_cm, height_cm);
-    folder.write("figure.gp", "set encoding utf8\nset terminal pdfcairo noenhanced color font 'Sans,9' size " +
-                                  std::string(size) + "\nset output 'figure.pdf'\n" + script + "unset output\n");
-    program_result run = run_program({"gnuplot", "figure.gp"}, folder.path(), "gnuplot.log", {"SOURCE_DATE_EPOCH=0"});
-    if (run.exit_code != 0) {
-        std::string log;
-        try {
-            log = folder.read("gnuplot.log");
-        } catch (const computation_error&) {
-        }
+    const std::string size = fixed(width_cm, 2) + "cm," + fixed(height_cm, 2) + "cm";
+    gnuplot_run run = run_gnuplot("set encoding utf8\nset terminal pdfcairo noenhanced color font 'Sans,9' size " + size +
+                                      "\nset output 'figure.pdf'\n" + script + "unset output\n",
+                                  "figure.pdf", {}, {"SOURCE_DATE_EPOCH=0"});
+    if (!run.drawn)
         throw computation_error("gnuplot could not draw the figure `" + name + "`" +
-                                (run.timed_out ? std::string(" (timed out)") : "") + ": " + log.substr(0, 400));
-    }
+                                (run.timed_out ? std::string(" (timed out)") : "") + ": " + run.log.substr(0, 400));
     std::string file = options_.figure_prefix + name;
-    figures_.push_back({file + ".pdf", strip_pdf_dates(folder.read("figure.pdf"))});
+    figures_.push_back({file + ".pdf", strip_pdf_dates(run.plot)});
     out_ << "\\begin{figure}[htbp]\n\\centering\n\\includegraphics[width=" << (width_cm >= 16.5 ? "\\linewidth" : "")
          << (width_cm >= 16.5 ? "" : std::to_string(static_cast<int>(width_cm * 10)) + "mm") << "]{" << file
          << "}\n\\caption{" << caption << "}\n\\end{figure}\n";
@@ -767,29 +691,10 @@ report_document build_report(const analysis& result, const source_text& source, 
 
 std::string compile_report(const report_document& document)
 {
-    if (!program_available("pdflatex"))
-        throw computation_error("pdflatex is not installed, so the report cannot be written as PDF "
-                                "(install texlive-latex-base, or write FILE.tex)");
-    private_directory folder;
-    folder.write("report.tex", document.latex);
+    std::vector<std::pair<std::string, std::string>> files;
     for (const report_file& f : document.figures)
-        folder.write(f.name, f.bytes);
-    // Twice, so that references settle; the dates come from SOURCE_DATE_EPOCH.
-    for (int pass = 0; pass < 2; ++pass) {
-        program_result run = run_program({"pdflatex", "-interaction=nonstopmode", "-halt-on-error", "report.tex"},
-                                         folder.path(), "pdflatex.out",
-                                         {"SOURCE_DATE_EPOCH=0", "FORCE_SOURCE_DATE=1"});
-        if (run.exit_code != 0) {
-            std::string log;
-            try {
-                log = folder.read("report.log");
-            } catch (const computation_error&) {
-            }
-            throw computation_error("pdflatex could not compile the report" +
-                                    (run.timed_out ? std::string(" (timed out)") : "") + ": " + first_latex_error(log));
-        }
-    }
-    return folder.read("report.pdf");
+        files.emplace_back(f.name, f.bytes);
+    return compile_latex(document.latex, files);
 }
 
 std::string values_latex(const numeric_modes& point)

@@ -13,33 +13,33 @@ namespace lagrange {
 /// The figure of the mode shapes, with a sentence on which mode is in phase.
 void write_mode_figures(report_writer& w);
 
-/// The rigid-body sections (report_bodies.cpp): each inertia component as the
+/// The rigid-body sections (bodies_report.cpp): each inertia component as the
 /// integral it comes from, the tensor, L and T; the heavy top; Euler's
 /// equations, the torque-free solution, conserved quantities, stability, polhode.
 void write_body_sections(report_writer& w);
 
-/// The motion in time (report_motion.cpp): the simulation with the coordinates
+/// The motion in time (simulation_report.cpp): the simulation with the coordinates
 /// against time (the beats, measured against 2π/(ω₊ − ω₋)), the work-precision diagram.
 void write_motion_sections(report_writer& w);
 
-/// The gyroscopic sections (report_gyroscopic.cpp): G with the Kelvin–Tait–Chetaev
+/// The gyroscopic sections (gyroscopic_report.cpp): G with the Kelvin–Tait–Chetaev
 /// verdict, and the numeric values from the quadratic eigenproblem with complex modes.
 void write_gyroscopic_matrix(report_writer& w);
 void write_gyroscopic_numeric(report_writer& w);
 
-/// An L that depends on t (report_floquet.cpp): the Floquet multipliers about the points
+/// An L that depends on t (floquet_report.cpp): the Floquet multipliers about the points
 /// that solve the equations at every t.
 void write_floquet_section(report_writer& w);
 
-/// Damped small oscillations (report_damping.cpp): C, det(K + sC + s²M) with its roots and
+/// Damped small oscillations (damping_report.cpp): C, det(K + sC + s²M) with its roots and
 /// regimes, proportional damping, and the damped eigenvalues at the `values` points.
 void write_damping_section(report_writer& w);
-/// The linearized input–output system (report_damping.cpp): A, B and the transfer functions.
+/// The linearized input–output system (damping_report.cpp): A, B and the transfer functions.
 void write_linear_system_section(report_writer& w);
-/// Symmetries (report_symmetries.cpp): the conserved quantities, the Hamiltonian, Routh's
+/// Symmetries (symmetries_report.cpp): the conserved quantities, the Hamiltonian, Routh's
 /// reduction and the steady motion.
 void write_symmetries_section(report_writer& w);
-/// Scenes with constraints (report_constraints.cpp): the constraints with their kind and
+/// Scenes with constraints (constraints_report.cpp): the constraints with their kind and
 /// integrability, the multipliers and the constraint forces.
 void write_constraints_section(report_writer& w);
 

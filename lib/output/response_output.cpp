@@ -2,6 +2,8 @@
  *  Writers of the frequency response. */
 #include "output/response_output.h"
 
+#include "core/number_text.h"
+
 #include "output/print.h"
 #include "output/simulation_output.h"
 
@@ -91,9 +93,7 @@ void plot_response(const std::string& path, const frequency_response& r, const s
     // The resonance peak, marked where the search found one inside the range.
     const bool peak = std::isfinite(r.peak_omega) && std::isfinite(r.peak_magnitude) && r.peak_magnitude > 0;
     if (peak) {
-        std::ostringstream shown;
-        shown << std::setprecision(6) << r.peak_omega;
-        script << "set label 1 " << gnuplot_quoted("resonance ω_r = " + shown.str()) << " at "
+        script << "set label 1 " << gnuplot_quoted("resonance ω_r = " + significant(r.peak_omega, 6)) << " at "
                << round_trip(r.peak_omega) << ", " << round_trip(r.peak_magnitude)
                << " offset 1.5,0.6 noenhanced\n";
     }

@@ -4,8 +4,10 @@
  *  a private temporary folder that is always removed. */
 #include "output/simulation_output.h"
 
-#include "system/external.h"
+#include "core/number_text.h"
+#include "system/gnuplot.h"
 #include "system/files.h"
+#include "output/latex_blocks.h"
 #include "output/print.h"
 #include "core/errors.h"
 
@@ -21,48 +23,13 @@ namespace lagrange {
 
 namespace {
 
-std::string number(double x, int digits = 6)
-{
-    char buffer[40];
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
-    return buffer;
-}
+std::string number(double x, int digits = 6) { return significant(x, digits); }
 
 /// x in LaTeX: 1.5\times10^{-9}.
-std::string latex_number(double x, int digits = 3)
+std::string short_latex(double x, int digits = 3)
 {
-    std::string text = number(x, digits);
-    std::size_t e = text.find('e');
-    if (e == std::string::npos)
-        return text;
-    std::string mantissa = text.substr(0, e);
-    int exponent = std::atoi(text.c_str() + e + 1);
-    return (mantissa == "1" ? "" : mantissa + "\\times") + "10^{" + std::to_string(exponent) + "}";
-}
-
-std::string latex_text(const std::string& text)
-{
-    std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        char c = text[i];
-        if (static_cast<unsigned char>(c) >= 0x80) {
-            if (text.compare(i, 3, "≤") == 0) { out += "$\\le$"; i += 2; continue; }
-            if (text.compare(i, 3, "…") == 0) { out += "\\ldots{}"; i += 2; continue; }
-            out += '?';
-            while (i + 1 < text.size() && (static_cast<unsigned char>(text[i + 1]) & 0xC0) == 0x80)
-                ++i;
-            continue;
-        }
-        if (c == '_' || c == '%' || c == '&' || c == '#' || c == '$' || c == '{' || c == '}')
-            out += std::string("\\") + c;
-        else if (c == '>')
-            out += "$>$";
-        else if (c == '<')
-            out += "$<$";
-        else
-            out += c;
-    }
-    return out;
+    const std::string text = latex_exponent(significant(x, digits));
+    return text.rfind("1\\times", 0) == 0 ? text.substr(7) : text; // 10^{-9}, not 1\times10^{-9}
 }
 
 std::string drift_of(const trajectory& run, const std::string& name)
@@ -73,42 +40,19 @@ std::string drift_of(const trajectory& run, const std::string& name)
     return "";
 }
 
-/// Runs gnuplot on `script` in `folder` (through run_program: argv, no shell); throws on failure.
-void run_gnuplot(const private_directory& folder, const std::string& script)
-{
-    folder.write("plot.gp", script);
-    if (!program_available("gnuplot"))
-        throw computation_error("gnuplot is not installed (Debian package gnuplot-nox): no plot drawn");
-    program_result run = run_program({"gnuplot", "plot.gp"}, folder.path(), "gnuplot.log");
-    if (run.timed_out)
-        throw computation_error("gnuplot did not finish in time: no plot drawn");
-    if (run.exit_code != 0)
-        throw computation_error("gnuplot failed to draw the plot");
-}
-
-/// A string literal for gnuplot: single quotes, with quotes and non-printing characters dropped.
-std::string gnuplot_string(const std::string& text)
-{
-    std::string out = "'";
-    for (char c : text)
-        if (c != '\'' && c != '\\' && (static_cast<unsigned char>(c) >= 0x20))
-            out += c;
-    return out + "'";
-}
-
-/// Copies the plot out of the temporary folder to `path` (see output_file).
-void deliver(const private_directory& folder, const std::string& path) { write_output(path, folder.read("plot.svg")); }
-
 } // namespace
 
 void draw_gnuplot_svg(const std::string& path, const std::string& script,
                       const std::vector<std::pair<std::string, std::string>>& files)
 {
-    private_directory folder;
-    for (const auto& [name, bytes] : files)
-        folder.write(name, bytes);
-    run_gnuplot(folder, script);
-    deliver(folder, path);
+    if (!gnuplot_available())
+        throw computation_error("gnuplot is not installed (Debian package gnuplot-nox): no plot drawn");
+    gnuplot_run run = run_gnuplot(script, "plot.svg", files);
+    if (run.timed_out)
+        throw computation_error("gnuplot did not finish in time: no plot drawn");
+    if (!run.drawn)
+        throw computation_error("gnuplot failed to draw the plot");
+    write_output(path, run.plot);
 }
 
 std::string gnuplot_quoted(const std::string& text) { return gnuplot_string(text); }
@@ -184,20 +128,24 @@ void write_workprecision_text(std::ostream& out, const workprecision_result& w)
     out << "\nWork precision (t from 0 to " << number(w.until) << "; error " << w.reference << ")\n";
     if (!w.evaluation.empty())
         out << "  evaluation: " << w.evaluation << '\n';
-    char line[200];
-    std::snprintf(line, sizeof line, "  %-18s %9s %11s %11s %10s %11s\n", "method", "tolerance", "error", "seconds",
-                  "steps", "energy");
-    out << line;
+    // Columns as printf's "%-18s %9s %11s %11s %10s %11s".
+    auto left = [](const std::string& text, std::size_t width) {
+        return text.size() < width ? text + std::string(width - text.size(), ' ') : text;
+    };
+    auto right = [](const std::string& text, std::size_t width) {
+        return text.size() < width ? std::string(width - text.size(), ' ') + text : text;
+    };
+    out << "  " << left("method", 18) << ' ' << right("tolerance", 9) << ' ' << right("error", 11) << ' '
+        << right("seconds", 11) << ' ' << right("steps", 10) << ' ' << right("energy", 11) << '\n';
     for (const workprecision_point& p : w.points) {
+        out << "  " << left(p.method, 18) << ' ' << right(scientific(p.tolerance, 0), 9);
         if (!p.failure.empty()) {
-            std::snprintf(line, sizeof line, "  %-18s %9.0e  ", p.method.c_str(), p.tolerance);
-            out << line << p.failure << '\n';
+            out << "  " << p.failure << '\n';
             continue;
         }
-        std::snprintf(line, sizeof line, "  %-18s %9.0e %11.3e %11.3e %10zu %11s\n", p.method.c_str(), p.tolerance,
-                      p.error ? *p.error : NAN, p.seconds, p.steps,
-                      p.energy_drift ? number(*p.energy_drift, 3).c_str() : "-");
-        out << line;
+        out << ' ' << right(scientific(p.error ? *p.error : NAN, 3), 11) << ' ' << right(scientific(p.seconds, 3), 11)
+            << ' ' << right(std::to_string(p.steps), 10) << ' '
+            << right(p.energy_drift ? number(*p.energy_drift, 3) : "-", 11) << '\n';
     }
 }
 
@@ -206,34 +154,34 @@ void write_simulation_latex(std::ostream& out, const simulation_result& s, bool 
     const trajectory& run = s.run;
     out << "\\subsection*{Simulation}\n";
     out << "Method " << latex_text(s.method) << " (" << latex_text(s.choice) << "), from $t = 0$ to $"
-        << latex_number(run.times.empty() ? 0 : run.times.back(), 6) << "$, tolerance $" << latex_number(s.tolerance)
-        << "$ relative and $" << latex_number(s.absolute_tolerance) << "$ absolute.";
+        << short_latex(run.times.empty() ? 0 : run.times.back(), 6) << "$, tolerance $" << short_latex(s.tolerance)
+        << "$ relative and $" << short_latex(s.absolute_tolerance) << "$ absolute.";
     if (s.missed_error)
-        out << " Run again at tolerance $" << latex_number(s.run_tolerance) << "$: the first run's error, $"
-            << latex_number(*s.missed_error) << "$, missed the tolerance.";
+        out << " Run again at tolerance $" << short_latex(s.run_tolerance) << "$: the first run's error, $"
+            << short_latex(*s.missed_error) << "$, missed the tolerance.";
     out << "\\\\\n";
     out << "\\begin{tabular}{ll}\n";
     out << "steps & " << run.steps << " (" << run.evaluations << " evaluations, " << run.jacobians
         << " Jacobians)\\\\\n";
     if (s.error_estimate)
-        out << "error estimate & $" << latex_number(*s.error_estimate) << "$ relative\\\\\n";
+        out << "error estimate & $" << short_latex(*s.error_estimate) << "$ relative\\\\\n";
     for (const auto& [name, drift] : run.invariant_drift) {
         if (name == "energy_balance")
-            out << "energy balance $h(t)-h(0)-\\int Q\\cdot\\dot q\\,dt$ & $" << latex_number(drift)
+            out << "energy balance $h(t)-h(0)-\\int Q\\cdot\\dot q\\,dt$ & $" << short_latex(drift)
                 << "$ relative\\\\\n";
         else
-            out << latex_text(name) << " drift & $" << latex_number(drift) << "$ relative\\\\\n";
+            out << latex_text(name) << " drift & $" << short_latex(drift) << "$ relative\\\\\n";
     }
     if (s.constraint_residual)
-        out << "constraint residual & $" << latex_number(*s.constraint_residual) << "$\\\\\n";
+        out << "constraint residual & $" << short_latex(*s.constraint_residual) << "$\\\\\n";
     for (const constraint_event& e : s.constraint_events)
-        out << "$\\lambda_{" << latex_text(e.constraint) << "}$ changes sign & $t = " << latex_number(e.time)
+        out << "$\\lambda_{" << latex_text(e.constraint) << "}$ changes sign & $t = " << short_latex(e.time)
             << "$\\\\\n";
     if (timings)
         out << "run time & " << number(run.seconds, 3) << " s\\\\\n";
     if (s.beats)
-        out << "beat period & measured $" << latex_number(s.beats->measured, 5)
-            << "$, predicted $2\\pi/(\\omega_2-\\omega_1) = " << latex_number(s.beats->predicted, 5) << "$\\\\\n";
+        out << "beat period & measured $" << short_latex(s.beats->measured, 5)
+            << "$, predicted $2\\pi/(\\omega_2-\\omega_1) = " << short_latex(s.beats->predicted, 5) << "$\\\\\n";
     out << "\\end{tabular}\n\n";
     if (s.error_estimate)
         out << "The error estimate is " << latex_text(s.error_basis) << ".\n";
@@ -247,8 +195,8 @@ void write_workprecision_latex(std::ostream& out, const workprecision_result& w)
     for (const workprecision_point& p : w.points) {
         if (!p.failure.empty() || !p.error)
             continue;
-        out << latex_text(p.method) << " & $" << latex_number(p.tolerance) << "$ & $" << latex_number(*p.error)
-            << "$ & $" << latex_number(p.seconds) << "$ & " << p.steps << "\\\\\n";
+        out << latex_text(p.method) << " & $" << short_latex(p.tolerance) << "$ & $" << short_latex(*p.error)
+            << "$ & $" << short_latex(p.seconds) << "$ & " << p.steps << "\\\\\n";
     }
     out << "\\end{tabular}\n";
 }
@@ -347,25 +295,18 @@ void write_trajectory_csv(std::ostream& out, const simulation_result& s)
         if (!s.first_order)
             out << ',' << name << "_dot";
     out << '\n';
-    char buffer[40];
     for (std::size_t k = 0; k < s.run.states.size(); ++k) {
-        std::snprintf(buffer, sizeof buffer, "%.17g", s.run.times[k]);
-        out << buffer;
-        for (std::size_t i = 0; i < (s.first_order ? n : 2 * n); ++i) {
-            std::snprintf(buffer, sizeof buffer, ",%.17g", s.run.states[k][i]);
-            out << buffer;
-        }
+        out << shortest(s.run.times[k]);
+        for (std::size_t i = 0; i < (s.first_order ? n : 2 * n); ++i)
+            out << ',' << shortest(s.run.states[k][i]);
         out << '\n';
     }
 }
 
 void plot_trajectory(const std::string& path, const simulation_result& s, const std::string& title)
 {
-    private_directory folder;
-    {
-        std::ofstream data(folder.path() + "/data.csv");
-        write_trajectory_csv(data, s);
-    }
+    std::ostringstream data;
+    write_trajectory_csv(data, s);
     std::ostringstream script;
     script << "set terminal svg size 900,420 dynamic font 'sans,12'\n"
               "set output 'plot.svg'\n"
@@ -377,29 +318,24 @@ void plot_trajectory(const std::string& path, const simulation_result& s, const 
         script << (i ? ", " : "") << "'data.csv' using 1:" << i + 2 << " with lines lw 1.2 title "
                << gnuplot_string(print_name(s.coordinates[i], syntax::text));
     script << '\n';
-    run_gnuplot(folder, script.str());
-    deliver(folder, path);
+    draw_gnuplot_svg(path, script.str(), {{"data.csv", data.str()}});
 }
 
 void plot_workprecision(const std::string& path, const workprecision_result& w, const std::string& title)
 {
-    private_directory folder;
     std::vector<std::string> methods;
     for (const workprecision_point& p : w.points)
         if (p.failure.empty() && p.error && *p.error > 0 && (methods.empty() || methods.back() != p.method))
             methods.push_back(p.method);
     if (methods.empty())
         throw computation_error("no run of the work-precision table succeeded: nothing to plot");
-    {
-        std::ofstream data(folder.path() + "/data.txt");
-        for (const std::string& m : methods) {
-            data << "# " << m << '\n';
-            for (const workprecision_point& p : w.points)
-                if (p.method == m && p.failure.empty() && p.error && *p.error > 0)
-                    data << number(p.seconds, 8) << ' ' << number(*p.error, 8) << ' ' << number(p.tolerance, 3)
-                         << '\n';
-            data << "\n\n";
-        }
+    std::ostringstream data;
+    for (const std::string& m : methods) {
+        data << "# " << m << '\n';
+        for (const workprecision_point& p : w.points)
+            if (p.method == m && p.failure.empty() && p.error && *p.error > 0)
+                data << number(p.seconds, 8) << ' ' << number(*p.error, 8) << ' ' << number(p.tolerance, 3) << '\n';
+        data << "\n\n";
     }
     std::ostringstream script;
     script << "set terminal svg size 900,560 dynamic enhanced font 'sans,12'\n"
@@ -411,8 +347,7 @@ void plot_workprecision(const std::string& path, const workprecision_result& w, 
         script << (k ? ", " : "") << "'data.txt' index " << k << " using 1:2 with linespoints lw 1.5 pt 7 ps 0.6 title "
                << gnuplot_string(methods[k]) << " noenhanced";
     script << '\n';
-    run_gnuplot(folder, script.str());
-    deliver(folder, path);
+    draw_gnuplot_svg(path, script.str(), {{"data.txt", data.str()}});
 }
 
 } // namespace lagrange

@@ -3,6 +3,8 @@
  *  that read back as the same double, so the output is byte-identical across runs. */
 #include "output/sweep_output.h"
 
+#include "core/number_text.h"
+
 #include <nlohmann/json.hpp>
 
 #include <charconv>
@@ -11,12 +13,7 @@ namespace lagrange {
 
 namespace {
 
-void put_number(std::ostream& out, double x)
-{
-    char buffer[32];
-    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    out.write(buffer, end - buffer);
-}
+void put_number(std::ostream& out, double x) { out << shortest(x); }
 
 } // namespace
 

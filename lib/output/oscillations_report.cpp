@@ -1,8 +1,10 @@
-/** @file report_modes.cpp
+/** @file oscillations_report.cpp
  *  The report's figure of the mode shapes: point masses in a plane drawn at
  *  equilibrium and displaced along each mode, or bar charts of the mode vectors.
  *  Positions are evaluated numerically here only to draw them. */
 #include "output/report_sections.h"
+
+#include "core/number_text.h"
 
 #include "output/print.h"
 
@@ -50,12 +52,7 @@ std::optional<double> evaluate(const GiNaC::ex& e, const GiNaC::exmap& at)
     }
 }
 
-std::string gnuplot_number(double x)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", std::abs(x) < 1e-12 ? 0.0 : x);
-    return buffer;
-}
+std::string gnuplot_number(double x) { return significant(std::abs(x) < 1e-12 ? 0.0 : x, 6); }
 
 /// The drawing of point-mass scenes in the plane: rods (constant distance from
 /// the origin or from another point), springs, masses, each mode at ± amplitude.
@@ -232,9 +229,7 @@ std::optional<std::string> pendulum_script(const analysis& result, const numeric
             }
             data << "EOD\n";
         }
-        char title[96];
-        std::snprintf(title, sizeof title, "mode %zu:  ω = %.4g", k + 1, numbers.omega[k]);
-        plots << "set title \"" << title << "\"\n"
+        plots << "set title \"mode " << k + 1 << ":  ω = " << significant(numbers.omega[k], 4) << "\"\n"
               << "plot $rest_lines_" << k << " with lines lc rgb '#b8b8b8' lw 3, "
               << "$rest_masses_" << k << " with points pt 7 ps 0.9 lc rgb '#b8b8b8', "
               << "$minus_lines_" << k << " with lines lc rgb '#c0392b' lw 2 dt 2, "
@@ -282,9 +277,7 @@ std::string bar_script(const model& scene, const numeric_modes& numbers)
            << "set xrange [0.4:" << n << ".6]\nset xzeroaxis lt -1\nset ytics 0.5\nset grid ytics lc rgb '#dddddd'\n"
            << "set multiplot layout 1," << n << "\n";
     for (std::size_t k = 0; k < n; ++k) {
-        char title[96];
-        std::snprintf(title, sizeof title, "mode %zu:  ω = %.4g", k + 1, numbers.omega[k]);
-        script << "set title \"" << title << "\"\n"
+        script << "set title \"mode " << k + 1 << ":  ω = " << significant(numbers.omega[k], 4) << "\"\n"
                << "plot $mode_" << k << " using 1:2:xtic(3) with boxes lc rgb '#1f4e9c'\n";
     }
     script << "unset multiplot\n";

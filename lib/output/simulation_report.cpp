@@ -1,4 +1,4 @@
-/** @file report_motion.cpp
+/** @file simulation_report.cpp
  *  The report's section on the motion in time: the simulation's setting and
  *  accuracy, the coordinates against time (the homework's beats, with the beat
  *  period measured in the trajectory against 2π/(ω₊ − ω₋) from the linearized
@@ -7,6 +7,8 @@
  *  run and the report is byte-identical, so the diagram measures work in steps
  *  (`lagrange workprecision` plots against run time). */
 #include "output/report_sections.h"
+
+#include "core/number_text.h"
 
 #include "output/latex_blocks.h"
 #include "output/print.h"
@@ -19,12 +21,7 @@ namespace lagrange {
 
 namespace {
 
-std::string gnuplot_number(double x)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", x);
-    return buffer;
-}
+std::string gnuplot_number(double x) { return significant(x, 9); }
 
 /// A plain-text name for gnuplot's labels (θ, φ̇ …).
 std::string plain_name(const std::string& name) { return print_name(name, syntax::text); }

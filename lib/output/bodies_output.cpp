@@ -1,8 +1,9 @@
-/** @file bodies.cpp
+/** @file bodies_output.cpp
  *  Printers of inertia tensors (with the integrals they come from), Euler's equations,
  *  their torque-free solutions, Poinsot's construction and the stability of rotations. */
-#include "output/bodies.h"
+#include "output/bodies_output.h"
 
+#include "output/latex_blocks.h"
 #include "output/print.h"
 
 #include <nlohmann/json.hpp>
@@ -292,21 +293,20 @@ void write_tops_latex(std::ostream& out, const analysis& result)
             << "With the cyclic momenta at their sleeping values $p_\\phi = p_\\psi = I_3 "
             << print(top.spin, syntax::latex) << "$, $I_1 = " << print(top.pivot_moment, syntax::latex)
             << "$ about the pivot and $I_3 = " << print(top.spin_moment, syntax::latex) << "$:\n"
-            << latex_line("V_{\\mathrm{eff}} = " + print(top.effective_potential, syntax::latex, order))
+            << latex_equation("V_{\\mathrm{eff}}", print_terms(top.effective_potential, syntax::latex, order), "")
             << "about $" << print(top.nutation, syntax::latex) << " = 0$ its curvature gives the sleeping-top condition\n"
-            << latex_line(print(top.condition, syntax::latex, order) + " > 0.");
+            << latex_equation("", print_terms(top.condition, syntax::latex, order), " > 0.");
         if (!top.precession_quadratic.empty()) {
             const term_order by_rate{{{top.precession}, {top.spin}}};
             const GiNaC::ex& w = top.precession;
             const std::vector<GiNaC::ex>& a = top.precession_quadratic;
             out << "Steady precession at $" << print(top.nutation, syntax::latex) << "$:\n"
-                << latex_line(print(a[2] * w * w + a[1] * w + a[0], syntax::latex, by_rate) + " = 0,")
-                << latex_line("\\Omega_{\\mathrm{slow}} = " + print(top.slow_precession, syntax::latex, order) +
-                              ",\\quad \\Omega_{\\mathrm{fast}} = " + print(top.fast_precession, syntax::latex, order));
+                << latex_equation("", print_terms(a[2] * w * w + a[1] * w + a[0], syntax::latex, by_rate), " = 0,")
+                << latex_equations({{"\\Omega_{\\mathrm{slow}}", print_terms(top.slow_precession, syntax::latex, order), ","},
+                                    {"\\Omega_{\\mathrm{fast}}", print_terms(top.fast_precession, syntax::latex, order)}});
             if (!top.nutation_frequency_squared.is_zero())
                 out << "Nutation about it:\n"
-                    << latex_line("\\omega^2 = " +
-                                  print(top.nutation_frequency_squared, syntax::latex, by_rate));
+                    << latex_equation("\\omega^2", print_terms(top.nutation_frequency_squared, syntax::latex, by_rate), "");
         }
     }
 }
@@ -358,13 +358,15 @@ void write_bodies_latex(std::ostream& out, const analysis& result)
         for (const euler_result& e : *result.euler) {
             const term_order order = euler_order(e);
             out << "Body $" << print_name(e.body, syntax::latex) << "$:\n";
-            for (const std::string& equation : printed(e.equations, syntax::latex, order))
-                out << latex_line(equation + " = 0");
-            if (!e.principal_equations.empty()) {
-                out << "In principal axes:\n";
-                for (const std::string& equation : printed(e.principal_equations, syntax::latex, order))
-                    out << latex_line(equation + " = 0");
-            }
+            auto rows = [&](const std::vector<GiNaC::ex>& equations) {
+                std::vector<latex_row> r;
+                for (const GiNaC::ex& equation : equations)
+                    r.push_back({"", print_terms(equation, syntax::latex, order), " = 0"});
+                return latex_equations(r);
+            };
+            out << rows(e.equations);
+            if (!e.principal_equations.empty())
+                out << "In principal axes:\n" << rows(e.principal_equations);
             if (e.torque_free && !e.moments.empty())
                 display("T = " + print(e.kinetic_energy, syntax::latex, order) +
                         ",\\quad |L|^{2} = " + print(e.angular_momentum_squared, syntax::latex, order));

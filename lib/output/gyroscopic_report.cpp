@@ -1,4 +1,4 @@
-/** @file report_gyroscopic.cpp
+/** @file gyroscopic_report.cpp
  *  The report's sections on a Lagrangian with a part linear in the velocities: the
  *  gyroscopic matrix G and the Kelvin–Tait–Chetaev verdict, and the numeric values from
  *  the quadratic eigenproblem with their complex modes. */

@@ -1,4 +1,4 @@
-/** @file report_constraints.cpp
+/** @file constraints_report.cpp
  *  The report's section on constraints: each constraint with its kind and integrability,
  *  the equations with multipliers, the multipliers solved and the constraint forces. */
 #include "output/report_sections.h"

@@ -1,4 +1,4 @@
-/** @file report_floquet.cpp
+/** @file floquet_report.cpp
  *  The report's section on an L that depends on t: the points that solve the equations
  *  at every t and the Floquet multipliers about them. */
 #include "output/report_sections.h"

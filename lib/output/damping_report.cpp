@@ -1,4 +1,4 @@
-/** @file report_damping.cpp
+/** @file damping_report.cpp
  *  The report's sections on non-conservative small oscillations: the damping matrix,
  *  det(K + sC + s²M) with its roots and regimes, proportional damping, the damped
  *  eigenvalues at the `values` points; and the linearized input–output system (the

@@ -1,4 +1,4 @@
-/** @file report_bodies.cpp
+/** @file bodies_report.cpp
  *  The report's rigid-body sections: each inertia component as the integral it
  *  comes from (the homework's eqs. 16–35: the density with its deltas, the
  *  integral in body coordinates, the same integral set up in the coordinates the
@@ -9,6 +9,8 @@
  *  arithmetic here is presentation (a constant density taken in front of an
  *  integral, the closed-form ω(t) evaluated to draw it). */
 #include "output/report_sections.h"
+
+#include "core/number_text.h"
 
 #include "output/latex_blocks.h"
 #include "output/print.h"
@@ -136,12 +138,7 @@ std::string omega_row(const std::vector<GiNaC::ex>& omega)
     return text + ")^{T}";
 }
 
-std::string gnuplot_number(double x)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", std::abs(x) < 1e-14 ? 0.0 : x);
-    return buffer;
-}
+std::string gnuplot_number(double x) { return significant(std::abs(x) < 1e-14 ? 0.0 : x, 9); }
 
 /// A name of ω_k for gnuplot's labels (plain text, Unicode).
 std::string plain_name(const GiNaC::ex& e) { return print(e, syntax::text); }

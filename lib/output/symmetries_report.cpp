@@ -1,4 +1,4 @@
-/** @file report_symmetries.cpp
+/** @file symmetries_report.cpp
  *  The report's section on symmetries: the conserved quantities, the Hamiltonian,
  *  Routh's reduction of the cyclic coordinates and the steady motion. */
 #include "output/report_sections.h"

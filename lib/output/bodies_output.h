@@ -1,4 +1,4 @@
-/** @file bodies.h
+/** @file bodies_output.h
  *  The rigid-body products of an analysis (`inertia`, `euler`) in text, LaTeX and JSON.
  *  Called by the document printers; they take results and never compute mechanics. */
 #pragma once

@@ -1,0 +1,431 @@
+/** @file oscillations_output.cpp
+ *  The small-oscillations family in text, LaTeX and JSON (see oscillations_output.h). */
+#include "output/oscillations_output.h"
+
+#include "core/number_text.h"
+#include "output/damping_output.h"
+#include "output/latex_blocks.h"
+#include "output/print.h"
+
+#include <complex>
+#include <set>
+
+namespace lagrange {
+
+namespace {
+
+/// Parentheses that grow with what they hold in LaTeX (a fraction, a square root).
+std::string open_parenthesis(syntax s) { return s == syntax::latex ? "\\left(" : "("; }
+std::string close_parenthesis(syntax s) { return s == syntax::latex ? "\\right)" : ")"; }
+
+/// `coordinate = value` pairs of a point, in coordinate order.
+std::string position_text(const model& scene, const std::vector<GiNaC::ex>& position, syntax s)
+{
+    std::string out;
+    for (std::size_t i = 0; i < position.size(); ++i)
+        out += (i ? ", " : "") + print_name(scene.coordinates[i].name, s) + " = " + print(position[i], s);
+    return out;
+}
+
+std::string vector_text(const std::vector<GiNaC::ex>& v, syntax s)
+{
+    std::string out = s == syntax::latex ? "\\left(" : "(";
+    for (std::size_t i = 0; i < v.size(); ++i)
+        out += (i ? ", " : "") + print(v[i], s);
+    return out + (s == syntax::latex ? "\\right)" : ")");
+}
+
+/// An asymptotic ω² in series order: "(1 - √ρ)·g/l" from {g/l, 1, -√ρ}; the leading
+/// term alone when there are no corrections.
+std::string series_text(const std::vector<GiNaC::ex>& series, syntax s)
+{
+    if (series.size() <= 2)
+        return print(series.at(0), s);
+    std::string inner;
+    for (std::size_t t = 1; t < series.size(); ++t) {
+        std::string term = print(series[t], s);
+        if (t == 1)
+            inner = term;
+        else if (term.rfind('-', 0) == 0)
+            inner += " - " + term.substr(1);
+        else
+            inner += " + " + term;
+    }
+    if (series[0].is_equal(1))
+        return inner;
+    std::string times = s == syntax::text ? "·" : s == syntax::latex ? " " : "*";
+    return open_parenthesis(s) + inner + close_parenthesis(s) + times + print(series[0], s);
+}
+
+/// A normal coordinate ζ = scale·(q1 + c2·q2 + …) as "scale·(q1 + c2·q2 + …)": the
+/// factor without coordinates first, the combination in coordinate order with its
+/// first coefficient positive (a sign goes to the front).
+std::string normal_coordinate_text(const GiNaC::ex& zeta, const model& scene, syntax s)
+{
+    term_order order;
+    for (const coordinate& c : scene.coordinates)
+        order.groups.push_back({c.position});
+    auto has_coordinate = [&](const GiNaC::ex& e) {
+        for (const coordinate& c : scene.coordinates)
+            if (e.has(c.position))
+                return true;
+        return false;
+    };
+    if (!GiNaC::is_a<GiNaC::mul>(zeta))
+        return print(zeta, s, order);
+    GiNaC::ex scale = 1, combination = 1;
+    for (const GiNaC::ex& factor : zeta)
+        (has_coordinate(factor) ? combination : scale) *= factor;
+    if (!GiNaC::is_a<GiNaC::add>(combination) || scale.is_equal(1))
+        return print(zeta, s, order);
+    // The sign: the one of ±combination that prints without a leading minus (the
+    // shorter, then the smaller, if both or neither do). GiNaC may hold the sign
+    // inside or outside the sum from run to run; this choice does not depend on it.
+    std::string plus = print(combination, s, order), minus = print(-combination, s, order);
+    bool plus_negative = plus.rfind('-', 0) == 0, minus_negative = minus.rfind('-', 0) == 0;
+    bool flip = plus_negative != minus_negative
+                    ? plus_negative
+                    : (minus.size() != plus.size() ? minus.size() < plus.size() : minus < plus);
+    if (flip)
+        scale = -scale;
+    std::string times = s == syntax::text ? "·" : s == syntax::latex ? " " : "*";
+    std::string inner = open_parenthesis(s) + (flip ? minus : plus) + close_parenthesis(s);
+    if (scale.is_equal(-1))
+        return "-" + inner;
+    return print(scale, s) + times + inner;
+}
+
+
+
+/// A complex mode component as a + bi (b omitted when 0).
+std::string complex_text(std::complex<double> z)
+{
+    double re = z.real() == 0 ? 0.0 : z.real(); // no −0
+    if (z.imag() == 0)
+        return round_trip(re);
+    return round_trip(re) + (z.imag() < 0 ? " - " : " + ") + round_trip(std::abs(z.imag())) + "i";
+}
+
+nlohmann::ordered_json matrix_json(const GiNaC::matrix& m)
+{
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (unsigned i = 0; i < m.rows(); ++i) {
+        nlohmann::ordered_json row = nlohmann::ordered_json::array();
+        for (unsigned j = 0; j < m.cols(); ++j)
+            row.push_back(print(m(i, j), syntax::plain));
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+nlohmann::ordered_json strings_json(const std::vector<GiNaC::ex>& v)
+{
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const GiNaC::ex& e : v)
+        list.push_back(print(e, syntax::plain));
+    return list;
+}
+
+nlohmann::ordered_json vectors_json(const std::vector<std::vector<GiNaC::ex>>& vectors)
+{
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const auto& v : vectors)
+        list.push_back(strings_json(v));
+    return list;
+}
+
+} // namespace
+
+void write_oscillations_text(std::ostream& out, const analysis& result)
+{
+    const model& scene = *result.scene;
+    const syntax s = syntax::text;
+    if (result.equilibria) {
+        out << "\nEquilibria\n";
+        for (std::size_t k = 0; k < result.equilibria->points.size(); ++k) {
+            const equilibrium_point& p = result.equilibria->points[k];
+            out << "  " << position_text(scene, p.position, s) << ": " << to_string(p.kind)
+                << (k == result.equilibria->chosen && result.linearization ? "  (linearized about)" : "") << '\n';
+        }
+    }
+    if (result.linearization) {
+        const linearization_result& l = *result.linearization;
+        out << "\nLinearization\n";
+        std::vector<const char*> matrices{"T", "V"};
+        if (l.has_gyroscopic())
+            matrices.push_back("G");
+        for (const char* which : matrices) {
+            const GiNaC::matrix& m = std::string(which) == "T" ? l.kinetic
+                                     : std::string(which) == "V" ? l.potential
+                                                                 : l.gyroscopic;
+            out << "  " << which << " =";
+            for (unsigned i = 0; i < m.rows(); ++i) {
+                out << (i ? "      " : " ") << "[";
+                for (unsigned j = 0; j < m.cols(); ++j)
+                    out << (j ? ", " : "") << print(m(i, j), s);
+                out << "]\n";
+            }
+        }
+    }
+    if (result.characteristic)
+        out << "\nCharacteristic polynomial\n  " << print(result.characteristic->polynomial, s, omega_order(result))
+            << " = 0\n";
+    if (result.modes) {
+        const modes_result& m = *result.modes;
+        if (!m.closed_form) {
+            out << "\nNormal modes\n  no closed form found (see the numeric modes)\n";
+        } else {
+            std::string w2 = print_name(result.characteristic->omega.get_name(), s) + (m.gyroscopic ? "" : "²");
+            out << "\nNormal modes" << (modes_are_undamped(result) ? " (of the undamped system, C = 0)" : "") << '\n';
+            for (std::size_t k = 0; k < m.frequencies.size(); ++k) {
+                out << "  " << w2 << " = " << print(m.frequencies[k], s) << '\n';
+                if (k < m.modes.size())
+                    out << "    mode " << vector_text(m.modes[k], s) << '\n';
+                if (k < m.normal_coordinates.size())
+                    out << "    ζ = " << normal_coordinate_text(m.normal_coordinates[k], scene, s) << '\n';
+            }
+            if (scene.ratio && !m.frequencies_in_ratio.empty()) {
+                out << "  with " << print_name(scene.ratio->name, s) << " = " << print(scene.ratio->definition, s)
+                    << ":\n";
+                for (std::size_t k = 0; k < m.frequencies_in_ratio.size(); ++k) {
+                    out << "    " << w2 << " = " << print(m.frequencies_in_ratio[k], s) << '\n';
+                    if (k < m.modes_in_ratio.size())
+                        out << "      mode " << vector_text(m.modes_in_ratio[k], s) << '\n';
+                    if (k < m.normal_coordinates_in_ratio.size())
+                        out << "      ζ = " << normal_coordinate_text(m.normal_coordinates_in_ratio[k], scene, s)
+                            << '\n';
+                }
+            }
+        }
+    }
+    if (result.asymptotic) {
+        const asymptotic_result& a = *result.asymptotic;
+        out << "\nAsymptotic (" << a.label << ")\n";
+        for (std::size_t k = 0; k < a.frequencies.size(); ++k) {
+            out << "  " << print_name(result.characteristic->omega.get_name(), s) << "² → "
+                << (k < a.frequency_series.size() ? series_text(a.frequency_series[k], s) : print(a.frequencies[k], s));
+            if (k < a.modes.size())
+                out << ",  mode " << vector_text(a.modes[k], s);
+            out << '\n';
+            if (k < a.normal_coordinates.size())
+                out << "    ζ → " << normal_coordinate_text(a.normal_coordinates[k], scene, s) << '\n';
+        }
+        for (const beat& b : a.beats)
+            out << "  beats of modes " << b.lower + 1 << " and " << b.upper + 1 << ": ω" << b.upper + 1 << " - ω"
+                << b.lower + 1 << " → " << print(b.difference, s) << ",  period 2π/(ω" << b.upper + 1 << " - ω"
+                << b.lower + 1 << ") → " << print(b.period, s) << '\n';
+    }
+    if (result.numeric) {
+        out << "\nNumeric modes" << (modes_are_undamped(result) ? " (ω and modes of the undamped system, C = 0)" : "")
+            << '\n';
+        for (const numeric_modes& n : *result.numeric) {
+            out << "  at";
+            for (const auto& [name, value] : n.values)
+                out << ' ' << print_name(name, s) << " = " << round_trip(value);
+            out << "  (" << n.method << ")\n";
+            if (!n.stability.empty() && !n.damped)
+                out << "    " << n.stability << '\n';
+            for (std::size_t k = 0; k < n.omega.size(); ++k) {
+                out << "    ω = " << round_trip(n.omega[k]) << "  (relative error ≤ " << round_trip(n.error[k])
+                    << ")  mode (";
+                for (Eigen::Index i = 0; i < n.modes.rows(); ++i)
+                    out << (i ? ", " : "") << round_trip(n.modes(i, static_cast<Eigen::Index>(k)));
+                for (Eigen::Index i = 0; i < n.complex_modes.rows(); ++i)
+                    out << (i ? ", " : "") << complex_text(n.complex_modes(i, static_cast<Eigen::Index>(k)));
+                out << ")\n";
+            }
+            if (n.damped)
+                write_damped_eigenvalues_text(out, n);
+        }
+    }
+}
+
+void write_oscillations_latex(std::ostream& out, const analysis& result)
+{
+    const model& scene = *result.scene;
+    const syntax s = syntax::latex;
+    if (result.equilibria) {
+        out << "\\subsection*{Equilibria}\n\\begin{itemize}\n";
+        for (const equilibrium_point& p : result.equilibria->points)
+            out << "\\item $" << position_text(scene, p.position, s) << "$: " << to_string(p.kind) << "\n";
+        out << "\\end{itemize}\n";
+    }
+    if (result.linearization) {
+        // T and V (and G) side by side when they fit on a line, else one below the other.
+        const linearization_result& l = *result.linearization;
+        std::vector<latex_row> rows{{"T", {latex_matrix(l.kinetic)}}, {"V", {latex_matrix(l.potential)}}};
+        if (l.has_gyroscopic())
+            rows.push_back({"G", {latex_matrix(l.gyroscopic)}});
+        std::string side_by_side;
+        for (const latex_row& r : rows)
+            side_by_side += (side_by_side.empty() ? "" : ", & ") + r.lhs + " &= " + r.terms[0];
+        out << "\\subsection*{Linearization}\n";
+        if (latex_math_width(side_by_side) <= 50) // align*'s gap between the pairs is wide
+            out << "\\begin{align*}\n" << side_by_side << "\n\\end{align*}\n";
+        else
+            out << latex_equations(rows);
+    }
+    if (result.characteristic)
+        out << "\\subsection*{Characteristic polynomial}\n"
+            << latex_equation("", print_terms(result.characteristic->polynomial, s, omega_order(result)), " = 0");
+    std::string w2 = print_name(result.characteristic ? result.characteristic->omega.get_name() : "omega", s) + "^{2}";
+    auto index = [](std::size_t k) { return "_{" + std::to_string(k + 1) + "}"; };
+    if (result.modes && result.modes->closed_form) {
+        const modes_result& m = *result.modes;
+        if (m.gyroscopic)
+            w2 = print_name(result.characteristic->omega.get_name(), s);
+        out << "\\subsection*{Normal modes}\n";
+        if (modes_are_undamped(result))
+            out << "These are the modes of the undamped system ($C = 0$); the damping is below.\n\n";
+        std::vector<latex_row> rows;
+        for (std::size_t k = 0; k < m.frequencies.size(); ++k) {
+            rows.push_back({w2 + index(k), print_terms(m.frequencies[k], s)});
+            if (k < m.modes.size())
+                rows.push_back({"a" + index(k), {vector_text(m.modes[k], s)}});
+        }
+        for (std::size_t k = 0; k < m.normal_coordinates.size(); ++k)
+            rows.push_back({"\\zeta" + index(k), {normal_coordinate_text(m.normal_coordinates[k], scene, s)}});
+        out << latex_equations(rows);
+        if (scene.ratio && !m.frequencies_in_ratio.empty()) {
+            out << "With $" << print_name(scene.ratio->name, s) << " = " << print(scene.ratio->definition, s) << "$:\n";
+            std::vector<latex_row> in_ratio;
+            for (std::size_t k = 0; k < m.frequencies_in_ratio.size(); ++k)
+                in_ratio.push_back({w2 + index(k), print_terms(m.frequencies_in_ratio[k], s)});
+            out << latex_equations(in_ratio);
+        }
+    }
+    if (result.asymptotic) {
+        const asymptotic_result& a = *result.asymptotic;
+        out << "\\subsection*{Asymptotic behaviour}\n";
+        std::vector<latex_row> rows;
+        for (std::size_t k = 0; k < a.frequencies.size(); ++k)
+            rows.push_back({w2 + index(k),
+                            k < a.frequency_series.size() ? std::vector<std::string>{series_text(a.frequency_series[k], s)}
+                                                          : print_terms(a.frequencies[k], s),
+                            "", "\\to"});
+        for (std::size_t k = 0; k < a.normal_coordinates.size(); ++k)
+            rows.push_back({"\\zeta" + index(k), {normal_coordinate_text(a.normal_coordinates[k], scene, s)}, "", "\\to"});
+        for (const beat& b : a.beats) {
+            std::string pair = "\\omega" + index(b.upper) + " - \\omega" + index(b.lower);
+            rows.push_back({pair, {print(b.difference, s)}, "", "\\to"});
+            rows.push_back({"\\frac{2\\pi}{" + pair + "}", {print(b.period, s)}, "", "\\to"});
+        }
+        out << latex_equations(rows);
+    }
+    if (result.numeric) {
+        out << "\\subsection*{Numeric modes}\n";
+        if (modes_are_undamped(result))
+            out << "The frequencies $\\omega$ are those of the undamped system ($C = 0$).\n\n";
+        for (const numeric_modes& n : *result.numeric) {
+            out << "\\noindent At $";
+            for (std::size_t i = 0; i < n.values.size(); ++i)
+                out << (i ? ",\\ " : "") << print_name(n.values[i].first, s) << " = "
+                    << print(GiNaC::numeric(n.values[i].second), s);
+            out << "$" << (n.stability.empty() || n.damped ? "" : " (" + n.stability + ")") << ":\n\\begin{align*}\n";
+            for (std::size_t k = 0; k < n.omega.size(); ++k)
+                out << "\\omega_{" << k + 1 << "} &= " << print(GiNaC::numeric(n.omega[k]), s)
+                    << " & \\text{(relative error} &\\le " << print(GiNaC::numeric(n.error[k]), s) << ")"
+                    << (k + 1 < n.omega.size() ? "\\\\\n" : "\n");
+            out << "\\end{align*}\n";
+            if (n.damped)
+                write_damped_eigenvalues_latex(out, n);
+        }
+    }
+    for (const std::string& note : result.notes)
+        out << "\\paragraph{Note.} " << latex_text(note) << "\n";
+}
+
+void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result)
+{
+    const model& scene = *result.scene;
+    if (result.equilibria) {
+        const equilibria_result& e = *result.equilibria;
+        auto position_json = [&](const equilibrium_point& p) {
+            nlohmann::ordered_json position = nlohmann::ordered_json::object();
+            for (std::size_t i = 0; i < p.position.size(); ++i)
+                position[scene.coordinates[i].name] = print(p.position[i], syntax::plain);
+            return position;
+        };
+        const equilibrium_point& chosen = e.points.at(e.chosen);
+        doc["equilibrium"] = position_json(chosen);
+        doc["stability"] = to_string(chosen.kind);
+        nlohmann::ordered_json all = nlohmann::ordered_json::array();
+        for (const equilibrium_point& p : e.points)
+            all.push_back({{"position", position_json(p)}, {"stability", to_string(p.kind)}});
+        doc["equilibria"] = all;
+    }
+    if (result.linearization) {
+        doc["T"] = matrix_json(result.linearization->kinetic);
+        doc["V"] = matrix_json(result.linearization->potential);
+        if (result.linearization->has_gyroscopic())
+            doc["gyroscopic"] = matrix_json(result.linearization->gyroscopic);
+    }
+    if (result.characteristic)
+        doc["characteristic"] = {{"variable", result.characteristic->omega.get_name()},
+                                 {"polynomial", print(result.characteristic->polynomial, syntax::plain,
+                                                      omega_order(result))}};
+    if (result.modes && result.modes->closed_form) {
+        const modes_result& m = *result.modes;
+        const std::set<product>& w = result.wanted;
+        if (w.count(product::frequencies) || w.count(product::asymptotic))
+            doc["frequencies"] = strings_json(m.frequencies);
+        if (w.count(product::modes))
+            doc["modes"] = vectors_json(m.modes);
+        if (w.count(product::normal_coordinates))
+            doc["normal_coordinates"] = strings_json(m.normal_coordinates);
+        if (scene.ratio && !m.frequencies_in_ratio.empty())
+            doc["ratio"] = {{"name", scene.ratio->name},
+                            {"definition", print(scene.ratio->definition, syntax::plain)},
+                            {"frequencies", strings_json(m.frequencies_in_ratio)},
+                            {"modes", vectors_json(m.modes_in_ratio)}};
+    }
+    if (result.asymptotic)
+        doc["asymptotic"] = {{result.asymptotic->label,
+                              {{"frequencies", strings_json(result.asymptotic->frequencies)},
+                               {"modes", vectors_json(result.asymptotic->modes)}}}};
+    if (result.asymptotic) {
+        nlohmann::ordered_json& limit = doc["asymptotic"][result.asymptotic->label];
+        limit["normal_coordinates"] = strings_json(result.asymptotic->normal_coordinates);
+        nlohmann::ordered_json beats = nlohmann::ordered_json::array();
+        for (const beat& b : result.asymptotic->beats)
+            beats.push_back({{"modes", {b.lower + 1, b.upper + 1}},
+                             {"difference", print(b.difference, syntax::plain)},
+                             {"period", print(b.period, syntax::plain)}});
+        limit["beats"] = beats;
+    }
+    if (result.numeric) {
+        nlohmann::ordered_json points = nlohmann::ordered_json::array();
+        for (const numeric_modes& n : *result.numeric) {
+            nlohmann::ordered_json values = nlohmann::ordered_json::object();
+            for (const auto& [name, value] : n.values)
+                values[name] = value;
+            nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+            for (Eigen::Index k = 0; k < n.modes.cols(); ++k) {
+                nlohmann::ordered_json column = nlohmann::ordered_json::array();
+                for (Eigen::Index i = 0; i < n.modes.rows(); ++i)
+                    column.push_back(n.modes(i, k));
+                modes.push_back(column);
+            }
+            for (Eigen::Index k = 0; k < n.complex_modes.cols(); ++k) {
+                nlohmann::ordered_json column = nlohmann::ordered_json::array();
+                for (Eigen::Index i = 0; i < n.complex_modes.rows(); ++i)
+                    column.push_back({n.complex_modes(i, k).real(), n.complex_modes(i, k).imag()});
+                modes.push_back(column);
+            }
+            points.push_back({{"values", values}, {"omega", n.omega}, {"modes", modes},
+                              {"error", n.error}, {"method", n.method}});
+            if (!n.eigenvalues.empty()) {
+                nlohmann::ordered_json eigenvalues = nlohmann::ordered_json::array();
+                for (const std::complex<double>& e : n.eigenvalues)
+                    eigenvalues.push_back({e.real(), e.imag()});
+                points.back()["eigenvalues"] = eigenvalues;
+                points.back()["stability"] = n.stability;
+                if (n.damped)
+                    write_damped_eigenvalues_json(points.back(), n);
+            }
+        }
+        doc["numeric"] = points;
+    }
+}
+
+} // namespace lagrange
