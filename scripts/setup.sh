@@ -10,6 +10,8 @@ packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2
 packages+=(libsleef-dev)
 # gnuplot draws the figures of `lagrange report` and `--plot` (without it they are left out)
 packages+=(gnuplot-nox)
+# Open MPI: `mpirun -np R lagrange ensemble ...` across processes and machines (optional in CMake)
+packages+=(libopenmpi-dev openmpi-bin)
 if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then
   packages+=(texlive-latex-base)
 fi
