@@ -219,7 +219,9 @@ void ensemble_map::draw(const std::string& path, const std::string& title)
         script << "set logscale y\n";
     if (flips && any_ && low_ > 0) {
         script << "set logscale cb\nset cbrange [" << number_text(low_) << ":"
-               << number_text(std::max(high_, low_ * 10)) << "]\n";
+               << number_text(std::max(high_, low_ * 10)) << "]\n"
+               << "set cbtics (0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, "
+                  "5000, 10000)\n";
     } else if (any_ && high_ > low_) {
         script << "set cbrange [" << number_text(low_) << ":" << number_text(high_) << "]\n";
     }
@@ -250,7 +252,7 @@ std::string ensemble_summary_text(const ensemble_problem& problem, const ensembl
         out << "ensemble: worst error estimate " << short_number(summary.worst_error) << " (|"
             << problem.columns().back() << " - rerun at tolerance " << short_number(problem.settings().tolerance / 1000)
             << "| on " << (problem.sample_every() == 1 ? std::string("every point")
-                                                       : "every " + std::to_string(problem.sample_every()) + "th point")
+                                                       : "1 point in " + std::to_string(problem.sample_every()))
             << ", " << summary.sampled << " in all; largest at " << problem.point_text(summary.worst_error_index)
             << ")\n";
     if (summary.failures > 0)
