@@ -3,8 +3,11 @@
 # double pendulum (tests/scenes/ensemble_double_pendulum.lag) over a COUNT x COUNT grid until
 # t = UNTIL, run with 1…T threads in one process and with 1…R processes of one thread each
 # (mpirun --oversubscribe), each REPEATS times (the fastest kept). Prints a Markdown table of
-# wall time, points per second, CPU seconds and the scaling efficiency (rate / (workers x the
-# one-worker rate)), and checks that every run wrote the same bytes.
+# wall time, points per second, the scaling efficiency (rate / (workers x the one-worker rate)),
+# and the CPU seconds of all processes with the work efficiency (CPU seconds of one worker / CPU
+# seconds of N: what the parallel run costs beyond the computation itself, which on a machine
+# busy with other work is the part of the scaling one can measure), and checks that every run
+# wrote the same bytes.
 #   bench/ensemble_scaling.sh [COUNT] [UNTIL] [MAX_WORKERS] [REPEATS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -40,9 +43,10 @@ run() {
 }
 echo "flip-time map ${count}x${count} (${points} points), until t = $until, $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg) at start"
 echo
-echo "| run | workers | wall s | points/s | CPU s | efficiency |"
-echo "|---|---:|---:|---:|---:|---:|"
+echo "| run | workers | wall s | points/s | efficiency | CPU s | points per CPU s | work efficiency |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|"
 base=""
+base_cpu=""
 for kind in threads mpi; do
   command -v mpirun >/dev/null 2>&1 || [ "$kind" = threads ] || { echo "(no mpirun: MPI rows left out)"; break; }
   for workers in $(seq 1 "$max_workers"); do
@@ -50,8 +54,10 @@ for kind in threads mpi; do
     wall=${result%% *}
     cpu=${result##* }
     [ -n "$base" ] || base=$wall
+    [ -n "$base_cpu" ] || base_cpu=$cpu
     label=$([ "$kind" = threads ] && echo "1 process, $workers threads" || echo "mpirun -np $workers, 1 thread each")
-    awk -v l="$label" -v w="$workers" -v t="$wall" -v c="$cpu" -v p="$points" -v b="$base" \
-      'BEGIN { printf "| %s | %d | %.2f | %.0f | %.2f | %.0f%% |\n", l, w, t, p / t, c, 100 * b / (t * w) }'
+    awk -v l="$label" -v w="$workers" -v t="$wall" -v c="$cpu" -v p="$points" -v b="$base" -v bc="$base_cpu" \
+      'BEGIN { printf "| %s | %d | %.2f | %.0f | %.0f%% | %.2f | %.0f | %.0f%% |\n", l, w, t, p / t, 100 * b / (t * w),
+               c, p / c, 100 * bc / c }'
   done
 done
