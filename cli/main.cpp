@@ -294,8 +294,11 @@ int ensemble_command(const ensemble_options& options)
     std::vector<lagrange::ensemble_axis> axes = lagrange::parse_ensemble_grid(options.grid, scene, options.random > 0);
     lagrange::ensemble_measure measure = lagrange::parse_ensemble_measure(options.measure, scene);
     lagrange::ensemble_settings settings;
+    const bool floquet = measure.what == lagrange::ensemble_measure::kind::floquet_stable;
     if (options.until)
         settings.until = *options.until;
+    else if (floquet)
+        settings.until = 1; // each run lasts one period of the drive
     else if (scene.simulation)
         settings.until = lagrange::real_value(scene.simulation->until, "the scene's `simulate until`");
     else
@@ -307,8 +310,13 @@ int ensemble_command(const ensemble_options& options)
     settings.random = options.random;
     settings.seed = options.seed;
     settings.native = !options.interpret;
-    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::equations});
-    lagrange::ensemble_problem problem(scene, *result.equations, axes, measure, settings);
+    // floquet_stable also needs the point that solves the equations at every t (the `time` stage).
+    std::set<lagrange::product> wanted{lagrange::product::equations};
+    if (floquet)
+        wanted.insert(lagrange::product::floquet);
+    lagrange::analysis result = lagrange::analyze(scene, wanted);
+    lagrange::ensemble_problem problem(scene, *result.equations, axes, measure, settings,
+                                       result.time ? &*result.time : nullptr);
 
     lagrange::ensemble_run_options run;
     run.threads = options.threads;
@@ -527,7 +535,7 @@ int run(int argc, char** argv)
     ensemble->add_option("--until", ensemble_options.until, "end time of every run (default: the scene's `simulate until`)")
         ->check(finite_number & CLI::PositiveNumber);
     ensemble->add_option("--measure", ensemble_options.measure,
-                         "final, flip_time, flip_time:COORDINATE or max_lyapunov")
+                         "final, flip_time, flip_time:COORDINATE, max_lyapunov or floquet_stable")
         ->capture_default_str();
     ensemble->add_option("-o,--output", ensemble_options.output, "FILE.csv, FILE.json or FILE.png (default: CSV on standard output)");
     ensemble->add_option("--threads", ensemble_options.threads, "threads per process (default: all cores)")

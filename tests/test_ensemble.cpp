@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -98,6 +99,42 @@ TEST_CASE("ensemble: max_lyapunov of linear systems is the closed form's growth 
     computed harmonic = run(load(linear_scene("")), "q=0.1..0.1:1", "max_lyapunov", until);
     CHECK_THAT(harmonic.rows[0][1], WithinAbs(stable, 1e-8));
     CHECK(std::abs(harmonic.rows[0][1]) < 0.1); // λ = 0
+}
+
+TEST_CASE("ensemble: floquet_stable of the Kapitza pendulum agrees with the floquet product", "[ensemble]")
+{
+    // Upright and driven: unstable at gamma = 60, stable at 120 (a²γ² > 2gl above γ ≈ 88.6).
+    lagrange::model scene = load(read_file(std::string(LAGRANGE_SOURCE_DIR) + "/examples/kapitza_pendulum.lag"));
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations, lagrange::product::floquet});
+    REQUIRE(a.time);
+    REQUIRE(a.floquet);
+    lagrange::ensemble_settings settings;
+    lagrange::ensemble_problem problem(scene, *a.equations, lagrange::parse_ensemble_grid("gamma=60..120:2", scene),
+                                       lagrange::parse_ensemble_measure("floquet_stable", scene), settings, &*a.time);
+    CHECK(problem.columns() == std::vector<std::string>{"gamma", "floquet_stable", "max_multiplier"});
+    std::vector<std::vector<double>> rows;
+    lagrange::ensemble_sink sink;
+    sink.row = [&](std::size_t, const double* row) { rows.emplace_back(row, row + 3); };
+    lagrange::run_ensemble(problem, {}, sink);
+    REQUIRE(rows.size() == 2);
+    CHECK(rows[0][1] == 0);
+    CHECK(rows[1][1] == 1);
+    // The floquet product (its own linearization and integration) at the scene's two values lines.
+    for (const lagrange::floquet_point& f : *a.floquet) {
+        double gamma = 0, largest = 0;
+        for (const auto& [name, value] : f.values)
+            if (name == "gamma")
+                gamma = value;
+        for (const std::complex<double>& mu : f.multipliers)
+            largest = std::max(largest, std::abs(mu));
+        INFO("gamma = " << gamma);
+        CHECK_THAT(rows[gamma == 60 ? 0 : 1][2], WithinRel(largest, 1e-6));
+    }
+    lagrange::model still = load(linear_scene(""));
+    lagrange::analysis b = lagrange::analyze(still, {lagrange::product::equations});
+    CHECK_THROWS_WITH(lagrange::ensemble_problem(still, *b.equations, lagrange::parse_ensemble_grid("w=1..2:2", still),
+                                                 lagrange::parse_ensemble_measure("floquet_stable", still), settings),
+                      Catch::Contains("periodic in t"));
 }
 
 TEST_CASE("ensemble: final states of the harmonic oscillator and flip times of a free rotor", "[ensemble]")

@@ -5,12 +5,16 @@
 
 #include "algebra/calculus.h"
 #include "numeric/dop853.h"
+#include "numeric/floquet.h"
 #include "numeric/mass_matrix.h"
 #include "numeric/values.h"
+
+#include <Eigen/Eigenvalues>
 
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -52,11 +56,11 @@ struct ensemble_problem::run_result {
 
 namespace {
 
-/// The right-hand side (q̇, q̈) with M q̈ = f, and with `tangent` also the variational
-/// equations v̇ = J v for a tangent vector v after the state.
+/// The right-hand side (q̇, q̈) with M q̈ = f, and with `tangents` > 0 also the variational
+/// equations v̇ = J v for that many tangent vectors v after the state.
 struct point_rhs {
     std::size_t n = 0;
-    bool tangent = false;
+    std::size_t tangents = 0;
     native_module::function native_rhs = nullptr, native_jacobian = nullptr;
     const expression_program* rhs_program = nullptr;
     const expression_program* jacobian_program = nullptr;
@@ -77,43 +81,45 @@ struct point_rhs {
         symbols[2 * n] = t;
         evaluate(native_rhs, *rhs_program, work->outputs.data());
         std::copy(x + n, x + 2 * n, dxdt);
-        if (!solve_mass_matrix(work->outputs.data(), n, work->factor.data(), dxdt + n, tangent))
+        if (!solve_mass_matrix(work->outputs.data(), n, work->factor.data(), dxdt + n, tangents > 0))
             throw computation_error(singular_mass_matrix_message(t));
-        if (!tangent)
+        if (tangents == 0)
             return;
         // δq̈ = M⁻¹ (∂f/∂q δq + ∂f/∂q̇ δq̇ − Σ_k (∂M/∂q_k δq_k) q̈), M's factor kept from the solve.
         evaluate(native_jacobian, *jacobian_program, work->jacobian.data());
         const double* mass_derivative = work->jacobian.data();   // [k][i][j]: ∂M_ij/∂q_k
         const double* force_position = mass_derivative + n * n * n; // [i][k]: ∂f_i/∂q_k
         const double* force_velocity = force_position + n * n;      // [i][k]: ∂f_i/∂q̇_k
-        const double* v = x + 2 * n;
         const double* acceleration = dxdt + n;
         double* column = work->column.data();
-        for (std::size_t i = 0; i < n; ++i) {
-            double s = 0;
-            for (std::size_t k = 0; k < n; ++k) {
-                s += force_position[i * n + k] * v[k] + force_velocity[i * n + k] * v[n + k];
-                double mass_row = 0;
-                for (std::size_t j = 0; j < n; ++j)
-                    mass_row += mass_derivative[(k * n + i) * n + j] * acceleration[j];
-                s -= mass_row * v[k];
+        for (std::size_t tangent = 0; tangent < tangents; ++tangent) {
+            const double* v = x + 2 * n * (1 + tangent);
+            double* v_rate = dxdt + 2 * n * (1 + tangent);
+            for (std::size_t i = 0; i < n; ++i) {
+                double s = 0;
+                for (std::size_t k = 0; k < n; ++k) {
+                    s += force_position[i * n + k] * v[k] + force_velocity[i * n + k] * v[n + k];
+                    double mass_row = 0;
+                    for (std::size_t j = 0; j < n; ++j)
+                        mass_row += mass_derivative[(k * n + i) * n + j] * acceleration[j];
+                    s -= mass_row * v[k];
+                }
+                column[i] = s;
             }
-            column[i] = s;
+            ldlt_solve(work->factor.data(), n, column);
+            std::copy(v + n, v + 2 * n, v_rate);
+            std::copy(column, column + n, v_rate + n);
         }
-        ldlt_solve(work->factor.data(), n, column);
-        std::copy(v + n, v + 2 * n, dxdt + 2 * n);
-        std::copy(column, column + n, dxdt + 3 * n);
     }
 };
 
 /// The measure of one run from x0 (the state, then for Lyapunov the tangent vector).
 template <int Dim>
 void run_point(const point_rhs& f_in, const ensemble_measure& measure, const ensemble_settings& settings,
-               double tolerance, std::vector<double>& x0, double* values, std::size_t& steps)
+               double until, double tolerance, std::vector<double>& x0, double* values, std::size_t& steps)
 {
     point_rhs f = f_in;
     const std::size_t n = f.n;
-    const double until = settings.until;
     dop853_stepper<Dim> stepper(x0.size(), tolerance);
     auto advance = [&](double t_end) {
         if (!stepper.step(f, t_end))
@@ -192,6 +198,27 @@ void run_point(const point_rhs& f_in, const ensemble_measure& measure, const ens
         values[0] = sum / until;
         return;
     }
+    case ensemble_measure::kind::floquet_stable: {
+        // The monodromy matrix: the 2n tangent vectors, started as the identity's columns, after one period.
+        while (stepper.time() < until)
+            advance(until);
+        const auto d = static_cast<Eigen::Index>(2 * n);
+        Eigen::MatrixXd monodromy(d, d);
+        for (Eigen::Index column = 0; column < d; ++column)
+            for (Eigen::Index row = 0; row < d; ++row)
+                monodromy(row, column) = stepper.state()[static_cast<std::size_t>((1 + column) * d + row)];
+        if (!monodromy.allFinite())
+            throw computation_error("the monodromy matrix is not finite");
+        const Eigen::EigenSolver<Eigen::MatrixXd> solver(monodromy, false);
+        if (solver.info() != Eigen::Success)
+            throw computation_error("the Floquet multipliers could not be computed");
+        double largest = 0;
+        for (Eigen::Index k = 0; k < d; ++k)
+            largest = std::max(largest, std::abs(solver.eigenvalues()(k)));
+        values[0] = largest <= 1 + floquet_tolerance ? 1 : 0;
+        values[1] = largest;
+        return;
+    }
     }
 }
 
@@ -199,7 +226,7 @@ void run_point(const point_rhs& f_in, const ensemble_measure& measure, const ens
 
 ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion& equations,
                                    std::vector<ensemble_axis> axes, const ensemble_measure& measure,
-                                   const ensemble_settings& settings)
+                                   const ensemble_settings& settings, const time_dependence_result* time)
     : axes_(std::move(axes)), measure_(measure), settings_(settings)
 {
     n_ = scene.coordinates.size();
@@ -237,6 +264,10 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
         break;
     case ensemble_measure::kind::flip_time: columns_.push_back("flip_time"); break;
     case ensemble_measure::kind::max_lyapunov: columns_.push_back("max_lyapunov"); break;
+    case ensemble_measure::kind::floquet_stable:
+        columns_.push_back("floquet_stable");
+        columns_.push_back("max_multiplier");
+        break;
     }
 
     // The gridded parameters stay symbols (after q, q̇ and t); the others take their values.
@@ -267,7 +298,9 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
     }
     rhs_outputs = mass;
     rhs_outputs.insert(rhs_outputs.end(), force.begin(), force.end());
-    if (measure_.what == ensemble_measure::kind::max_lyapunov) {
+    const bool tangents = measure_.what == ensemble_measure::kind::max_lyapunov ||
+                          measure_.what == ensemble_measure::kind::floquet_stable;
+    if (tangents) {
         for (const coordinate& c : scene.coordinates)
             for (const GiNaC::ex& m : mass)
                 jacobian_outputs.push_back(differentiate(m, c.position));
@@ -290,6 +323,8 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
             }
             initial_outputs.push_back(value);
         }
+    if (measure_.what == ensemble_measure::kind::floquet_stable)
+        floquet_setup(scene, equations, time, values, parameter_symbols, initial_outputs);
     try {
         rhs_program_ = expression_program(rhs_outputs, symbols);
         jacobian_program_ = expression_program(jacobian_outputs, symbols);
@@ -301,7 +336,7 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
     if (settings_.native) {
         std::string why;
         std::vector<const expression_program*> programs{&rhs_program_};
-        if (measure_.what == ensemble_measure::kind::max_lyapunov)
+        if (tangents)
             programs.push_back(&jacobian_program_);
         native_ = native_module::compile(programs, {}, &why);
         if (native_) {
@@ -314,6 +349,48 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
         }
     } else {
         evaluation_ = "interpreter (--interpret)";
+    }
+}
+
+void ensemble_problem::floquet_setup(const model& scene, const equations_of_motion& equations,
+                                     const time_dependence_result* time,
+                                     const std::map<std::string, GiNaC::ex>& values,
+                                     const std::vector<GiNaC::ex>& parameter_symbols,
+                                     std::vector<GiNaC::ex>& initial_outputs)
+{
+    if (!time || !time->depends_on_time || time->points.empty())
+        throw computation_error("floquet_stable needs an L periodic in t and a point that solves the equations at "
+                                "every t (an `equilibrium` line)");
+    for (const ensemble_axis& a : axes_)
+        if (a.kind != ensemble_axis::target::parameter)
+            throw computation_error("floquet_stable starts at the point that solves the equations at every t: grid "
+                                    "parameters only, not `" + a.name + "`");
+    // The point, at rest, in place of the initial state.
+    const std::vector<GiNaC::ex>& point = time->points.front();
+    for (std::size_t i = 0; i < n_; ++i) {
+        initial_outputs[i] = at_values(point[i], scene, values);
+        initial_outputs[n_ + i] = 0;
+    }
+    // The period: 2π q / |ω₀|, q the common denominator of ω_j/ω₀, which must not depend on the grid.
+    const std::vector<GiNaC::ex> frequencies =
+        drive_frequencies(scene, equations, linearize_about(scene, equations, point));
+    if (frequencies.empty())
+        throw computation_error("L does not depend on t, so it has no period");
+    long denominators = 1;
+    const GiNaC::ex first = at_values(frequencies.front(), scene, values);
+    for (std::size_t j = 1; j < frequencies.size(); ++j) {
+        const GiNaC::ex ratio = (at_values(frequencies[j], scene, values) / first).normal();
+        const std::optional<long> q = frequency_ratio_denominator(ratio);
+        if (!q)
+            throw computation_error("the drive's frequencies are incommensurate, or their ratio depends on the grid: "
+                                    "no common period");
+        denominators = std::lcm(denominators, *q);
+    }
+    period_factor_ = 2 * pi * static_cast<double>(denominators);
+    try {
+        frequency_program_ = expression_program({first}, parameter_symbols);
+    } catch (const std::invalid_argument& error) {
+        throw computation_error(std::string("the drive's frequency cannot be compiled: ") + error.what());
     }
 }
 
@@ -361,14 +438,26 @@ std::string ensemble_problem::point_text(std::size_t index) const
 ensemble_problem::run_result ensemble_problem::integrate(const double* x_start, double tolerance,
                                                           ensemble_workspace& work) const
 {
-    const bool tangent = measure_.what == ensemble_measure::kind::max_lyapunov;
-    const std::size_t n = n_, dimension = tangent ? 4 * n : 2 * n;
+    const std::size_t n = n_;
+    std::size_t tangents = 0;
     std::vector<double> x0(x_start, x_start + 2 * n);
-    if (tangent) // the tangent vector starts along (1, 1, …, 1), normalized
+    double until = settings_.until;
+    if (measure_.what == ensemble_measure::kind::max_lyapunov) {
+        tangents = 1; // the tangent vector starts along (1, 1, …, 1), normalized
         x0.resize(4 * n, 1 / std::sqrt(static_cast<double>(2 * n)));
+    } else if (measure_.what == ensemble_measure::kind::floquet_stable) {
+        tangents = 2 * n; // the identity's columns
+        x0.resize(2 * n * (1 + 2 * n), 0.0);
+        for (std::size_t k = 0; k < 2 * n; ++k)
+            x0[2 * n * (1 + k) + k] = 1;
+        double frequency = 0;
+        frequency_program_.run(work.parameters.data(), work.scratch, &frequency);
+        until = period_factor_ / std::abs(frequency);
+    }
+    const std::size_t dimension = x0.size();
     point_rhs f;
     f.n = n;
-    f.tangent = tangent;
+    f.tangents = tangents;
     f.native_rhs = native_rhs_;
     f.native_jacobian = native_jacobian_;
     f.rhs_program = &rhs_program_;
@@ -377,12 +466,14 @@ ensemble_problem::run_result ensemble_problem::integrate(const double* x_start, 
     run_result result;
     double* values = work.outputs.data() + rhs_program_.output_count(); // after M and f
     try {
+        if (!(until > 0) || !std::isfinite(until))
+            throw computation_error("the period of the drive is not a positive number here");
         switch (dimension) {
-        case 2: run_point<2>(f, measure_, settings_, tolerance, x0, values, result.steps); break;
-        case 4: run_point<4>(f, measure_, settings_, tolerance, x0, values, result.steps); break;
-        case 6: run_point<6>(f, measure_, settings_, tolerance, x0, values, result.steps); break;
-        case 8: run_point<8>(f, measure_, settings_, tolerance, x0, values, result.steps); break;
-        default: run_point<0>(f, measure_, settings_, tolerance, x0, values, result.steps); break;
+        case 2: run_point<2>(f, measure_, settings_, until, tolerance, x0, values, result.steps); break;
+        case 4: run_point<4>(f, measure_, settings_, until, tolerance, x0, values, result.steps); break;
+        case 6: run_point<6>(f, measure_, settings_, until, tolerance, x0, values, result.steps); break;
+        case 8: run_point<8>(f, measure_, settings_, until, tolerance, x0, values, result.steps); break;
+        default: run_point<0>(f, measure_, settings_, until, tolerance, x0, values, result.steps); break;
         }
     } catch (const computation_error& error) {
         result.failed = true;

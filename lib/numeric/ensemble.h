@@ -9,6 +9,7 @@
 #pragma once
 
 #include "mechanics/equations_of_motion.h"
+#include "mechanics/time_dependence.h"
 #include "numeric/expression_program.h"
 #include "numeric/native_code.h"
 #include "core/model.h"
@@ -44,7 +45,7 @@ std::vector<ensemble_axis> parse_ensemble_grid(const std::string& text, const mo
 
 /// What each point is reduced to (`--measure`).
 struct ensemble_measure {
-    enum class kind { final_state, flip_time, max_lyapunov };
+    enum class kind { final_state, flip_time, max_lyapunov, floquet_stable };
     kind what = kind::final_state;
     /// flip_time: the coordinate watched; `any` watches every coordinate (the first flip of any).
     std::size_t coordinate = 0;
@@ -53,7 +54,7 @@ struct ensemble_measure {
     double renormalize_every = 1;
 };
 
-/// Parses `final`, `flip_time`, `flip_time:NAME` or `max_lyapunov`; throws scene_error
+/// Parses `final`, `flip_time`, `flip_time:NAME`, `max_lyapunov` or `floquet_stable`; throws scene_error
 /// located in the pseudo-file `--measure`.
 ensemble_measure parse_ensemble_measure(const std::string& text, const model& scene);
 
@@ -84,8 +85,11 @@ class ensemble_problem {
 public:
     /// Throws computation_error for a scene that cannot be run as an ensemble (constraints,
     /// no coordinates, a parameter without a value) and when the equations cannot be compiled.
+    /// `floquet_stable` needs `time`: the point that solves the equations at every t (its
+    /// first point) and the drive's frequencies come from there.
     ensemble_problem(const model& scene, const equations_of_motion& equations, std::vector<ensemble_axis> axes,
-                     const ensemble_measure& measure, const ensemble_settings& settings);
+                     const ensemble_measure& measure, const ensemble_settings& settings,
+                     const time_dependence_result* time = nullptr);
 
     std::size_t points() const { return points_; }
     /// The column names: the grid's names (or the random ranges'), then the measure's.
@@ -132,6 +136,13 @@ private:
     expression_program rhs_program_;      ///< M then f in (q, q̇, t, gridded parameters)
     expression_program jacobian_program_; ///< ∂M/∂q_k (n³), ∂f/∂q (n²), ∂f/∂q̇ (n²)
     expression_program initial_program_;  ///< the scene's initial (q, q̇) in the gridded parameters
+    /// floquet_stable: |ω₀|, the drive's base frequency, in the gridded parameters; the period
+    /// is period_factor_ / |ω₀| (2π times the common denominator of the frequency ratios).
+    expression_program frequency_program_;
+    double period_factor_ = 0;
+    void floquet_setup(const model& scene, const equations_of_motion& equations, const time_dependence_result* time,
+                       const std::map<std::string, GiNaC::ex>& values, const std::vector<GiNaC::ex>& parameter_symbols,
+                       std::vector<GiNaC::ex>& initial_outputs);
     std::shared_ptr<native_module> native_;
     native_module::function native_rhs_ = nullptr, native_jacobian_ = nullptr;
     std::string evaluation_;

@@ -177,15 +177,18 @@ ensemble_measure parse_ensemble_measure(const std::string& text, const model& sc
     ensemble_measure measure;
     std::size_t colon = text.find(':');
     std::string head = text.substr(0, colon);
-    if (head == "final" || head == "max_lyapunov") {
+    if (head == "final" || head == "max_lyapunov" || head == "floquet_stable") {
         if (colon != std::string::npos)
             bad_option("--measure", text, colon, "`" + head + "` takes no argument");
-        measure.what = head == "final" ? ensemble_measure::kind::final_state : ensemble_measure::kind::max_lyapunov;
+        measure.what = head == "final"          ? ensemble_measure::kind::final_state
+                       : head == "max_lyapunov" ? ensemble_measure::kind::max_lyapunov
+                                                : ensemble_measure::kind::floquet_stable;
         return measure;
     }
     if (head != "flip_time")
         bad_option("--measure", text, 0,
-                   "unknown measure `" + head + "`: use final, flip_time, flip_time:COORDINATE or max_lyapunov");
+                   "unknown measure `" + head +
+                       "`: use final, flip_time, flip_time:COORDINATE, max_lyapunov or floquet_stable");
     measure.what = ensemble_measure::kind::flip_time;
     if (colon == std::string::npos)
         return measure;
