@@ -211,7 +211,7 @@ void ensemble_map::draw(const std::string& path, const std::string& title)
            << " noenhanced\nset title " << gnuplot_quoted(title) << " noenhanced\n"
            << "set xrange [" << number_text(axes[0].from) << ":" << number_text(axes[0].to) << "]\n"
            << "set yrange [" << number_text(axes[1].from) << ":" << number_text(axes[1].to) << "]\n"
-           << "set size ratio -1\nset tics out\nunset key\n"
+           << "set size square\nset tics out\nunset key\n"
               "set palette defined (0 '#000004', 1 '#3b0f70', 2 '#8c2981', 3 '#de4968', 4 '#fe9f6d', 5 '#fcfdbf')\n";
     if (axes[0].logarithmic)
         script << "set logscale x\n";
