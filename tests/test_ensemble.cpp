@@ -166,7 +166,7 @@ TEST_CASE("ensemble: final states of the harmonic oscillator and flip times of a
     }
 }
 
-TEST_CASE("ensemble: the rows do not depend on the number of threads; random points are reproducible",
+TEST_CASE("ensemble: the rows do not depend on the number of threads, and random points are reproducible",
           "[ensemble]")
 {
     lagrange::model scene = load(read_file(pendulum));
