@@ -80,7 +80,9 @@ struct ensemble_workspace {
     std::vector<double> symbols, outputs, factor, jacobian, acceleration, column, state, parameters, scratch;
 };
 
-/// The compiled scene and the grid: what every thread and process shares.
+/// The compiled scene and the grid: what every thread and process shares. Its programs are its
+/// own, not compiled_motion's, whose evaluations share mutable scratch: expression_program::run
+/// takes the caller's scratch, and the native functions keep no state.
 class ensemble_problem {
 public:
     /// Throws computation_error for a scene that cannot be run as an ensemble (constraints,

@@ -249,9 +249,9 @@ std::string ensemble_summary_text(const ensemble_problem& problem, const ensembl
         out << " (" << short_number(static_cast<double>(summary.points) / summary.seconds) << " points/s)";
     out << "; " << summary.steps << " integration steps; evaluation: " << problem.evaluation() << '\n';
     if (summary.sampled > 0)
-        out << "ensemble: worst error estimate " << short_number(summary.worst_error) << " (|"
-            << problem.columns().back() << " - rerun at tolerance " << short_number(problem.settings().tolerance / 1000)
-            << "| on " << (problem.sample_every() == 1 ? std::string("every point")
+        out << "ensemble: worst error estimate " << short_number(summary.worst_error)
+            << " (the largest change of the measure in a rerun at tolerance "
+            << short_number(problem.settings().tolerance / 1000) << ", on " << (problem.sample_every() == 1 ? std::string("every point")
                                                        : "1 point in " + std::to_string(problem.sample_every()))
             << ", " << summary.sampled << " in all; largest at " << problem.point_text(summary.worst_error_index)
             << ")\n";
