@@ -113,7 +113,7 @@ struct point_rhs {
     }
 };
 
-/// The measure of one run from x0 (the state, then for Lyapunov the tangent vector).
+/// The measure of one run from x0: the state, then the tangent vectors (one for Lyapunov, 2n for Floquet).
 template <int Dim>
 void run_point(const point_rhs& f_in, const ensemble_measure& measure, const ensemble_settings& settings,
                double until, double tolerance, std::vector<double>& x0, double* values, std::size_t& steps)
