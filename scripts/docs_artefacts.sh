@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The example artefacts that docs/ links to and that the build does not make otherwise:
-# the Bode diagram of examples/damped_driven_oscillator.lag (docs/products.md).
+# the Bode diagram of examples/damped_driven_oscillator.lag (docs/products.md) and the
+# double pendulum's flip-time map (docs/ensemble.md; LAGRANGE_MAP_COUNT x LAGRANGE_MAP_COUNT
+# points, 200 by default, fewer in ctest to keep it quick).
 #
 #   scripts/docs_artefacts.sh [LAGRANGE] [FOLDER]
 #
@@ -24,3 +26,12 @@ if [ ! -s "$bode" ] || ! grep -q "<svg" "$bode" || ! grep -q "resonance" "$bode"
   exit 1
 fi
 echo "wrote $bode"
+count="${LAGRANGE_MAP_COUNT:-200}"
+map="$folder/ensemble_flip_map.png"
+"$lagrange" ensemble "$root/tests/scenes/ensemble_double_pendulum.lag" \
+  --grid "theta=-3.1..3.1:$count, phi=-3.1..3.1:$count" --until 10 --measure flip_time -o "$map"
+if [ ! -s "$map" ] || [ "$(head -c 4 "$map" | tail -c 3)" != PNG ]; then
+  echo "error: no PNG map drawn into $map" >&2
+  exit 1
+fi
+echo "wrote $map"
