@@ -21,8 +21,11 @@ cp "$peers"/common.py "$peers"/chain_scaling_sympy.py "$work/"
 python3 - "$work" "$max_n" "$limit" <<'PY'
 import json, os, subprocess, sys
 work, max_n, limit = sys.argv[1], int(sys.argv[2]), float(sys.argv[3])
-ours = {}
+ours, notes = {}, []
 for line in open(os.path.join(work, "ours.txt")).read().splitlines()[1:]:
+    if not line.split()[0].isdigit():
+        notes.append(line)  # the cubic's closed-form frequencies, after the table
+        continue
     n, det, full, terms = line.split()
     ours[int(n)] = (float(det), float(full), int(terms))
 peer = {}
@@ -51,4 +54,6 @@ for n in sorted(ours):
     b, r = peer.get(("charpoly_berkowitz", n)), peer.get(("charpoly_bareiss", n))
     print(f"{n:3d} {terms:7d} {det:9.4f} {full:9.4f} {cell(b, 12)} {cell(r, 10)} "
           f"{ratio(b, det, 9)} {ratio(b, full, 10)} {ratio(r, full, 13)}")
+for note in notes:
+    print("lagrange: " + note)
 PY
