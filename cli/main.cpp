@@ -61,6 +61,23 @@ struct progress_cleared_at_end {
     ~progress_cleared_at_end() { progress_line::standard_error().clear(); }
 };
 
+/// The products `--want` takes (the library's list, wrapped) and an example, for --help.
+std::string products_help()
+{
+    std::string text = "Products (--want, or a scene's `want` line):\n ";
+    std::size_t column = 1;
+    for (const auto& [unused, name] : lagrange::product_names()) {
+        if (column + name.size() + 2 > 78) {
+            text += "\n ";
+            column = 1;
+        }
+        text += " " + name + ",";
+        column += name.size() + 2;
+    }
+    text.pop_back();
+    return text + "\n\nExample:\n  lagrange examples/double_pendulum.lag --want equations,frequencies\n";
+}
+
 struct run_options {
     std::string scene_path;
     std::string want;
@@ -286,6 +303,7 @@ int run(int argc, char** argv)
         lagrange::show_stage_progress(progress_line::standard_error().callback());
 
     CLI::App app{"lagrange: equations of motion, equilibria, normal modes and rigid bodies from a scene file"};
+    app.footer(products_help());
     app.set_version_flag("--version", std::string("lagrange ") + LAGRANGE_VERSION);
     app.require_subcommand(0, 1);
 
@@ -316,6 +334,7 @@ int run(int argc, char** argv)
     report->add_option("-o,--output", report_options.output, "FILE.tex (figures beside it) or FILE.pdf (needs pdflatex)");
     report->add_option("--want", report_options.want, "products to derive, comma-separated (default: the scene's `want`)");
     report->add_option("--values", report_options.values, "a parameter point such as a=1,b=2.5 (repeatable)");
+    report->footer(products_help());
 
     motion_options simulate_options, workprecision_options;
     CLI::App* simulate = app.add_subcommand("simulate", "integrate the equations of motion from the initial state");
