@@ -3,10 +3,12 @@
  *  errors to exit codes (0 success, 1 computation not possible, 2 bad input or usage). */
 #include "engine/analysis.h"
 #include "output/document.h"
+#include "output/ensemble_output.h"
 #include "output/report.h"
 #include "output/response_output.h"
 #include "output/simulation_output.h"
 #include "output/sweep_output.h"
+#include "numeric/values.h"
 #include "scene/lower.h"
 #include "system/address_layout.h"
 #include "system/files.h"
@@ -232,6 +234,159 @@ int response_command(const response_options& options)
     return exit_ok;
 }
 
+struct ensemble_options {
+    std::string scene_path;
+    std::string grid;
+    std::optional<double> until;
+    std::string measure = "final";
+    std::string output;
+    std::size_t threads = 0;
+    std::optional<double> tolerance;
+    std::size_t random = 0;
+    std::uint64_t seed = 1;
+    bool resume = false;
+    bool interpret = false;
+    std::vector<std::string> values;
+};
+
+/// Points done, points per second and the time left, on standard error when it is a terminal.
+std::function<void(std::size_t, std::size_t)> ensemble_progress()
+{
+    if (!isatty(STDERR_FILENO))
+        return nullptr;
+    auto start = std::chrono::steady_clock::now();
+    auto shown = std::make_shared<double>(-1);
+    return [start, shown](std::size_t done, std::size_t total) {
+        double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (done >= total) {
+            if (*shown >= 0)
+                std::cerr << "\r" << std::string(72, ' ') << "\r" << std::flush;
+            return;
+        }
+        if (elapsed - *shown < 0.25 || done == 0)
+            return;
+        *shown = elapsed;
+        double rate = static_cast<double>(done) / elapsed;
+        auto left = static_cast<long>(static_cast<double>(total - done) / rate);
+        char line[96];
+        std::snprintf(line, sizeof line, "\rensemble: %zu/%zu points, %.0f points/s, %ld:%02ld:%02ld left ", done, total,
+                      rate, left / 3600, left / 60 % 60, left % 60);
+        std::cerr << line << std::flush;
+    };
+}
+
+/// `lagrange ensemble SCENE --grid "..." --until T`: the measure at every point of the grid,
+/// as CSV (standard output or -o FILE.csv), JSON (-o FILE.json) or a PNG map (-o FILE.png).
+int ensemble_command(const ensemble_options& options)
+{
+    auto ends_with = [&](const std::string& suffix) {
+        const std::string& p = options.output;
+        return p.size() > suffix.size() && p.compare(p.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    const bool png = ends_with(".png"), json = ends_with(".json");
+    const bool to_file = !options.output.empty() && options.output != "-";
+    if (to_file && !png && !json && !ends_with(".csv"))
+        throw usage_error("`ensemble -o` takes a file ending in .csv, .json or .png, not `" + options.output + "`");
+    if (options.resume && (!to_file || png || json))
+        throw usage_error("--resume continues a CSV file: give it with -o FILE.csv");
+    if (options.seed != 1 && options.random == 0)
+        throw usage_error("--seed goes with --random N");
+    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::model scene = lagrange::load_model(source);
+    for (const std::string& v : options.values)
+        lagrange::add_values(scene, v);
+    std::vector<lagrange::ensemble_axis> axes = lagrange::parse_ensemble_grid(options.grid, scene, options.random > 0);
+    lagrange::ensemble_measure measure = lagrange::parse_ensemble_measure(options.measure, scene);
+    lagrange::ensemble_settings settings;
+    const bool floquet = measure.what == lagrange::ensemble_measure::kind::floquet_stable;
+    if (options.until)
+        settings.until = *options.until;
+    else if (floquet)
+        settings.until = 1; // each run lasts one period of the drive
+    else if (scene.simulation)
+        settings.until = lagrange::real_value(scene.simulation->until, "the scene's `simulate until`");
+    else
+        throw usage_error("give the end time of every run with --until T (the scene has no `simulate until`)");
+    if (!(settings.until > 0) || !std::isfinite(settings.until))
+        throw usage_error("the end time must be a positive number");
+    if (options.tolerance)
+        settings.tolerance = *options.tolerance;
+    settings.random = options.random;
+    settings.seed = options.seed;
+    settings.native = !options.interpret;
+    // floquet_stable also needs the point that solves the equations at every t (the `time` stage).
+    std::set<lagrange::product> wanted{lagrange::product::equations};
+    if (floquet)
+        wanted.insert(lagrange::product::floquet);
+    lagrange::analysis result = lagrange::analyze(scene, wanted);
+    lagrange::ensemble_problem problem(scene, *result.equations, axes, measure, settings,
+                                       result.time ? &*result.time : nullptr);
+
+    lagrange::ensemble_run_options run;
+    run.threads = options.threads;
+    run.progress = ensemble_progress();
+    std::ofstream file;
+    std::unique_ptr<lagrange::ensemble_map> map;
+    std::ostream* out = &std::cout;
+    auto last_flush = std::chrono::steady_clock::now();
+    lagrange::ensemble_sink sink;
+    const bool rank_zero = lagrange::ensemble_root_process();
+    if (options.resume && rank_zero)
+        run.first = lagrange::resume_ensemble_csv(options.output, problem);
+    sink.begin = [&] {
+        if (png) {
+            map = std::make_unique<lagrange::ensemble_map>(problem);
+            return;
+        }
+        if (to_file) {
+            // Written as the rows come (no temporary file), so that an interrupted run leaves
+            // the rows done so far for --resume.
+            file.open(options.output, run.first > 0 ? std::ios::app | std::ios::binary : std::ios::trunc | std::ios::binary);
+            if (!file)
+                throw lagrange::file_error("cannot write `" + options.output + "`");
+            out = &file;
+        }
+        if (json)
+            lagrange::write_ensemble_json_begin(*out, problem);
+        else if (run.first == 0)
+            lagrange::write_ensemble_csv_header(*out, problem);
+    };
+    sink.row = [&](std::size_t index, const double* row) {
+        if (map) {
+            map->row(row);
+            return;
+        }
+        if (json)
+            lagrange::write_ensemble_json_row(*out, problem, index, row);
+        else
+            lagrange::write_ensemble_csv_row(*out, problem, row);
+        if (index % 64 == 0 && std::chrono::steady_clock::now() - last_flush > std::chrono::milliseconds(500)) {
+            out->flush();
+            last_flush = std::chrono::steady_clock::now();
+        }
+    };
+    if (options.resume && !rank_zero)
+        run.first = 0; // only rank 0 reads the file; it hands out the points from there
+    lagrange::ensemble_summary summary = lagrange::run_ensemble(problem, run, sink);
+    if (!summary.root)
+        return exit_ok;
+    if (json)
+        lagrange::write_ensemble_json_end(*out, problem, summary);
+    if (map)
+        map->draw(options.output, scene.title.empty() ? source.file() : scene.title);
+    if (file.is_open()) {
+        file.flush();
+        if (!file)
+            throw lagrange::computation_error("writing `" + options.output + "` failed");
+        file.close();
+    } else if (!png) {
+        lagrange::finish_standard_output();
+    }
+    std::string failure = summary.failures > 0 ? problem.failure_message(summary.first_failure) : "";
+    std::cerr << lagrange::ensemble_summary_text(problem, summary, failure);
+    return exit_ok;
+}
+
 int check_scene(const std::string& path)
 {
     lagrange::source_text source = read_scene(path);
@@ -383,6 +538,33 @@ int run(int argc, char** argv)
     response->add_option("-o,--output-file", response_options.output_path, "write the output to this file");
     response->add_option("--plot", response_options.plot, "draw the Bode diagram (SVG, with gnuplot)");
 
+    ensemble_options ensemble_options;
+    CLI::App* ensemble = app.add_subcommand(
+        "ensemble", "many runs at once over a grid of initial values and parameters, on all cores (and MPI)");
+    ensemble->add_option("SCENE", ensemble_options.scene_path, "the scene file (`-` for standard input)")->required();
+    ensemble->add_option("--grid", ensemble_options.grid,
+                         "the grid: \"name=from..to:count[:log], ...\" over coordinates (initial values), "
+                         "velocities (q') and parameters")
+        ->required();
+    ensemble->add_option("--until", ensemble_options.until, "end time of every run (default: the scene's `simulate until`)")
+        ->check(finite_number & CLI::PositiveNumber);
+    ensemble->add_option("--measure", ensemble_options.measure,
+                         "final, flip_time, flip_time:COORDINATE, max_lyapunov or floquet_stable")
+        ->capture_default_str();
+    ensemble->add_option("-o,--output", ensemble_options.output, "FILE.csv, FILE.json or FILE.png (default: CSV on standard output)");
+    ensemble->add_option("--threads", ensemble_options.threads, "threads per process (default: all cores)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{4096}));
+    ensemble->add_option("--tolerance", ensemble_options.tolerance, "target of each run's relative error (default 1e-9)")
+        ->check(finite_number & CLI::Range(1e-14, 0.5));
+    ensemble->add_option("--random", ensemble_options.random,
+                         "N random points, uniform in the --grid ranges (name=from..to[:log]) instead of the grid")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1000000000000}));
+    ensemble->add_option("--seed", ensemble_options.seed, "seed of --random (default 1)");
+    ensemble->add_flag("--resume", ensemble_options.resume, "continue the CSV file of an interrupted run (-o FILE.csv)");
+    ensemble->add_option("--values", ensemble_options.values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
+    ensemble->add_flag("--interpret", ensemble_options.interpret,
+                       "evaluate the equations with the interpreter (default: machine code by the system's C compiler)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -400,6 +582,8 @@ int run(int argc, char** argv)
         return motion_command(workprecision_options, lagrange::product::workprecision, options.budget);
     if (response->parsed())
         return response_command(response_options);
+    if (ensemble->parsed())
+        return ensemble_command(ensemble_options);
     if (options.scene_path.empty()) {
         std::cerr << app.help();
         return exit_bad_input;

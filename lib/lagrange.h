@@ -19,5 +19,6 @@
 #include "output/report.h"
 #include "output/simulation_output.h"
 #include "output/sweep_output.h"
+#include "output/ensemble_output.h"
 #include "scene/lower.h"
 #include "scene/source.h"

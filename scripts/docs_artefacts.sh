@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# The generated documentation, never committed: the report PDFs of three examples and the
-# figures that docs/ describes (docs/reports.md lists them).
+# The generated documentation: the report PDFs of three examples and the figures that
+# docs/ describes (docs/reports.md lists them), among them the double pendulum's flip-time
+# map (docs/ensemble.md; LAGRANGE_MAP_COUNT x LAGRANGE_MAP_COUNT points, 200 by default,
+# fewer in ctest to keep it quick), the one figure also committed, as ensemble.md shows it.
 #
 #   scripts/docs_artefacts.sh [LAGRANGE] [FOLDER]
 #
@@ -31,6 +33,11 @@ examples="$root/examples"
 "$lagrange" workprecision "$examples/linear_double_pendulum.lag" --plot "$folder/workprecision.svg" >/dev/null
 "$lagrange" response "$examples/damped_driven_oscillator.lag" --input u --output x \
   --plot "$folder/damped_driven_oscillator_bode.svg" >/dev/null
+# The ensemble's flip-time map of the double pendulum.
+count="${LAGRANGE_MAP_COUNT:-200}"
+"$lagrange" ensemble "$root/tests/scenes/ensemble_double_pendulum.lag" \
+  --grid "theta=-3.1..3.1:$count, phi=-3.1..3.1:$count" --until 10 --measure flip_time \
+  -o "$folder/ensemble_flip_map.png"
 
 fail() { echo "error: $1" >&2; exit 1; }
 for pdf in double_pendulum_report bodies_report free_asymmetric_top_report; do
@@ -42,5 +49,6 @@ done
 grep -q 'resonance' "$folder/damped_driven_oscillator_bode.svg" || fail "the Bode diagram lacks its resonance peak"
 # beats.lag has two coordinates: two panels, each with its own axis label.
 grep -q 'θ' "$folder/beats.svg" && grep -q 'φ' "$folder/beats.svg" || fail "beats.svg lacks a panel per coordinate"
+[ "$(head -c 4 "$folder/ensemble_flip_map.png" | tail -c 3)" = PNG ] || fail "no PNG map drawn into $folder"
 echo "wrote into $folder:"
-(cd "$folder" && ls -1 -- *.pdf *.svg)
+(cd "$folder" && ls -1 -- *.pdf *.svg *.png)

@@ -15,6 +15,8 @@ packages+=(python3-dev pybind11-dev python3-pybind11 python3-numpy python3-sympy
 packages+=(gnuplot-nox)
 # The manual page: help2man writes it from `lagrange --help` at build time; groff checks it (ctest man_page)
 packages+=(help2man groff-base)
+# Open MPI: `mpirun -np R lagrange ensemble ...` across processes and machines (optional in CMake)
+packages+=(libopenmpi-dev openmpi-bin)
 if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then
   packages+=(texlive-latex-base)
 fi

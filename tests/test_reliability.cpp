@@ -196,7 +196,7 @@ TEST_CASE("budget: --max-seconds trips with a message naming the stage and exit 
 
 namespace {
 
-/// The 3-link chain with every mass and length distinct, whose closed-form frequencies
+/// The 3-link chain with every mass and length distinct, whose closed-form mode vectors
 /// take tens of seconds, much of it inside GiNaC calls no cooperative check reaches.
 std::string slow_chain() { return temporary_file("chain3.lag", chain_scene(3) + "equilibrium q1 = 0, q2 = 0, q3 = 0\n"); }
 
@@ -206,7 +206,7 @@ void require_budget_held(const std::string& scene, double seconds)
 {
     std::ostringstream budget;
     budget << seconds;
-    cli_result r = run_cli(scene + " --want frequencies --max-seconds " + budget.str(), "", 60);
+    cli_result r = run_cli(scene + " --want modes --max-seconds " + budget.str(), "", 60);
     INFO(r.err);
     CHECK(r.exit_code == 1);
     CHECK(r.err.find("stage exceeded its time budget of " + budget.str() + " s (--max-seconds)") != std::string::npos);

@@ -154,6 +154,8 @@ public:
     std::size_t dimension() const { return n(); }
     double time() const { return t_; }
     const double* state() const { return x_.data(); }
+    /// The step size the controller proposes next (for a restart with start()'s `first_step`).
+    double step_size() const { return h_; }
 
     /// Starts at (t0, x0) with f there and an initial step after Hairer's `hinit`
     /// (two evaluations), or `first_step` when it is positive.

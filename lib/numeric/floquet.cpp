@@ -50,6 +50,27 @@ std::string line_of(const value_point& point) { return std::to_string(point.wher
 
 } // namespace
 
+std::optional<long> frequency_ratio_denominator(const ex& ratio) { return ratio_denominator(ratio); }
+
+std::vector<ex> drive_frequencies(const model& scene, const equations_of_motion& equations,
+                                  const periodic_linearization& linear)
+{
+    std::vector<ex> frequencies;
+    for (const GiNaC::matrix* m : {&linear.mass, &linear.stiffness, &linear.velocity})
+        for (unsigned i = 0; i < m->rows(); ++i)
+            for (unsigned j = 0; j < m->cols(); ++j)
+                for (const ex& omega : time_frequencies((*m)(i, j), scene.time)) {
+                    bool known = false;
+                    for (const ex& f : frequencies)
+                        known = known || (f - omega).normal().is_zero() || (f + omega).normal().is_zero();
+                    if (!known)
+                        frequencies.push_back(omega);
+                }
+    if (frequencies.empty()) // the linearization is constant: the period of L
+        frequencies = time_frequencies(equations.lagrangian, scene.time);
+    return frequencies;
+}
+
 double common_period(const std::vector<ex>& frequencies, const GiNaC::exmap& values)
 {
     if (frequencies.empty())
@@ -115,17 +136,7 @@ std::vector<floquet_point> floquet_multipliers(const model& scene, const equatio
             for (unsigned i = 0; i < m->rows(); ++i)
                 for (unsigned j = 0; j < m->cols(); ++j)
                     entries.push_back((*m)(i, j));
-        std::vector<ex> frequencies;
-        for (const ex& e : entries)
-            for (const ex& omega : time_frequencies(e, scene.time)) {
-                bool known = false;
-                for (const ex& f : frequencies)
-                    known = known || (f - omega).normal().is_zero() || (f + omega).normal().is_zero();
-                if (!known)
-                    frequencies.push_back(omega);
-            }
-        if (frequencies.empty()) // the linearization is constant: the period of L
-            frequencies = time_frequencies(equations.lagrangian, scene.time);
+        const std::vector<ex> frequencies = drive_frequencies(scene, equations, linear);
         for (const value_point& values : scene.values) {
             const GiNaC::exmap value_of = value_map(scene, values);
             std::vector<ex> numeric_entries;

@@ -10,6 +10,7 @@
 
 #include <complex>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +35,15 @@ constexpr double floquet_tolerance = 1e-6;
 /// `values`: 2π/ω₀ where every ω is an integer multiple of ω₀. Throws computation_error
 /// if the frequencies are incommensurate there (then the system is not periodic).
 double common_period(const std::vector<GiNaC::ex>& frequencies, const GiNaC::exmap& values);
+
+/// The angular frequencies of the drive in a linearization about a point (each once, up to
+/// sign), or those of L when the linearization does not depend on t.
+std::vector<GiNaC::ex> drive_frequencies(const model& scene, const equations_of_motion& equations,
+                                         const periodic_linearization& linear);
+
+/// The denominator q of a ratio of two drive frequencies as a fraction p/q (exact, or within
+/// 1e-9 for a floating value with q ≤ 64); nothing if it is not one (incommensurate).
+std::optional<long> frequency_ratio_denominator(const GiNaC::ex& ratio);
 
 /// The monodromy matrix of x' = A(t) x over [0, period], with A(t) given by `rate`
 /// (dimension × dimension, row-major), by DOP853 at relative tolerance 1e-12.

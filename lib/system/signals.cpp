@@ -5,6 +5,7 @@
 #include "system/signals.h"
 
 #include <atomic>
+#include <cerrno>
 #include <cstring>
 #include <fcntl.h>
 #include <mutex>
@@ -87,8 +88,11 @@ void clean_up_registered()
     for (std::atomic<pid_t>& child : children) {
         pid_t group = child.load();
         if (group > 0) {
+            // reaped before we exit: a killed child left to init stays a zombie (and so
+            // seems alive) for as long as init takes to collect it
             kill(-group, SIGKILL);
-            waitpid(group, nullptr, WNOHANG);
+            while (waitpid(group, nullptr, 0) < 0 && errno == EINTR) {
+            }
         }
     }
     for (path_slot& slot : paths) {
