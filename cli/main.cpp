@@ -12,6 +12,7 @@
 #include "scene/lower.h"
 #include "system/address_layout.h"
 #include "system/files.h"
+#include "system/progress_line.h"
 #include "system/signals.h"
 
 #include <CLI/CLI.hpp>
@@ -55,6 +56,29 @@ lagrange::source_text read_scene(const std::string& path, double wait_seconds = 
 
 using lagrange::output_file;
 using lagrange::write_output;
+using lagrange::progress_line;
+
+/// Clears the progress line when a command ends, before its output or error message.
+struct progress_cleared_at_end {
+    ~progress_cleared_at_end() { progress_line::standard_error().clear(); }
+};
+
+/// The products `--want` takes (the library's list, wrapped) and an example, for --help.
+std::string products_help()
+{
+    std::string text = "Products (--want, or a scene's `want` line):\n ";
+    std::size_t column = 1;
+    for (const auto& [unused, name] : lagrange::product_names()) {
+        if (column + name.size() + 2 > 78) {
+            text += "\n ";
+            column = 1;
+        }
+        text += " " + name + ",";
+        column += name.size() + 2;
+    }
+    text.pop_back();
+    return text + "\n\nExample:\n  lagrange examples/double_pendulum.lag --want equations,frequencies\n";
+}
 
 struct run_options {
     std::string scene_path;
@@ -117,7 +141,9 @@ int analyze_scene(const run_options& options)
     std::set<lagrange::product> wanted;
     if (!options.want.empty())
         wanted = lagrange::parse_want_list(options.want);
-    lagrange::analysis result = lagrange::analyze(scene, wanted, options.budget);
+    lagrange::simulation_settings settings;
+    settings.progress = progress_line::standard_error().callback();
+    lagrange::analysis result = lagrange::analyze(scene, wanted, options.budget, settings);
     write_document(result, options.format, options.timings, options.output);
     return exit_ok;
 }
@@ -136,29 +162,6 @@ struct motion_options {
     bool timings = false;
 };
 
-/// A progress bar on standard error when it is a terminal and the run takes over a second.
-std::function<void(double)> progress_bar()
-{
-    if (!isatty(STDERR_FILENO))
-        return nullptr;
-    auto start = std::chrono::steady_clock::now();
-    auto shown = std::make_shared<bool>(false);
-    return [start, shown](double fraction) {
-        std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-        if (elapsed.count() < 1 && !*shown)
-            return;
-        if (fraction >= 1) {
-            if (*shown)
-                std::cerr << "\r" << std::string(60, ' ') << "\r" << std::flush;
-            return;
-        }
-        *shown = true;
-        int filled = static_cast<int>(fraction * 40);
-        std::cerr << "\rsimulating [" << std::string(filled, '#') << std::string(40 - filled, ' ') << "] "
-                  << static_cast<int>(fraction * 100) << "%" << std::flush;
-    };
-}
-
 int motion_command(const motion_options& options, lagrange::product wanted, const lagrange::budget_limits& budget)
 {
     lagrange::source_text source = read_scene(options.scene_path, budget.max_seconds);
@@ -170,9 +173,10 @@ int motion_command(const motion_options& options, lagrange::product wanted, cons
     if (!options.method.empty())
         settings.method = options.method;
     settings.tolerance = options.tolerance;
-    settings.progress = progress_bar();
+    settings.progress = progress_line::standard_error().callback();
     settings.native = !options.interpret;
     lagrange::analysis result = lagrange::analyze(scene, {wanted}, budget, settings);
+    progress_line::standard_error().clear();
     std::string title = scene.title.empty() ? source.file() : scene.title;
     if (result.simulation && !options.csv.empty()) {
         std::ostringstream csv;
@@ -411,7 +415,9 @@ int report_scene(const run_options& options)
     std::set<lagrange::product> wanted;
     if (!options.want.empty())
         wanted = lagrange::parse_want_list(options.want);
-    lagrange::analysis result = lagrange::analyze(scene, wanted);
+    lagrange::simulation_settings settings;
+    settings.progress = progress_line::standard_error().callback();
+    lagrange::analysis result = lagrange::analyze(scene, wanted, lagrange::budget_limits{}, settings);
     lagrange::report_options report;
     // Figures go beside the .tex file, named after it (letters, digits and `-` only).
     std::size_t slash = path.rfind('/');
@@ -445,7 +451,14 @@ const CLI::Validator finite_number(
 
 int run(int argc, char** argv)
 {
+    // Progress is drawn on a terminal during the symbolic stages too (the budget watchdog
+    // reports the open stage); the line's clock starts here.
+    progress_cleared_at_end cleared;
+    if (progress_line::standard_error().enabled())
+        lagrange::show_stage_progress(progress_line::standard_error().callback());
+
     CLI::App app{"lagrange: equations of motion, equilibria, normal modes and rigid bodies from a scene file"};
+    app.footer(products_help());
     app.set_version_flag("--version", std::string("lagrange ") + LAGRANGE_VERSION);
     app.require_subcommand(0, 1);
 
@@ -476,6 +489,7 @@ int run(int argc, char** argv)
     report->add_option("-o,--output", report_options.output, "FILE.tex (figures beside it) or FILE.pdf (needs pdflatex)");
     report->add_option("--want", report_options.want, "products to derive, comma-separated (default: the scene's `want`)");
     report->add_option("--values", report_options.values, "a parameter point such as a=1,b=2.5 (repeatable)");
+    report->footer(products_help());
 
     motion_options simulate_options, workprecision_options;
     CLI::App* simulate = app.add_subcommand("simulate", "integrate the equations of motion from the initial state");

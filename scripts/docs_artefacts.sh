@@ -1,37 +1,54 @@
 #!/usr/bin/env bash
-# The example artefacts that docs/ links to and that the build does not make otherwise:
-# the Bode diagram of examples/damped_driven_oscillator.lag (docs/products.md) and the
-# double pendulum's flip-time map (docs/ensemble.md; LAGRANGE_MAP_COUNT x LAGRANGE_MAP_COUNT
-# points, 200 by default, fewer in ctest to keep it quick).
+# The generated documentation: the report PDFs of three examples and the figures that
+# docs/ describes (docs/reports.md lists them), among them the double pendulum's flip-time
+# map (docs/ensemble.md; LAGRANGE_MAP_COUNT x LAGRANGE_MAP_COUNT points, 200 by default,
+# fewer in ctest to keep it quick), the one figure also committed, as ensemble.md shows it.
 #
 #   scripts/docs_artefacts.sh [LAGRANGE] [FOLDER]
 #
 # LAGRANGE is the program (default build/lagrange), FOLDER where the files go (default
-# docs). `cmake --build build --target docs_artefacts` runs it into docs/; ctest runs it
-# into the build tree and checks the SVG. Exits 77 (ctest: skipped) without gnuplot,
-# which draws the plot.
+# build/docs). `cmake --build build --target docs` runs it into build/docs; the ctest test
+# `docs_artefacts` runs it into the build tree of the tests and checks every file. Needs
+# gnuplot (figures) and pdflatex (reports): without them it exits 77 (ctest: skipped).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 lagrange="${1:-$root/build/lagrange}"
-folder="${2:-$root/docs}"
-if ! command -v gnuplot >/dev/null 2>&1; then
-  echo "skipped: gnuplot is not installed, so no Bode diagram can be drawn" >&2
-  exit 77
-fi
+folder="${2:-$root/build/docs}"
+for tool in gnuplot pdflatex; do
+  if ! command -v "$tool" >/dev/null 2>&1; then
+    echo "skipped: $tool is not installed (LAGRANGE_WITH_LATEX=1 scripts/setup.sh installs both)" >&2
+    exit 77
+  fi
+done
 mkdir -p "$folder"
-bode="$folder/damped_driven_oscillator_bode.svg"
-"$lagrange" response "$root/examples/damped_driven_oscillator.lag" --input u --output x --plot "$bode" >/dev/null
-if [ ! -s "$bode" ] || ! grep -q "<svg" "$bode" || ! grep -q "resonance" "$bode"; then
-  echo "error: no SVG with the resonance peak drawn into $bode" >&2
-  exit 1
-fi
-echo "wrote $bode"
+examples="$root/examples"
+
+# The reports: the homework's double pendulum, its four bodies, and a free asymmetric top.
+"$lagrange" report "$examples/double_pendulum.lag" -o "$folder/double_pendulum_report.pdf"
+"$lagrange" report "$examples/homework_bodies.lag" -o "$folder/bodies_report.pdf"
+"$lagrange" report "$examples/free_asymmetric_top.lag" -o "$folder/free_asymmetric_top_report.pdf"
+# The figures: beats (one panel per coordinate), work against precision (run times of this
+# machine), and the damped driven oscillator's Bode diagram.
+"$lagrange" simulate "$examples/beats.lag" --plot "$folder/beats.svg" >/dev/null
+"$lagrange" workprecision "$examples/linear_double_pendulum.lag" --plot "$folder/workprecision.svg" >/dev/null
+"$lagrange" response "$examples/damped_driven_oscillator.lag" --input u --output x \
+  --plot "$folder/damped_driven_oscillator_bode.svg" >/dev/null
+# The ensemble's flip-time map of the double pendulum.
 count="${LAGRANGE_MAP_COUNT:-200}"
-map="$folder/ensemble_flip_map.png"
 "$lagrange" ensemble "$root/tests/scenes/ensemble_double_pendulum.lag" \
-  --grid "theta=-3.1..3.1:$count, phi=-3.1..3.1:$count" --until 10 --measure flip_time -o "$map"
-if [ ! -s "$map" ] || [ "$(head -c 4 "$map" | tail -c 3)" != PNG ]; then
-  echo "error: no PNG map drawn into $map" >&2
-  exit 1
-fi
-echo "wrote $map"
+  --grid "theta=-3.1..3.1:$count, phi=-3.1..3.1:$count" --until 10 --measure flip_time \
+  -o "$folder/ensemble_flip_map.png"
+
+fail() { echo "error: $1" >&2; exit 1; }
+for pdf in double_pendulum_report bodies_report free_asymmetric_top_report; do
+  head -c 5 "$folder/$pdf.pdf" | grep -q '%PDF-' || fail "$folder/$pdf.pdf is not a PDF"
+done
+for svg in beats workprecision damped_driven_oscillator_bode; do
+  grep -q '<svg' "$folder/$svg.svg" || fail "no SVG drawn into $folder/$svg.svg"
+done
+grep -q 'resonance' "$folder/damped_driven_oscillator_bode.svg" || fail "the Bode diagram lacks its resonance peak"
+# beats.lag has two coordinates: two panels, each with its own axis label.
+grep -q 'θ' "$folder/beats.svg" && grep -q 'φ' "$folder/beats.svg" || fail "beats.svg lacks a panel per coordinate"
+[ "$(head -c 4 "$folder/ensemble_flip_map.png" | tail -c 3)" = PNG ] || fail "no PNG map drawn into $folder"
+echo "wrote into $folder:"
+(cd "$folder" && ls -1 -- *.pdf *.svg *.png)

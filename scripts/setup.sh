@@ -13,6 +13,8 @@ packages+=(libsleef-dev)
 packages+=(python3-dev pybind11-dev python3-pybind11 python3-numpy python3-sympy python3-pytest python3-nbclient python3-ipykernel)
 # gnuplot draws the figures of `lagrange report` and `--plot` (without it they are left out)
 packages+=(gnuplot-nox)
+# The manual page: help2man writes it from `lagrange --help` at build time; groff checks it (ctest man_page)
+packages+=(help2man groff-base)
 # Open MPI: `mpirun -np R lagrange ensemble ...` across processes and machines (optional in CMake)
 packages+=(libopenmpi-dev openmpi-bin)
 if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then

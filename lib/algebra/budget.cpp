@@ -42,6 +42,9 @@ struct watch {
     std::string prefix;
     int exit_code = 1;
     void (*before_exit)() = nullptr;
+    progress_callback progress;                     ///< show_stage_progress's (guarded by lock)
+    std::string shown;                              ///< the stage whose progress was shown last
+    std::chrono::steady_clock::time_point shown_at; ///< when
 };
 
 watch& the_watch()
@@ -64,6 +67,22 @@ void watch_scope(const budget_scope::state* open)
         return;
     std::lock_guard<std::mutex> guard(w.lock);
     w.open = open && open->watched ? open : nullptr;
+    if (!w.shown.empty() && (!w.open || w.open->stage != w.shown)) {
+        w.shown.clear();
+        w.progress("", 0);
+    }
+}
+
+/// Shows the open stage's progress (with w.lock held): at once for a stage not shown yet,
+/// then every 0.2 s.
+void show_open_stage(watch& w)
+{
+    const auto now = std::chrono::steady_clock::now();
+    if (!w.progress || !w.open || (w.shown == w.open->stage && now - w.shown_at < std::chrono::milliseconds(200)))
+        return;
+    w.shown = w.open->stage;
+    w.shown_at = now;
+    w.progress("the `" + w.shown + "` stage", -1);
 }
 
 } // namespace
@@ -90,8 +109,14 @@ void start_budget_watchdog(const std::string& prefix, int exit_code, void (*befo
             const double grace = 0.08 * w.open->limits.max_seconds; // + one 20 ms poll: within a tenth
             const auto late = w.open->stage_deadline + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                                      std::chrono::duration<double>(grace));
-            if (std::chrono::steady_clock::now() <= late)
+            if (std::chrono::steady_clock::now() <= late) {
+                show_open_stage(w);
                 continue;
+            }
+            if (!w.shown.empty()) {
+                w.shown.clear();
+                w.progress("", 0);
+            }
             const std::string message = w.prefix + exceeded_time_message(*w.open) +
                                         " inside a step that cannot be interrupted, so the run stopped "
                                         "with nothing printed\n";
@@ -102,6 +127,13 @@ void start_budget_watchdog(const std::string& prefix, int exit_code, void (*befo
             std::_Exit(w.exit_code);
         }
     }).detach();
+}
+
+void show_stage_progress(progress_callback show)
+{
+    watch& w = the_watch();
+    std::lock_guard<std::mutex> guard(w.lock);
+    w.progress = std::move(show);
 }
 
 budget_scope::budget_scope(std::string stage, const budget_limits& limits, bool watched) : previous_(current_budget)

@@ -30,6 +30,7 @@
 #pragma once
 
 #include "core/errors.h"
+#include "core/progress.h"
 
 #include <ginac/ginac.h>
 
@@ -120,5 +121,11 @@ std::string budget_stage();
 /// ends the process with `exit_code`, so that --max-seconds holds within a tenth on every path;
 /// `before_exit` (if any) runs just before, to remove temporary files.
 void start_budget_watchdog(const std::string& prefix, int exit_code, void (*before_exit)() = nullptr);
+
+/// For programs, with the watchdog: while a watched stage is open, the watchdog thread calls
+/// `show("the `STAGE` stage", -1)` when it opens and then about every 0.2 s (a program may
+/// draw a progress line), and `show("", 0)` once the stage closes (on the thread that closes
+/// it) or before the watchdog ends the process. An empty `show` stops the calls.
+void show_stage_progress(progress_callback show);
 
 } // namespace lagrange

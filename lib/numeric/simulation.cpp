@@ -311,7 +311,13 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         options.output_step = real_value(*scene.simulation->step, "the output step");
     options.frequency = prepared.rate > 0 ? prepared.rate : result.frequencies.empty() ? 1.0 : result.frequencies.back();
     options.max_seconds = settings.max_seconds;
-    options.progress = settings.progress;
+    // Each run reports its progress under its own name.
+    auto labelled = [&settings](std::string what) -> std::function<void(double)> {
+        if (!settings.progress)
+            return nullptr;
+        return [what = std::move(what), &settings](double fraction) { settings.progress(what, fraction); };
+    };
+    options.progress = labelled("simulating with " + to_string(method));
 
     std::string exact_basis = "against the exact normal-mode solution of the linear equations";
     if (prepared.free_body)
@@ -334,12 +340,14 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
             return {std::nullopt, "no estimate: the run took " + message_number(run.seconds, 3) +
                                       " s, and a reference run at a tighter tolerance would exceed the time limit"};
         integration_options fine = options;
-        fine.progress = nullptr;
         fine.tolerance = std::max(tolerance / 1000, 1e-14);
         fine.max_seconds = std::max(1.0, seconds_left - run.seconds);
         ode_method reference = method == ode_method::implicit_midpoint
                                    ? (result.stiffness > stiffness_threshold ? ode_method::bdf : ode_method::rkf78)
                                    : method;
+        const std::string reference_name =
+            "error estimate: " + to_string(reference) + " at tolerance " + message_number(fine.tolerance, 3);
+        fine.progress = labelled(reference_name);
         error_estimate found;
         trajectory check;
         try {
@@ -363,6 +371,7 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         try {
             std::vector<trajectory> moved_runs;
             for (double direction : {1.0, -1.0}) {
+                fine.progress = labelled(reference_name + (direction > 0 ? ", start moved up" : ", start moved down"));
                 std::vector<double> moved = x0;
                 for (double& v : moved)
                     v += direction * v * 0x1p-52;
@@ -413,6 +422,7 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         integration_options again = options;
         again.tolerance = tighter;
         again.max_seconds = std::max(1.0, left);
+        again.progress = labelled("rerunning with " + to_string(method) + " at tolerance " + message_number(tighter, 3));
         try {
             trajectory run = integrate(system, method, x0, again);
             error_estimate next = estimate(run, tighter, settings.max_seconds - seconds_spent());
@@ -475,7 +485,7 @@ workprecision_result free_body_work_precision(const model& scene, const simulati
 {
     prepared_motion prepared = prepare_free_body(scene, settings);
     workprecision_result result = work_precision(prepared.system, prepared.x0, prepared.until, 0, {prepared.rate}, {},
-                                                 settings.max_seconds / 6);
+                                                 settings.max_seconds / 6, settings.progress);
     if (result.exact)
         result.reference = "exact: " + prepared.free_body->exact_kind() + " of Euler's equations";
     result.evaluation = prepared.evaluation;
@@ -489,14 +499,15 @@ workprecision_result scene_work_precision(const model& scene, const equations_of
     prepared_motion prepared = prepare(scene, equations, equilibrium, settings);
     workprecision_result result = work_precision(prepared.system, prepared.x0, prepared.until,
                                                  prepared.motion->coordinates(), prepared.frequencies, {},
-                                                 settings.max_seconds / 6);
+                                                 settings.max_seconds / 6, settings.progress);
     result.evaluation = prepared.evaluation;
     return result;
 }
 
 workprecision_result work_precision(const ode_system& system, const std::vector<double>& x0, double until,
                                     std::size_t coordinates, const std::vector<double>& frequencies,
-                                    const std::vector<double>& tolerances, double max_seconds)
+                                    const std::vector<double>& tolerances, double max_seconds,
+                                    const progress_callback& progress)
 {
     workprecision_result result;
     result.until = until;
@@ -522,7 +533,14 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
         result.exact = true;
         result.reference = "exact: the normal-mode solution of the linear equations";
     } else {
+        if (progress)
+            fine.progress = [&](double fraction) {
+                progress("workprecision: reference " + to_string(reference_method) + " at tolerance " +
+                             message_number(fine.tolerance, 3),
+                         fraction);
+            };
         reference = integrate(system, reference_method, x0, fine);
+        fine.progress = nullptr;
         result.reference = "reference (not exact): " + to_string(reference_method) + " at tolerance " +
                            message_number(fine.tolerance, 3);
     }
@@ -530,9 +548,14 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
     if (ladder.empty())
         for (int k = 3; k <= 12; ++k)
             ladder.push_back(std::pow(10.0, -k));
+    // Progress: the share of the table's runs done (each method at each tolerance).
+    const std::size_t runs = all_ode_methods().size() * ladder.size();
     for (ode_method method : all_ode_methods()) {
         std::string skip;
         for (double tol : ladder) {
+            if (progress)
+                progress("workprecision: " + to_string(method) + " at tolerance " + message_number(tol, 3),
+                         static_cast<double>(result.points.size()) / static_cast<double>(runs));
             workprecision_point point;
             point.method = to_string(method);
             point.tolerance = tol;

@@ -9,6 +9,7 @@
 #include "numeric/compiled_motion.h"
 #include "numeric/ode.h"
 #include "core/model.h"
+#include "core/progress.h"
 
 #include <functional>
 #include <optional>
@@ -30,7 +31,9 @@ struct simulation_settings {
     /// The C compiler's time limit; past it, or for C source too large to pay off, the
     /// interpreter runs (the `evaluation` says why). The engine keeps it within the time budget.
     double compile_seconds = 120;
-    std::function<void(double fraction)> progress;
+    /// Progress of the runs: the simulation, its error estimate's reference runs and any
+    /// tighter rerun, or each run of the work-precision table. May be empty.
+    progress_callback progress;
 };
 
 /// Beats: the envelope of a coordinate swells and fades with period 2π/(ω₂ − ω₁).
@@ -136,6 +139,7 @@ workprecision_result free_body_work_precision(const model& scene, const simulati
 /// repeated while it takes under 0.2 s in total (the fastest kept).
 workprecision_result work_precision(const ode_system& system, const std::vector<double>& x0, double until,
                                     std::size_t coordinates, const std::vector<double>& frequencies,
-                                    const std::vector<double>& tolerances = {}, double max_seconds = 20);
+                                    const std::vector<double>& tolerances = {}, double max_seconds = 20,
+                                    const progress_callback& progress = {});
 
 } // namespace lagrange

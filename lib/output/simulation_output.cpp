@@ -303,22 +303,66 @@ void write_trajectory_csv(std::ostream& out, const simulation_result& s)
     }
 }
 
+std::string trajectory_plot_script(const simulation_result& s, std::size_t max_panels, const std::string& title,
+                                   std::size_t& panels)
+{
+    // Labels are single-quoted gnuplot strings (a quote doubled), numbers to 9 digits.
+    auto quoted = [](const std::string& text) {
+        std::string out = "'";
+        for (char c : text)
+            out += c == '\'' ? std::string("''") : std::string(1, c);
+        return out + "'";
+    };
+    auto plot_number = [](double x) { return significant(x, 9); };
+    const std::size_t n = s.coordinates.size();
+    const std::size_t stride = (s.run.times.size() + 2999) / 3000;
+    std::string data = "$motion << EOD\n";
+    for (std::size_t r = 0; r < s.run.times.size() && r < s.run.states.size(); r += stride) {
+        data += plot_number(s.run.times[r]);
+        for (std::size_t i = 0; i < n; ++i)
+            data += " " + plot_number(s.run.states[r][i]);
+        data += "\n";
+    }
+    data += "EOD\n";
+    std::string script = data + "set grid\nset key off\nset xrange [" +
+                         (s.run.times.empty() ? std::string("*:*")
+                                              : plot_number(s.run.times.front()) + ":" + plot_number(s.run.times.back())) +
+                         "]\n";
+    const char* colours[] = {"#1f4e9c", "#c00000", "#2a8a2a", "#8a4bb0"};
+    const std::string title_clause = title.empty() ? "" : " title " + quoted(title) + " noenhanced";
+    panels = n <= max_panels ? n : 0;
+    if (panels > 0) {
+        script += "set multiplot layout " + std::to_string(panels) + ",1" + title_clause + "\nset lmargin 10\n";
+        for (std::size_t i = 0; i < n; ++i) {
+            script += "set ylabel " + quoted(print_name(s.coordinates[i], syntax::text)) + "\n";
+            script += i + 1 == n ? "set xlabel 't'\n" : "unset xlabel\n";
+            script += "plot $motion using 1:" + std::to_string(i + 2) + " with lines lw 1.2 lc rgb '" + colours[i % 4] +
+                      "'\n";
+        }
+        script += "unset multiplot\n";
+    } else {
+        if (!title.empty())
+            script += "set title " + quoted(title) + " noenhanced\n";
+        script += "set key outside right\nset xlabel 't'\nplot ";
+        for (std::size_t i = 0; i < n; ++i)
+            script += std::string(i ? ", " : "") + "$motion using 1:" + std::to_string(i + 2) + " with lines title " +
+                      quoted(print_name(s.coordinates[i], syntax::text));
+        script += "\n";
+    }
+    return script;
+}
+
 void plot_trajectory(const std::string& path, const simulation_result& s, const std::string& title)
 {
-    std::ostringstream data;
-    write_trajectory_csv(data, s);
-    std::ostringstream script;
-    script << "set terminal svg size 900,420 dynamic font 'sans,12'\n"
-              "set output 'plot.svg'\n"
-              "set datafile separator ','\n"
-              "set key outside right top\n"
-              "set xlabel 't'\nset ylabel 'coordinate'\nset grid\n"
-           << "set title " << gnuplot_string(title + " (" + s.method + ")") << '\n' << "plot ";
-    for (std::size_t i = 0; i < s.coordinates.size(); ++i)
-        script << (i ? ", " : "") << "'data.csv' using 1:" << i + 2 << " with lines lw 1.2 title "
-               << gnuplot_string(print_name(s.coordinates[i], syntax::text));
-    script << '\n';
-    draw_gnuplot_svg(path, script.str(), {{"data.csv", data.str()}});
+    if (s.run.states.empty() || s.coordinates.empty())
+        throw computation_error("the simulation has no trajectory to plot");
+    std::size_t panels = 0;
+    const std::string body = trajectory_plot_script(s, 6, title + " (" + s.method + ")", panels);
+    const std::size_t height = 90 + 170 * (panels > 0 ? panels : 2);
+    draw_gnuplot_svg(path,
+                     "set encoding utf8\nset terminal svg size 900," + std::to_string(height) +
+                         " dynamic noenhanced font 'sans,12'\nset output 'plot.svg'\n" + body,
+                     {});
 }
 
 void plot_workprecision(const std::string& path, const workprecision_result& w, const std::string& title)

@@ -25,9 +25,18 @@ nlohmann::ordered_json workprecision_json(const workprecision_result& w);
 /// t, then each coordinate, then each velocity (`q_dot`), one row per output time.
 void write_trajectory_csv(std::ostream& out, const simulation_result& s);
 
-/// θ(t), φ(t), … against time, as SVG, drawn by gnuplot. Throws computation_error
-/// if gnuplot is missing or fails.
+/// θ(t), φ(t), … against time, as SVG drawn by gnuplot: one panel per coordinate, stacked
+/// over one time axis (up to 6; more share one panel). Throws computation_error if gnuplot
+/// is missing or fails.
 void plot_trajectory(const std::string& path, const simulation_result& s, const std::string& title);
+
+/// The gnuplot commands that draw the coordinates against time (at most 3000 points), for
+/// `plot_trajectory` and the report's figure: one panel per coordinate, stacked, when there
+/// are at most `max_panels` coordinates (`panels` is then their number), else all in one
+/// panel with a key (`panels` is 0). A `title` (may be empty) goes above. No terminal, no
+/// output file: the caller sets them.
+std::string trajectory_plot_script(const simulation_result& s, std::size_t max_panels, const std::string& title,
+                                   std::size_t& panels);
 
 /// Error against run time, log–log, one line per method, as SVG drawn by gnuplot.
 void plot_workprecision(const std::string& path, const workprecision_result& w, const std::string& title);

@@ -12,6 +12,7 @@
 
 #include "output/latex_blocks.h"
 #include "output/print.h"
+#include "output/simulation_output.h"
 
 #include <cmath>
 #include <cstdio>
@@ -22,9 +23,6 @@ namespace lagrange {
 namespace {
 
 std::string gnuplot_number(double x) { return significant(x, 9); }
-
-/// A plain-text name for gnuplot's labels (θ, φ̇ …).
-std::string plain_name(const std::string& name) { return print_name(name, syntax::text); }
 
 std::string quoted(const std::string& text)
 {
@@ -100,35 +98,8 @@ void write_simulation(report_writer& w, const simulation_result& s)
     // The coordinates against time, one panel each (at most 3000 points drawn).
     if (s.run.states.empty() || s.run.times.size() != s.run.states.size() || n == 0)
         return;
-    const std::size_t stride = (s.run.times.size() + 2999) / 3000;
-    std::string data = "$motion << EOD\n";
-    for (std::size_t r = 0; r < s.run.times.size(); r += stride) {
-        data += gnuplot_number(s.run.times[r]);
-        for (std::size_t i = 0; i < n; ++i)
-            data += " " + gnuplot_number(s.run.states[r][i]);
-        data += "\n";
-    }
-    data += "EOD\n";
-    const std::size_t panels = std::min<std::size_t>(n, 4);
-    std::string script = data + "set grid\nset key off\nset xrange [" + gnuplot_number(s.run.times.front()) + ":" +
-                         gnuplot_number(s.run.times.back()) + "]\n";
-    const char* colours[] = {"#1f4e9c", "#c00000", "#2a8a2a", "#8a4bb0"};
-    if (panels == n) {
-        script += "set multiplot layout " + std::to_string(panels) + ",1\nset lmargin 10\n";
-        for (std::size_t i = 0; i < n; ++i) {
-            script += "set ylabel " + quoted(plain_name(s.coordinates[i])) + "\n";
-            script += i + 1 == n ? "set xlabel 't'\n" : "unset xlabel\n";
-            script += "plot $motion using 1:" + std::to_string(i + 2) + " with lines lw 1.2 lc rgb '" + colours[i % 4] +
-                      "'\n";
-        }
-        script += "unset multiplot\n";
-    } else {
-        script += "set key outside right\nset xlabel 't'\nplot ";
-        for (std::size_t i = 0; i < n; ++i)
-            script += std::string(i ? ", " : "") + "$motion using 1:" + std::to_string(i + 2) + " with lines title " +
-                      quoted(plain_name(s.coordinates[i]));
-        script += "\n";
-    }
+    std::size_t panels = 0;
+    const std::string script = trajectory_plot_script(s, 4, "", panels);
     std::string names;
     for (std::size_t i = 0; i < n; ++i)
         names += (i ? (i + 1 == n ? " and " : ", ") : "") + std::string("$") + report_writer::name(s.coordinates[i]) + "(t)$";
@@ -137,7 +108,7 @@ void write_simulation(report_writer& w, const simulation_result& s)
         caption += " The envelope of $" + report_writer::name(s.beats->coordinate) +
                    "$ swells and fades with the beat period: measured $" + report_writer::number(s.beats->measured, 5) +
                    "$, predicted $2\\pi/(\\omega_{+} - \\omega_{-}) = " + report_writer::number(s.beats->predicted, 5) + "$.";
-    w.figure(s.beats ? "beats" : "motion", script, 15, 2.2 + 3.4 * static_cast<double>(panels == n ? panels : 2),
+    w.figure(s.beats ? "beats" : "motion", script, 15, 2.2 + 3.4 * static_cast<double>(panels > 0 ? panels : 2),
              caption);
     if (s.beats && s.beats->measured > 0 && s.beats->predicted > 0) {
         const beat_measurement& b = *s.beats;
