@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file chain_equations.cpp
  *  Benchmark: the Euler–Lagrange equations of the planar N-link pendulum (point
  *  masses m1..mN on rods l1..lN, all distinct symbols, absolute angles q1..qN),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file chain_equilibrium.cpp
  *  Benchmark: the stable equilibrium of the planar N-link pendulum (absolute angles,
  *  distinct masses and lengths), found without listing the 2^N combinations of 0 and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file characteristic_scaling.cpp
  *  Benchmark: the characteristic polynomial det(V − W T) of the planar N-link pendulum
  *  (every mass and length a distinct symbol, hanging at rest), N = 2..max_N. For each N

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The symbolic-scaling table: the characteristic polynomial det(V − W T) of the planar
 # N-link chain, every mass and length distinct, N = 2..max_N, ours (bench/characteristic_scaling:
 # the determinant alone, and the whole stage: made primitive with factored coefficients)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Ensemble throughput against threads and MPI processes: the flip-time map of the equal-mass
 # double pendulum (tests/scenes/ensemble_double_pendulum.lag) over a COUNT x COUNT grid until
 # t = UNTIL, run with 1…T threads in one process and with 1…R processes of one thread each

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Run time and peak memory (GNU time's maximum resident set size) of the command
 # line for (1) the planar N-link chain, every mass and length distinct: equations
 # (and, with values, the numeric modes; the symbolic characteristic polynomial is

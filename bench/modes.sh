@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Numeric normal modes beside scipy.linalg.eigh, in one run on this machine:
 #  1. points per second for the double pendulum and a 6-mass chain (7 springs),
 #     lagrange one point at a time and in batches, scipy.linalg.eigh(V, T) on the

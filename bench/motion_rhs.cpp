@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file motion_rhs.cpp
  *  Benchmark: one right-hand side of the double pendulum's first-order system
  *  (M(q) q̈ = f solved per call), compiled from the scene by compiled_motion,

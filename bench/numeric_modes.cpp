@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file numeric_modes.cpp
  *  Benchmark: numeric normal modes per second with compiled_modes (double pendulum,
  *  and a 6-mass chain with 7 springs between walls, all parameters distinct), then

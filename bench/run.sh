@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Runs the N-link chain benchmark beside SymPy's LagrangesMethod (the peer script
 # in ../shared/peers, stage `eom`) on the same machine, in the same run, and prints
 # one table: N, our median, SymPy's median, and the ratio.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The cost of self-verification on the examples: for each scene, the wall time of
 # `lagrange EX --format json --timings` and the time of its `verification` stage (from
 # the JSON's `timings`), medians of N runs (default 5), and the stage's share of the

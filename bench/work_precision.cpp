@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file work_precision.cpp
  *  Benchmark: error against run time of our integrators on the four problems of the
  *  peer script ../shared/peers/work_precision_scipy.py, with the same error measure

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Work-precision, ours against SciPy, in one run.
 
 Runs the peer ../shared/peers/work_precision_scipy.py (scipy.integrate.solve_ivp:

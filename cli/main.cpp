@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file main.cpp
  *  The `lagrange` command: turns arguments into library calls, prints, and maps
  *  errors to exit codes (0 success, 1 computation not possible, 2 bad input or usage). */

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Writes a C++ file that holds every rules/*.rules file as a string:
 # the binary needs no files at run time.
 set(out "// Generated from rules/*.rules by cmake/embed_rules.cmake; do not edit.\n")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file fuzz_scene.cpp
  *  libFuzzer target over the whole path: scene text -> parse -> check -> derive ->
  *  linearize -> characteristic polynomial -> symbolic and numeric modes -> the three

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Builds the libFuzzer target with clang (ASan + UBSan) in build-fuzz/ and runs it.
 #   fuzz/run.sh [SECONDS]   (default 60); extra libFuzzer flags in FUZZ_FLAGS
 # The corpus is fuzz/corpus (kept between runs, not in git), seeded on every run from examples/,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lagrange.h
  *  The library in one header, installed as <lagrange/lagrange.h>: load a scene,
  *  analyze it, and write the results as text, LaTeX, JSON or a derivation report.

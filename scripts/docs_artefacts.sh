@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The generated documentation: the report PDFs of three examples and the figures that
 # docs/ describes (docs/reports.md lists them), among them the double pendulum's flip-time
 # map (docs/ensemble.md; LAGRANGE_MAP_COUNT x LAGRANGE_MAP_COUNT points, 200 by default,

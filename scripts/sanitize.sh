@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The test suite under AddressSanitizer + UndefinedBehaviorSanitizer (and LeakSanitizer):
 # builds build-asan/ with -DLAGRANGE_SANITIZE=ON (clang++), then runs ctest there.
 #   scripts/sanitize.sh [ctest arguments]    e.g. scripts/sanitize.sh -LE 'slow|install'

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Installs what is missing (Debian packages, as root), then configures and builds
 # lagrange in Release mode in ./build. Used by example.sh and test.sh.
 #   LAGRANGE_WITH_LATEX=1  also installs pdflatex (the tests compile LaTeX output)

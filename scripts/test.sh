@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Quick start, command 2: install what is missing (with pdflatex), build (Release),
 # and run the whole test suite with ctest.
 set -euo pipefail

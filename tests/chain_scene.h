@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file chain_scene.h
  *  The planar chain of pendulums as scene text, for the tests (through scene_helpers.h)
  *  and the benchmarks (bench/chain_equations.cpp), without Catch2. */

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Fails on an include that points up the layers (docs/architecture.md):
 #   core ← algebra, system ← scene (front end) | bodies ← mechanics ← numeric ← engine ← output ← cli
 # A folder may include its own headers and those of the folders listed for it below;

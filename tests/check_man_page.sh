@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The manual page made by help2man: it exists, groff formats it with every warning on and
 # prints none, `man -l` renders it, and it lists the products and the example of --help.
 #   tests/check_man_page.sh build/lagrange.1

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file cli_runner.cpp
  *  Runs the `lagrange` program for the command-line tests. */
 #include "cli_runner.h"

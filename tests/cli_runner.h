@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file cli_runner.h
  *  Runs the `lagrange` program built alongside the tests and captures what it prints;
  *  the files the CLI, example and report tests share. */

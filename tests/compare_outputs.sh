@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Records or compares the output of every example in every format, byte for byte:
 # text, LaTeX and JSON of the default run, and the LaTeX report (its figures, PDFs with
 # a creation date, are left out). A refactoring that

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The flip-time map of the equal-mass double pendulum over a COUNT x COUNT grid, computed as
 # one process with 1 and with 2 threads and by `mpirun -np 2 --oversubscribe`: the three CSV
 # files must be byte-identical, and no point may flip where 3 cos(theta) + cos(phi) > 2

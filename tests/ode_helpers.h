@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ode_helpers.h
  *  Test systems shared by the integrator and simulation tests. */
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file scene_helpers.h
  *  Helpers shared by the tests: load a scene from text, expect an error at a position,
  *  a chain of pendulums, find a scene's symbol by name. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_analysis.cpp
  *  The stage planner: only the stages a product needs run, in order, once. */
 #include "engine/analysis.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_asymptotic.cpp
  *  The asymptotic limit with zero modes (a free translation): the pendulum on a freely
  *  sliding cart and the free linear three-atom molecule, against their closed forms. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_bodies.cpp
  *  The rigid-body products through the command line: JSON keys of the spec, exit
  *  codes, the stages that run. */

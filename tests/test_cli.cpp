@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_cli.cpp
  *  The command line: exit codes, hostile input, determinism, JSON keys, LaTeX that compiles. */
 #include "cli_runner.h"

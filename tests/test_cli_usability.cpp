@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_cli_usability.cpp
  *  The command line's small things a user notices: --help lists the products, --plot
  *  draws a panel per coordinate, unwritable outputs fail alike, and progress shows on a

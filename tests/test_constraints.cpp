@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_constraints.cpp
  *  Constraints with multipliers: the front end's classification and errors, and the
  *  multipliers, accelerations and constraint forces of textbook systems against their

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_damped_modes.cpp
  *  Numeric damped eigenvalues of the `numeric` entries: the single damped oscillator
  *  against s = −γ ± i√(ω₀² − γ²) (and its overdamped real roots), and a non-proportionally

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_damping.cpp
  *  Damped small oscillations: the damping matrix, det(K + sC + s²M) and its closed
  *  forms against the single damped oscillator's s = −γ ± i√(ω₀² − γ²) in its three

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_determinism.cpp
  *  Byte-identical output from run to run on scenes nobody wrote by hand: a seeded
  *  generator of textbook-like systems (pendulum chains, spring chains, pendulums on

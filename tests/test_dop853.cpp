@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_dop853.cpp
  *  DOP853 (numeric/dop853.h): its tableau against the order conditions, its order of
  *  convergence and that of its dense output measured at fixed steps against exact

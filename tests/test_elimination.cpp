@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_elimination.cpp
  *  Constraints eliminated explicitly (`eliminated`): the reduced equations against
  *  textbook closed forms (Atwood's machine, the ladder, a bead on a parabolic wire) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_ensemble.cpp
  *  Ensembles (numeric/ensemble.h, ensemble_run.h, output/ensemble_output.h, `lagrange
  *  ensemble`): measures against closed forms, rows independent of the thread count, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_equilibrium.cpp
  *  Equilibria the solver used to miss (rational potentials, spring lengths √(r²), an
  *  equilibrium given through a parameter, long chains), "no equilibrium at all", and

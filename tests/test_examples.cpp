@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_examples.cpp
  *  Every example scene runs in every format, and its LaTeX compiles with pdflatex. */
 #include "cli_runner.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_expression_program.cpp
  *  The compiled programs' arithmetic against 60-digit references: each double-double
  *  operation within its published error bound, the a priori bounds of subtraction-free

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_external.cpp
  *  Private temporary folders and running programs without a shell. */
 #include "system/external.h"

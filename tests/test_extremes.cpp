@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_extremes.cpp
  *  Extremes with honest answers (issue 24): the double pendulum's numeric modes at
  *  parameters spanning 600 decades against 80-digit CLN references, the stated error

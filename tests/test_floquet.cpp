@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_floquet.cpp
  *  Floquet multipliers of periodically driven systems against independent references:
  *  the Kapitza pendulum's upright position against the averaged (Kapitza) potential,

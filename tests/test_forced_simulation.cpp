@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_forced_simulation.cpp
  *  Simulations with dissipation, forces and inputs: the damped oscillator against its
  *  closed form, the steady state of a driven damped oscillator against its amplitude and

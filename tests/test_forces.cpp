@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_forces.cpp
  *  Dissipation, dampers, applied forces and inputs: the front end's statements and
  *  errors, and the generalized forces in the equations of motion, against SymPy's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_free_body_simulation.cpp
  *  Free bodies in time integration: the compiled Euler equations against the textbook
  *  ones and finite differences; every method against the exact solution (Jacobi

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_gyroscopic.cpp
  *  L = L2 + L1 + L0 and gyroscopic small oscillations against textbook closed forms: a
  *  charge in a uniform magnetic field (cyclotron frequency and a zero mode), a harmonic

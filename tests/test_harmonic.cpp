@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_harmonic.cpp
  *  Tests of harmonic polynomials: conversion both ways, the product-to-sum formulas
  *  and the derivatives against numeric evaluation, and the shortcuts they give the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_hostile_io.cpp
  *  The command line under hostile conditions: odd files as scenes and rules files, output
  *  onto devices, links and protected files, failed writes, non-finite options, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_lagrangian.cpp
  *  L = T − V and the Euler–Lagrange equations against textbook closed forms and
  *  a finite-difference check. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_lexer.cpp
  *  The lexer: positions, byte-order mark, CRLF, continuation, and its error paths. */
 #include "scene_helpers.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_lower.cpp
  *  Semantic checks and lowering: exact numbers, shorthands, rules, and every error path. */
 #include "bodies/inertia.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_lower_body.cpp
  *  Bodies given a full inertia tensor (products of inertia, `about` a body point, zero
  *  moments) against ½ ωᵀ I ω computed here and against SymPy's parallel-axis tests

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_native_cache.cpp
  *  The file cache (system/cache.h) and the native code kept in it: a second compile of the
  *  same programs finds the library instead of running the compiler; unsafe folders, changed

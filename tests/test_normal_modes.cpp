@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_normal_modes.cpp
  *  Numeric normal modes: the double pendulum over 32 decades of mass ratio against
  *  a 50-digit CLN reference, a stiff spring chain, zero and unstable modes, errors. */

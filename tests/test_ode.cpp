@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_ode.cpp
  *  The integrators on systems with exact solutions: each method within its tolerance,
  *  invariant drift, limits and messages. */

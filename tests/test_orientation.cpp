@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_orientation.cpp
  *  Bodies turned by sequences of rotations and attached to one another: the angular
  *  velocity against finite differences of R, `rotations(z, x, z)` against Goldstein's

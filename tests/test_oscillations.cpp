@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_oscillations.cpp
  *  Equilibria, linearization, characteristic polynomial and symbolic modes against
  *  textbook closed forms, with numeric checks of Aᵀ T A = I and V a = ω² T a. */

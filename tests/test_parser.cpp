@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_parser.cpp
  *  The parser: every statement, nesting limits, and its error paths. */
 #include "scene_helpers.h"

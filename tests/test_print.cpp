@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_print.cpp
  *  Tests of the deterministic printers: exact strings in the three syntaxes,
  *  independence from GiNaC's internal order, and plain output that GiNaC's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_progress_line.cpp
  *  The progress line (system/progress_line.h): what it writes, when, and how it clears. */
 #include "system/progress_line.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_quadratic_modes.cpp
  *  The quadratic eigenproblem (s²M + sD + K)x = 0 against closed forms: the damped
  *  oscillator in its three regimes (with critical damping's double root), a charge in a

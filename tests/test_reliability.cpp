@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_reliability.cpp
  *  Reliability (issue 7): budgets that trip (message, exit code, what is still
  *  computed), `-o` never losing an existing file, no files left in the working

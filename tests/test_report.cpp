@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_report.cpp
  *  The derivation report: every example's report compiles with pdflatex without
  *  overfull boxes; the double pendulum's report holds the homework's results

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_response.cpp
  *  The frequency response H(iω): the damped oscillator's magnitude peak at
  *  ω_r = √(ω₀² − 2γ²) with |H| = 1/(2mγ√(ω₀² − γ²)) there, its magnitude and phase at every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_rigid_body.cpp
  *  Inertia tensors derived by integration, against closed forms and against an
  *  independent numeric quadrature in Cartesian coordinates; Euler's equations and

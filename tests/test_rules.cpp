@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_rules.cpp
  *  Tests of the order-independent matcher and of rewriting with the shipped rules. */
 #include "algebra/rules.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Symbolic work that scales (issue 23): the determinant by minor expansion, the content
 // and factors of large sparse polynomials, and the primitive characteristic polynomial
 // of chains with every mass and length distinct.

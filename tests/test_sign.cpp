@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_sign.cpp
  *  Signs of expressions at parameter points. */
 #include "algebra/sign.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_simplify.cpp
  *  Tests of the canonical trigonometric form, the compact grouping and the simplifier. */
 #include "algebra/simplify.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_simulation.cpp
  *  Compiled equations of motion against hand-written ones and finite differences;
  *  simulations of scenes: the beats of the homework against 2π/(ω+ − ω−) from the

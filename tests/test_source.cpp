@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_source.cpp
  *  Error messages: location, the offending line and a caret. */
 #include "scene_helpers.h"

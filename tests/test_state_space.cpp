@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_state_space.cpp
  *  The linearized input–output system: A and B of the cart-pole against SymPy's mass
  *  matrix and forcing for it (sympy/physics/mechanics/tests/test_system.py,

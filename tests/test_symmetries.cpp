@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_symmetries.cpp
  *  Conserved quantities, the Hamiltonian, Routh's reduction and steady motions, each
  *  against an independent closed form. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_time_dependence.cpp
  *  Explicit time: L free of t once its sines and cosines are canonical (a hoop turned
  *  at a fixed rate), the points that solve the equations at every t (a vertically

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_trig_canonical.cpp
  *  The canonical trigonometric form for arguments that are not coordinates: w*t, x/R,
  *  q1 - q2/2, a parameter. Every result is compared by meaning: the difference from a

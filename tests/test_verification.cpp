@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_verification.cpp
  *  The self-verification layer: correct results pass, and a result made wrong on
  *  purpose (one term's sign flipped, one entry changed) is caught, naming the product.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_verification_bodies.cpp
  *  The self-verification of the rigid bodies' results: the cubature against textbook
  *  closed forms, every example with bodies and scenes of every shape and region passing,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_verification_damping.cpp
  *  The damping checks of the self-verification: correct damping matrices (dampers between
  *  moving points in 2-D, a Rayleigh line, a velocity-dependent force) and polynomials

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file budget.cpp
  *  Size and time budgets of the symbolic stages (see budget.h). */
 #include "algebra/budget.h"

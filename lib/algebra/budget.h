@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file budget.h
  *  Budgets instead of hangs: a size budget (terms) and a time budget for the
  *  symbolic stages.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file calculus.cpp
  *  Partial and total time derivatives over a model's symbols. */
 #include "algebra/calculus.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file calculus.h
  *  ∂/∂x and the total time derivative d/dt with q, q̇, q̈ as plain symbols. */
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file exact_matrix.cpp
  *  Fraction-free determinants, leading minors and null spaces (see exact_matrix.h). */
 #include "algebra/exact_matrix.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file exact_matrix.h
  *  Exact linear algebra on symbolic matrices: leading principal minors and the
  *  determinant by fraction-free (Bareiss) elimination, the determinant of a

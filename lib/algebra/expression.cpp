@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file expression.cpp
  *  The expression helpers of expression.h that are not inline. */
 #include "algebra/expression.h"

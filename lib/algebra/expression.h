@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file expression.h
  *  Small expression helpers shared by the algebra: what an expression is at its top
  *  node, its terms and factors, a sum or product of many operands built in one

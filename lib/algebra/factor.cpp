@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file factor.cpp
  *  GiNaC's factor() where it is quick, FLINT's for the large sparse polynomials of
  *  characteristic polynomials (see factor.h). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file factor.h
  *  GiNaC's factor() where it is quick, and a budget checkpoint before it.
  *

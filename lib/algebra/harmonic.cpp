@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file harmonic.cpp
  *  Harmonic polynomials as a flat table of terms with a hash index. Written by hand
  *  because GiNaC builds, evaluates and hashes a tree object for every intermediate

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file harmonic.h
  *  Harmonic polynomials: exact sparse sums of c · x^e · h(n·q), where c is a
  *  rational number, x^e a monomial in symbols (integer exponents), and h(n·q) is 1,

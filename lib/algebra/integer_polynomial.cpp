@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file integer_polynomial.cpp
  *  GiNaC expressions to and from FLINT's fmpz_mpoly (see integer_polynomial.h). */
 #include "algebra/integer_polynomial.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file integer_polynomial.h
  *  Exact multivariate polynomial arithmetic with integer coefficients by FLINT
  *  (fmpz_mpoly): products, the greatest common divisor, factoring. GiNaC's own gcd and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file match.cpp
  *  A pattern matcher for rewrite rules that does not depend on GiNaC's term order:
  *  sums match any k of their terms, products match their factors in any order, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file match.h
  *  The matcher's pieces that the rewriter (rules.cpp) also uses: a match that tells
  *  which terms of a sum it used, and the small structural helpers of both. Internal

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file rotation.cpp
  *  Rotations about coordinate axes and their products. */
 #include "algebra/rotation.h"

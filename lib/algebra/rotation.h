@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file rotation.h
  *  Rotation matrices about the coordinate axes, and sequences of them about a body's
  *  own axes (`rotations(z q1, x q2, …)`). */

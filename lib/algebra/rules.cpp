@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file rules.cpp
  *  The rewriter: applies rules everywhere in an expression, innermost first, until
  *  nothing changes, with cheap prechecks that skip the matcher (match.cpp) where a

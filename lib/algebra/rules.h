@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file rules.h
  *  Rewrite rules (`LHS -> RHS`, wildcards $0 $1 ...) and the matcher that applies them
  *  independently of GiNaC's term order. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file sign.cpp
  *  Zero tests, signs and tidy forms of expressions in positive parameters (see sign.h). */
 #include "algebra/sign.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file sign.h
  *  Exact decisions about expressions whose symbols are positive parameters:
  *  whether one vanishes, its sign for every positive value of the parameters,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file simplify.cpp
  *  The compact grouping by velocities and accelerations (each coefficient factored),
  *  and the simplifier that chains the canonical form (trig_canonical.cpp), the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file simplify.h
  *  The simplifier that the mechanics stages use: the exact canonical form of
  *  trigonometric polynomials in the coordinates (trig_canonical.h), then the rules,

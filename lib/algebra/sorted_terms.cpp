@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file sorted_terms.cpp
  *  The sorted-term core (see sorted_terms.h). */
 #include "algebra/sorted_terms.h"

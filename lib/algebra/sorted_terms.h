@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file sorted_terms.h
  *  The sorted-term core that every printed expression goes through: a term split into
  *  its numeric coefficient and its other factors, the degrees that order the terms of a

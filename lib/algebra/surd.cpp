@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file surd.cpp
  *  Exact square roots and quadratic surds (see surd.h). */
 #include "algebra/surd.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file surd.h
  *  Square roots kept exact: √e with the squares of factors of known sign taken
  *  out of the root, and a quadratic surd √radicand held as a positive symbol

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file trig_canonical.cpp
  *  The canonical form of trigonometric polynomials in the coordinates: products of
  *  sines and cosines of linear combinations of the angles linearized into sums of

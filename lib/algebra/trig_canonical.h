@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file trig_canonical.h
  *  Exact canonical form of trigonometric polynomials in the coordinates: equal as
  *  functions of the angles exactly when the forms are equal. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file euler.cpp
  *  Euler's equations, torque-free motion (symmetric and elliptic), Poinsot. */
 #include "bodies/euler.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file euler.h
  *  Euler's equations of a free rigid body, I ω̇ + ω × I ω = N, and torque-free motion in
  *  closed form: symmetric bodies symbolically, asymmetric ones with Jacobi elliptic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file inertia.cpp
  *  Inertia by exact integration over the body, principal moments and axes. */
 #include "bodies/inertia.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file inertia.h
  *  The inertia of rigid bodies: tensors derived by integrating the density over the
  *  body (I_ij = ∫ρ (r² δ_ij − x_i x_j) dV about the centre of mass), principal moments

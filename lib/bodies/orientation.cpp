@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file orientation.cpp
  *  Rotation sequences about body axes, their angular velocity and rotational energy. */
 #include "bodies/orientation.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file orientation.h
  *  The orientation of a body as a sequence of rotations about its own axes
  *  (`rotations(z q1, x q2, …)`, `zxz(φ, θ, ψ)`; the matrices are in algebra/rotation.h):

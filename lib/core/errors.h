@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file errors.h
  *  The two failures every layer reports: bad input at a position in a scene
  *  (exit code 2) and a computation that cannot be done (exit code 1). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file model.cpp
  *  Product names and the model's symbol lists. */
 #include "core/model.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file model.h
  *  The model: what a scene said, as plain data, with every symbol created once.
  *  It knows nothing of printing or of the command line. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file names.h
  *  Names for the symbols that results introduce (ω, s), clear of the scene's own. */
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file number_text.cpp
  *  Numbers as text (see number_text.h). */
 #include "core/number_text.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file number_text.h
  *  Numbers as text: the one place where the library turns a double into digits, for
  *  printed results, tables, CSV, plot scripts, generated C and messages. Every form is

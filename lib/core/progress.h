@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file progress.h
  *  Progress of a long computation, for a program to show (the command line draws one
  *  line on a terminal); the library only reports. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file rule.h
  *  A rewrite rule as a scene states it (`use`); algebra/rules.h applies them. */
 #pragma once

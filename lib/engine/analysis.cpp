@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file analysis.cpp
  *  The stage planner. */
 #include "engine/analysis.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file analysis.h
  *  The stage planner: walks back from the wanted products, runs each needed
  *  stage once, in order, and records its time. Stages that are not needed do not run. */

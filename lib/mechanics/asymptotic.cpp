@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file asymptotic.cpp
  *  The closed-form modes in the scene's `limit`: Laurent series in ε with the
  *  variable as ε² (→ 0) or 1/ε² (→ ∞), the leading terms of the frequencies

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file asymptotic.h
  *  The leading behaviour of the closed-form frequencies, modes and normal
  *  coordinates as a parameter or the scene's ratio goes to 0 or ∞, and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file constrained_linearization.cpp
  *  The reduction of T and V to the tangent space of holonomic constraints. */
 #include "mechanics/constrained_linearization.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file constrained_linearization.h
  *  Small oscillations of a scene with holonomic constraints: the equilibrium given by the
  *  scene, checked on the constraints (g(q*) = 0 and ∇V = Aᵀλ* there), and T and V reduced to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file constraints.cpp
  *  The constraint matrix and its derivative, integrability by Frobenius at random
  *  points, and the multipliers and constraint forces solved symbolically. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file constraints.h
  *  Constraints in the equations of motion (§5 of the spec): M q̈ = f + Q + Aᵀλ with the
  *  rows of A the velocity coefficients a_kj of each constraint (∂f/∂q for a holonomic one,

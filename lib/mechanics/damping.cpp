@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file damping.cpp
  *  The damping matrix, det(K + sC + s²M) and its closed forms, proportional damping. */
 #include "mechanics/damping.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file damping.h
  *  Damped small oscillations: the damping matrix C at the equilibrium, the
  *  characteristic polynomial det(K + sC + s²M) in s (q ∝ e^{st}) made primitive, its

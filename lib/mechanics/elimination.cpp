@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file elimination.cpp
  *  Explicit elimination of holonomic constraints, and the reduced equations. */
 #include "mechanics/elimination.h"

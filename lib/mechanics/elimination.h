@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file elimination.h
  *  Holonomic constraints eliminated explicitly: where a constraint is linear in one
  *  coordinate with a coefficient free of the coordinates (y1 + y2 = −l, x = l/2 sin θ),

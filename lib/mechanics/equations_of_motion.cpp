@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file equations_of_motion.cpp
  *  The Euler–Lagrange equations: the simplified residuals and the form M q̈ = f. */
 #include "mechanics/equations_of_motion.h"

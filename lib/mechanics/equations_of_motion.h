@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file equations_of_motion.h
  *  The equations of motion, derived once from L and read by everyone who needs them:
  *  the printers and the report (the Euler–Lagrange residuals, simplified, and their

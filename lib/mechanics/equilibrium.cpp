@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file equilibrium.cpp
  *  The equilibria of V: ∂V/∂q = 0 solved in closed form (one coordinate: a
  *  polynomial or a trigonometric polynomial; several: angles at 0 or π and a

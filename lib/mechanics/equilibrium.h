@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file equilibrium.h
  *  The equilibria of V and their stability: the scene's `equilibrium` line
  *  checked, or the solutions of ∂V/∂q = 0 found symbolically, each classified

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file forces.cpp
  *  Rayleigh dissipation, dampers and applied forces as generalized forces. */
 #include "mechanics/forces.h"

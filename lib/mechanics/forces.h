@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file forces.h
  *  The generalized forces beyond the Lagrangian, Q in M q̈ = f + Q: Rayleigh
  *  dissipation (`dissipation` lines and dampers) and applied forces (`force q = ...`

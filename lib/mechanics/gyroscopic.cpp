@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file gyroscopic.cpp
  *  The gyroscopic matrix from L1, Kelvin–Tait–Chetaev stability decided by a Sturm
  *  sequence of the characteristic polynomial in w = ω² (symbolically under positive

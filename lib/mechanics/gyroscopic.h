@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file gyroscopic.h
  *  Gyroscopic systems: L1 = Σ aᵢ(q) q̇ᵢ (magnetic fields, the Coriolis terms of a moving
  *  frame, spinning rotors) gives the antisymmetric matrix G; stability by the

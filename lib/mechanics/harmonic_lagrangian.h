@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file harmonic_lagrangian.h
  *  L as a harmonic polynomial (algebra/harmonic.h) over a scene's symbols: built once
  *  by derive_lagrangian, differentiated by the equations of motion. Internal to mechanics/. */

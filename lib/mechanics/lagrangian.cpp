@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lagrangian.cpp
  *  L = T − V and the Euler–Lagrange equations. */
 #include "mechanics/lagrangian.h"

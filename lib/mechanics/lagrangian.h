@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lagrangian.h
  *  The Lagrangian L = T − V from energies, points, gravity and springs, split by degree
  *  in the velocities into L2 + L1 + L0. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file linearization.cpp
  *  T, V and G at an equilibrium (with a check that T is positive definite there),
  *  and the primitive characteristic polynomial det(V − ω²T + iωG). */

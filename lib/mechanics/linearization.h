@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file linearization.h
  *  Small oscillations about an equilibrium: the kinetic, potential and gyroscopic
  *  matrices T, V and G there, and the characteristic polynomial det(V − ω²T + iωG)

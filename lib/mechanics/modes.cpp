@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file modes.cpp
  *  The normal modes in closed form: the roots of the characteristic polynomial
  *  factor by factor (linear, quadratic with its surd, cubic in trigonometric

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file modes.h
  *  The normal modes in closed form: the frequencies ω² as roots of the
  *  characteristic polynomial, a mode vector for each, and the normal coordinates. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file state_space.cpp
  *  A, B and the transfer functions of the linearized system. */
 #include "mechanics/state_space.h"

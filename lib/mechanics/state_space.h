@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file state_space.h
  *  The linearized input–output system at the equilibrium: the state-space form
  *  ẋ = A x + B u with x = (q, q̇), and the Laplace transfer function H(s) of each input

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file steady_motion.cpp
  *  Steady motions on the reduced system. */
 #include "mechanics/steady_motion.h"

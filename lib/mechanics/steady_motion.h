@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file steady_motion.h
  *  Steady motions (relative equilibria): the non-cyclic coordinates at rest, the cyclic
  *  ones turning at constant rates. On the reduced system of Routh's procedure a steady

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file symmetries.cpp
  *  Conserved quantities, the Hamiltonian and Routh's reduction. */
 #include "mechanics/symmetries.h"

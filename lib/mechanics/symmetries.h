@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file symmetries.h
  *  Symmetries of L: the conserved energy function and cyclic momenta, the Hamiltonian
  *  by the Legendre transform with Hamilton's equations, and Routh's reduction of the

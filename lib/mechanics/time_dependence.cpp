@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file time_dependence.cpp
  *  Explicit time in L: the decision whether L depends on t, the points that solve the
  *  equations at every t, the proof that none does, and the linearization about such a

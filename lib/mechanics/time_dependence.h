@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file time_dependence.h
  *  Explicit time in L: whether L really depends on t once its sines and cosines are in
  *  canonical form (a hoop turned at a fixed rate, written with cos(w t), does not), the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file top.cpp
  *  The heavy symmetric top by Routh's procedure. */
 #include "mechanics/top.h"

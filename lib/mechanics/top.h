@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file top.h
  *  The heavy symmetric top: Routh's reduction of its two cyclic angles and the
  *  sleeping-top criterion. */

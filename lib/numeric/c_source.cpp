@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file c_source.cpp
  *  An expression program as C source (expression_program::c_source), for native_code:
  *  straight-line code with exact constants, its sines and cosines optionally four at a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file cln_eigen.cpp
  *  Cholesky, K = L⁻¹ V L⁻ᵀ and cyclic Jacobi rotations in cln::cl_F. */
 #include "numeric/cln_eigen.h"

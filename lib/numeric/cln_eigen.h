@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file cln_eigen.h
  *  The symmetric-definite eigenproblem V a = W T a at any precision, in cln::cl_F: the
  *  high-precision route of compiled_modes. Written by hand: Eigen's solvers need a

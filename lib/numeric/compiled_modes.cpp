@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file compiled_modes.cpp
  *  Numeric normal modes: T and V simplified and compiled once, then per point the
  *  closed form (one or two coordinates, numeric/pair_kernels.h), the symbolically

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file compiled_modes.h
  *  Numeric normal modes at each `values` point: ω ascending, the mode matrix with
  *  Aᵀ T A = I, and an error estimate per frequency that bounds the error. T and V are

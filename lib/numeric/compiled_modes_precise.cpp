@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file compiled_modes_precise.cpp
  *  The high-precision route of compiled_modes: T and V evaluated exactly by GiNaC at the
  *  point, equilibrated by powers of two, and solved in CLN (numeric/cln_eigen.h) at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file compiled_motion.cpp
  *  Equations of motion compiled to straight-line code and solved per evaluation. */
 #include "numeric/compiled_motion.h"

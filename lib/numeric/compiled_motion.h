@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file compiled_motion.h
  *  The equations of motion M(q) q̈ = f(t, q, q̇) of a Lagrangian at one parameter
  *  point, compiled once into straight-line code (M, f, the energy function, and the

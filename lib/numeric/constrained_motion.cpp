@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file constrained_motion.cpp
  *  Constrained equations of motion compiled once, integrated piecewise with projection. */
 #include "numeric/constrained_motion.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file constrained_motion.h
  *  The simulation of a scene with constraints: the index-1 form [M −Aᵀ; A 0] [q̈; λ] =
  *  [f; −c] compiled at the parameter point and integrated by an explicit method from one

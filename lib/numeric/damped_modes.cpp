@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file damped_modes.cpp
  *  M, K, C and G compiled into one straight-line program, evaluated per `values` point,
  *  and the damped quadratic eigenproblem solved there. */

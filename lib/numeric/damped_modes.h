@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file damped_modes.h
  *  Numeric damped small oscillations at each `values` point: M, K, C (and G) compiled
  *  once, then the quadratic eigenproblem (s²M + s(C − G) + K)x = 0 of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file dop853.h
  *  Hairer's DOP853: the explicit Runge–Kutta method of order 8 (Dormand–Prince
  *  coefficients as improved by Hairer), with its error estimator built from a 5th- and a

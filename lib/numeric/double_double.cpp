@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file double_double.cpp
  *  The run-time choice of the FMA kernels: the CPU is asked once, tests and benchmarks
  *  may force either version. */

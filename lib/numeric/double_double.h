@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file double_double.h
  *  The arithmetic beneath the compiled programs and the modes kernels: double-double
  *  numbers (an unevaluated sum hi + lo, about 32 digits) and doubles with a running

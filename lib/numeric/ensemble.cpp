@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ensemble.cpp
  *  One ensemble point: the compiled equations integrated by DOP853 and reduced to its
  *  measure (see ensemble.h). */

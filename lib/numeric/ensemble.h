@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ensemble.h
  *  Ensembles: the scene's motion integrated from many initial states and parameter points
  *  at once (`lagrange ensemble SCENE --grid "theta=-3.1..3.1:400, phi=-3.1..3.1:400"`), each

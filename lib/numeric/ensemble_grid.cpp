@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ensemble_grid.cpp
  *  The `--grid` and `--measure` options of `lagrange ensemble` (see ensemble.h). */
 #include "numeric/ensemble.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ensemble_mpi.cpp
  *  Ensembles across processes with MPI (compiled only when CMake finds MPI). Rank 0 hands
  *  out chunks on request (dynamic load balancing), receives every chunk's rows and writes

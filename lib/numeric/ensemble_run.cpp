@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ensemble_run.cpp
  *  Ensembles on threads, and the scheduler that the MPI runner shares (see ensemble_run.h). */
 #include "numeric/ensemble_run.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ensemble_run.h
  *  An ensemble run in parallel: threads on this machine (std::thread, one workspace each,
  *  the compiled problem shared read-only), and under `mpirun` processes on several machines

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ensemble_scheduler.h
  *  Internal to the ensemble runners (ensemble_run.cpp, ensemble_mpi.cpp): chunks handed out
  *  on demand, and their results written in index order from a bounded reorder buffer. */

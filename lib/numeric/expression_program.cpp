@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file expression_program.cpp
  *  Compiling GiNaC expressions to a postfix instruction list and running it (its C
  *  source for native compilation: c_source.cpp).

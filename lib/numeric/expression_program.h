@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file expression_program.h
  *  Straight-line numeric code compiled once from GiNaC expressions in a fixed list
  *  of symbols: a postfix instruction list with common subexpressions shared, run

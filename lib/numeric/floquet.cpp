@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file floquet.cpp
  *  The monodromy matrix over one period of the drive and its eigenvalues, the Floquet
  *  multipliers, about each point that solves the equations at every t. */

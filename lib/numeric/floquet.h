@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file floquet.h
  *  Floquet multipliers of the equations linearized about a point that solves them at
  *  every t, for an L periodic in t: the monodromy matrix Φ(T) of the first-order system

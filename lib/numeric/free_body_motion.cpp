@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file free_body_motion.cpp
  *  A free body's Euler equations compiled for time integration. */
 #include "numeric/free_body_motion.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file free_body_motion.h
  *  A free rigid body's Euler equations I ω̇ + ω × I ω = N (from bodies/euler)
  *  at one parameter point, solved for ω̇ once (I is a constant matrix of numbers there)

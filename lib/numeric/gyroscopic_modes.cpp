@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file gyroscopic_modes.cpp
  *  T, V and G compiled into one straight-line program, evaluated per `values` point,
  *  and the quadratic eigenproblem solved there. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file gyroscopic_modes.h
  *  Numeric small oscillations of a gyroscopic linearization T q̈ − G q̇ + V q = 0 at each
  *  `values` point: T, V and G compiled once, then the quadratic eigenproblem

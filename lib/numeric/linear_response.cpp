@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file linear_response.cpp
  *  State-space matrices at numbers and the frequency response by complex LU. */
 #include "numeric/linear_response.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file linear_response.h
  *  The linearized input–output system at numbers: A and B of the state-space form at each
  *  `values` point, and the frequency response H(iω) of one input to one coordinate over a

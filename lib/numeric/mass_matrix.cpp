@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file mass_matrix.cpp
  *  The message of a mass matrix that is not positive definite (the solve is inline in the header). */
 #include "numeric/mass_matrix.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file mass_matrix.h
  *  q̈ from M q̈ = f at one evaluation, M symmetric positive definite and small (the
  *  2–6 coordinates of a scene): Cramer's rule for two coordinates, LDLᵀ otherwise.

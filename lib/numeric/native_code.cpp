@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file native_code.cpp
  *  Run-time compilation of expression programs (C source, cc through run_program, dlopen). */
 #include "numeric/native_code.h"

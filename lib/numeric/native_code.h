@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file native_code.h
  *  Expression programs compiled to machine code at run time: C source generated from
  *  the programs, compiled by the system's C compiler (`cc -O2 -shared`) in a private

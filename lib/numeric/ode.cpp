@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ode.cpp
  *  The integrators: Boost.Odeint (Dormand–Prince 5(4), Fehlberg 7(8),
  *  Bulirsch–Stoer), DOP853 (numeric/dop853.h), SUNDIALS CVODE (BDF with the system's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ode.h
  *  Time integration of a generic first-order system x' = f(t, x): the system
  *  (right-hand side, optional Jacobian, invariants, optional exact solution), the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file pair_kernels.cpp
  *  The closed-form kernels of compiled_modes: one coordinate lane by lane, two on a
  *  block of lanes with selects instead of branches (the loops vectorize), compiled

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file pair_kernels.h
  *  The closed form of the modes of one and two coordinates, the kernels behind
  *  compiled_modes' fastest route: W = ω² from a W² − b W + c = 0 (two coordinates) or

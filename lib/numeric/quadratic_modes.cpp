@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file quadratic_modes.cpp
  *  (s²M + sD + K) x = 0 through the first-order system: M = LLᵀ turns the problem into
  *  s²I + sD̃ + K̃ with D̃ = L⁻¹DL⁻ᵀ, K̃ = L⁻¹KL⁻ᵀ; s = γμ with γ² = ‖K̃‖/‖I‖ balances the

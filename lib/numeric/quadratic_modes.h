@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file quadratic_modes.h
  *  Numeric solution of the quadratic eigenproblem (s²M + sD + K) x = 0 of a linear
  *  system M q̈ + D q̇ + K q = 0 with q ∝ x e^{st}: M symmetric positive definite, D any

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file simulation.cpp
  *  Simulation and work-precision runs of a scene's equations of motion. */
 #include "numeric/simulation.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file simulation.h
  *  The `simulation` and `workprecision` products: the scene's equations of motion
  *  compiled at its parameter point, integrated by the chosen (or automatically

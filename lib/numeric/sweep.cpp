@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file sweep.cpp
  *  Streamed numeric sweeps (see sweep.h). */
 #include "numeric/sweep.h"

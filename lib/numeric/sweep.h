@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file sweep.h
  *  Numeric modes over a grid of parameter values (`--sweep m=1e-6..1e6:1000000:log`),
  *  streamed: each point is handed to a callback and forgotten, so a sweep of any

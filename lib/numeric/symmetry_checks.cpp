@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file symmetry_checks.cpp
  *  Numeric checks of the symmetries against the Lagrangian as built. */
 #include "numeric/symmetry_checks.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file symmetry_checks.h
  *  Self-verification of the symmetries (see verification.h): the conserved quantities,
  *  the Hamiltonian, the effective potential and the steady motion, each against the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file values.cpp
  *  Expressions at the parameter values as doubles, numbers for messages, merged values. */
 #include "numeric/values.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file values.h
  *  Small helpers shared by the numeric stages: an expression at the parameter values
  *  as a double, with a message naming what it was when it is not a finite real number,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification.cpp
  *  Numeric checks of the symbolic results against the Lagrangian as built. */
 #include "numeric/verification.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification.h
  *  Self-verification: every symbolic result is checked numerically, by a route that
  *  does not share the symbolic derivation, before it is printed. The reference is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification_asymptotic.cpp
  *  The asymptotic frequencies against the exact ones near the limit: the eigenvalues of
  *  the pencil (V, T) at the parameter values (Eigen's generalized self-adjoint solver),

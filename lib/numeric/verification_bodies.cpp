@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification_bodies.cpp
  *  Numeric checks of the inertia and Euler results: cubature of the density over each
  *  shape's own parametrization, the parallel-axis shift of given tensors, Euler's

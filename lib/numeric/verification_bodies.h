@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification_bodies.h
  *  Self-verification of the rigid bodies' results by routes that share nothing with
  *  their symbolic derivation: each body's mass, centre of mass and inertia tensor by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification_constraints.cpp
  *  Numeric checks of the multipliers, constraint forces and reduced linearization. */
 #include "numeric/verification_constraints.h"

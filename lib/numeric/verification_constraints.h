@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification_constraints.h
  *  Self-verification of the results with constraints, by routes that do not share their
  *  derivation: the multipliers against the index-1 system solved numerically with the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification_damping.cpp
  *  Numeric checks of the damped small oscillations by a route that shares nothing with
  *  the symbolic derivation: C against the Rayleigh function and the forces as the scene

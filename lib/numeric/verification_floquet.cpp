@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification_floquet.cpp
  *  The Floquet multipliers against the flow of the full (nonlinear) equations: the
  *  monodromy matrix by central differences of solutions that start beside the point,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification_modes.cpp
  *  The small-oscillation results against the pencil (V, T) evaluated at parameter
  *  points: the characteristic polynomial against det(V − ω²T) (LU), the frequencies

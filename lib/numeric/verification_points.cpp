@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification_points.cpp
  *  The parameter points and helpers of the self-verification (see verification_points.h). */
 #include "numeric/verification_points.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file verification_points.h
  *  What the self-verification files share (internal to lib/numeric): the seeded parameter
  *  points, results evaluated there, the tolerance and the failure messages, and the check

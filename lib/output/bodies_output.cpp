@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file bodies_output.cpp
  *  Printers of inertia tensors (with the integrals they come from), Euler's equations,
  *  their torque-free solutions, Poinsot's construction and the stability of rotations. */

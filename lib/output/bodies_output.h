@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file bodies_output.h
  *  The rigid-body products of an analysis (`inertia`, `euler`) in text, LaTeX and JSON.
  *  Called by the document printers; they take results and never compute mechanics. */

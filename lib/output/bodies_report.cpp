@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file bodies_report.cpp
  *  The report's rigid-body sections: each inertia component as the integral it
  *  comes from (the homework's eqs. 16–35: the density with its deltas, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file constraints_output.cpp
  *  Printers of the constraints, their multipliers and forces. */
 #include "output/constraints_output.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file constraints_report.cpp
  *  The report's section on constraints: each constraint with its kind and integrability,
  *  the equations with multipliers, the multipliers solved and the constraint forces. */

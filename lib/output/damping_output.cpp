@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file damping_output.cpp
  *  Printers of the damped small oscillations. */
 #include "output/damping_output.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file damping_output.h
  *  The damped small oscillations in text, LaTeX and JSON: the damping matrix C, the
  *  characteristic polynomial det(K + sC + s²M), its roots with their regimes, and

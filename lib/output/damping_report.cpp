@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file damping_report.cpp
  *  The report's sections on non-conservative small oscillations: the damping matrix,
  *  det(K + sC + s²M) with its roots and regimes, proportional damping, the damped

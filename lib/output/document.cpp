@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file document.cpp
  *  Text, LaTeX and JSON documents of an analysis. */
 #include "output/document.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file document.h
  *  Printers of a whole analysis: text for people, a LaTeX document, JSON.
  *  They take results and never compute mechanics. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ensemble_output.cpp
  *  Ensemble rows as CSV, JSON and a gnuplot map (see ensemble_output.h). */
 #include "output/ensemble_output.h"

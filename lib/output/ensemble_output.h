@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ensemble_output.h
  *  Writers of an ensemble's rows as they arrive: CSV (one row per point, grid order),
  *  JSON (one object whose `ensemble.rows` array is written row by row), and a PNG map of a

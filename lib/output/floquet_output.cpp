@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file floquet_output.cpp
  *  Printers of the Floquet multipliers about points that solve the equations at every t. */
 #include "output/floquet_output.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file floquet_output.h
  *  The `floquet` product (spec §5) in text, LaTeX and JSON: per point that solves the
  *  equations at every t and per `values` point, the period, the multipliers and whether

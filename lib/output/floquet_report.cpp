@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file floquet_report.cpp
  *  The report's section on an L that depends on t: the points that solve the equations
  *  at every t and the Floquet multipliers about them. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file gyroscopic_report.cpp
  *  The report's sections on a Lagrangian with a part linear in the velocities: the
  *  gyroscopic matrix G and the Kelvin–Tait–Chetaev verdict, and the numeric values from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file latex_blocks.cpp
  *  The LaTeX building blocks of the documents and the report (see latex_blocks.h). */
 #include "output/latex_blocks.h"

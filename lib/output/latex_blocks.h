@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file latex_blocks.h
  *  The building blocks of document.cpp shared with the report: LaTeX pieces and the
  *  term orders the printers use. */

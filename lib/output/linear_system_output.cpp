@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file linear_system_output.cpp
  *  Printers of the state-space form and the transfer functions. */
 #include "output/linear_system_output.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file oscillations_output.cpp
  *  The small-oscillations family in text, LaTeX and JSON (see oscillations_output.h). */
 #include "output/oscillations_output.h"

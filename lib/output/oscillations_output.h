@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file oscillations_output.h
  *  The small-oscillations family in text, LaTeX and JSON: equilibria, the linearization,
  *  the characteristic polynomial, the modes and normal coordinates, the asymptotic limit

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file oscillations_report.cpp
  *  The report's figure of the mode shapes: point masses in a plane drawn at
  *  equilibrium and displaced along each mode, or bar charts of the mode vectors.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file print.cpp
  *  Deterministic printers for expressions in plain, text and LaTeX syntax. The
  *  expression tree is walked here, not by GiNaC's printers, so that the order of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file print.h
  *  Deterministic printing of expressions in three syntaxes. GiNaC's own term order
  *  can change from run to run; these printers order terms and factors themselves. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file print_names.cpp
  *  How symbol names print (see print_name in print.h): Greek letters, dots over
  *  velocities, trailing digits and underscores as subscripts. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file report.cpp
  *  The derivation report: the framework (report_writer, figures through
  *  gnuplot, pdflatex) and the sections of the equations and small oscillations.

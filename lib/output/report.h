@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file report.h
  *  The derivation report: a complete LaTeX document that reads like a careful
  *  solution (the scene as written, T/V/L as built and simplified, the equations

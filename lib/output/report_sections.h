@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file report_sections.h
  *  Section writers of the report that live in their own files. Each is listed
  *  in report_sections() (report.cpp); the rigid-body and simulation sections

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file response_output.cpp
  *  Writers of the frequency response. */
 #include "output/response_output.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file response_output.h
  *  The frequency response (`lagrange response`) as text, CSV and JSON, and its Bode
  *  diagram (magnitude and phase against drive frequency) drawn by gnuplot. */

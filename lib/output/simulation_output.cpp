@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file simulation_output.cpp
  *  Simulation sections, CSV, and gnuplot plots. gnuplot runs through
  *  run_program (system/external.h: an argument vector, no shell) on a script file in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file simulation_report.cpp
  *  The report's section on the motion in time: the simulation's setting and
  *  accuracy, the coordinates against time (the homework's beats, with the beat

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file sweep_output.cpp
  *  Streamed sweep output (see sweep_output.h). Numbers are the shortest decimals
  *  that read back as the same double, so the output is byte-identical across runs. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file sweep_output.h
  *  Streams a numeric sweep as it is computed: a text table (one line per point) or
  *  one JSON object whose `sweep.points` array is written element by element. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file symmetries_output.cpp
  *  Printers of the conserved quantities, the Hamiltonian, the reduction and the
  *  steady motion. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file symmetries_output.h
  *  The symmetries in text, LaTeX and JSON: the conserved quantities, the Hamiltonian
  *  with Hamilton's equations, Routh's reduction and the steady motion. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file symmetries_report.cpp
  *  The report's section on symmetries: the conserved quantities, the Hamiltonian,
  *  Routh's reduction of the cyclic coordinates and the steady motion. */

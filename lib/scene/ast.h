@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file ast.h
  *  The syntax tree of a scene, exactly as written: no names are resolved here. */
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lexer.cpp
  *  The scene lexer: one pass over the bytes, tracking line and column. */
 #include "scene/lexer.h"

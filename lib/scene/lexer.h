@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lexer.h
  *  Splits scene text into tokens that carry their file, line and column. */
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lower.cpp
  *  Semantic checks and lowering of a scene's statements: declared names only, no
  *  duplicates, each statement's own rules (an equilibrium that gives every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lower.h
  *  Semantic checks and lowering: from the syntax tree to the model. Names are
  *  resolved here, in the order they are declared. */

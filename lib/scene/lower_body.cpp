@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lower_body.cpp
  *  The statements `body`, `omega` and `torque`: shapes, regions and densities, given
  *  inertia tensors checked, orientations, and `attached to` chains composed. */

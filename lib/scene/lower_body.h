@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lower_body.h
  *  The front end's part of rigid bodies: their statements, and for those stated as §5
  *  writes them the checks of a given

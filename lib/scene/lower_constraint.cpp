@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lower_constraint.cpp
  *  Classifying constraints, and finding redundant or inconsistent ones by their
  *  velocity forms at random points. */

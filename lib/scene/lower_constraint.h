@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lower_constraint.h
  *  The front end's part of `constraint NAME: lhs = rhs`: the kind of a constraint
  *  (holonomic, Pfaffian, or neither: an error) and the check that no constraint is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lower_expression.cpp
  *  Lowering of expressions: declared names only, `q'` only for coordinates, reserved
  *  names, exact integers and rationals, and no arithmetic that could hang or exhaust

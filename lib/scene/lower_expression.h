@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file lower_expression.h
  *  What lowering statements (lower.cpp) and rules files share: the model under
  *  construction, the table of declared names, and expressions lowered against it.

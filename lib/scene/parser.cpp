@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file parser.cpp
  *  The scene grammar, one function per rule (the rule is in the comment above it).
  *  No names are resolved here: that is the semantic checks' job. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file parser.h
  *  Recursive-descent parser of the scene language: one function per grammar rule. */
 #pragma once

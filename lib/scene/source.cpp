@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file source.cpp
  *  Scene text and error formatting with a caret under the offending column. */
 #include "scene/source.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file source.h
  *  Scene text, kept to quote the offending line of an error. */
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file address_layout.cpp
  *  Turning off address-space randomization for the process, by personality(2) and a re-exec. */
 #include "system/address_layout.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file address_layout.h
  *  A fixed address layout for the process, so that GiNaC's term order is the same in
  *  every run. GiNaC seeds the hash of each symbol and function with the address of its

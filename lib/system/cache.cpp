@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file cache.cpp
  *  The file cache: POSIX calls, so that links, owners and modes are checked on the
  *  descriptor that is read (no check-then-open race). */

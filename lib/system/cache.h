@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file cache.h
  *  A cache of files in the user's cache folder, keyed by text: the compiled native code
  *  of equations of motion, so that running the same scene again does not compile again. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file external.cpp
  *  Private folders and posix_spawnp for cc, gnuplot and pdflatex. */
 #include "system/external.h"

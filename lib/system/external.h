@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file external.h
  *  Running external programs — the C compiler for native equations of motion,
  *  gnuplot and pdflatex for plots and reports — the one way the library does: in a

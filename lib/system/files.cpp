@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file files.cpp
  *  Bounded reads (poll with a deadline, chunked read) and replacing writes (mkstemp in
  *  the target's folder, fchmod/fchown to the replaced file, rename). */

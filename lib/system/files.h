@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file files.h
  *  Reading and writing the user's files safely: reads bounded in size and in waiting
  *  time, and writes that never destroy what they replace. Used by the command line

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file gnuplot.cpp
  *  Drawing with gnuplot (see gnuplot.h). */
 #include "system/gnuplot.h"

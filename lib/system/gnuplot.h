@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file gnuplot.h
  *  Drawing with gnuplot: a script run in a private folder (system/external.h: an
  *  argument vector, no shell), the plot it writes read back. The figures of the report

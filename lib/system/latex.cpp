@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file latex.cpp
  *  Compiling LaTeX with pdflatex (see latex.h). */
 #include "system/latex.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file latex.h
  *  Compiling a LaTeX document to PDF with pdflatex, in a private folder
  *  (system/external.h: an argument vector, no shell). */

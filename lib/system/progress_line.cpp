@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file progress_line.cpp
  *  The progress line (see progress_line.h). */
 #include "system/progress_line.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file progress_line.h
  *  One line of progress on a terminal: rewritten in place with a carriage return while a
  *  long step runs, and cleared at the end. The command line shows the library's progress

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file signals.cpp
  *  The registry of temporaries and children, and the SIGINT/SIGTERM handlers.
  *  Hand-written: removing files from a signal handler allows only async-signal-safe

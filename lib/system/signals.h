@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file signals.h
  *  What SIGINT and SIGTERM leave behind: nothing. Temporary files and folders, and the
  *  process groups of running children (cc, gnuplot, pdflatex), are registered here while

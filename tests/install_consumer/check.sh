@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Installs the built project into a temporary prefix, checks that every installed
 # header finds the headers it includes there (none left out as internal) and that the
 # library is shared with a SONAME, builds the consumer against it twice, with

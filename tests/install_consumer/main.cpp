@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /** @file main.cpp
  *  Derives a harmonic oscillator's equation through the installed library, and prints the
  *  version of <lagrange/version.h>. */
