@@ -7,9 +7,7 @@
 #include "algebra/budget.h"
 #include "algebra/integer_polynomial.h"
 
-#include <algorithm>
 #include <optional>
-#include <string>
 #include <vector>
 
 namespace lagrange {
@@ -17,25 +15,7 @@ namespace lagrange {
 namespace {
 
 using GiNaC::ex;
-using GiNaC::ex_to;
 using GiNaC::is_a;
-
-/// The symbols of e ordered by name (then by GiNaC's order of creation), so that
-/// every choice below is the same from run to run.
-std::vector<ex> symbols_of(const ex& e)
-{
-    GiNaC::exset found;
-    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
-        if (is_a<GiNaC::symbol>(*i))
-            found.insert(*i);
-    std::vector<ex> symbols(found.begin(), found.end());
-    std::sort(symbols.begin(), symbols.end(), [](const ex& a, const ex& b) {
-        const std::string& na = ex_to<GiNaC::symbol>(a).get_name();
-        const std::string& nb = ex_to<GiNaC::symbol>(b).get_name();
-        return na != nb ? na < nb : a.compare(b) < 0;
-    });
-    return symbols;
-}
 
 /// Whether GiNaC's factor() is left to do a polynomial: few terms or few symbols, where
 /// it is quick (its forms are those every example prints).
@@ -43,7 +23,11 @@ bool small_for_factor(const ex& expanded)
 {
     if (!is_a<GiNaC::add>(expanded) || expanded.nops() <= 4)
         return true;
-    return symbols_of(expanded).size() <= 3;
+    GiNaC::exset symbols;
+    for (GiNaC::const_preorder_iterator i = expanded.preorder_begin(); i != expanded.preorder_end(); ++i)
+        if (is_a<GiNaC::symbol>(*i) && symbols.insert(*i).second && symbols.size() > 3)
+            return false;
+    return true;
 }
 
 /// One factor of an explicit product.
