@@ -8,6 +8,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 LAGRANGE_WITH_FUZZ=1 LAGRANGE_SETUP_ONLY=1 scripts/setup.sh
+# ccache, when installed: paths relative to the checkout, so that a clone elsewhere (CI) hits too.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="${CXX:-clang++}" \
