@@ -24,7 +24,7 @@ double real_value(const GiNaC::ex& e, const std::string& what)
     return d;
 }
 
-std::optional<double> real_at(const GiNaC::ex& e, const GiNaC::exmap& at)
+std::optional<std::complex<double>> complex_at(const GiNaC::ex& e, const GiNaC::exmap& at)
 {
     GiNaC::ex value;
     try {
@@ -35,10 +35,18 @@ std::optional<double> real_at(const GiNaC::ex& e, const GiNaC::exmap& at)
     if (!GiNaC::is_a<GiNaC::numeric>(value))
         return std::nullopt;
     const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(value);
-    const double re = GiNaC::real(n).to_double(), im = GiNaC::imag(n).to_double();
-    if (!std::isfinite(re) || !std::isfinite(im) || std::abs(im) > 1e-12 * (1 + std::abs(re)))
+    const std::complex<double> z(GiNaC::real(n).to_double(), GiNaC::imag(n).to_double());
+    if (!std::isfinite(z.real()) || !std::isfinite(z.imag()))
         return std::nullopt;
-    return re;
+    return z;
+}
+
+std::optional<double> real_at(const GiNaC::ex& e, const GiNaC::exmap& at)
+{
+    std::optional<std::complex<double>> z = complex_at(e, at);
+    if (!z || std::abs(z->imag()) > 1e-12 * (1 + std::abs(z->real())))
+        return std::nullopt;
+    return z->real();
 }
 
 std::string message_number(double x, int digits)

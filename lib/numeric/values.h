@@ -7,6 +7,7 @@
 
 #include <ginac/ginac.h>
 
+#include <complex>
 #include <map>
 #include <optional>
 #include <string>
@@ -19,9 +20,12 @@ struct model;
 /// number" (a symbol left, or a complex value) or "… is not a finite number".
 double real_value(const GiNaC::ex& e, const std::string& what);
 
-/// `e` with `at` substituted, evaluated to a double: nothing when a symbol is left, the
-/// evaluation throws, the value is not finite, or its imaginary part is beyond rounding
-/// (more than 1e-12 (1 + |re|)). For the checks that try points and skip the unusable ones.
+/// `e` with `at` substituted, evaluated to a complex double: nothing when a symbol is left,
+/// the evaluation throws, or a part is not finite.
+std::optional<std::complex<double>> complex_at(const GiNaC::ex& e, const GiNaC::exmap& at);
+
+/// complex_at, and nothing when the imaginary part is beyond rounding (more than
+/// 1e-12 (1 + |re|)). For the checks that try points and skip the unusable ones.
 std::optional<double> real_at(const GiNaC::ex& e, const GiNaC::exmap& at);
 
 /// x with `digits` significant digits (printf's %g), for messages.

@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "numeric/values.h"
+#include "numeric/verification_points.h"
 
 #include <Eigen/Dense>
 
@@ -24,6 +25,7 @@ namespace {
 
 using GiNaC::ex;
 using complex = std::complex<double>;
+using verification_points::matrix_at;
 
 constexpr double tolerance = 1e-6;
 constexpr double step = 0x1p-12;   ///< central differences of positions and forces
@@ -208,19 +210,6 @@ std::optional<Eigen::MatrixXd> damping_reference(const model& scene, const GiNaC
     return c;
 }
 
-std::optional<Eigen::MatrixXd> matrix_value(const GiNaC::matrix& m, const GiNaC::exmap& at)
-{
-    Eigen::MatrixXd result(m.rows(), m.cols());
-    for (unsigned i = 0; i < m.rows(); ++i)
-        for (unsigned j = 0; j < m.cols(); ++j) {
-            std::optional<double> x = real_at(m(i, j), at);
-            if (!x)
-                return std::nullopt;
-            result(i, j) = *x;
-        }
-    return result;
-}
-
 /// C from the statements beside the equilibrium q0 (both sides averaged), to O(offset²): a damper's length may vanish at q0 itself.
 std::optional<Eigen::MatrixXd> damping_beside(const model& scene, const GiNaC::exmap& parameters,
                                               const std::vector<double>& q0)
@@ -258,9 +247,9 @@ std::vector<verification_entry> verify_damping(const model& scene, const lineari
         for (const ex& x : linear.at)
             if (std::optional<double> v = real_at(x, parameters))
                 q0.push_back(*v);
-        std::optional<Eigen::MatrixXd> symbolic = matrix_value(damping.damping, parameters);
-        std::optional<Eigen::MatrixXd> mass = matrix_value(linear.kinetic, parameters);
-        std::optional<Eigen::MatrixXd> stiffness = matrix_value(linear.potential, parameters);
+        std::optional<Eigen::MatrixXd> symbolic = matrix_at(damping.damping, parameters);
+        std::optional<Eigen::MatrixXd> mass = matrix_at(linear.kinetic, parameters);
+        std::optional<Eigen::MatrixXd> stiffness = matrix_at(linear.potential, parameters);
         if (q0.size() != n || !symbolic || !mass || !stiffness)
             continue;
         std::optional<Eigen::MatrixXd> beside = damping_beside(scene, parameters, q0);
@@ -373,10 +362,10 @@ std::vector<verification_entry> verify_linear_system(const model& scene, const l
         for (const ex& x : linear.at)
             if (std::optional<double> v = real_at(x, parameters))
                 q0.push_back(*v);
-        std::optional<Eigen::MatrixXd> a = matrix_value(system.a, parameters), b = matrix_value(system.b, parameters);
-        std::optional<Eigen::MatrixXd> mass = matrix_value(linear.kinetic, parameters);
-        std::optional<Eigen::MatrixXd> stiffness = matrix_value(linear.potential, parameters);
-        std::optional<Eigen::MatrixXd> gyroscopic = matrix_value(linear.gyroscopic, parameters);
+        std::optional<Eigen::MatrixXd> a = matrix_at(system.a, parameters), b = matrix_at(system.b, parameters);
+        std::optional<Eigen::MatrixXd> mass = matrix_at(linear.kinetic, parameters);
+        std::optional<Eigen::MatrixXd> stiffness = matrix_at(linear.potential, parameters);
+        std::optional<Eigen::MatrixXd> gyroscopic = matrix_at(linear.gyroscopic, parameters);
         if (q0.size() != n || !a || !b || !mass || !stiffness || !gyroscopic)
             continue;
         std::optional<Eigen::MatrixXd> damping = damping_beside(scene, parameters, q0);

@@ -38,24 +38,6 @@ std::vector<parameter_point> parameter_points(const model& scene)
     return points;
 }
 
-/// e at the parameter point (and `more`), as a complex number; nothing if a symbol is left.
-std::optional<std::complex<double>> complex_at(const ex& e, const GiNaC::exmap& at)
-{
-    ex value;
-    try {
-        value = e.subs(at).evalf();
-    } catch (const std::exception&) {
-        return std::nullopt;
-    }
-    if (!GiNaC::is_a<GiNaC::numeric>(value))
-        return std::nullopt;
-    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(value);
-    std::complex<double> z(GiNaC::real(n).to_double(), GiNaC::imag(n).to_double());
-    if (!std::isfinite(z.real()) || !std::isfinite(z.imag()))
-        return std::nullopt;
-    return z;
-}
-
 std::optional<Eigen::MatrixXd> matrix_at(const GiNaC::matrix& m, const GiNaC::exmap& at)
 {
     Eigen::MatrixXd result(m.rows(), m.cols());

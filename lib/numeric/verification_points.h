@@ -58,9 +58,6 @@ struct parameter_point {
 /// The parameter points of the checks: the `values` lines' first, then seeded ones.
 std::vector<parameter_point> parameter_points(const model& scene);
 
-/// e at the parameter point, as a complex number; nothing if a symbol is left.
-std::optional<std::complex<double>> complex_at(const GiNaC::ex& e, const GiNaC::exmap& at);
-
 /// m at the parameter point; nothing if an entry is not real.
 std::optional<Eigen::MatrixXd> matrix_at(const GiNaC::matrix& m, const GiNaC::exmap& at);
 
