@@ -3,6 +3,7 @@
  *  Equations of motion compiled to straight-line code and solved per evaluation. */
 #include "numeric/compiled_motion.h"
 
+#include "algebra/calculus.h"
 #include "numeric/mass_matrix.h"
 #include "numeric/values.h"
 
@@ -10,6 +11,47 @@
 #include <stdexcept>
 
 namespace lagrange {
+
+std::vector<GiNaC::ex> state_symbols(const model& scene)
+{
+    std::vector<GiNaC::ex> symbols;
+    for (const coordinate& c : scene.coordinates)
+        symbols.push_back(c.position);
+    for (const coordinate& c : scene.coordinates)
+        symbols.push_back(c.velocity);
+    symbols.push_back(scene.time);
+    return symbols;
+}
+
+motion_expressions motion_at_values(const model& scene, const equations_of_motion& equations,
+                                    const std::map<std::string, GiNaC::ex>& values)
+{
+    const std::size_t n = scene.coordinates.size();
+    motion_expressions motion{std::vector<GiNaC::ex>(n * n), std::vector<GiNaC::ex>(n)};
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < n; ++j)
+            motion.mass[i * n + j] =
+                j < i ? motion.mass[j * n + i]
+                      : at_values(equations.mass(static_cast<unsigned>(i), static_cast<unsigned>(j)), scene, values);
+        motion.force[i] = at_values(equations.forcing[i], scene, values);
+    }
+    return motion;
+}
+
+std::vector<GiNaC::ex> motion_jacobian(const model& scene, const motion_expressions& motion)
+{
+    std::vector<GiNaC::ex> outputs;
+    for (const coordinate& c : scene.coordinates)
+        for (const GiNaC::ex& m : motion.mass)
+            outputs.push_back(differentiate(m, c.position));
+    for (const GiNaC::ex& f : motion.force)
+        for (const coordinate& c : scene.coordinates)
+            outputs.push_back(differentiate(f, c.position));
+    for (const GiNaC::ex& f : motion.force)
+        for (const coordinate& c : scene.coordinates)
+            outputs.push_back(differentiate(f, c.velocity));
+    return outputs;
+}
 
 compiled_motion::compiled_motion(const model& scene, const equations_of_motion& equations,
                                  const std::map<std::string, GiNaC::ex>& values)
@@ -22,39 +64,16 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
     accumulates_work_ = !lagrangian_has_time && equations.forces.any;
 
     // Symbols in the state's order, time last: without explicit time the programs read x directly.
-    std::vector<GiNaC::ex> symbols;
-    for (const coordinate& c : scene.coordinates)
-        symbols.push_back(c.position);
-    for (const coordinate& c : scene.coordinates)
-        symbols.push_back(c.velocity);
-    symbols.push_back(scene.time);
+    const std::vector<GiNaC::ex> symbols = state_symbols(scene);
 
-    // M q̈ = f at the parameter values (M row-major).
-    std::vector<GiNaC::ex> mass(n_ * n_), force(n_);
-    for (std::size_t i = 0; i < n_; ++i) {
-        for (std::size_t j = 0; j < n_; ++j)
-            mass[i * n_ + j] = j < i ? mass[j * n_ + i]
-                                     : at_values(equations.mass(static_cast<unsigned>(i), static_cast<unsigned>(j)),
-                                                 scene, values);
-        force[i] = at_values(equations.forcing[i], scene, values);
-    }
-    for (const GiNaC::ex& e : mass)
+    const motion_expressions motion = motion_at_values(scene, equations, values);
+    for (const GiNaC::ex& e : motion.mass)
         explicit_time_ = explicit_time_ || e.has(scene.time);
-    for (const GiNaC::ex& e : force)
+    for (const GiNaC::ex& e : motion.force)
         explicit_time_ = explicit_time_ || e.has(scene.time);
-    std::vector<GiNaC::ex> rhs_outputs = mass;
-    rhs_outputs.insert(rhs_outputs.end(), force.begin(), force.end());
-
-    std::vector<GiNaC::ex> jacobian_outputs;
-    for (const coordinate& c : scene.coordinates)
-        for (const GiNaC::ex& m : mass)
-            jacobian_outputs.push_back(differentiate(m, c.position));
-    for (const GiNaC::ex& f : force)
-        for (const coordinate& c : scene.coordinates)
-            jacobian_outputs.push_back(differentiate(f, c.position));
-    for (const GiNaC::ex& f : force)
-        for (const coordinate& c : scene.coordinates)
-            jacobian_outputs.push_back(differentiate(f, c.velocity));
+    std::vector<GiNaC::ex> rhs_outputs = motion.mass;
+    rhs_outputs.insert(rhs_outputs.end(), motion.force.begin(), motion.force.end());
+    const std::vector<GiNaC::ex> jacobian_outputs = motion_jacobian(scene, motion);
 
     const GiNaC::ex energy = at_values(equations.energy, scene, values);
     // A cyclic coordinate (L holds its velocity, not itself) conserves its momentum.

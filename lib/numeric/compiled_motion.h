@@ -78,6 +78,21 @@ private:
     mutable std::vector<double> scratch_, symbols_, outputs_, factor_, jacobian_outputs_;
 };
 
+/// The programs' symbols in the state's order: q1 … qn, q̇1 … q̇n, then t.
+std::vector<GiNaC::ex> state_symbols(const model& scene);
+
+/// M q̈ = f at the parameter values: M row-major (symmetric, each entry substituted once)
+/// and f.
+struct motion_expressions {
+    std::vector<GiNaC::ex> mass, force;
+};
+motion_expressions motion_at_values(const model& scene, const equations_of_motion& equations,
+                                    const std::map<std::string, GiNaC::ex>& values);
+
+/// The derivatives that make the first-order system's Jacobian: ∂M/∂q_k for each k (n³),
+/// then ∂f/∂q (n²), then ∂f/∂q̇ (n²), row by row.
+std::vector<GiNaC::ex> motion_jacobian(const model& scene, const motion_expressions& motion);
+
 /// A value for every parameter from the first `values` line (later lines are other points).
 std::map<std::string, GiNaC::ex> first_value_point(const model& scene);
 

@@ -21,12 +21,7 @@ constrained_motion::constrained_motion(const model& scene, const equations_of_mo
     n_ = scene.coordinates.size();
     m_ = scene.constraints.size();
     const constraint_equations& constraints = *equations.constraints;
-    std::vector<GiNaC::ex> symbols;
-    for (const coordinate& c : scene.coordinates)
-        symbols.push_back(c.position);
-    for (const coordinate& c : scene.coordinates)
-        symbols.push_back(c.velocity);
-    symbols.push_back(scene.time);
+    const std::vector<GiNaC::ex> symbols = state_symbols(scene);
 
     std::vector<GiNaC::ex> dynamics, residuals(2 * m_);
     for (std::size_t i = 0; i < n_; ++i)

@@ -4,7 +4,7 @@
  *  measure (see ensemble.h). */
 #include "numeric/ensemble.h"
 
-#include "algebra/calculus.h"
+#include "numeric/compiled_motion.h"
 #include "numeric/dop853.h"
 #include "numeric/floquet.h"
 #include "numeric/mass_matrix.h"
@@ -273,12 +273,7 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
 
     // The gridded parameters stay symbols (after q, q̇ and t); the others take their values.
     std::map<std::string, GiNaC::ex> values = merged_values(scene);
-    std::vector<GiNaC::ex> symbols;
-    for (const coordinate& c : scene.coordinates)
-        symbols.push_back(c.position);
-    for (const coordinate& c : scene.coordinates)
-        symbols.push_back(c.velocity);
-    symbols.push_back(scene.time);
+    std::vector<GiNaC::ex> symbols = state_symbols(scene);
     std::vector<GiNaC::ex> parameter_symbols;
     for (const ensemble_axis& a : axes_)
         if (a.kind == ensemble_axis::target::parameter) {
@@ -288,30 +283,14 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
             symbols.push_back(p.symbol);
             parameter_symbols.push_back(p.symbol);
         }
-    std::vector<GiNaC::ex> rhs_outputs, jacobian_outputs, initial_outputs;
-    std::vector<GiNaC::ex> mass(n_ * n_), force(n_);
-    for (std::size_t i = 0; i < n_; ++i) {
-        for (std::size_t j = 0; j < n_; ++j)
-            mass[i * n_ + j] = j < i ? mass[j * n_ + i]
-                                     : at_values(equations.mass(static_cast<unsigned>(i), static_cast<unsigned>(j)),
-                                                 scene, values);
-        force[i] = at_values(equations.forcing[i], scene, values);
-    }
-    rhs_outputs = mass;
-    rhs_outputs.insert(rhs_outputs.end(), force.begin(), force.end());
+    std::vector<GiNaC::ex> jacobian_outputs, initial_outputs;
+    const motion_expressions motion = motion_at_values(scene, equations, values);
+    std::vector<GiNaC::ex> rhs_outputs = motion.mass;
+    rhs_outputs.insert(rhs_outputs.end(), motion.force.begin(), motion.force.end());
     const bool tangents = measure_.what == ensemble_measure::kind::max_lyapunov ||
                           measure_.what == ensemble_measure::kind::floquet_stable;
-    if (tangents) {
-        for (const coordinate& c : scene.coordinates)
-            for (const GiNaC::ex& m : mass)
-                jacobian_outputs.push_back(differentiate(m, c.position));
-        for (const GiNaC::ex& f : force)
-            for (const coordinate& c : scene.coordinates)
-                jacobian_outputs.push_back(differentiate(f, c.position));
-        for (const GiNaC::ex& f : force)
-            for (const coordinate& c : scene.coordinates)
-                jacobian_outputs.push_back(differentiate(f, c.velocity));
-    }
+    if (tangents)
+        jacobian_outputs = motion_jacobian(scene, motion);
     // The scene's initial state (zeros where not given), possibly in the gridded parameters.
     for (int part = 0; part < 2; ++part)
         for (const coordinate& c : scene.coordinates) {
