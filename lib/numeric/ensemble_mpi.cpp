@@ -64,16 +64,7 @@ void serve(const ensemble_problem& problem, ensemble_scheduler& scheduler, int r
 {
     std::vector<std::thread> pool;
     for (std::size_t k = 0; k < threads; ++k)
-        pool.emplace_back([&] {
-            try {
-                ensemble_workspace workspace;
-                ensemble_chunk chunk;
-                while (scheduler.take(chunk))
-                    scheduler.complete(compute_chunk(problem, workspace, chunk));
-            } catch (...) {
-                scheduler.abort(std::current_exception());
-            }
-        });
+        pool.emplace_back([&] { compute_until_done(problem, scheduler); });
     const unsigned long long signature = problem.signature();
     std::deque<int> waiting; // ranks whose request is not answered yet
     int stopped = 0;

@@ -193,6 +193,18 @@ ensemble_summary ensemble_scheduler::summary()
     return summary_;
 }
 
+void compute_until_done(const ensemble_problem& problem, ensemble_scheduler& scheduler)
+{
+    try {
+        ensemble_workspace workspace;
+        ensemble_chunk chunk;
+        while (scheduler.take(chunk))
+            scheduler.complete(compute_chunk(problem, workspace, chunk));
+    } catch (...) {
+        scheduler.abort(std::current_exception());
+    }
+}
+
 ensemble_summary run_ensemble(const ensemble_problem& problem, const ensemble_run_options& options,
                               const ensemble_sink& sink)
 {
@@ -203,20 +215,10 @@ ensemble_summary run_ensemble(const ensemble_problem& problem, const ensemble_ru
     ensemble_scheduler scheduler(problem, options, sink, threads);
     if (options.first >= problem.points() && sink.begin)
         sink.begin(); // nothing left to compute (a finished run resumed)
-    auto work = [&] {
-        try {
-            ensemble_workspace workspace;
-            ensemble_chunk chunk;
-            while (scheduler.take(chunk))
-                scheduler.complete(compute_chunk(problem, workspace, chunk));
-        } catch (...) {
-            scheduler.abort(std::current_exception());
-        }
-    };
     std::vector<std::thread> pool;
     for (std::size_t k = 1; k < threads; ++k)
-        pool.emplace_back(work);
-    work(); // this thread is one of them
+        pool.emplace_back([&] { compute_until_done(problem, scheduler); });
+    compute_until_done(problem, scheduler); // this thread is one of them
     for (std::thread& t : pool)
         t.join();
     scheduler.rethrow();

@@ -68,4 +68,8 @@ private:
     bool may_hand_out(std::size_t first) const;
 };
 
+/// One worker thread: takes chunks from the scheduler and completes them until none is
+/// left; an exception aborts the run (the scheduler's rethrow() gives it).
+void compute_until_done(const ensemble_problem& problem, ensemble_scheduler& scheduler);
+
 } // namespace lagrange
