@@ -32,7 +32,6 @@
 #include <cerrno>
 #include <cstring>
 #include <sys/stat.h>
-#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -92,7 +91,6 @@ struct run_options {
     std::vector<std::string> sweeps;
 };
 
-/// `--sweep`: the numeric modes over a grid, streamed to the output as computed.
 /// The analysis as text, LaTeX or JSON, to `path` (or standard output). Run times only
 /// with `timings`: the output stays the same run to run.
 void write_document(const lagrange::analysis& result, const std::string& format, bool timings,
@@ -100,16 +98,10 @@ void write_document(const lagrange::analysis& result, const std::string& format,
 {
     lagrange::document_options document;
     document.timings = timings;
-    std::ostringstream out;
-    if (format == "json")
-        lagrange::write_json(out, result, document);
-    else if (format == "latex")
-        lagrange::write_latex(out, result, document);
-    else
-        lagrange::write_text(out, result, document);
-    write_output(path, out.str());
+    write_output(path, lagrange::document_text(result, format, document));
 }
 
+/// `--sweep`: the numeric modes over a grid, streamed to the output as computed.
 int sweep_scene(const run_options& options)
 {
     if (options.format == "latex")
@@ -250,29 +242,29 @@ struct ensemble_options {
     std::vector<std::string> values;
 };
 
-/// Points done, points per second and the time left, on standard error when it is a terminal.
+/// Points done, points per second and the time left, on the progress line (a terminal only).
 std::function<void(std::size_t, std::size_t)> ensemble_progress()
 {
-    if (!isatty(STDERR_FILENO))
+    progress_line& line = progress_line::standard_error();
+    if (!line.enabled())
         return nullptr;
-    auto start = std::chrono::steady_clock::now();
+    const auto start = std::chrono::steady_clock::now();
     auto shown = std::make_shared<double>(-1);
-    return [start, shown](std::size_t done, std::size_t total) {
-        double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return [&line, start, shown](std::size_t done, std::size_t total) {
         if (done >= total) {
-            if (*shown >= 0)
-                std::cerr << "\r" << std::string(72, ' ') << "\r" << std::flush;
+            line.clear();
             return;
         }
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (elapsed - *shown < 0.25 || done == 0)
             return;
         *shown = elapsed;
-        double rate = static_cast<double>(done) / elapsed;
-        auto left = static_cast<long>(static_cast<double>(total - done) / rate);
-        char line[96];
-        std::snprintf(line, sizeof line, "\rensemble: %zu/%zu points, %.0f points/s, %ld:%02ld:%02ld left ", done, total,
-                      rate, left / 3600, left / 60 % 60, left % 60);
-        std::cerr << line << std::flush;
+        const double rate = static_cast<double>(done) / elapsed;
+        const auto left = static_cast<long>(static_cast<double>(total - done) / rate);
+        char text[96];
+        std::snprintf(text, sizeof text, "ensemble %zu/%zu, %.0f/s, %ld:%02ld:%02ld left", done, total, rate,
+                      left / 3600, left / 60 % 60, left % 60);
+        line.show(text, static_cast<double>(done) / static_cast<double>(total));
     };
 }
 

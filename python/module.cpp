@@ -21,7 +21,6 @@
 #include <mutex>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,6 +46,8 @@ std::mutex engine;
 
 std::string run(const lagrange::model& loaded, const run_request& request, const std::string& format, bool timings)
 {
+    if (!lagrange::is_document_format(format))
+        throw py::value_error("format must be text, latex or json, not '" + format + "'");
     std::lock_guard<std::mutex> hold(engine);
     lagrange::model scene = loaded;
     // Values given from Python replace the scene's `values` lines (the command line's add to them).
@@ -71,16 +72,7 @@ std::string run(const lagrange::model& loaded, const run_request& request, const
     lagrange::analysis result = lagrange::analyze(scene, wanted, limits, settings);
     lagrange::document_options options;
     options.timings = timings;
-    std::ostringstream out;
-    if (format == "json")
-        lagrange::write_json(out, result, options);
-    else if (format == "text")
-        lagrange::write_text(out, result, options);
-    else if (format == "latex")
-        lagrange::write_latex(out, result, options);
-    else
-        throw py::value_error("format must be json, text or latex, not '" + format + "'");
-    return out.str();
+    return lagrange::document_text(result, format, options);
 }
 
 /// Raises the package's own exception class `name` (lagrange/errors.py) built from `args`.

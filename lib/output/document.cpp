@@ -18,6 +18,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sstream>
+#include <stdexcept>
 
 namespace lagrange {
 
@@ -200,6 +202,25 @@ void write_json(std::ostream& out, const analysis& result, const document_option
     if (!result.notes.empty())
         doc["notes"] = result.notes;
     out << doc.dump(2) << '\n';
+}
+
+bool is_document_format(const std::string& format)
+{
+    return format == "text" || format == "latex" || format == "json";
+}
+
+std::string document_text(const analysis& result, const std::string& format, const document_options& options)
+{
+    std::ostringstream out;
+    if (format == "text")
+        write_text(out, result, options);
+    else if (format == "latex")
+        write_latex(out, result, options);
+    else if (format == "json")
+        write_json(out, result, options);
+    else
+        throw std::invalid_argument("format must be text, latex or json, not '" + format + "'");
+    return out.str();
 }
 
 } // namespace lagrange

@@ -23,4 +23,10 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
 /// One JSON object with the keys of the spec (§4).
 void write_json(std::ostream& out, const analysis& result, const document_options& options = {});
 
+/// The formats of document_text, and whether `format` is one of them.
+bool is_document_format(const std::string& format);
+
+/// The document in `format`: "text", "latex" or "json"; std::invalid_argument for another.
+std::string document_text(const analysis& result, const std::string& format, const document_options& options = {});
+
 } // namespace lagrange
