@@ -74,6 +74,14 @@ GiNaC::exvector factors_of(const GiNaC::ex& e)
     return factors;
 }
 
+bool has_symbol(const GiNaC::ex& e)
+{
+    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
+        if (GiNaC::is_a<GiNaC::symbol>(*i))
+            return true;
+    return false;
+}
+
 bool has_compound_denominator(const GiNaC::ex& e)
 {
     if (ex_kind_of(e) == ex_kind::sum || ex_kind_of(e) == ex_kind::product) {

@@ -29,6 +29,9 @@ GiNaC::exvector factors_of(const GiNaC::ex& e);
 /// (a denominator that only normal() can combine).
 bool has_compound_denominator(const GiNaC::ex& e);
 
+/// True if `e` contains a symbol (a parameter, coordinate or any other); π is a constant.
+bool has_symbol(const GiNaC::ex& e);
+
 /// The sum of `terms` (0 if none, the term itself if one).
 inline GiNaC::ex sum_of(const GiNaC::exvector& terms)
 {

@@ -4,6 +4,7 @@
 #include "algebra/sign.h"
 
 #include "algebra/budget.h"
+#include "algebra/expression.h"
 #include "algebra/factor.h"
 
 #include <cmath>
@@ -15,6 +16,28 @@ namespace {
 using GiNaC::ex;
 using GiNaC::ex_to;
 using GiNaC::is_a;
+
+/// The sign of a constant expression (π, √2, cos(1), 1 − √14) by its value, when that
+/// stands clear of the rounding of its terms' values; nothing otherwise or with a symbol.
+std::optional<int> constant_sign(const ex& e)
+{
+    if (has_symbol(e))
+        return std::nullopt;
+    const ex value = e.evalf();
+    if (!is_a<GiNaC::numeric>(value) || !ex_to<GiNaC::numeric>(value).is_real() || value.is_zero())
+        return std::nullopt;
+    double magnitude = 0;
+    for (const ex& term : is_a<GiNaC::add>(e) ? GiNaC::exvector(e.begin(), e.end()) : GiNaC::exvector{e}) {
+        const ex v = GiNaC::abs(term.evalf()).evalf();
+        if (!is_a<GiNaC::numeric>(v))
+            return std::nullopt;
+        magnitude += ex_to<GiNaC::numeric>(v).to_double();
+    }
+    const GiNaC::numeric& n = ex_to<GiNaC::numeric>(value);
+    if (std::abs(n.to_double()) <= 1e-12 * magnitude)
+        return std::nullopt;
+    return n.is_positive() ? 1 : -1;
+}
 
 /// The sign of a product, power or sum of terms of known sign; nothing if unknown.
 std::optional<int> sign_by_structure(const ex& e)
@@ -67,21 +90,11 @@ std::optional<int> sign_by_structure(const ex& e)
             return 1;
         if (all_nonpositive)
             return -1;
-        return std::nullopt;
+        return constant_sign(e); // terms of both signs: 1 − √14
     }
     if (e.info(GiNaC::info_flags::positive))
         return 1;
-    // A constant expression (π, √2, cos(1)): its value decides.
-    bool has_symbol = false;
-    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
-        if (is_a<GiNaC::symbol>(*i))
-            has_symbol = true;
-    if (!has_symbol) {
-        ex value = e.evalf();
-        if (is_a<GiNaC::numeric>(value) && ex_to<GiNaC::numeric>(value).is_real() && !value.is_zero())
-            return ex_to<GiNaC::numeric>(value).is_positive() ? 1 : -1;
-    }
-    return std::nullopt;
+    return constant_sign(e);
 }
 
 } // namespace
