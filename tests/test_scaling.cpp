@@ -282,6 +282,68 @@ TEST_CASE("scaling: the 3-link chain's closed-form frequencies, without mode vec
     }
 }
 
+TEST_CASE("scaling: the 3-link chain's mode vectors are left to the numeric modes, with a note", "[scaling]")
+{
+    // A default run wants the mode vectors; for the roots of a cubic in seven parameters
+    // each entry would be pages long.
+    model bare = load(chain_scene(3) + "equilibrium q1 = 0, q2 = 0, q3 = 0\n");
+    analysis a = analyze(bare, {});
+    REQUIRE(a.modes);
+    CHECK(a.modes->closed_form);
+    CHECK(a.modes->vectors_left_out);
+    CHECK(a.modes->frequencies.size() == 3);
+    CHECK(a.modes->modes.empty());
+    CHECK(a.modes->normal_coordinates.empty());
+    CHECK_FALSE(a.numeric);
+    REQUIRE(a.notes.size() == 1);
+    CHECK_THAT(a.notes[0], Catch::Matchers::Contains("irreducible cubic") &&
+                               Catch::Matchers::Contains("give `values` to have them numerically"));
+    // With values the numeric modes give them, and their ω² are the closed form's at the point.
+    model scene = load(chain_with_values(3));
+    analysis with_values = analyze(scene, {product::modes});
+    REQUIRE(with_values.modes);
+    REQUIRE(with_values.numeric);
+    REQUIRE(with_values.numeric->size() == 1);
+    const numeric_modes& point = with_values.numeric->at(0);
+    CHECK(point.modes.cols() == 3);
+    GiNaC::exmap at;
+    for (const auto& [name, value] : point.values)
+        for (const parameter& p : scene.parameters)
+            if (p.name == name)
+                at[p.symbol] = value;
+    for (int k = 0; k < 3; ++k) {
+        const double w2 = GiNaC::ex_to<GiNaC::numeric>(with_values.modes->frequencies[k].subs(at).evalf()).to_double();
+        CHECK_THAT(point.omega_squared[k], Catch::Matchers::WithinRel(w2, 1e-10));
+    }
+    REQUIRE(with_values.notes.size() == 1);
+    CHECK_THAT(with_values.notes[0], Catch::Matchers::Contains("given numerically at the `values` points"));
+    // `asymptotic` needs the vectors: it says so.
+    model limited = load(chain_scene(3) + "equilibrium q1 = 0, q2 = 0, q3 = 0\nratio rho = m3/m2\nlimit rho -> 0\n");
+    CHECK_THROWS_WITH(analyze(limited, {product::asymptotic}),
+                      Catch::Matchers::Contains("not computed in closed form for the roots of an irreducible cubic"));
+}
+
+TEST_CASE("modes: roots of different factors come out ascending, compared through their surds", "[scaling]")
+{
+    // Three equal masses on springs k, 2k, 3k: m³W³ − 11km²W² + 26k²mW − 6k³ = (mW − 3k)(m²W² − 8kmW + 2k²)
+    // (expanded by hand), so ω² = (4 − √14)k/m < 3k/m < (4 + √14)k/m: a linear factor's root
+    // between a quadratic's two.
+    model scene = load("parameters m k\ncoordinates x1 x2 x3\npoint A mass m at (x1, 0)\n"
+                       "point B mass m at (x2, 0)\npoint C mass m at (x3, 0)\n"
+                       "V = 1/2*k*x1^2 + k*(x2 - x1)^2 + 3/2*k*(x3 - x2)^2\n");
+    analysis a = analyze(scene, {product::frequencies});
+    REQUIRE(a.modes);
+    REQUIRE(a.modes->frequencies.size() == 3);
+    GiNaC::exmap at;
+    for (const parameter& p : scene.parameters)
+        at[p.symbol] = 1;
+    const std::vector<double> expected{4 - std::sqrt(14.0), 3, 4 + std::sqrt(14.0)};
+    for (int k = 0; k < 3; ++k) {
+        const double w2 = GiNaC::ex_to<GiNaC::numeric>(a.modes->frequencies[k].subs(at).evalf()).to_double();
+        CHECK_THAT(w2, Catch::Matchers::WithinRel(expected[k], 1e-12));
+    }
+}
+
 TEST_CASE("scaling: a share of the budget ends before the stage's own deadline", "[scaling][budget]")
 {
     CHECK_NOTHROW(budget_share(0.5)); // no budget open: nothing

@@ -5,12 +5,17 @@
 
 #include "algebra/budget.h"
 #include "algebra/calculus.h"
+#include "algebra/expression.h"
 #include "algebra/factor.h"
 #include "algebra/sign.h"
+#include "algebra/sorted_terms.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace lagrange {
 
@@ -212,13 +217,13 @@ std::vector<GiNaC::ex> principal_moments(const GiNaC::matrix& tensor)
 {
     GiNaC::realsymbol lambda("lambda");
     GiNaC::ex p = factor_with_pi(tensor.charpoly(lambda).expand());
-    GiNaC::exvector factors;
-    if (GiNaC::is_a<GiNaC::mul>(p))
-        factors.assign(p.begin(), p.end());
-    else
-        factors.push_back(p);
+    // In a canonical order of the factors, not GiNaC's hash order.
+    std::vector<std::pair<std::string, GiNaC::ex>> factors;
+    for (const GiNaC::ex& f : factors_of(p))
+        factors.emplace_back(message_text(f), f);
+    std::sort(factors.begin(), factors.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<GiNaC::ex> roots;
-    for (const GiNaC::ex& f : factors) {
+    for (const auto& [key, f] : factors) {
         GiNaC::ex base = f;
         int multiplicity = 1;
         if (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::posint)) {
@@ -236,6 +241,8 @@ std::vector<GiNaC::ex> principal_moments(const GiNaC::matrix& tensor)
             GiNaC::ex root = GiNaC::sqrt((b * b - 4 * a * c).expand());
             found.push_back(normal_with_pi((-b - root) / (2 * a)));
             found.push_back(normal_with_pi((-b + root) / (2 * a)));
+            if (std::optional<int> sign = sign_of(a); sign && *sign < 0)
+                std::swap(found[0], found[1]); // ascending
         } else {
             return {};
         }

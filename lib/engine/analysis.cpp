@@ -249,6 +249,9 @@ const std::vector<stage_definition>& stage_table()
              if (c.result.modes->gyroscopic)
                  throw computation_error("`asymptotic` is not computed for a Lagrangian with a part linear in the "
                                          "velocities (gyroscopic terms)");
+             if (c.result.modes->vectors_left_out)
+                 throw computation_error("`asymptotic` needs the mode vectors, which are not computed in closed "
+                                         "form for the roots of an irreducible cubic in the parameters");
              refuse_constraints(c.scene, "`asymptotic`");
              c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes);
          },
@@ -550,6 +553,19 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
                 planned.insert("numeric");
                 result.notes.push_back("the frequencies have no closed form; they are given numerically at the "
                                        "`values` points");
+            }
+            if (stage.name == "modes" && result.modes && result.modes->vectors_left_out) {
+                std::string note = "modes and normal coordinates not computed in closed form: an ω² is a root of "
+                                   "an irreducible cubic in the parameters, and each entry would be pages long";
+                if (result.wanted.count(product::numeric))
+                    note += "; the numeric modes give them";
+                else if (!scene.values.empty() && result.linearization) {
+                    result.wanted.insert(product::numeric);
+                    planned.insert("numeric");
+                    note += "; they are given numerically at the `values` points";
+                } else
+                    note += "; give `values` to have them numerically";
+                result.notes.push_back(note);
             }
         } catch (const budget_exceeded& error) {
             if (stage.budget_note.empty()) {

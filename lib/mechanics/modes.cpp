@@ -8,12 +8,15 @@
 
 #include "algebra/budget.h"
 #include "algebra/exact_matrix.h"
+#include "algebra/expression.h"
 #include "algebra/factor.h"
 #include "algebra/sign.h"
+#include "algebra/sorted_terms.h"
 #include "algebra/surd.h"
 
 #include <algorithm>
 #include <optional>
+#include <string>
 #include <utility>
 
 namespace lagrange {
@@ -29,10 +32,19 @@ using GiNaC::is_a;
 struct closed_root {
     ex value;
     surd root;
+    /// A root of an irreducible cubic in trigonometric form whose angle depends on the
+    /// parameters: its mode vector would have entries pages long.
+    bool unwieldy = false;
+};
+
+/// The roots of one factor, and whether they are known to be in ascending order.
+struct factor_roots {
+    std::vector<closed_root> roots;
+    bool ascending = false;
 };
 
 /// The roots of a factor of degree ≤ 3 in w, ascending where that is known.
-std::optional<std::vector<closed_root>> roots_of_factor(const ex& factor, const GiNaC::symbol& w)
+std::optional<factor_roots> roots_of_factor(const ex& factor, const GiNaC::symbol& w)
 {
     ex p = factor.expand();
     int degree = p.degree(w);
@@ -40,7 +52,7 @@ std::optional<std::vector<closed_root>> roots_of_factor(const ex& factor, const 
     for (int k = 0; k <= degree; ++k)
         c.push_back(p.coeff(w, k));
     if (degree == 1)
-        return std::vector<closed_root>{{tidy(-c[0] / c[1]), surd{}}};
+        return factor_roots{{{tidy(-c[0] / c[1]), surd{}}}, true};
     if (degree == 2) {
         auto [outside, inside] = square_root_parts(tidy(c[1] * c[1] - 4 * c[2] * c[0]));
         surd s;
@@ -51,7 +63,7 @@ std::optional<std::vector<closed_root>> roots_of_factor(const ex& factor, const 
         std::optional<int> order = sign_of(c[2]);
         if (order && *order < 0)
             std::swap(roots[0], roots[1]);
-        return roots;
+        return factor_roots{roots, order && *order != 0};
     }
     if (degree == 3) {
         // Three real roots (T is positive definite): the trigonometric form.
@@ -59,14 +71,19 @@ std::optional<std::vector<closed_root>> roots_of_factor(const ex& factor, const 
         ex p_depressed = tidy((3 * c[3] * c[1] - c[2] * c[2]) / (3 * c[3] * c[3]));
         ex q_depressed = tidy((2 * GiNaC::pow(c[2], 3) - 9 * c[3] * c[2] * c[1] + 27 * c[3] * c[3] * c[0]) /
                               (27 * GiNaC::pow(c[3], 3)));
+        ex shift_value = tidy(shift);
         if (vanishes(p_depressed))
-            return std::vector<closed_root>(3, closed_root{tidy(shift), surd{}});
+            return factor_roots{std::vector<closed_root>(3, closed_root{shift_value, surd{}}), true};
         ex amplitude = 2 * square_root(-p_depressed / 3);
-        ex angle = GiNaC::acos(tidy(3 * q_depressed / (2 * p_depressed)) * square_root(-3 / p_depressed)) / 3;
+        ex cosine = tidy(3 * q_depressed / (2 * p_depressed)) * square_root(-3 / p_depressed);
+        ex angle = GiNaC::acos(cosine) / 3;
+        const bool unwieldy = has_symbol(cosine);
+        // With the angle in [0, π/3], cos(angle − 4π/3) ≤ cos(angle − 2π/3) ≤ cos(angle):
+        // k = 2, 1, 0 is ascending, as the amplitude is positive.
         std::vector<closed_root> roots;
         for (int k = 2; k >= 0; --k)
-            roots.push_back({tidy(shift) + amplitude * GiNaC::cos(angle - 2 * GiNaC::Pi * k / 3), surd{}});
-        return roots;
+            roots.push_back({shift_value + amplitude * GiNaC::cos(angle - 2 * GiNaC::Pi * k / 3), surd{}, unwieldy});
+        return factor_roots{roots, true};
     }
     return std::nullopt;
 }
@@ -81,7 +98,19 @@ std::optional<std::vector<closed_root>> closed_form_roots(const std::vector<ex>&
         polynomial += coefficients[k] * GiNaC::pow(w, static_cast<int>(k));
     ex factored = factor_if_quick(polynomial.expand());
     exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
+    // GiNaC's order of the factors is its hash order; roots whose order cannot be decided
+    // keep the order of their factors, so that is made canonical first.
+    std::vector<std::pair<std::string, ex>> keyed;
+    for (const ex& f : factors)
+        keyed.emplace_back(message_text(f), f);
+    std::sort(keyed.begin(), keyed.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t k = 0; k < factors.size(); ++k)
+        factors[k] = keyed[k].second;
     std::vector<closed_root> roots;
+    // Roots of one factor (one copy of it) whose order is known share a group.
+    std::vector<std::size_t> group;
+    std::size_t next_group = 0;
     for (const ex& f : factors) {
         ex base = f;
         long multiplicity = 1;
@@ -91,19 +120,29 @@ std::optional<std::vector<closed_root>> closed_form_roots(const std::vector<ex>&
         }
         if (!base.has(w))
             continue;
-        std::optional<std::vector<closed_root>> found = roots_of_factor(base, w);
+        std::optional<factor_roots> found = roots_of_factor(base, w);
         if (!found)
             return std::nullopt;
-        for (long m = 0; m < multiplicity; ++m)
-            roots.insert(roots.end(), found->begin(), found->end());
+        for (long m = 0; m < multiplicity; ++m) {
+            const std::size_t shared = next_group++;
+            for (const closed_root& root : found->roots) {
+                roots.push_back(root);
+                group.push_back(found->ascending ? shared : next_group++);
+            }
+        }
     }
-    // Insertion sort, moving a root only past those it is known to be below.
+    // Insertion sort, moving a root only past those it is known to be below; within a
+    // factor whose roots are known ascending, no comparison is needed.
     for (std::size_t i = 1; i < roots.size(); ++i)
         for (std::size_t j = i; j > 0; --j) {
-            std::optional<int> s = sign_of(roots[j - 1].value - roots[j].value);
+            if (group[j - 1] == group[j])
+                break;
+            std::optional<int> s =
+                sign_of(roots[j - 1].root.restore(roots[j - 1].value) - roots[j].root.restore(roots[j].value));
             if (!s || *s <= 0)
                 break;
             std::swap(roots[j - 1], roots[j]);
+            std::swap(group[j - 1], group[j]);
         }
     return roots;
 }
@@ -202,6 +241,7 @@ std::optional<ex> clean_normal_coordinate(const std::vector<ex>& displacements, 
 /// characteristic coefficients; the frequencies alone without `vectors`.
 struct closed_modes {
     bool closed_form = false;
+    bool vectors_left_out = false;
     std::vector<ex> frequencies;
     std::vector<std::vector<ex>> modes;
     std::vector<ex> normal_coordinates;
@@ -215,8 +255,13 @@ closed_modes solve_modes(const std::vector<ex>& displacements, const GiNaC::matr
     std::optional<std::vector<closed_root>> roots = closed_form_roots(coefficients, w);
     if (!roots)
         return result;
-    if (!vectors) {
+    // The mode vectors of a cubic's roots in parameters are pages long per entry, and take
+    // minutes: they are left to the numeric modes.
+    const bool unwieldy =
+        std::any_of(roots->begin(), roots->end(), [](const closed_root& root) { return root.unwieldy; });
+    if (!vectors || unwieldy) {
         result.closed_form = true;
+        result.vectors_left_out = vectors;
         for (const closed_root& root : *roots)
             result.frequencies.push_back(root.root.restore(root.value));
         return result;
@@ -315,6 +360,7 @@ modes_result symbolic_modes(const model& scene, const linearization_result& line
                                                             : ex(scene.coordinates[i].position));
     closed_modes plain = solve_modes(result.displacements, linear.kinetic, linear.potential, coefficients, w, vectors);
     result.closed_form = plain.closed_form;
+    result.vectors_left_out = plain.vectors_left_out;
     result.frequencies = plain.frequencies;
     result.modes = plain.modes;
     result.normal_coordinates = plain.normal_coordinates;

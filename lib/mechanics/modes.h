@@ -18,6 +18,10 @@ struct modes_result {
     /// L has a part linear in the velocities (G ≠ 0, mechanics/gyroscopic.h): `frequencies`
     /// hold ω ≥ 0, not ω², and there are no real modes or normal coordinates.
     bool gyroscopic = false;
+    /// The mode vectors and normal coordinates were asked for but left out: some ω² is a
+    /// root of an irreducible cubic whose trigonometric form depends on the parameters,
+    /// which makes each entry pages long (the numeric modes give them at values).
+    bool vectors_left_out = false;
     std::vector<GiNaC::ex> frequencies;       ///< ω², ascending where the order is known
     std::vector<std::vector<GiNaC::ex>> modes;///< one mode vector per frequency
     std::vector<GiNaC::ex> normal_coordinates;///< ζ_k = (Aᵀ T (q − q₀))_k with Aᵀ T A = I
@@ -31,7 +35,8 @@ struct modes_result {
 /// The roots ω² of the characteristic polynomial in closed form (every factor of
 /// degree ≤ 3 in ω²), a mode vector for each and the normal coordinates; not
 /// closed_form when some factor has a higher degree. Without `vectors`, the roots
-/// alone: the mode vectors of a cubic's roots cost far more than the roots.
+/// alone; with them, still the roots alone when some root is an irreducible cubic's in
+/// parameters (vectors_left_out).
 modes_result symbolic_modes(const model& scene, const linearization_result& linear,
                             const characteristic_result& characteristic, bool vectors = true);
 
