@@ -42,6 +42,12 @@ TEST_CASE("sign_of: a constant sum with terms of both signs is decided by its va
     possymbol k("k"), m("m");
     CHECK(lagrange::sign_of(1 - sqrt(ex(14))) == std::optional<int>(-1));
     CHECK(lagrange::sign_of(k * (sqrt(ex(14)) - 3) / m) == std::optional<int>(1));
+    // the same expanded, as GiNaC may hand it over: the terms grouped by their symbolic part
+    CHECK(lagrange::sign_of(-k / m + sqrt(ex(14)) * k / m) == std::optional<int>(1));
+    CHECK(lagrange::sign_of(-k / m + sqrt(ex(14)) * k / m + 2 * k * k - sqrt(ex(2)) * k * k) ==
+          std::optional<int>(1));
+    // groups of both signs: (√14 − 1) k/m − k² is positive or negative by k and m
+    CHECK_FALSE(lagrange::sign_of(-k / m + sqrt(ex(14)) * k / m - k * k).has_value());
     CHECK(lagrange::sign_of(cos(ex(1)) - numeric(1, 2)) == std::optional<int>(1)); // 0.5403…
     // √2 + √3 = √(5 + 2√6) exactly, which GiNaC does not see: the value, within rounding of
     // its terms, cannot tell, so no sign is given rather than a wrong one.

@@ -8,6 +8,7 @@
 #include "algebra/factor.h"
 
 #include <cmath>
+#include <map>
 
 namespace lagrange {
 
@@ -37,6 +38,34 @@ std::optional<int> constant_sign(const ex& e)
     if (std::abs(n.to_double()) <= 1e-12 * magnitude)
         return std::nullopt;
     return n.is_positive() ? 1 : -1;
+}
+
+std::optional<int> sign_by_structure(const ex& e);
+
+/// The sign of a sum whose terms, grouped by their symbolic part (k/m in −k/m + √14·k/m),
+/// have constant coefficients that all give the same sign; nothing otherwise.
+std::optional<int> sign_by_grouping(const ex& sum)
+{
+    std::map<ex, ex, GiNaC::ex_is_less> groups; // symbolic part -> its constant coefficient
+    for (const ex& term : sum) {
+        ex constant = 1, rest = 1;
+        for (const ex& factor : factors_of(term))
+            (has_symbol(factor) ? rest : constant) *= factor;
+        groups[rest] += constant;
+    }
+    if (groups.size() == sum.nops())
+        return std::nullopt; // nothing grouped: the terms' signs already disagree
+    int sign = 0;
+    for (const auto& [rest, constant] : groups) {
+        std::optional<int> part = sign_by_structure(rest);
+        std::optional<int> coefficient = constant_sign(constant);
+        if (!part || *part == 0 || !coefficient)
+            return std::nullopt;
+        if (sign != 0 && *part * *coefficient != sign)
+            return std::nullopt;
+        sign = *part * *coefficient;
+    }
+    return sign;
 }
 
 /// The sign of a product, power or sum of terms of known sign; nothing if unknown.
@@ -90,7 +119,8 @@ std::optional<int> sign_by_structure(const ex& e)
             return 1;
         if (all_nonpositive)
             return -1;
-        return constant_sign(e); // terms of both signs: 1 − √14
+        // terms of both signs: 1 − √14, or −k/m + √14·k/m
+        return has_symbol(e) ? sign_by_grouping(e) : constant_sign(e);
     }
     if (e.info(GiNaC::info_flags::positive))
         return 1;
