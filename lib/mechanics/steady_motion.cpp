@@ -252,9 +252,10 @@ steady_motion_result steady_motion(const model& scene, const lagrangian_result& 
         reduced_scene.coordinates.push_back(coords[a]);
     reduced_scene.steady.reset();
     result.characteristic = characteristic_polynomial(reduced_scene, result.linear);
+    // The frequencies about the steady motion are its product; mode vectors would go unused.
     result.modes = result.linear.has_gyroscopic()
                        ? gyroscopic_modes(reduced_scene, result.linear, result.characteristic)
-                       : symbolic_modes(reduced_scene, result.linear, result.characteristic);
+                       : symbolic_modes(reduced_scene, result.linear, result.characteristic, false);
     for (GiNaC::ex& f : result.modes.frequencies)
         f = apply(f);
     return result;
