@@ -54,6 +54,16 @@ lagrange::source_text read_scene(const std::string& path, double wait_seconds = 
     return lagrange::source_text(path == "-" ? "<stdin>" : path, text);
 }
 
+/// The scene at `path` (standard input for "-") with the --values points added.
+lagrange::model load_scene(const std::string& path, const std::vector<std::string>& values,
+                           double wait_seconds = lagrange::budget_limits{}.max_seconds)
+{
+    lagrange::model scene = lagrange::load_model(read_scene(path, wait_seconds));
+    for (const std::string& v : values)
+        lagrange::add_values(scene, v);
+    return scene;
+}
+
 using lagrange::output_file;
 using lagrange::write_output;
 using lagrange::progress_line;
@@ -91,6 +101,19 @@ struct run_options {
     std::vector<std::string> sweeps;
 };
 
+/// The analysis of the products in `want` (a --want list; empty: the scene's or the
+/// default ones), with progress on the terminal.
+lagrange::analysis analyze_wanted(const lagrange::model& scene, const std::string& want,
+                                  const lagrange::budget_limits& budget)
+{
+    std::set<lagrange::product> wanted;
+    if (!want.empty())
+        wanted = lagrange::parse_want_list(want);
+    lagrange::simulation_settings settings;
+    settings.progress = progress_line::standard_error().callback();
+    return lagrange::analyze(scene, wanted, budget, settings);
+}
+
 /// The analysis as text, LaTeX or JSON, to `path` (or standard output). Run times only
 /// with `timings`: the output stays the same run to run.
 void write_document(const lagrange::analysis& result, const std::string& format, bool timings,
@@ -108,10 +131,7 @@ int sweep_scene(const run_options& options)
         throw usage_error("--sweep writes text or json, not latex");
     if (!options.want.empty())
         throw usage_error("--sweep computes the numeric modes only; leave out --want");
-    lagrange::source_text source = read_scene(options.scene_path, options.budget.max_seconds);
-    lagrange::model scene = lagrange::load_model(source);
-    for (const std::string& v : options.values)
-        lagrange::add_values(scene, v);
+    lagrange::model scene = load_scene(options.scene_path, options.values, options.budget.max_seconds);
     std::vector<lagrange::sweep_axis> axes;
     for (const std::string& s : options.sweeps)
         axes.push_back(lagrange::parse_sweep_axis(s, scene));
@@ -127,16 +147,8 @@ int analyze_scene(const run_options& options)
 {
     if (!options.sweeps.empty())
         return sweep_scene(options);
-    lagrange::source_text source = read_scene(options.scene_path, options.budget.max_seconds);
-    lagrange::model scene = lagrange::load_model(source);
-    for (const std::string& v : options.values)
-        lagrange::add_values(scene, v);
-    std::set<lagrange::product> wanted;
-    if (!options.want.empty())
-        wanted = lagrange::parse_want_list(options.want);
-    lagrange::simulation_settings settings;
-    settings.progress = progress_line::standard_error().callback();
-    lagrange::analysis result = lagrange::analyze(scene, wanted, options.budget, settings);
+    lagrange::model scene = load_scene(options.scene_path, options.values, options.budget.max_seconds);
+    lagrange::analysis result = analyze_wanted(scene, options.want, options.budget);
     write_document(result, options.format, options.timings, options.output);
     return exit_ok;
 }
@@ -157,10 +169,7 @@ struct motion_options {
 
 int motion_command(const motion_options& options, lagrange::product wanted, const lagrange::budget_limits& budget)
 {
-    lagrange::source_text source = read_scene(options.scene_path, budget.max_seconds);
-    lagrange::model scene = lagrange::load_model(source);
-    for (const std::string& v : options.values)
-        lagrange::add_values(scene, v);
+    lagrange::model scene = load_scene(options.scene_path, options.values, budget.max_seconds);
     lagrange::simulation_settings settings;
     settings.until = options.until;
     if (!options.method.empty())
@@ -170,7 +179,7 @@ int motion_command(const motion_options& options, lagrange::product wanted, cons
     settings.native = !options.interpret;
     lagrange::analysis result = lagrange::analyze(scene, {wanted}, budget, settings);
     progress_line::standard_error().clear();
-    std::string title = scene.title.empty() ? source.file() : scene.title;
+    std::string title = scene.title.empty() ? scene.file : scene.title;
     if (result.simulation && !options.csv.empty()) {
         std::ostringstream csv;
         lagrange::write_trajectory_csv(csv, *result.simulation);
@@ -202,10 +211,7 @@ struct response_options {
 /// linearized system, as text, CSV or JSON, and its Bode diagram.
 int response_command(const response_options& options)
 {
-    lagrange::source_text source = read_scene(options.scene_path);
-    lagrange::model scene = lagrange::load_model(source);
-    for (const std::string& v : options.values)
-        lagrange::add_values(scene, v);
+    lagrange::model scene = load_scene(options.scene_path, options.values);
     lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::state_space});
     lagrange::response_settings settings;
     settings.from = options.from;
@@ -215,7 +221,7 @@ int response_command(const response_options& options)
     lagrange::frequency_response response = lagrange::frequency_response_of(
         scene, *result.linearization, *result.state_space, options.input, options.output, settings);
     if (!options.plot.empty())
-        lagrange::plot_response(options.plot, response, scene.title.empty() ? source.file() : scene.title);
+        lagrange::plot_response(options.plot, response, scene.title.empty() ? scene.file : scene.title);
     std::ostringstream out;
     if (options.format == "csv")
         lagrange::write_response_csv(out, response);
@@ -284,10 +290,7 @@ int ensemble_command(const ensemble_options& options)
         throw usage_error("--resume continues a CSV file: give it with -o FILE.csv");
     if (options.seed != 1 && options.random == 0)
         throw usage_error("--seed goes with --random N");
-    lagrange::source_text source = read_scene(options.scene_path);
-    lagrange::model scene = lagrange::load_model(source);
-    for (const std::string& v : options.values)
-        lagrange::add_values(scene, v);
+    lagrange::model scene = load_scene(options.scene_path, options.values);
     std::vector<lagrange::ensemble_axis> axes = lagrange::parse_ensemble_grid(options.grid, scene, options.random > 0);
     lagrange::ensemble_measure measure = lagrange::parse_ensemble_measure(options.measure, scene);
     lagrange::ensemble_settings settings;
@@ -366,7 +369,7 @@ int ensemble_command(const ensemble_options& options)
     if (json)
         lagrange::write_ensemble_json_end(*out, problem, summary);
     if (map)
-        map->draw(options.output, scene.title.empty() ? source.file() : scene.title);
+        map->draw(options.output, scene.title.empty() ? scene.file : scene.title);
     if (file.is_open()) {
         file.flush();
         if (!file)
@@ -405,12 +408,7 @@ int report_scene(const run_options& options)
     lagrange::model scene = lagrange::load_model(source);
     for (const std::string& v : options.values)
         lagrange::add_values(scene, v);
-    std::set<lagrange::product> wanted;
-    if (!options.want.empty())
-        wanted = lagrange::parse_want_list(options.want);
-    lagrange::simulation_settings settings;
-    settings.progress = progress_line::standard_error().callback();
-    lagrange::analysis result = lagrange::analyze(scene, wanted, lagrange::budget_limits{}, settings);
+    lagrange::analysis result = analyze_wanted(scene, options.want, lagrange::budget_limits{});
     lagrange::report_options report;
     // Figures go beside the .tex file, named after it (letters, digits and `-` only).
     std::size_t slash = path.rfind('/');

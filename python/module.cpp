@@ -112,19 +112,8 @@ PYBIND11_MODULE(_lagrange, m)
     py::class_<lagrange::model>(m, "Model", "A loaded scene (lagrange::model).")
         .def_property_readonly("file", [](const lagrange::model& s) { return s.file; })
         .def_property_readonly("title", [](const lagrange::model& s) { return s.title; })
-        .def_property_readonly("coordinates",
-                               [](const lagrange::model& s) {
-                                   std::vector<std::string> names;
-                                   for (const auto& c : s.coordinates)
-                                       names.push_back(c.name);
-                                   return names;
-                               })
-        .def_property_readonly("parameters", [](const lagrange::model& s) {
-            std::vector<std::string> names;
-            for (const auto& p : s.parameters)
-                names.push_back(p.name);
-            return names;
-        })
+        .def_property_readonly("coordinates", [](const lagrange::model& s) { return lagrange::coordinate_names(s); })
+        .def_property_readonly("parameters", [](const lagrange::model& s) { return lagrange::parameter_names(s); })
         .def(
             "document",
             [](const lagrange::model& scene, const std::string& format, const std::vector<std::string>& want,

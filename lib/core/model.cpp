@@ -102,4 +102,20 @@ std::string unused_name(const model& scene, std::string base)
     return base;
 }
 
+std::vector<std::string> coordinate_names(const model& scene)
+{
+    std::vector<std::string> names;
+    for (const coordinate& c : scene.coordinates)
+        names.push_back(c.name);
+    return names;
+}
+
+std::vector<std::string> parameter_names(const model& scene)
+{
+    std::vector<std::string> names;
+    for (const parameter& p : scene.parameters)
+        names.push_back(p.name);
+    return names;
+}
+
 } // namespace lagrange

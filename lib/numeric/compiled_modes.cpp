@@ -676,10 +676,7 @@ void read_value_point(const model& scene, const value_point& point, std::vector<
 
 std::vector<numeric_modes> numeric_normal_modes(const model& scene, const linearization_result& linear)
 {
-    std::vector<std::string> names;
-    for (const coordinate& c : scene.coordinates)
-        names.push_back(c.name);
-    compiled_modes compiled(scene.parameters, linear, {}, names);
+    compiled_modes compiled(scene.parameters, linear, {}, coordinate_names(scene));
     std::vector<numeric_modes> results;
     for (const value_point& point : scene.values) {
         std::vector<double> values(scene.parameters.size(), std::nan(""));

@@ -212,8 +212,7 @@ prepared_motion prepare(const model& scene, const equations_of_motion& equations
         p.x0.push_back(0); // the work of the generalized forces starts at 0
     const std::size_t n = p.motion->coordinates();
     p.coordinates = n;
-    for (const coordinate& c : scene.coordinates)
-        p.names.push_back(c.name);
+    p.names = coordinate_names(scene);
     read_span(p, scene, settings);
 
     // The linearization about the equilibrium (or the initial position) for the choice of method.

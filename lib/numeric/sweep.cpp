@@ -118,10 +118,7 @@ void sweep_numeric_modes(const model& scene, const linearization_result& linear,
                          const std::function<void(const sweep_row&)>& each)
 {
     const std::size_t points = sweep_size(axes);
-    std::vector<std::string> names;
-    for (const coordinate& c : scene.coordinates)
-        names.push_back(c.name);
-    compiled_modes compiled(scene.parameters, linear, {}, names);
+    compiled_modes compiled(scene.parameters, linear, {}, coordinate_names(scene));
     std::vector<double> values(scene.parameters.size(), std::nan(""));
     std::vector<bool> given(scene.parameters.size(), false);
     for (const value_point& point : scene.values)

@@ -35,22 +35,6 @@ std::string join_names(const std::vector<std::string>& names, syntax s, const ch
     return out;
 }
 
-std::vector<std::string> coordinate_names(const model& scene)
-{
-    std::vector<std::string> names;
-    for (const coordinate& c : scene.coordinates)
-        names.push_back(c.name);
-    return names;
-}
-
-std::vector<std::string> parameter_names(const model& scene)
-{
-    std::vector<std::string> names;
-    for (const parameter& p : scene.parameters)
-        names.push_back(p.name);
-    return names;
-}
-
 } // namespace
 
 void write_text(std::ostream& out, const analysis& result, const document_options& options)

@@ -41,14 +41,6 @@ std::string name_list(const std::vector<std::string>& names)
     return out;
 }
 
-std::vector<std::string> coordinate_names(const model& scene)
-{
-    std::vector<std::string> names;
-    for (const coordinate& c : scene.coordinates)
-        names.push_back(c.name);
-    return names;
-}
-
 std::string column_latex(const std::vector<std::string>& entries)
 {
     std::string out = "\\begin{pmatrix}";
