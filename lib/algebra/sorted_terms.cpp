@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
 
 namespace lagrange {
 
@@ -133,6 +134,19 @@ std::string message_text(const ex& e)
     std::ostringstream out;
     out << e;
     return out.str();
+}
+
+GiNaC::exvector sorted_factors(const ex& product)
+{
+    std::vector<std::pair<std::string, ex>> keyed;
+    for (const ex& f : is_a<GiNaC::mul>(product) ? GiNaC::exvector(product.begin(), product.end())
+                                                 : GiNaC::exvector{product})
+        keyed.emplace_back(message_text(f), f);
+    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    GiNaC::exvector factors;
+    for (const auto& [key, f] : keyed)
+        factors.push_back(f);
+    return factors;
 }
 
 } // namespace lagrange

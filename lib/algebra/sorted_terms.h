@@ -53,6 +53,10 @@ int compare_degrees(const term_degrees& a, const term_degrees& b);
 /// them, sorted by that text.
 std::vector<std::string> sorted_operands(const GiNaC::ex& e, const std::function<std::string(const GiNaC::ex&)>& text);
 
+/// The factors of a product (a non-product is one factor) sorted by their message_text:
+/// an order of, say, a factored polynomial's factors that GiNaC's hash order does not move.
+GiNaC::exvector sorted_factors(const GiNaC::ex& product);
+
 /// e as text for messages, the same whatever GiNaC's internal term order: the
 /// operands of sums and products printed recursively and sorted ("-E*q0",
 /// "cos(x)*m+g"). The full printer (output/print.h) orders by a term order as well.

@@ -5,16 +5,13 @@
 
 #include "algebra/budget.h"
 #include "algebra/calculus.h"
-#include "algebra/expression.h"
 #include "algebra/factor.h"
 #include "algebra/sign.h"
 #include "algebra/sorted_terms.h"
 
-#include <algorithm>
 #include <array>
 #include <optional>
 #include <stdexcept>
-#include <string>
 #include <utility>
 
 namespace lagrange {
@@ -217,13 +214,8 @@ std::vector<GiNaC::ex> principal_moments(const GiNaC::matrix& tensor)
 {
     GiNaC::realsymbol lambda("lambda");
     GiNaC::ex p = factor_with_pi(tensor.charpoly(lambda).expand());
-    // In a canonical order of the factors, not GiNaC's hash order.
-    std::vector<std::pair<std::string, GiNaC::ex>> factors;
-    for (const GiNaC::ex& f : factors_of(p))
-        factors.emplace_back(message_text(f), f);
-    std::sort(factors.begin(), factors.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<GiNaC::ex> roots;
-    for (const auto& [key, f] : factors) {
+    for (const GiNaC::ex& f : sorted_factors(p)) { // a canonical order, not GiNaC's hash order
         GiNaC::ex base = f;
         int multiplicity = 1;
         if (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::posint)) {

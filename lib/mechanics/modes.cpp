@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <string>
 #include <utility>
 
 namespace lagrange {
@@ -97,16 +96,8 @@ std::optional<std::vector<closed_root>> closed_form_roots(const std::vector<ex>&
     for (std::size_t k = 0; k < coefficients.size(); ++k)
         polynomial += coefficients[k] * GiNaC::pow(w, static_cast<int>(k));
     ex factored = factor_if_quick(polynomial.expand());
-    exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
-    // GiNaC's order of the factors is its hash order; roots whose order cannot be decided
-    // keep the order of their factors, so that is made canonical first.
-    std::vector<std::pair<std::string, ex>> keyed;
-    for (const ex& f : factors)
-        keyed.emplace_back(message_text(f), f);
-    std::sort(keyed.begin(), keyed.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (std::size_t k = 0; k < factors.size(); ++k)
-        factors[k] = keyed[k].second;
+    // Roots whose order cannot be decided keep the order of their factors: a canonical one.
+    const exvector factors = sorted_factors(factored);
     std::vector<closed_root> roots;
     // Roots of one factor (one copy of it) whose order is known share a group.
     std::vector<std::size_t> group;
