@@ -60,6 +60,16 @@ std::string exceeded_time_message(const budget_scope::state& s)
            " s (--max-seconds)";
 }
 
+/// Takes down the stage progress shown, if any (with w.lock held).
+void hide_stage(watch& w)
+{
+    if (w.shown.empty())
+        return;
+    w.shown.clear();
+    if (w.progress)
+        w.progress("", 0);
+}
+
 /// Tells the watchdog which scope is open on its thread (nothing on other threads).
 void watch_scope(const budget_scope::state* open)
 {
@@ -68,10 +78,8 @@ void watch_scope(const budget_scope::state* open)
         return;
     std::lock_guard<std::mutex> guard(w.lock);
     w.open = open && open->watched ? open : nullptr;
-    if (!w.shown.empty() && (!w.open || w.open->stage != w.shown)) {
-        w.shown.clear();
-        w.progress("", 0);
-    }
+    if (!w.open || w.open->stage != w.shown)
+        hide_stage(w);
 }
 
 /// Shows the open stage's progress (with w.lock held): at once for a stage not shown yet,
@@ -114,10 +122,7 @@ void start_budget_watchdog(const std::string& prefix, int exit_code, void (*befo
                 show_open_stage(w);
                 continue;
             }
-            if (!w.shown.empty()) {
-                w.shown.clear();
-                w.progress("", 0);
-            }
+            hide_stage(w);
             const std::string message = w.prefix + exceeded_time_message(*w.open) +
                                         " inside a step that cannot be interrupted, so the run stopped "
                                         "with nothing printed\n";
