@@ -46,8 +46,7 @@ std::mutex engine;
 
 std::string run(const lagrange::model& loaded, const run_request& request, const std::string& format, bool timings)
 {
-    if (!lagrange::is_document_format(format))
-        throw py::value_error("format must be text, latex or json, not '" + format + "'");
+    lagrange::require_document_format(format); // ValueError (pybind11), before the analysis
     std::lock_guard<std::mutex> hold(engine);
     lagrange::model scene = loaded;
     // Values given from Python replace the scene's `values` lines (the command line's add to them).

@@ -188,22 +188,22 @@ void write_json(std::ostream& out, const analysis& result, const document_option
     out << doc.dump(2) << '\n';
 }
 
-bool is_document_format(const std::string& format)
+void require_document_format(const std::string& format)
 {
-    return format == "text" || format == "latex" || format == "json";
+    if (format != "text" && format != "latex" && format != "json")
+        throw std::invalid_argument("format must be text, latex or json, not '" + format + "'");
 }
 
 std::string document_text(const analysis& result, const std::string& format, const document_options& options)
 {
+    require_document_format(format);
     std::ostringstream out;
     if (format == "text")
         write_text(out, result, options);
     else if (format == "latex")
         write_latex(out, result, options);
-    else if (format == "json")
-        write_json(out, result, options);
     else
-        throw std::invalid_argument("format must be text, latex or json, not '" + format + "'");
+        write_json(out, result, options);
     return out.str();
 }
 

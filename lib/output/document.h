@@ -23,10 +23,11 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
 /// One JSON object with the keys of the spec (§4).
 void write_json(std::ostream& out, const analysis& result, const document_options& options = {});
 
-/// The formats of document_text, and whether `format` is one of them.
-bool is_document_format(const std::string& format);
+/// Throws std::invalid_argument unless `format` is one of document_text's: "text",
+/// "latex" or "json" (a caller checks before the analysis that it will print).
+void require_document_format(const std::string& format);
 
-/// The document in `format`: "text", "latex" or "json"; std::invalid_argument for another.
+/// The document in `format` (see require_document_format).
 std::string document_text(const analysis& result, const std::string& format, const document_options& options = {});
 
 } // namespace lagrange
