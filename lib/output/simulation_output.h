@@ -50,4 +50,8 @@ void draw_gnuplot_svg(const std::string& path, const std::string& script,
 /// A string literal for a gnuplot script: single quotes, quotes and control characters dropped.
 std::string gnuplot_quoted(const std::string& text);
 
+/// A string literal for a gnuplot script that keeps every character: single quotes, a
+/// quote doubled (gnuplot's own escape).
+std::string gnuplot_literal(const std::string& text);
+
 } // namespace lagrange

@@ -25,14 +25,6 @@ namespace {
 
 std::string gnuplot_number(double x) { return significant(x, 9); }
 
-std::string quoted(const std::string& text)
-{
-    std::string out = "'";
-    for (char c : text)
-        out += c == '\'' ? std::string("''") : std::string(1, c);
-    return out + "'";
-}
-
 void write_simulation(report_writer& w, const simulation_result& s)
 {
     const std::size_t n = s.coordinates.size();
@@ -163,7 +155,7 @@ void write_workprecision(report_writer& w, const workprecision_result& r)
             block += std::to_string(p->steps) + " " + gnuplot_number(*p->error) + "\n";
         script += block + "EOD\n";
         plots += std::string(plots.empty() ? "plot " : ", ") + "$m" + std::to_string(k) +
-                 " using 1:2 with linespoints lw 1.5 pt 7 ps 0.5 lc rgb '" + colours[k % 8] + "' title " + quoted(method);
+                 " using 1:2 with linespoints lw 1.5 pt 7 ps 0.5 lc rgb '" + colours[k % 8] + "' title " + gnuplot_literal(method);
         ++k;
     }
     if (plots.empty()) {
