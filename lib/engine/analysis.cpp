@@ -535,6 +535,10 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
 
     stage_context context{scene, result, simulation, by_default, std::nullopt};
     std::set<std::string> planned = plan(scene, result.wanted);
+    auto add_numeric = [&] { // the numeric modes, where a symbolic product falls short
+        result.wanted.insert(product::numeric);
+        planned.insert("numeric");
+    };
     std::set<std::string> done, failed_groups;
     for (const stage_definition& stage : stage_table()) {
         if (!planned.count(stage.name) || failed_groups.count(stage.group))
@@ -549,8 +553,7 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
             done.insert(stage.name);
             if (stage.name == "modes" && result.modes && !result.modes->closed_form &&
                 numeric_frequencies_possible(scene, result)) {
-                result.wanted.insert(product::numeric);
-                planned.insert("numeric");
+                add_numeric();
                 result.notes.push_back("the frequencies have no closed form; they are given numerically at the "
                                        "`values` points");
             }
@@ -560,8 +563,7 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
                 if (result.wanted.count(product::numeric))
                     note += "; the numeric modes give them";
                 else if (!scene.values.empty() && result.linearization) {
-                    result.wanted.insert(product::numeric);
-                    planned.insert("numeric");
+                    add_numeric();
                     note += "; they are given numerically at the `values` points";
                 } else
                     note += "; give `values` to have them numerically";
@@ -580,8 +582,7 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
                 note += "; the numeric modes are still computed";
             else if (numeric_frequencies_instead(scene, result, stage)) {
                 // degrade: the frequencies at the `values` points instead of in closed form
-                result.wanted.insert(product::numeric);
-                planned.insert("numeric");
+                add_numeric();
                 note += "; the frequencies are given numerically at the `values` points instead";
             }
             result.notes.push_back(note);
