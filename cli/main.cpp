@@ -54,14 +54,20 @@ lagrange::source_text read_scene(const std::string& path, double wait_seconds = 
     return lagrange::source_text(path == "-" ? "<stdin>" : path, text);
 }
 
+/// The scene in `source` with the --values points added.
+lagrange::model load_scene(const lagrange::source_text& source, const std::vector<std::string>& values)
+{
+    lagrange::model scene = lagrange::load_model(source);
+    for (const std::string& v : values)
+        lagrange::add_values(scene, v);
+    return scene;
+}
+
 /// The scene at `path` (standard input for "-") with the --values points added.
 lagrange::model load_scene(const std::string& path, const std::vector<std::string>& values,
                            double wait_seconds = lagrange::budget_limits{}.max_seconds)
 {
-    lagrange::model scene = lagrange::load_model(read_scene(path, wait_seconds));
-    for (const std::string& v : values)
-        lagrange::add_values(scene, v);
-    return scene;
+    return load_scene(read_scene(path, wait_seconds), values);
 }
 
 using lagrange::output_file;
@@ -405,9 +411,7 @@ int report_scene(const run_options& options)
     if (!path.empty() && path != "-" && !pdf && !ends_with(".tex"))
         throw usage_error("`report -o` takes a file ending in .tex or .pdf, not `" + path + "`");
     lagrange::source_text source = read_scene(options.scene_path);
-    lagrange::model scene = lagrange::load_model(source);
-    for (const std::string& v : options.values)
-        lagrange::add_values(scene, v);
+    lagrange::model scene = load_scene(source, options.values);
     lagrange::analysis result = analyze_wanted(scene, options.want, lagrange::budget_limits{});
     lagrange::report_options report;
     // Figures go beside the .tex file, named after it (letters, digits and `-` only).
@@ -445,8 +449,7 @@ int run(int argc, char** argv)
     // Progress is drawn on a terminal during the symbolic stages too (the budget watchdog
     // reports the open stage); the line's clock starts here.
     progress_cleared_at_end cleared;
-    if (progress_line::standard_error().enabled())
-        lagrange::show_stage_progress(progress_line::standard_error().callback());
+    lagrange::show_stage_progress(progress_line::standard_error().callback()); // empty off a terminal
 
     CLI::App app{"lagrange: equations of motion, equilibria, normal modes and rigid bodies from a scene file"};
     app.footer(products_help());
