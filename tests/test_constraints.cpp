@@ -248,6 +248,15 @@ constraint blade: -sin(theta)*x' + cos(theta)*y' = a*theta'
         CHECK(vd == Approx(a * w * w).margin(1e-12));
         CHECK(wd == Approx(-m * a * v * w / (inertia + m * a * a)).margin(1e-12));
     }
+    // λ = I m θ̇ (ẋ cos θ + ẏ sin θ)/(I + m a²): no blade coefficient (sin θ, cos θ or a) is
+    // divided out and left in the denominator, where it would make λ 0/0 or uncancelled.
+    const GiNaC::ex lambda = c.multipliers.constraints[0].multiplier;
+    const GiNaC::ex inertia = symbol_of(c.scene, "I"), m = symbol_of(c.scene, "m"), a = symbol_of(c.scene, "a");
+    CHECK(same(lambda.denom(), inertia + m * a * a));
+    CHECK(same(lambda, inertia * m * symbol_of(c.scene, "theta_dot") *
+                           (symbol_of(c.scene, "x_dot") * cos(symbol_of(c.scene, "theta")) +
+                            symbol_of(c.scene, "y_dot") * sin(symbol_of(c.scene, "theta"))) /
+                           (inertia + m * a * a)));
 }
 
 TEST_CASE("constraints: a parallelogram four-bar linkage has one degree of freedom", "[constraints]")

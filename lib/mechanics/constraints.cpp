@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <optional>
 #include <random>
 
 namespace lagrange {
@@ -105,6 +106,159 @@ std::vector<std::size_t> coordinates_in(const model& scene, const std::vector<Gi
     return used;
 }
 
+/// A q̈ = −c solved for one pivot coordinate per constraint: q̈ = N u + p, with u the
+/// accelerations of the other (free) coordinates in coordinate order.
+struct embedded_constraints {
+    std::vector<unsigned> pivots; ///< per row of the reduced A, its pivot coordinate
+    GiNaC::matrix basis;          ///< N (n × (n − m)): the accelerations the constraints allow
+    GiNaC::matrix particular;     ///< p (n × 1): the pivots' share of −c
+};
+
+/// Gauss–Jordan on [A | −c] with numbers as pivots, so that the mass matrix is reduced to
+/// the n − m free coordinates before anything is solved: GiNaC's solve of the whole
+/// (n + m)-square system [M −Aᵀ; A 0] spends its time in normal() of the fractions that the
+/// λ rows bring in. Only numbers: a pivot such as cos θ leaves a removable 0/0 where it
+/// vanishes (sin θ over sin θ, which the trigonometric canonical form does not cancel), and
+/// a parameter (the Chaplygin sleigh's a) a power of itself over itself. Nothing if some row
+/// has no number left to pivot on.
+std::optional<embedded_constraints> embed_constraints(const constraint_equations& constraints)
+{
+    const unsigned m = constraints.matrix.rows(), n = constraints.matrix.cols();
+    GiNaC::matrix rows(m, n + 1);
+    for (unsigned k = 0; k < m; ++k) {
+        for (unsigned j = 0; j < n; ++j)
+            rows(k, j) = constraints.matrix(k, j);
+        rows(k, n) = -constraints.bias[k];
+    }
+    std::vector<bool> done_row(m, false), pivot_column(n, false);
+    std::vector<unsigned> pivot_of_row(m);
+    for (unsigned step = 0; step < m; ++step) {
+        std::optional<std::pair<unsigned, unsigned>> found;
+        for (unsigned k = 0; k < m && !found; ++k)
+            for (unsigned j = 0; j < n && !done_row[k] && !found; ++j)
+                if (!pivot_column[j] && GiNaC::is_a<GiNaC::numeric>(rows(k, j)) && !rows(k, j).is_zero())
+                    found = {k, j};
+        if (!found)
+            return std::nullopt;
+        const auto [row, column] = *found;
+        done_row[row] = true;
+        pivot_column[column] = true;
+        pivot_of_row[row] = column;
+        const GiNaC::ex pivot = rows(row, column);
+        for (unsigned j = 0; j <= n; ++j)
+            rows(row, j) = (rows(row, j) / pivot).normal();
+        for (unsigned k = 0; k < m; ++k) {
+            const GiNaC::ex factor = rows(k, column);
+            if (k == row || factor.is_zero())
+                continue;
+            for (unsigned j = 0; j <= n; ++j)
+                rows(k, j) = (rows(k, j) - factor * rows(row, j)).normal();
+            budget_check();
+        }
+    }
+    embedded_constraints result;
+    result.basis = GiNaC::matrix(n, n - m);
+    result.particular = GiNaC::matrix(n, 1);
+    std::vector<unsigned> free;
+    for (unsigned j = 0; j < n; ++j)
+        if (!pivot_column[j]) {
+            result.basis(j, static_cast<unsigned>(free.size())) = 1;
+            free.push_back(j);
+        }
+    for (unsigned k = 0; k < m; ++k) {
+        result.pivots.push_back(pivot_of_row[k]);
+        for (unsigned f = 0; f < free.size(); ++f)
+            result.basis(pivot_of_row[k], f) = -rows(k, free[f]);
+        result.particular(pivot_of_row[k], 0) = rows(k, n);
+    }
+    return result;
+}
+
+/// q̈ (n × 1) and λ (m × 1), unsimplified.
+struct solved_motion {
+    GiNaC::matrix accelerations;
+    GiNaC::matrix multipliers;
+};
+
+/// The whole system [M −Aᵀ; A 0] [q̈; λ] = [f; −c] by GiNaC's solve.
+solved_motion solve_whole(const model& scene, const GiNaC::matrix& mass, const GiNaC::matrix& force,
+                          const constraint_equations& constraints)
+{
+    const unsigned n = mass.rows(), m = constraints.matrix.rows();
+    GiNaC::matrix system(n + m, n + m), unknowns(n + m, 1), right(n + m, 1);
+    for (unsigned i = 0; i < n; ++i) {
+        for (unsigned j = 0; j < n; ++j)
+            system(i, j) = mass(i, j);
+        for (unsigned k = 0; k < m; ++k) {
+            system(i, n + k) = -constraints.matrix(k, i);
+            system(n + k, i) = constraints.matrix(k, i);
+        }
+        right(i, 0) = force(i, 0);
+        unknowns(i, 0) = scene.coordinates[i].acceleration;
+    }
+    for (unsigned k = 0; k < m; ++k) {
+        right(n + k, 0) = -constraints.bias[k];
+        unknowns(n + k, 0) = scene.constraints[k].multiplier;
+    }
+    GiNaC::matrix solution;
+    try {
+        solution = system.solve(unknowns, right);
+    } catch (const std::runtime_error&) {
+        throw computation_error("the constraints and the mass matrix give no unique accelerations and multipliers "
+                                "(the matrix [M −Aᵀ; A 0] is singular)");
+    }
+    solved_motion result{GiNaC::matrix(n, 1), GiNaC::matrix(m, 1)};
+    for (unsigned i = 0; i < n; ++i)
+        result.accelerations(i, 0) = solution(i, 0);
+    for (unsigned k = 0; k < m; ++k)
+        result.multipliers(k, 0) = solution(n + k, 0);
+    return result;
+}
+
+/// The same by embedding: Nᵀ M N u = Nᵀ (f − M p) for the free accelerations u, q̈ = N u + p,
+/// and Aᵀλ = M q̈ − f on the pivot coordinates, λ = A_d⁻ᵀ (M q̈ − f)_d. Simplified first, the
+/// reduced entries are short (sin² + cos² = 1 comes back), and GiNaC's solve is quick on
+/// them; the budgets are checked between its calls, which cannot be interrupted.
+solved_motion solve_embedded(const model& scene, const GiNaC::matrix& mass, const GiNaC::matrix& force,
+                             const constraint_equations& constraints, const embedded_constraints& embedded,
+                             const simplifier& simplify)
+{
+    const unsigned m = constraints.matrix.rows(), free_count = embedded.basis.cols();
+    GiNaC::matrix reduced = embedded.basis.transpose().mul(mass).mul(embedded.basis);
+    GiNaC::matrix right = embedded.basis.transpose().mul(force.sub(mass.mul(embedded.particular)));
+    GiNaC::matrix free_accelerations(free_count, 1), unknowns(free_count, 1);
+    for (unsigned i = 0; i < free_count; ++i) {
+        unknowns(i, 0) = GiNaC::symbol();
+        budget_check_terms(right(i, 0), "a reduced force");
+        right(i, 0) = simplify(right(i, 0));
+        for (unsigned j = 0; j < free_count; ++j) {
+            budget_check_terms(reduced(i, j), "a reduced mass");
+            reduced(i, j) = simplify(reduced(i, j));
+        }
+    }
+    if (free_count > 0) {
+        try {
+            free_accelerations = reduced.solve(unknowns, right);
+        } catch (const std::runtime_error&) {
+            throw computation_error("the constraints and the mass matrix give no unique accelerations and multipliers "
+                                    "(the mass matrix is singular on the motions the constraints allow)");
+        }
+        budget_check();
+    }
+    solved_motion result{embedded.basis.mul(free_accelerations).add(embedded.particular), GiNaC::matrix(m, 1)};
+    const GiNaC::matrix residual = mass.mul(result.accelerations).sub(force);
+    GiNaC::matrix pivot_block(m, m), pivot_residual(m, 1), multipliers(m, 1);
+    for (unsigned k = 0; k < m; ++k) {
+        const unsigned d = embedded.pivots[k];
+        pivot_residual(k, 0) = residual(d, 0);
+        for (unsigned j = 0; j < m; ++j)
+            pivot_block(k, j) = constraints.matrix(j, d);
+        multipliers(k, 0) = scene.constraints[k].multiplier;
+    }
+    result.multipliers = pivot_block.solve(multipliers, pivot_residual);
+    return result;
+}
+
 } // namespace
 
 GiNaC::ex simplify_ratio(const GiNaC::ex& e, const simplifier& simplify)
@@ -147,36 +301,18 @@ multipliers_result derive_multipliers(const model& scene, const GiNaC::matrix& m
 {
     const unsigned n = static_cast<unsigned>(scene.coordinates.size());
     const unsigned m = static_cast<unsigned>(scene.constraints.size());
-    GiNaC::matrix system(n + m, n + m), unknowns(n + m, 1), right(n + m, 1);
-    for (unsigned i = 0; i < n; ++i) {
-        for (unsigned j = 0; j < n; ++j)
-            system(i, j) = mass(i, j);
-        for (unsigned k = 0; k < m; ++k) {
-            system(i, n + k) = -constraints.matrix(k, i);
-            system(n + k, i) = constraints.matrix(k, i);
-        }
-        right(i, 0) = forcing[i];
-        unknowns(i, 0) = scene.coordinates[i].acceleration;
-    }
-    for (unsigned k = 0; k < m; ++k) {
-        right(n + k, 0) = -constraints.bias[k];
-        unknowns(n + k, 0) = scene.constraints[k].multiplier;
-    }
-    GiNaC::matrix solution;
-    try {
-        solution = system.solve(unknowns, right);
-    } catch (const std::runtime_error&) {
-        throw computation_error("the constraints and the mass matrix give no unique accelerations and multipliers "
-                                "(the matrix [M −Aᵀ; A 0] is singular)");
-    }
+    const GiNaC::matrix force(n, 1, GiNaC::lst(forcing.begin(), forcing.end()));
+    const std::optional<embedded_constraints> embedded = embed_constraints(constraints);
+    const solved_motion solved = embedded ? solve_embedded(scene, mass, force, constraints, *embedded, simplify)
+                                          : solve_whole(scene, mass, force, constraints);
     multipliers_result result;
     for (unsigned i = 0; i < n; ++i)
-        result.accelerations.push_back(solution(i, 0));
+        result.accelerations.push_back(solved.accelerations(i, 0));
     std::vector<GiNaC::ex> lambda;
     // GiNaC's solve and normal() cannot be interrupted: check the budgets between them.
     for (unsigned k = 0; k < m; ++k) {
-        budget_check_terms(solution(n + k, 0), "a multiplier");
-        lambda.push_back(simplify_ratio(solution(n + k, 0), simplify));
+        budget_check_terms(solved.multipliers(k, 0), "a multiplier");
+        lambda.push_back(simplify_ratio(solved.multipliers(k, 0), simplify));
         result.constraints.push_back({scene.constraints[k].name, lambda.back(), {}});
     }
 

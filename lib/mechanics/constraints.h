@@ -56,8 +56,10 @@ struct multipliers_result {
     std::vector<std::string> unattributed;
 };
 
-/// λ from [M −Aᵀ; A 0] [q̈; λ] = [f + Q; −c], and the force of each constraint on each point P
-/// whose coordinates S move P alone: F = J (JᵀJ)⁻¹ λ a_S with J = ∂r_P/∂q_S, the force along
+/// λ from [M −Aᵀ; A 0] [q̈; λ] = [f + Q; −c], solved as the embedding method does when every
+/// constraint can be solved for a coordinate with a number as its coefficient (A q̈ = −c as q̈ = N u + p, then Nᵀ M N u = Nᵀ(f + Q − M p) for the free
+/// accelerations u, and Aᵀλ = M q̈ − f − Q on the solved coordinates), else as a whole; and the force
+/// of each constraint on each point P whose coordinates S move P alone: F = J (JᵀJ)⁻¹ λ a_S with J = ∂r_P/∂q_S, the force along
 /// P's own motion that does the constraint's virtual work. Throws computation_error when the
 /// system is singular.
 multipliers_result derive_multipliers(const model& scene, const GiNaC::matrix& mass,
