@@ -82,6 +82,35 @@ bool has_symbol(const GiNaC::ex& e)
     return false;
 }
 
+bool is_sin_or_cos(const GiNaC::ex& e)
+{
+    return GiNaC::is_the_function<GiNaC::sin_SERIAL>(e) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(e);
+}
+
+bool has_trigonometric(const GiNaC::ex& e)
+{
+    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
+        if (is_sin_or_cos(*i) || GiNaC::is_the_function<GiNaC::tan_SERIAL>(*i))
+            return true;
+    return false;
+}
+
+bool inside_trigonometric(const GiNaC::ex& e, const GiNaC::ex& q)
+{
+    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
+        if (is_sin_or_cos(*i) && i->op(0).has(q))
+            return true;
+    return false;
+}
+
+bool inside_function(const GiNaC::ex& e, const GiNaC::ex& q)
+{
+    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
+        if (GiNaC::is_a<GiNaC::function>(*i) && i->has(q))
+            return true;
+    return false;
+}
+
 bool has_compound_denominator(const GiNaC::ex& e)
 {
     if (ex_kind_of(e) == ex_kind::sum || ex_kind_of(e) == ex_kind::product) {

@@ -32,6 +32,18 @@ bool has_compound_denominator(const GiNaC::ex& e);
 /// True if `e` contains a symbol (a parameter, coordinate or any other); π is a constant.
 bool has_symbol(const GiNaC::ex& e);
 
+/// True if `e` is a sine or a cosine.
+bool is_sin_or_cos(const GiNaC::ex& e);
+
+/// True if `e` contains a sine, cosine or tangent.
+bool has_trigonometric(const GiNaC::ex& e);
+
+/// True if `q` appears in the argument of a sine or cosine in `e`.
+bool inside_trigonometric(const GiNaC::ex& e, const GiNaC::ex& q);
+
+/// True if `q` appears in the argument of any function in `e` (a sine, exp, abs, …).
+bool inside_function(const GiNaC::ex& e, const GiNaC::ex& q);
+
 /// The sum of `terms` (0 if none, the term itself if one).
 inline GiNaC::ex sum_of(const GiNaC::exvector& terms)
 {

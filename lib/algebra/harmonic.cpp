@@ -45,11 +45,6 @@ int leading_sign(const std::int32_t* n, std::size_t count)
     return 0;
 }
 
-bool is_sin_or_cos(const ex& e)
-{
-    return GiNaC::is_the_function<GiNaC::sin_SERIAL>(e) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(e);
-}
-
 /// The value of an integer number within the entry limit.
 bool small_integer(const ex& e, std::int32_t& value)
 {

@@ -193,11 +193,6 @@ bool is_negative_integer(const ex& e)
     return e.info(GiNaC::info_flags::negint);
 }
 
-bool is_sin_or_cos(const ex& e)
-{
-    return GiNaC::is_the_function<GiNaC::sin_SERIAL>(e) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(e);
-}
-
 
 /// A term of an expanded sum as a rational coefficient times the rest (1 for a number).
 std::pair<numeric, ex> split_coefficient(const ex& term)

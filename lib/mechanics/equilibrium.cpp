@@ -147,16 +147,6 @@ bool vanishes_identically(const ex& e)
     }
 }
 
-/// True if e contains a sine, cosine or tangent.
-bool has_trigonometric(const ex& e)
-{
-    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
-        if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(*i) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(*i) ||
-            GiNaC::is_the_function<GiNaC::tan_SERIAL>(*i))
-            return true;
-    return false;
-}
-
 /// ∂²V/∂qi∂qj at a point; each entry tidied if asked (for printing), else as it comes
 /// (enough to classify, and much faster for a long chain).
 GiNaC::matrix hessian_at(const model& scene, const ex& potential, const std::vector<ex>& at, bool tidy_entries);
@@ -218,7 +208,6 @@ ex expand_multiple_angles(const ex& e, const model& scene)
     return is_cos ? real : imaginary;
 }
 
-bool inside_trigonometric(const ex& e, const ex& q);
 
 /// The real roots of ∂V/∂q = 0 in one coordinate, where they can be found in closed form.
 std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
@@ -230,7 +219,7 @@ std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
     if (!g.info(GiNaC::info_flags::polynomial)) {
         // a rational function: its zeros are among those of its numerator (checked by the caller)
         ex numerator = g.normal().numer().expand();
-        if (numerator.info(GiNaC::info_flags::polynomial) || inside_trigonometric(numerator, q))
+        if (numerator.info(GiNaC::info_flags::polynomial) || inside_function(numerator, q))
             g = numerator;
     }
     bool trigonometric = false;
@@ -327,15 +316,6 @@ std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
     return roots;
 }
 
-/// True if e contains a sine, cosine or tangent of an argument containing q.
-bool inside_trigonometric(const ex& e, const ex& q)
-{
-    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
-        if (is_a<GiNaC::function>(*i) && i->has(q))
-            return true;
-    return false;
-}
-
 /// The point with the angle coordinates at `fixed` (0 or π) and the others solved
 /// from the linear system that remains (free directions set to 0), if ∂V/∂q = 0 there.
 std::optional<std::vector<ex>> point_with_angles(const model& scene, const std::vector<ex>& gradient,
@@ -353,7 +333,7 @@ std::optional<std::vector<ex>> point_with_angles(const model& scene, const std::
         if (!reduced.info(GiNaC::info_flags::polynomial))
             reduced = reduced.normal().numer().expand(); // zeros of a rational function: of its numerator
         for (const ex& u : unknowns)
-            linear = linear && reduced.degree(u) <= 1 && !inside_trigonometric(reduced, u);
+            linear = linear && reduced.degree(u) <= 1 && !inside_function(reduced, u);
         equations.append(reduced == 0);
     }
     std::vector<ex> point(n, 0);
@@ -446,7 +426,7 @@ std::vector<std::vector<ex>> solve_several(const model& scene, const std::vector
     for (std::size_t i = 0; i < n; ++i) {
         bool angle = false;
         for (const ex& g : gradient)
-            angle = angle || inside_trigonometric(g, scene.coordinates[i].position);
+            angle = angle || inside_function(g, scene.coordinates[i].position);
         (angle ? angles : others).push_back(i);
     }
     if (angles.size() > max_listed_angles)

@@ -38,14 +38,6 @@ bool contains_symbol(const std::vector<GiNaC::realsymbol>& list, const GiNaC::ex
     return false;
 }
 
-bool has_trigonometric_function(const ex& e)
-{
-    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
-        if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(*i) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(*i))
-            return true;
-    return false;
-}
-
 /// e with every floating-point number written as the exact decimal it prints as (0.5 as
 /// 1/2), so that a steady motion given in decimals is studied exactly.
 ex exact_decimals(const ex& e)
@@ -201,7 +193,7 @@ steady_motion_result steady_motion(const model& scene, const lagrangian_result& 
         ex best = tidied;
         std::size_t shortest = message_text(tidied).size();
         for (const ex& form : {tidied, raw}) {
-            if (has_trigonometric_function(form.denom()))
+            if (has_trigonometric(form.denom()))
                 continue;
             const ex candidate = simplify(form);
             const std::size_t length = message_text(candidate).size();

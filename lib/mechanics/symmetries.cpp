@@ -102,16 +102,6 @@ ex without_free_factors(const ex& p, const std::vector<ex>& unknowns)
     return (polynomial / common).normal().subs(back);
 }
 
-/// True if q appears inside a sine or cosine of e.
-bool inside_trigonometric(const ex& e, const ex& q)
-{
-    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
-        if ((GiNaC::is_the_function<GiNaC::sin_SERIAL>(*i) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(*i)) &&
-            i->has(q))
-            return true;
-    return false;
-}
-
 } // namespace
 
 ex tidy_trigonometric(const ex& e)

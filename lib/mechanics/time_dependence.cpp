@@ -30,11 +30,6 @@ using GiNaC::exvector;
 /// The most angle coordinates whose combinations of 0 and π are tried.
 constexpr std::size_t max_tried_angles = 8;
 
-bool is_sin_or_cos(const ex& e)
-{
-    return GiNaC::is_the_function<GiNaC::sin_SERIAL>(e) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(e);
-}
-
 /// +1 or −1: the sign of the numeric factor of the term of the sum `a` whose other
 /// factors print first. a and −a get opposite signs, so sin(−ωt) is written −sin(ωt).
 int orientation(const ex& a)
@@ -134,14 +129,6 @@ time_parts split_by_time(const std::vector<ex>& equations, const ex& time, const
         }
     }
     return parts;
-}
-
-bool inside_trigonometric(const ex& e, const ex& q)
-{
-    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i)
-        if (is_sin_or_cos(*i) && i->op(0).has(q))
-            return true;
-    return false;
 }
 
 bool solves_all(const model& scene, const std::vector<ex>& coefficients, const std::vector<ex>& point,
