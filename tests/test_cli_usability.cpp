@@ -127,6 +127,23 @@ TEST_CASE("cli: --plot draws one panel per coordinate", "[cli][plot]")
     CHECK(plot.find("<text>φ</text>") < plot.find("<text>t</text>"));
 }
 
+TEST_CASE("cli: a plot's title keeps the scene's quotes and backslashes", "[cli][plot]")
+{
+    std::string scene = read_file(examples + "damped_driven_oscillator.lag");
+    const std::string old_title = "scene \"Damped driven oscillator\"";
+    REQUIRE(scene.find(old_title) != std::string::npos);
+    scene.replace(scene.find(old_title), old_title.size(), "scene \"Kepler's \\ oscillator\"");
+    const std::string svg = temporary_file("quoted.svg", "");
+    cli_result r = run_cli("response - --input u --output x --plot " + svg, scene, 60);
+    REQUIRE(r.exit_code == 0);
+    const std::string plot = read_file(svg);
+    if (plot.find("<svg") == std::string::npos) {
+        WARN("no SVG drawn (gnuplot missing?): " << r.err);
+        return;
+    }
+    CHECK(plot.find("<text>Kepler's \\ oscillator: Bode diagram of u → x</text>") != std::string::npos);
+}
+
 TEST_CASE("cli: an unwritable -o, --plot or --csv exits alike, with 2 and the path", "[cli][io]")
 {
     const std::string scene = examples + "beats.lag";

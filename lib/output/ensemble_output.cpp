@@ -4,6 +4,7 @@
 #include "output/ensemble_output.h"
 
 #include "output/simulation_output.h"
+#include "system/gnuplot.h"
 #include "system/external.h"
 #include "system/files.h"
 
@@ -204,12 +205,12 @@ void ensemble_map::draw(const std::string& path, const std::string& title)
     script << "set terminal pngcairo size 900,760 font 'sans,12'\n"
               "set output 'plot.png'\n"
               "set xlabel "
-           << gnuplot_quoted(axes[0].name) << " noenhanced\nset ylabel " << gnuplot_quoted(axes[1].name)
+           << gnuplot_string(axes[0].name) << " noenhanced\nset ylabel " << gnuplot_string(axes[1].name)
            << " noenhanced\nset cblabel "
-           << gnuplot_quoted(flips ? "time of the first flip (white: no flip before t = " +
+           << gnuplot_string(flips ? "time of the first flip (white: no flip before t = " +
                                          short_number(problem_.settings().until) + ")"
                                    : measure)
-           << " noenhanced\nset title " << gnuplot_quoted(title) << " noenhanced\n"
+           << " noenhanced\nset title " << gnuplot_string(title) << " noenhanced\n"
            << "set xrange [" << number_text(axes[0].from) << ":" << number_text(axes[0].to) << "]\n"
            << "set yrange [" << number_text(axes[1].from) << ":" << number_text(axes[1].to) << "]\n"
            << "set size square\nset tics out\nunset key\n"

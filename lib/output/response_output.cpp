@@ -7,6 +7,7 @@
 
 #include "output/print.h"
 #include "output/simulation_output.h"
+#include "system/gnuplot.h"
 
 #include <nlohmann/json.hpp>
 
@@ -87,14 +88,14 @@ void plot_response(const std::string& path, const frequency_response& r, const s
     script << "set terminal svg size 900,640 dynamic font 'sans,12'\n"
               "set output 'plot.svg'\n"
               "set multiplot layout 2,1 title "
-           << gnuplot_quoted(title + ": Bode diagram of " + name) << " noenhanced\n"
+           << gnuplot_string(title + ": Bode diagram of " + name) << " noenhanced\n"
            << "set logscale x\nset autoscale xfix\nset grid\nunset key\nset format x '%g'\n"
               "set lmargin 12\n" // the same left margin in both panels, so that their ω axes line up
               "set logscale y\nset ylabel '|H(iω)|'\n";
     // The resonance peak, marked where the search found one inside the range.
     const bool peak = std::isfinite(r.peak_omega) && std::isfinite(r.peak_magnitude) && r.peak_magnitude > 0;
     if (peak) {
-        script << "set label 1 " << gnuplot_quoted("resonance ω_r = " + significant(r.peak_omega, 6)) << " at "
+        script << "set label 1 " << gnuplot_string("resonance ω_r = " + significant(r.peak_omega, 6)) << " at "
                << round_trip(r.peak_omega) << ", " << round_trip(r.peak_magnitude)
                << " offset 1.5,0.6 noenhanced\n";
     }

@@ -56,16 +56,6 @@ void draw_gnuplot_svg(const std::string& path, const std::string& script,
     write_output(path, run.plot);
 }
 
-std::string gnuplot_quoted(const std::string& text) { return gnuplot_string(text); }
-
-std::string gnuplot_literal(const std::string& text)
-{
-    std::string out = "'";
-    for (char c : text)
-        out += c == '\'' ? std::string("''") : std::string(1, c);
-    return out + "'";
-}
-
 void write_simulation_text(std::ostream& out, const simulation_result& s, bool timings)
 {
     const trajectory& run = s.run;
@@ -315,7 +305,7 @@ void write_trajectory_csv(std::ostream& out, const simulation_result& s)
 std::string trajectory_plot_script(const simulation_result& s, std::size_t max_panels, const std::string& title,
                                    std::size_t& panels)
 {
-    // Numbers to 9 digits; labels keep every character (gnuplot_literal).
+    // Numbers to 9 digits; labels keep every printable character (gnuplot_string).
     auto plot_number = [](double x) { return significant(x, 9); };
     const std::size_t n = s.coordinates.size();
     const std::size_t stride = (s.run.times.size() + 2999) / 3000;
@@ -332,12 +322,12 @@ std::string trajectory_plot_script(const simulation_result& s, std::size_t max_p
                                               : plot_number(s.run.times.front()) + ":" + plot_number(s.run.times.back())) +
                          "]\n";
     const char* colours[] = {"#1f4e9c", "#c00000", "#2a8a2a", "#8a4bb0"};
-    const std::string title_clause = title.empty() ? "" : " title " + gnuplot_literal(title) + " noenhanced";
+    const std::string title_clause = title.empty() ? "" : " title " + gnuplot_string(title) + " noenhanced";
     panels = n <= max_panels ? n : 0;
     if (panels > 0) {
         script += "set multiplot layout " + std::to_string(panels) + ",1" + title_clause + "\nset lmargin 10\n";
         for (std::size_t i = 0; i < n; ++i) {
-            script += "set ylabel " + gnuplot_literal(print_name(s.coordinates[i], syntax::text)) + "\n";
+            script += "set ylabel " + gnuplot_string(print_name(s.coordinates[i], syntax::text)) + "\n";
             script += i + 1 == n ? "set xlabel 't'\n" : "unset xlabel\n";
             script += "plot $motion using 1:" + std::to_string(i + 2) + " with lines lw 1.2 lc rgb '" + colours[i % 4] +
                       "'\n";
@@ -345,11 +335,11 @@ std::string trajectory_plot_script(const simulation_result& s, std::size_t max_p
         script += "unset multiplot\n";
     } else {
         if (!title.empty())
-            script += "set title " + gnuplot_literal(title) + " noenhanced\n";
+            script += "set title " + gnuplot_string(title) + " noenhanced\n";
         script += "set key outside right\nset xlabel 't'\nplot ";
         for (std::size_t i = 0; i < n; ++i)
             script += std::string(i ? ", " : "") + "$motion using 1:" + std::to_string(i + 2) + " with lines title " +
-                      gnuplot_literal(print_name(s.coordinates[i], syntax::text));
+                      gnuplot_string(print_name(s.coordinates[i], syntax::text));
         script += "\n";
     }
     return script;

@@ -47,11 +47,5 @@ void plot_workprecision(const std::string& path, const workprecision_result& w, 
 /// is missing or fails, or the SVG cannot be written.
 void draw_gnuplot_svg(const std::string& path, const std::string& script,
                       const std::vector<std::pair<std::string, std::string>>& files);
-/// A string literal for a gnuplot script: single quotes, quotes and control characters dropped.
-std::string gnuplot_quoted(const std::string& text);
-
-/// A string literal for a gnuplot script that keeps every character: single quotes, a
-/// quote doubled (gnuplot's own escape).
-std::string gnuplot_literal(const std::string& text);
 
 } // namespace lagrange

@@ -14,6 +14,7 @@
 #include "output/latex_blocks.h"
 #include "output/print.h"
 #include "output/simulation_output.h"
+#include "system/gnuplot.h"
 
 #include <cmath>
 #include <cstdio>
@@ -155,7 +156,7 @@ void write_workprecision(report_writer& w, const workprecision_result& r)
             block += std::to_string(p->steps) + " " + gnuplot_number(*p->error) + "\n";
         script += block + "EOD\n";
         plots += std::string(plots.empty() ? "plot " : ", ") + "$m" + std::to_string(k) +
-                 " using 1:2 with linespoints lw 1.5 pt 7 ps 0.5 lc rgb '" + colours[k % 8] + "' title " + gnuplot_literal(method);
+                 " using 1:2 with linespoints lw 1.5 pt 7 ps 0.5 lc rgb '" + colours[k % 8] + "' title " + gnuplot_string(method);
         ++k;
     }
     if (plots.empty()) {

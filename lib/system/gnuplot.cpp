@@ -40,7 +40,9 @@ std::string gnuplot_string(const std::string& text)
 {
     std::string out = "'";
     for (char c : text)
-        if (c != '\'' && c != '\\' && (static_cast<unsigned char>(c) >= 0x20))
+        if (c == '\'')
+            out += "''";
+        else if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f)
             out += c;
     return out + "'";
 }

@@ -30,8 +30,9 @@ gnuplot_run run_gnuplot(const std::string& script, const std::string& plot_name,
                         const std::vector<std::pair<std::string, std::string>>& files = {},
                         const std::vector<std::string>& environment = {});
 
-/// A string literal for a gnuplot script: single quotes, quotes, backslashes and control
-/// characters dropped.
+/// A string literal for a gnuplot script that keeps every printable character: in single
+/// quotes, where a backslash is literal, with a quote doubled (gnuplot's own escape) and
+/// control characters, which would end the line of the script, dropped.
 std::string gnuplot_string(const std::string& text);
 
 /// Blanks the creation and modification dates cairo writes into a PDF (same length, so
