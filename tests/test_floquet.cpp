@@ -155,6 +155,14 @@ TEST_CASE("floquet: errors", "[floquet]")
                                      "values a = 1\n"),
                                 {product::floquet}),
                         Catch::Contains("not periodic"));
+    // A support whose height is √(cos γt − 2), never real: the linearization is NaN from
+    // t = 0 on, which is said as such rather than as a collapsing step size.
+    REQUIRE_THROWS_WITH(analyze(load("parameters m g l a gamma\ncoordinates phi\n"
+                                     "point bob mass m at (l*sin(phi), a*sqrt(cos(gamma*t) - 2) - l*cos(phi))\n"
+                                     "gravity g along (0, -1)\nequilibrium phi = pi\n"
+                                     "values m = 1, g = 9.81, l = 1, a = 0.05, gamma = 120\n"),
+                                {product::floquet}),
+                        Catch::Contains("the linearized equations are not finite at t = 0"));
 }
 
 TEST_CASE("floquet: verified against the nonlinear flow, and a wrong multiplier is caught", "[floquet][verification]")

@@ -4,6 +4,7 @@
  *  multipliers, about each point that solves the equations at every t. */
 #include "numeric/floquet.h"
 
+#include "algebra/budget.h"
 #include "numeric/compiled_modes.h"
 #include "numeric/expression_program.h"
 #include "numeric/ode.h"
@@ -99,7 +100,11 @@ std::vector<double> monodromy(std::size_t dimension, const std::function<void(do
     ode_system system;
     system.dimension = d * d;
     std::vector<double> a(d * d);
+    std::size_t calls = 0;
     system.rhs = [&, d](double t, const double* x, double* dxdt) {
+        // The integration is the stage's own loop: it ends at the stage's time budget.
+        if (++calls % 256 == 0)
+            budget_check();
         rate(t, a.data());
         // Φ' = A Φ, both row-major.
         for (std::size_t i = 0; i < d; ++i)
@@ -177,6 +182,9 @@ std::vector<floquet_point> floquet_multipliers(const model& scene, const equatio
                 const Eigen::FullPivLU<Eigen::MatrixXd> lu(mass);
                 if (!lu.isInvertible() || !mass.allFinite())
                     throw computation_error("the mass matrix is singular at t = " + message_number(t) +
+                                            " at the values on line " + line_of(values));
+                if (!stiffness.allFinite() || !velocity.allFinite())
+                    throw computation_error("the linearized equations are not finite at t = " + message_number(t) +
                                             " at the values on line " + line_of(values));
                 const Eigen::MatrixXd k_part = lu.solve(stiffness), c_part = lu.solve(velocity);
                 const std::size_t d = 2 * n;
