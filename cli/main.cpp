@@ -70,6 +70,9 @@ lagrange::model load_scene(const std::string& path, const std::vector<std::strin
     return load_scene(read_scene(path, wait_seconds), values);
 }
 
+/// A plot's title: the scene's, or its file name.
+std::string plot_title(const lagrange::model& scene) { return scene.title.empty() ? scene.file : scene.title; }
+
 using lagrange::output_file;
 using lagrange::write_output;
 using lagrange::progress_line;
@@ -185,7 +188,7 @@ int motion_command(const motion_options& options, lagrange::product wanted, cons
     settings.native = !options.interpret;
     lagrange::analysis result = lagrange::analyze(scene, {wanted}, budget, settings);
     progress_line::standard_error().clear();
-    std::string title = scene.title.empty() ? scene.file : scene.title;
+    const std::string title = plot_title(scene);
     if (result.simulation && !options.csv.empty()) {
         std::ostringstream csv;
         lagrange::write_trajectory_csv(csv, *result.simulation);
@@ -227,7 +230,7 @@ int response_command(const response_options& options)
     lagrange::frequency_response response = lagrange::frequency_response_of(
         scene, *result.linearization, *result.state_space, options.input, options.output, settings);
     if (!options.plot.empty())
-        lagrange::plot_response(options.plot, response, scene.title.empty() ? scene.file : scene.title);
+        lagrange::plot_response(options.plot, response, plot_title(scene));
     std::ostringstream out;
     if (options.format == "csv")
         lagrange::write_response_csv(out, response);
@@ -375,7 +378,7 @@ int ensemble_command(const ensemble_options& options)
     if (json)
         lagrange::write_ensemble_json_end(*out, problem, summary);
     if (map)
-        map->draw(options.output, scene.title.empty() ? scene.file : scene.title);
+        map->draw(options.output, plot_title(scene));
     if (file.is_open()) {
         file.flush();
         if (!file)
