@@ -15,7 +15,7 @@
  *  past libFuzzer's -timeout — is a bug, but for one kind of overrun: a symbolic stage stuck
  *  in one GiNaC call, which the program's watchdog ends at --max-seconds. With
  *  LAGRANGE_FUZZ_WATCHDOG set, this target starts that watchdog too (exit 3), and fuzz/run.sh
- *  runs each input that went over -timeout again so. */
+ *  runs each input that went over -timeout again with it on. */
 #include "algebra/budget.h"
 #include "engine/analysis.h"
 #include "output/document.h"

@@ -489,21 +489,6 @@ TEST_CASE("fuzz regressions: factor() only where it is quick", "[fuzz][budget]")
     CHECK(a.equilibria->points.size() == 3);
 }
 
-
-// The seventh (2026-11-27): a mistyped Kapitza pendulum whose monodromy integration needs
-// millions of steps. The integration checks the stage's time budget, so the stage ends at
-// it with budget_exceeded instead of running until the watchdog ends the process.
-TEST_CASE("fuzz regressions: the floquet integration stops at the stage's time budget", "[fuzz][budget]")
-{
-    model scene = load(read_file(std::string(LAGRANGE_SOURCE_DIR) +
-                                 "/tests/fuzz_regressions/slow_floquet_singular_drive.lag"));
-    budget_limits limits;
-    limits.max_seconds = 0.2;
-    // Without the check the integration would stop at its own 120 s with another message.
-    CHECK_THROWS_WITH(analyze(scene, {product::floquet}, limits),
-                      Catch::Matchers::Contains("the `floquet` stage exceeded its time budget of 0.2 s"));
-}
-
 // The sixth (2026-11-24): a rolling coin with its lean offset changed, √3 in its mass matrix,
 // whose multipliers took 4.7 s in one symbolic solve of the 7 × 7 system [M −Aᵀ; A 0]. Since
 // the mass matrix is reduced to the free coordinates first, they come within 1000 terms, and
@@ -535,4 +520,18 @@ TEST_CASE("fuzz regressions: the multipliers stage checks its size budget", "[fu
     } catch (const budget_exceeded& e) { // nothing else was asked for: the run stops
         CHECK_THAT(std::string(e.what()), Catch::Matchers::Contains("more than 100 terms"));
     }
+}
+
+// The seventh (2026-11-27): a mistyped Kapitza pendulum whose monodromy integration needs
+// millions of steps. The integration checks the stage's time budget, so the stage ends at
+// it with budget_exceeded instead of running until the watchdog ends the process.
+TEST_CASE("fuzz regressions: the floquet integration stops at the stage's time budget", "[fuzz][budget]")
+{
+    model scene = load(read_file(std::string(LAGRANGE_SOURCE_DIR) +
+                                 "/tests/fuzz_regressions/slow_floquet_singular_drive.lag"));
+    budget_limits limits;
+    limits.max_seconds = 0.2;
+    // Without the check the integration would stop at its own 120 s with another message.
+    CHECK_THROWS_WITH(analyze(scene, {product::floquet}, limits),
+                      Catch::Matchers::Contains("the `floquet` stage exceeded its time budget of 0.2 s"));
 }

@@ -193,7 +193,6 @@ bool is_negative_integer(const ex& e)
     return e.info(GiNaC::info_flags::negint);
 }
 
-
 /// A term of an expanded sum as a rational coefficient times the rest (1 for a number).
 std::pair<numeric, ex> split_coefficient(const ex& term)
 {

@@ -208,7 +208,6 @@ ex expand_multiple_angles(const ex& e, const model& scene)
     return is_cos ? real : imaginary;
 }
 
-
 /// The real roots of ∂V/∂q = 0 in one coordinate, where they can be found in closed form.
 std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
 {
