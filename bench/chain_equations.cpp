@@ -5,7 +5,7 @@
  *  derived from point positions and simplified to canonical trig form, N = 2..12.
  *  Prints N, the median wall time of the whole derivation (scene text to simplified
  *  equations), and the size of the result. Usage: chain_equations [max_N] [reps] */
-#include "chain_scene.h" // tests/chain_scene.h
+#include "helpers/chain_scene.h"
 #include "engine/analysis.h"
 #include "scene/lower.h"
 

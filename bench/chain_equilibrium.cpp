@@ -5,7 +5,7 @@
  *  π. Prints N, the number of points reported, the chosen point's stability and the
  *  median CPU time of find_equilibria alone (the Lagrangian is derived beforehand).
  *  Usage: chain_equilibrium [max_N] [reps] */
-#include "chain_scene.h" // tests/chain_scene.h
+#include "helpers/chain_scene.h"
 #include "mechanics/equilibrium.h"
 #include "mechanics/lagrangian.h"
 #include "scene/lower.h"

@@ -8,7 +8,7 @@
  *  come from the engine's linearization, outside the timing; no budget is open. Last, the
  *  closed-form roots ω² of the 3-link chain's cubic (symbolic_modes without mode vectors).
  *  Usage: characteristic_scaling [max_N] [reps] */
-#include "chain_scene.h" // tests/chain_scene.h
+#include "helpers/chain_scene.h"
 #include "algebra/exact_matrix.h"
 #include "engine/analysis.h"
 #include "mechanics/modes.h"

@@ -1,0 +1,205 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file test_cli_usability.cpp
+ *  The command line's small things a user notices: --help lists the products, --plot
+ *  draws a panel per coordinate, unwritable outputs fail alike, and progress shows on a
+ *  terminal and never in piped output. */
+#include "helpers/cli_runner.h"
+
+#include "core/model.h"
+
+#include <catch2/catch.hpp>
+
+#include <cerrno>
+#include <cstdlib>
+#include <fcntl.h>
+#include <pty.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <string>
+
+using namespace lagrange_test;
+
+namespace {
+
+const std::string examples = std::string(LAGRANGE_SOURCE_DIR) + "/examples/";
+
+std::size_t count(const std::string& text, const std::string& piece)
+{
+    std::size_t n = 0;
+    for (std::size_t at = text.find(piece); at != std::string::npos; at = text.find(piece, at + piece.size()))
+        ++n;
+    return n;
+}
+
+struct terminal_run {
+    int exit_code = -1;
+    std::string terminal; ///< what the program wrote to its standard error, a terminal
+};
+
+/// Runs `lagrange ARGS` with standard error on a pseudo-terminal (standard output to
+/// /dev/null) and the progress line's delay at 0.
+terminal_run run_on_terminal(const std::string& args, int limit_seconds = 60)
+{
+    terminal_run result;
+    int master = -1;
+    const pid_t child = forkpty(&master, nullptr, nullptr, nullptr);
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        const int null = open("/dev/null", O_WRONLY);
+        dup2(null, STDOUT_FILENO);
+        setenv("LAGRANGE_PROGRESS_DELAY", "0", 1);
+        const std::string command = "exec timeout --foreground -s KILL " + std::to_string(limit_seconds) + " " +
+                                    LAGRANGE_BINARY + " " + args;
+        execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    char buffer[4096];
+    for (;;) {
+        const ssize_t got = read(master, buffer, sizeof buffer);
+        if (got > 0)
+            result.terminal.append(buffer, static_cast<std::size_t>(got));
+        else if (got < 0 && errno == EINTR)
+            continue;
+        else
+            break; // EIO: the child closed the terminal
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    close(master);
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+/// The terminal's last line as it stands at the end (each \r goes back to its start).
+std::string last_line_shown(const std::string& terminal)
+{
+    std::string line;
+    std::size_t column = 0;
+    for (char c : terminal) {
+        if (c == '\n') {
+            line.clear();
+            column = 0;
+        } else if (c == '\r') {
+            column = 0;
+        } else {
+            if (column < line.size())
+                line[column] = c;
+            else
+                line += c;
+            ++column;
+        }
+    }
+    return line;
+}
+
+} // namespace
+
+TEST_CASE("cli: --help lists every product and shows an example", "[cli][help]")
+{
+    for (const std::string& command : {std::string("--help"), std::string("report --help")}) {
+        cli_result help = run_cli(command);
+        REQUIRE(help.exit_code == 0);
+        for (const auto& [product, name] : lagrange::product_names())
+            CHECK(help.out.find(" " + name) != std::string::npos);
+        CHECK(help.out.find("Example:\n  lagrange examples/double_pendulum.lag --want") != std::string::npos);
+    }
+    // The example runs as shown.
+    cli_result example = run_cli(examples + "double_pendulum.lag --want equations,frequencies");
+    CHECK(example.exit_code == 0);
+    CHECK(example.out.find("Normal modes\n  ω² = ") != std::string::npos);
+}
+
+TEST_CASE("cli: --plot draws one panel per coordinate", "[cli][plot][gnuplot]")
+{
+    const std::string svg = temporary_file("panels.svg", "");
+    cli_result r = run_cli("simulate " + examples + "double_pendulum.lag --until 5 --plot " + svg, "", 60);
+    REQUIRE(r.exit_code == 0);
+    const std::string plot = read_file(svg);
+    REQUIRE(plot.find("<svg") != std::string::npos);
+    // Two panels (gnuplot names a multiplot's panels 1a, 1b, …), each one line with the
+    // coordinate as its y label (θ, φ) and no key, and t below the last.
+    CHECK(count(plot, "<g id=\"gnuplot_plot_") == 2);
+    CHECK(count(plot, "<g id=\"gnuplot_plot_1a\"") == 1);
+    CHECK(count(plot, "<g id=\"gnuplot_plot_1b\"") == 1);
+    CHECK(count(plot, "<text>θ</text>") == 1);
+    CHECK(count(plot, "<text>φ</text>") == 1);
+    CHECK(plot.find("<text>φ</text>") < plot.find("<text>t</text>"));
+}
+
+TEST_CASE("cli: a plot's title keeps the scene's quotes and backslashes", "[cli][plot][gnuplot]")
+{
+    std::string scene = read_file(examples + "damped_driven_oscillator.lag");
+    const std::string old_title = "scene \"Damped driven oscillator\"";
+    REQUIRE(scene.find(old_title) != std::string::npos);
+    scene.replace(scene.find(old_title), old_title.size(), "scene \"Kepler's \\ oscillator\"");
+    const std::string svg = temporary_file("quoted.svg", "");
+    cli_result r = run_cli("response - --input u --output x --plot " + svg, scene, 60);
+    REQUIRE(r.exit_code == 0);
+    const std::string plot = read_file(svg);
+    INFO(r.err);
+    REQUIRE(plot.find("<svg") != std::string::npos);
+    CHECK(plot.find("<text>Kepler's \\ oscillator: Bode diagram of u → x</text>") != std::string::npos);
+}
+
+TEST_CASE("cli: an unwritable -o, --plot or --csv exits alike, with 2 and the path", "[cli][io]")
+{
+    const std::string scene = examples + "beats.lag";
+    const std::string response = examples + "damped_driven_oscillator.lag --input u --output x";
+    for (const std::string& folder : {std::string("/no/such/folder"), std::string("/proc")}) {
+        const std::string path = folder + "/out.file";
+        for (const std::string& args :
+             {"simulate " + scene + " --until 1 -o " + path, "simulate " + scene + " --until 1 --plot " + path,
+              "simulate " + scene + " --until 1 --csv " + path, "workprecision " + scene + " --until 0.5 --plot " + path,
+              "response " + response + " -o " + path, "response " + response + " --plot " + path,
+              scene + " --want equations -o " + path, "report " + scene + " --want equations -o " + path + ".tex"}) {
+            INFO(args);
+            cli_result r = run_cli(args, "", 60);
+            CHECK(r.exit_code == 2);
+            CHECK(r.err.rfind("lagrange: error: cannot write `" + path, 0) == 0);
+        }
+    }
+}
+
+TEST_CASE("cli: progress shows on a terminal during the runs and stages, and never in a pipe", "[cli][progress]")
+{
+    SECTION("simulate: the run and the error estimate's reference run")
+    {
+        terminal_run r = run_on_terminal("simulate " + examples + "double_pendulum.lag --until 20");
+        CHECK(r.exit_code == 0);
+        CHECK(r.terminal.find("\rlagrange: simulating with dop853 [") != std::string::npos);
+        CHECK(r.terminal.find("\rlagrange: error estimate: dop853 at tolerance ") != std::string::npos);
+        CHECK(last_line_shown(r.terminal).find_first_not_of(' ') == std::string::npos); // cleared
+    }
+    SECTION("workprecision: each method at each tolerance")
+    {
+        terminal_run r = run_on_terminal("workprecision " + examples + "double_pendulum.lag --until 2");
+        CHECK(r.exit_code == 0);
+        CHECK(r.terminal.find("\rlagrange: workprecision: dopri5 at tolerance 0.001 [") != std::string::npos);
+        CHECK(r.terminal.find("\rlagrange: workprecision: dop853 at tolerance ") != std::string::npos);
+        CHECK(last_line_shown(r.terminal).find_first_not_of(' ') == std::string::npos);
+    }
+    SECTION("a symbolic stage, with its seconds")
+    {
+        // A modes stage of about 60 ms in Release: the watchdog, which polls every 20 ms, sees it.
+        terminal_run r = run_on_terminal(std::string(LAGRANGE_SOURCE_DIR) +
+                                         "/tests/fuzz_regressions/slow_modes_factor_after_factor.lag --want modes");
+        CHECK(r.exit_code == 0);
+        CHECK(r.terminal.find("\rlagrange: the `") != std::string::npos);
+        CHECK(r.terminal.find("` stage, 0 s") != std::string::npos);
+        CHECK(last_line_shown(r.terminal).find_first_not_of(' ') == std::string::npos);
+    }
+    SECTION("piped: nothing but the output")
+    {
+        setenv("LAGRANGE_PROGRESS_DELAY", "0", 1);
+        for (const std::string& args :
+             {"simulate " + examples + "double_pendulum.lag --until 20",
+              "workprecision " + examples + "double_pendulum.lag --until 2", examples + "double_pendulum.lag --want modes"}) {
+            cli_result r = run_cli(args, "", 60);
+            CHECK(r.exit_code == 0);
+            CHECK(r.err.empty());
+            CHECK(r.out.find('\r') == std::string::npos);
+        }
+        unsetenv("LAGRANGE_PROGRESS_DELAY");
+    }
+}

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file tools.cpp
+ *  Whether a test's external tool is installed. */
+#include "helpers/tools.h"
+
+#include "system/external.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <iterator>
+#include <stdexcept>
+
+#include <unistd.h>
+
+namespace lagrange_test {
+
+std::string configured_compiler()
+{
+    const char* chosen = std::getenv("LAGRANGE_CC");
+    return chosen && *chosen ? chosen : "cc";
+}
+
+bool tool_available(const std::string& tool)
+{
+    if (std::find(std::begin(known_tools), std::end(known_tools), tool) == std::end(known_tools))
+        throw std::invalid_argument("unknown tool `" + tool + "`");
+    const std::string program = tool == "cc" ? configured_compiler() : tool;
+    if (program.find('/') != std::string::npos)
+        return access(program.c_str(), X_OK) == 0;
+    return lagrange::program_available(program);
+}
+
+compiler_override::compiler_override(const std::string& compiler)
+{
+    if (const char* old = std::getenv("LAGRANGE_CC"))
+        old_ = old;
+    setenv("LAGRANGE_CC", compiler.c_str(), 1);
+}
+
+compiler_override::~compiler_override()
+{
+    if (old_)
+        setenv("LAGRANGE_CC", old_->c_str(), 1);
+    else
+        unsetenv("LAGRANGE_CC");
+}
+
+bool cpu_has_avx2_and_fma()
+{
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+    return false;
+#endif
+}
+
+} // namespace lagrange_test
