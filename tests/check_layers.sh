@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Fails on an include that points up the layers (docs/architecture.md):
-#   core ← algebra, system ← scene (front end) | bodies ← mechanics ← numeric ← engine ← output ← cli
+#   core ← algebra, system ← scene (front end) | bodies ← mechanics ← numeric ← verify, ensemble
+#   ← engine ← output ← cli
 # A folder may include its own headers and those of the folders listed for it below;
 # the umbrella header lib/lagrange.h, those of every installed folder.
 set -euo pipefail
@@ -15,10 +16,12 @@ declare -A below=(
     [bodies]="core algebra"
     [mechanics]="core algebra bodies"
     [numeric]="core algebra bodies mechanics system"
-    [engine]="core algebra bodies mechanics numeric system scene"
-    [output]="core algebra bodies mechanics numeric system scene engine"
-    [cli]="core algebra bodies mechanics numeric system scene engine output"
-    [lagrange.h]="core algebra bodies mechanics numeric scene engine output"
+    [verify]="core algebra bodies mechanics numeric system"
+    [ensemble]="core algebra bodies mechanics numeric system"
+    [engine]="core algebra bodies mechanics numeric verify ensemble system scene"
+    [output]="core algebra bodies mechanics numeric verify ensemble system scene engine"
+    [cli]="core algebra bodies mechanics numeric verify ensemble system scene engine output"
+    [lagrange.h]="core algebra bodies mechanics numeric verify ensemble scene engine output"
 )
 bad=0
 while IFS= read -r file; do

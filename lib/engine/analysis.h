@@ -26,7 +26,7 @@
 #include "numeric/linear_response.h"
 #include "mechanics/time_dependence.h"
 #include "numeric/simulation.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 #include "core/model.h"
 
 #include <optional>

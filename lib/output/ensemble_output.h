@@ -7,7 +7,7 @@
  *  output is byte-identical for any number of threads and processes. */
 #pragma once
 
-#include "numeric/ensemble_run.h"
+#include "ensemble/run.h"
 
 #include <fstream>
 #include <memory>

@@ -9,7 +9,7 @@
 #include "bodies/orientation.h"
 #include "engine/analysis.h"
 #include "mechanics/lagrangian.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 #include "helpers/scene_helpers.h"
 
 #include <catch2/catch.hpp>

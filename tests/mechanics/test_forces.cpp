@@ -6,7 +6,7 @@
  *  by hand. */
 #include "engine/analysis.h"
 #include "mechanics/equations_of_motion.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 #include "mechanics/forces.h"
 #include "mechanics/lagrangian.h"
 #include "scene/lower.h"

@@ -9,7 +9,7 @@
  *  with the closed forms at seeded random parameter points. */
 #include "engine/analysis.h"
 #include "mechanics/gyroscopic.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 #include "helpers/scene_helpers.h"
 
 #include <catch2/catch.hpp>

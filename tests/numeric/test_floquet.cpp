@@ -6,7 +6,7 @@
  *  and growth rate, and a constant-coefficient oscillator against exp(A T). */
 #include "engine/analysis.h"
 #include "numeric/floquet.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 #include "helpers/scene_helpers.h"
 
 #include <catch2/catch.hpp>

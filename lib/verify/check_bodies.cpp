@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification_bodies.cpp
+/** @file check_bodies.cpp
  *  Numeric checks of the inertia and Euler results: cubature of the density over each
  *  shape's own parametrization, the parallel-axis shift of given tensors, Euler's
  *  equations formed numerically, and torque-free solutions against Boost.Odeint. */
-#include "numeric/verification_bodies.h"
+#include "verify/check_bodies.h"
 
 #include "core/errors.h"
 #include "numeric/expression_program.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file symmetry_checks.h
- *  Self-verification of the symmetries (see verification.h): the conserved quantities,
+/** @file check_symmetries.h
+ *  Self-verification of the symmetries (see verify.h): the conserved quantities,
  *  the Hamiltonian, the effective potential and the steady motion, each against the
  *  Lagrangian as built, differentiated by finite differences. */
 #pragma once
@@ -9,7 +9,7 @@
 #include "mechanics/lagrangian.h"
 #include "mechanics/steady_motion.h"
 #include "mechanics/symmetries.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 
 #include <vector>
 

@@ -4,7 +4,7 @@
  *  moving points in 2-D, a Rayleigh line, a velocity-dependent force) and polynomials
  *  pass; a damping matrix or damped polynomial made wrong on purpose is caught, naming it. */
 #include "engine/analysis.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 #include "helpers/scene_helpers.h"
 
 #include <catch2/catch.hpp>

@@ -5,7 +5,7 @@
  *  double pendulum's energy bound on flips, resuming, and bad input. */
 #include "helpers/cli_runner.h"
 #include "engine/analysis.h"
-#include "numeric/ensemble_run.h"
+#include "ensemble/run.h"
 #include "helpers/scene_helpers.h"
 
 #include <catch2/catch.hpp>

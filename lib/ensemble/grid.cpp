@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file ensemble_grid.cpp
+/** @file grid.cpp
  *  The `--grid` and `--measure` options of `lagrange ensemble` (see ensemble.h). */
-#include "numeric/ensemble.h"
+#include "ensemble/ensemble.h"
 
 #include <cmath>
 #include <cstdlib>

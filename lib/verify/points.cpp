@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification_points.cpp
- *  The parameter points and helpers of the self-verification (see verification_points.h). */
-#include "numeric/verification_points.h"
+/** @file points.cpp
+ *  The parameter points and helpers of the self-verification (see points.h). */
+#include "verify/points.h"
 
 #include "core/errors.h"
 #include "numeric/values.h"

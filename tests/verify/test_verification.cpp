@@ -4,7 +4,7 @@
  *  purpose (one term's sign flipped, one entry changed) is caught, naming the product.
  *  Each "caught" test calls the checks directly, so it fails if they check nothing. */
 #include "engine/analysis.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 #include "helpers/scene_helpers.h"
 
 #include <catch2/catch.hpp>

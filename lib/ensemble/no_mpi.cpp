@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file ensemble_no_mpi.cpp
+/** @file no_mpi.cpp
  *  The distributed runner of a build without MPI (CMake did not find it): a clear error when
  *  such a binary is started by `mpirun` with more than one process, instead of every process
  *  computing the whole ensemble. */
-#include "numeric/ensemble_run.h"
+#include "ensemble/run.h"
 
 namespace lagrange {
 

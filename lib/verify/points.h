@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification_points.h
- *  What the self-verification files share (internal to lib/numeric): the seeded parameter
+/** @file points.h
+ *  What the self-verification files share (internal to lib/verify): the seeded parameter
  *  points, results evaluated there, the tolerance and the failure messages, and the check
- *  of the small-oscillation results (verification_modes.cpp). */
+ *  of the small-oscillation results (check_modes.cpp). */
 #pragma once
 
 #include "core/model.h"
 #include "mechanics/linearization.h"
 #include "mechanics/modes.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 
 #include <Eigen/Dense>
 #include <ginac/ginac.h>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification_constraints.cpp
+/** @file check_constraints.cpp
  *  Numeric checks of the multipliers, constraint forces and reduced linearization. */
-#include "numeric/verification_constraints.h"
+#include "verify/check_constraints.h"
 
 #include "core/number_text.h"
 

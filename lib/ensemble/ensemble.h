@@ -6,7 +6,7 @@
  *  Lyapunov exponent). The equations are compiled once with the gridded parameters as inputs,
  *  and every point is computed independently by DOP853 (numeric/dop853.h), so a point's row
  *  does not depend on which thread or process computed it. Running it in parallel (threads,
- *  MPI) is in ensemble_run.h. */
+ *  MPI) is in run.h. */
 #pragma once
 
 #include "mechanics/equations_of_motion.h"

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file ensemble_mpi.cpp
+/** @file mpi.cpp
  *  Ensembles across processes with MPI (compiled only when CMake finds MPI). Rank 0 hands
  *  out chunks on request (dynamic load balancing), receives every chunk's rows and writes
- *  them in order through the same bounded reorder buffer as threads (ensemble_scheduler.h);
+ *  them in order through the same bounded reorder buffer as threads (scheduler.h);
  *  every rank computes with its own threads. Only the main thread of a process calls MPI
  *  (MPI_THREAD_FUNNELED), and it polls with short sleeps rather than blocking, since Open
  *  MPI's blocking calls spin and would take a core from the computing threads. */
-#include "numeric/ensemble_run.h"
+#include "ensemble/run.h"
 
-#include "numeric/ensemble_scheduler.h"
+#include "ensemble/scheduler.h"
 
 #include <mpi.h>
 

@@ -1,10 +1,26 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification.h
+/** @file verify.h
  *  Self-verification: every symbolic result is checked numerically, by a route that
  *  does not share the symbolic derivation, before it is printed. The reference is the
  *  Lagrangian as built (before simplification), compiled once and evaluated in
  *  double-double; derivatives of it are taken by finite differences. The points are
- *  seeded, so the checks (and their messages) are the same on every run. */
+ *  seeded, so the checks (and their messages) are the same on every run.
+ *
+ *  What is checked, one file per family (verify_results dispatches to them):
+ *  - verify.cpp: the equations of motion, equilibria and linearization (T, V) against the
+ *    Lagrangian as built, by finite differences in double-double;
+ *  - check_modes.cpp: the characteristic polynomial, ω², modes and normal coordinates
+ *    against the pencil (V, T) at parameter points (LU and Eigen's generalized solver);
+ *  - check_asymptotic.cpp: the limits against the exact frequencies near the limit;
+ *  - check_damping.cpp: C, the damped eigenvalues and the transfer function, against the
+ *    Rayleigh function and the forces as the scene gave them;
+ *  - check_constraints.cpp: the multipliers, constraint forces and reduced linearization;
+ *  - check_symmetries.cpp: conserved quantities, the Hamiltonian, the effective potential
+ *    and steady motions;
+ *  - check_bodies.cpp: inertia tensors by cubature, Euler's equations and the free body's
+ *    solutions;
+ *  - check_floquet.cpp: the multipliers against the flow of the full equations.
+ *  points.h holds what they share: the seeded points, the tolerance and the messages. */
 #pragma once
 
 #include "bodies/euler.h"
@@ -61,7 +77,7 @@ struct verification_input {
     const constrained_linearization* constrained = nullptr; ///< then `linearization` is the reduced one
     const asymptotic_result* asymptotic = nullptr;
     const std::vector<floquet_point>* floquet = nullptr;
-    const std::vector<inertia_result>* inertia = nullptr; ///< with `euler`: verification_bodies.h
+    const std::vector<inertia_result>* inertia = nullptr; ///< with `euler`: check_bodies.h
     const std::vector<euler_result>* euler = nullptr;
 };
 
@@ -75,7 +91,7 @@ verification_result verify_results(const model& scene, const verification_input&
 /// The damping matrix C against the Rayleigh function and the forces as the scene wrote
 /// them (beside the equilibrium, at up to two parameter points), and det(K + sC + s²M)
 /// against the printed polynomial at complex s: the entries `damping` and
-/// `damped_characteristic` (verification_damping.cpp). Throws computation_error
+/// `damped_characteristic` (check_damping.cpp). Throws computation_error
 /// "verification failed: …" on a disagreement.
 std::vector<verification_entry> verify_damping(const model& scene, const linearization_result& linear,
                                                const damping_result& damping);
@@ -91,14 +107,14 @@ std::vector<verification_entry> verify_linear_system(const model& scene, const l
 /// The asymptotic ω² against the eigenvalues of (V, T) with the limit's variable (a
 /// parameter, or a ratio of two) at 10⁻⁴ and 10⁻⁸ (10⁴ and 10⁸ for a limit at ∞), the other
 /// parameters at the first `values` line: the entry `asymptotic`
-/// (verification_asymptotic.cpp). Throws computation_error "verification failed: …" when
+/// (check_asymptotic.cpp). Throws computation_error "verification failed: …" when
 /// the leading terms do not approach the eigenvalues.
 verification_entry verify_asymptotic(const model& scene, const linearization_result& linear,
                                      const asymptotic_result& limit);
 
 /// The Floquet multipliers of each point and `values` line against the monodromy of the
 /// nonlinear equations' own flow, by central differences of solutions started beside the
-/// point (verification_floquet.cpp): the entry `floquet`. Throws computation_error
+/// point (check_floquet.cpp): the entry `floquet`. Throws computation_error
 /// "verification failed: …" on a disagreement.
 verification_entry verify_floquet(const model& scene, const equations_of_motion& equations,
                                   const std::vector<floquet_point>& points);

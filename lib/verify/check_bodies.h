@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification_bodies.h
+/** @file check_bodies.h
  *  Self-verification of the rigid bodies' results by routes that share nothing with
  *  their symbolic derivation: each body's mass, centre of mass and inertia tensor by
  *  tensor-product Gauss–Legendre cubature over the region as described here (its own
@@ -12,7 +12,7 @@
 #include "bodies/euler.h"
 #include "bodies/inertia.h"
 #include "core/model.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 
 #include <Eigen/Core>
 

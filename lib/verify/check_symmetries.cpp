@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file symmetry_checks.cpp
+/** @file check_symmetries.cpp
  *  Numeric checks of the symmetries against the Lagrangian as built. */
-#include "numeric/symmetry_checks.h"
+#include "verify/check_symmetries.h"
 
 #include "numeric/double_double.h"
 #include "numeric/expression_program.h"

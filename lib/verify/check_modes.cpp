@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification_modes.cpp
+/** @file check_modes.cpp
  *  The small-oscillation results against the pencil (V, T) evaluated at parameter
  *  points: the characteristic polynomial against det(V − ω²T) (LU), the frequencies
  *  against the eigenvalues (Eigen's generalized self-adjoint solver, or the quadratic
  *  eigenproblem with G), the modes by their residual, the normal coordinates by
  *  C T⁻¹ Cᵀ = I and Aᵀ V A = diag(ω²). */
-#include "numeric/verification_points.h"
+#include "verify/points.h"
 
 #include "core/errors.h"
 #include "numeric/quadratic_modes.h"

@@ -6,7 +6,7 @@
  *  the torque-free solutions made wrong on purpose and caught. The "caught" tests call
  *  verify_results directly, so they fail if the checks check nothing. */
 #include "engine/analysis.h"
-#include "numeric/verification_bodies.h"
+#include "verify/check_bodies.h"
 #include "helpers/scene_helpers.h"
 
 #include <catch2/catch.hpp>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification_asymptotic.cpp
+/** @file check_asymptotic.cpp
  *  The asymptotic frequencies against the exact ones near the limit: the eigenvalues of
  *  the pencil (V, T) at the parameter values (Eigen's generalized self-adjoint solver),
  *  with the limit's variable at two values ever closer to 0 (or ∞). The leading terms
  *  must approach them: relative differences small at the closer value and not larger
  *  than at the farther one. */
-#include "numeric/verification.h"
+#include "verify/verify.h"
 
 #include "core/errors.h"
 #include "numeric/values.h"

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification.cpp
+/** @file verify.cpp
  *  Numeric checks of the symbolic results against the Lagrangian as built. */
-#include "numeric/verification.h"
-#include "numeric/verification_bodies.h"
-#include "numeric/verification_constraints.h"
-#include "numeric/verification_points.h"
+#include "verify/verify.h"
+#include "verify/check_bodies.h"
+#include "verify/check_constraints.h"
+#include "verify/points.h"
 
 #include "numeric/double_double.h"
 #include "numeric/expression_program.h"
-#include "numeric/symmetry_checks.h"
+#include "verify/check_symmetries.h"
 #include "numeric/values.h"
 
 #include <Eigen/Dense>

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification_damping.cpp
+/** @file check_damping.cpp
  *  Numeric checks of the damped small oscillations by a route that shares nothing with
  *  the symbolic derivation: C against the Rayleigh function and the forces as the scene
  *  wrote them (polarization of the quadratic F in the velocities, damper rates from
  *  central differences of the end positions, velocity derivatives of the applied forces
  *  by central differences), and det(K + sC + s²M) against the printed polynomial at
  *  complex s (LU). */
-#include "numeric/verification.h"
+#include "verify/verify.h"
 
 #include "core/errors.h"
 #include "numeric/values.h"
-#include "numeric/verification_points.h"
+#include "verify/points.h"
 
 #include <Eigen/Dense>
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file ensemble_scheduler.h
- *  Internal to the ensemble runners (ensemble_run.cpp, ensemble_mpi.cpp): chunks handed out
+/** @file scheduler.h
+ *  Internal to the ensemble runners (run.cpp, mpi.cpp): chunks handed out
  *  on demand, and their results written in index order from a bounded reorder buffer. */
 #pragma once
 
-#include "numeric/ensemble_run.h"
+#include "ensemble/run.h"
 
 #include <condition_variable>
 #include <exception>

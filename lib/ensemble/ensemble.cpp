@@ -2,7 +2,7 @@
 /** @file ensemble.cpp
  *  One ensemble point: the compiled equations integrated by DOP853 and reduced to its
  *  measure (see ensemble.h). */
-#include "numeric/ensemble.h"
+#include "ensemble/ensemble.h"
 
 #include "numeric/compiled_motion.h"
 #include "numeric/dop853.h"

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file ensemble_run.h
+/** @file run.h
  *  An ensemble run in parallel: threads on this machine (std::thread, one workspace each,
  *  the compiled problem shared read-only), and under `mpirun` processes on several machines
- *  (ensemble_mpi.cpp, built when CMake finds MPI). The points are handed out in chunks of
+ *  (mpi.cpp, built when CMake finds MPI). The points are handed out in chunks of
  *  consecutive indices on demand (dynamic load balancing: points near a separatrix cost far
  *  more than others), and the rows are given back in index order, from a reorder buffer of a
  *  bounded number of chunks, so that memory stays constant in the number of points and the
  *  output is the same for any number of threads and processes. */
 #pragma once
 
-#include "numeric/ensemble.h"
+#include "ensemble/ensemble.h"
 
 #include <cstddef>
 #include <functional>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification_constraints.h
+/** @file check_constraints.h
  *  Self-verification of the results with constraints, by routes that do not share their
  *  derivation: the multipliers against the index-1 system solved numerically with the
  *  constraint rows and their derivative taken by finite differences of the constraints as
@@ -13,7 +13,7 @@
 #include "mechanics/constraints.h"
 #include "mechanics/equations_of_motion.h"
 #include "mechanics/lagrangian.h"
-#include "numeric/verification.h"
+#include "verify/verify.h"
 
 #include <vector>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file verification_floquet.cpp
+/** @file check_floquet.cpp
  *  The Floquet multipliers against the flow of the full (nonlinear) equations: the
  *  monodromy matrix by central differences of solutions that start beside the point,
  *  integrated over one period with the compiled M q̈ = f (checked against L by the
@@ -7,7 +7,7 @@
  *  that the multipliers come from. Compared through the characteristic polynomial of
  *  the monodromy, whose coefficients depend smoothly on its entries where the
  *  multipliers themselves may not (a double multiplier at ±1). */
-#include "numeric/verification.h"
+#include "verify/verify.h"
 
 #include "core/errors.h"
 #include "numeric/compiled_motion.h"

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file ensemble_run.cpp
- *  Ensembles on threads, and the scheduler that the MPI runner shares (see ensemble_run.h). */
-#include "numeric/ensemble_run.h"
+/** @file run.cpp
+ *  Ensembles on threads, and the scheduler that the MPI runner shares (see run.h). */
+#include "ensemble/run.h"
 
-#include "numeric/ensemble_scheduler.h"
+#include "ensemble/scheduler.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,7 +13,7 @@
 
 namespace lagrange {
 
-// Provided by ensemble_mpi.cpp, or by ensemble_no_mpi.cpp in a build without MPI.
+// Provided by mpi.cpp, or by no_mpi.cpp in a build without MPI.
 ensemble_summary run_ensemble_distributed(const ensemble_problem& problem, const ensemble_run_options& options,
                                           const ensemble_sink& sink);
 
