@@ -9,30 +9,27 @@ namespace lagrange {
 const std::vector<std::pair<product, std::string>>& product_names()
 {
     static const std::vector<std::pair<product, std::string>> names = {
-        {product::equations, "equations"},
-        {product::equilibrium, "equilibrium"},
-        {product::linearization, "linearization"},
-        {product::characteristic, "characteristic"},
-        {product::frequencies, "frequencies"},
-        {product::modes, "modes"},
-        {product::normal_coordinates, "normal_coordinates"},
-        {product::asymptotic, "asymptotic"},
-        {product::numeric, "numeric"},
-        {product::inertia, "inertia"},
-        {product::euler, "euler"},
-        {product::simulation, "simulation"},
-        {product::workprecision, "workprecision"},
-        {product::floquet, "floquet"},
-        {product::damping, "damping"},
-        {product::state_space, "state_space"},
-        {product::transfer, "transfer"},
-        {product::conserved, "conserved"},
-        {product::hamiltonian, "hamiltonian"},
-        {product::reduced, "reduced"},
-        {product::multipliers, "multipliers"},
-        {product::eliminated, "eliminated"},
+#define LAGRANGE_PRODUCT(id, name, scope, by_default) {product::id, name},
+#include "core/products.inc"
+#undef LAGRANGE_PRODUCT
     };
     return names;
+}
+
+const std::string& name_of(product p)
+{
+    return product_names().at(static_cast<std::size_t>(p)).second;
+}
+
+bool needs_coordinates(product p)
+{
+    constexpr bool coordinates = true, any = false;
+    static const std::vector<bool> needs = {
+#define LAGRANGE_PRODUCT(id, name, scope, by_default) scope,
+#include "core/products.inc"
+#undef LAGRANGE_PRODUCT
+    };
+    return needs.at(static_cast<std::size_t>(p));
 }
 
 std::optional<product> product_from_name(const std::string& name)

@@ -179,33 +179,19 @@ struct simulation_request {
 
 /// The products a scene can ask for (§4 of the spec), in the spec's order.
 enum class product {
-    equations,
-    equilibrium,
-    linearization,
-    characteristic,
-    frequencies,
-    modes,
-    normal_coordinates,
-    asymptotic,
-    numeric,
-    inertia,
-    euler,
-    simulation,
-    workprecision,
-    floquet,
-    damping,
-    state_space,
-    transfer,
-    conserved,
-    hamiltonian,
-    reduced,
-    multipliers,
-    eliminated,
+#define LAGRANGE_PRODUCT(id, name, scope, by_default) id,
+#include "core/products.inc"
+#undef LAGRANGE_PRODUCT
 };
 
 /// Spec names of the products, in order.
 const std::vector<std::pair<product, std::string>>& product_names();
 std::optional<product> product_from_name(const std::string& name);
+/// The name of `p` in the language.
+const std::string& name_of(product p);
+/// Whether `p` needs a scene with coordinates (all but inertia, euler, simulation and
+/// workprecision, which a free body's scene also has).
+bool needs_coordinates(product p);
 
 /// Everything a scene said.
 struct model {

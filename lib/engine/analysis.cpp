@@ -3,6 +3,7 @@
  *  The stage planner. */
 #include "engine/analysis.h"
 
+#include "engine/products.h"
 #include "scene/lower.h"
 
 #include "numeric/damped_modes.h"
@@ -10,8 +11,10 @@
 #include "numeric/free_body_motion.h"
 #include "numeric/gyroscopic_modes.h"
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
+#include <stdexcept>
 #include <optional>
 #include <set>
 #include <string>
@@ -38,15 +41,32 @@ struct stage_context {
     bool wants(product p) const { return result.wanted.count(p) > 0; }
 };
 
-/// One stage: its name (in `stages` and --timings), the products it computes, the
+/// The stages, in the order they run (the rows of stage_table(), in the same order).
+enum class stage_id {
+    inertia, euler, lagrangian, equations, multipliers, elimination, top, time, equilibrium, linearization,
+    characteristic, modes, asymptotic, damping, numeric, state_space, transfer, floquet, conserved,
+    hamiltonian, reduced, steady, simulation, workprecision, verification
+};
+
+/// What a stage does with a scene's constraints: handles them, or refuses them with
+/// "WHAT with constraints (`constraint`) is not computed by this version" before it runs.
+struct constraints_policy {
+    bool handled = true;
+    const char* what = "";
+};
+constexpr constraints_policy handles_constraints{};
+constexpr constraints_policy refuses_constraints(const char* what) { return {false, what}; }
+
+/// One stage: its id and name (in `stages` and --timings), the products it computes, the
 /// products it is shown with, the stages whose results it reads, whether it applies to
 /// a scene, and how a failure is reported. A stage runs when a product it computes or
 /// is shown with is wanted, or when a stage that runs needs it.
 struct stage_definition {
+    stage_id id;
     std::string name;
     std::vector<product> produces;
     std::vector<product> shown_with;
-    std::vector<std::string> needs;
+    std::vector<stage_id> needs;
     bool (*applies)(const model&);
     std::function<void(stage_context&)> run;
     /// A stage of a group ("small oscillations", "simulation") that fails in a default
@@ -56,6 +76,13 @@ struct stage_definition {
     /// A budget overrun leaves out this stage and those that need it, with the note
     /// "BUDGET_NOTE not computed: why"; empty: as any other failure.
     std::string budget_note;
+    constraints_policy constraints = handles_constraints;
+    /// Symbolic: the watchdog ends it at the time budget. Numeric stages take the time
+    /// their settings ask for.
+    bool watched = true;
+    /// A budget overrun here leaves the wanted frequencies to the numeric modes, at the
+    /// `values` points (the symbolic modes' stages).
+    bool numeric_fallback = false;
 };
 
 /// The equilibrium a simulation linearizes about to choose its method: the one found,
@@ -97,6 +124,18 @@ void refuse_constraints(const model& scene, const std::string& what)
         throw computation_error(what + " with constraints (`constraint`) is not computed by this version");
 }
 
+/// Whether the wanted frequencies, not found in closed form, can be given numerically
+/// instead: the numeric modes were not asked for, and the scene has `values` points.
+bool numeric_frequencies_possible(const model& scene, const analysis& result)
+{
+    return result.wanted.count(product::frequencies) && !result.wanted.count(product::numeric) &&
+           !scene.values.empty() && result.linearization;
+}
+
+/// The numeric modes, where a symbolic product falls short: wanted from now on (the
+/// planner plans them).
+void want_numeric(stage_context& c) { c.result.wanted.insert(product::numeric); }
+
 bool has_top(const model& scene)
 {
     if (scene.coordinates.empty())
@@ -107,25 +146,24 @@ bool has_top(const model& scene)
     return false;
 }
 
-const std::vector<product> coordinate_products = {
-    product::equations, product::equilibrium, product::linearization, product::characteristic,
-    product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
-    product::floquet, product::damping, product::state_space, product::transfer, product::conserved,
-    product::hamiltonian, product::reduced, product::multipliers, product::eliminated};
-
-const std::vector<product> every_product = {
-    product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
-    product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
-    product::euler,      product::simulation, product::workprecision, product::floquet, product::damping,
-    product::state_space, product::transfer, product::conserved, product::hamiltonian, product::reduced,
-    product::multipliers, product::eliminated};
+/// Every product (core/products.inc).
+const std::vector<product>& every_product()
+{
+    static const std::vector<product> all = [] {
+        std::vector<product> products;
+        for (const auto& [p, name] : product_names())
+            products.push_back(p);
+        return products;
+    }();
+    return all;
+}
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
 const std::vector<stage_definition>& stage_table()
 {
     static const std::vector<stage_definition> table = {
-        {"inertia", {product::inertia}, {}, {}, any_scene,
+        {stage_id::inertia, "inertia", {product::inertia}, {}, {}, any_scene,
          [](stage_context& c) {
              if (c.scene.bodies.empty())
                  throw computation_error("`inertia` and `euler` need a rigid body (`body B disk(R) mass M`)");
@@ -133,7 +171,7 @@ const std::vector<stage_definition>& stage_table()
              for (const rigid_body& b : c.scene.bodies)
                  c.result.inertia->push_back(derive_inertia(b));
          }, "", ""},
-        {"euler", {product::euler}, {}, {"inertia"}, any_scene,
+        {stage_id::euler, "euler", {product::euler}, {}, {stage_id::inertia}, any_scene,
          [](stage_context& c) {
              if (!has_free_body(c.scene))
                  throw computation_error("`euler` needs a free body: name its angular velocity with "
@@ -147,16 +185,16 @@ const std::vector<stage_definition>& stage_table()
                          derive_euler(c.scene.bodies[i], c.result.inertia->at(i), c.scene.initial, values));
          }, "", ""},
         // Every product of a scene with coordinates shows its Lagrangian.
-        {"lagrangian", {}, every_product, {}, has_coordinates,
+        {stage_id::lagrangian, "lagrangian", {}, every_product(), {}, has_coordinates,
          [](stage_context& c) { c.result.lagrangian = derive_lagrangian(c.scene, c.simplifier_for_scene()); },
          "", ""},
-        {"equations", {product::equations}, {}, {"lagrangian"},
+        {stage_id::equations, "equations", {product::equations}, {}, {stage_id::lagrangian},
          has_coordinates,
          [](stage_context& c) {
              c.result.equations = derive_equations_of_motion(c.scene, *c.result.lagrangian, c.simplifier_for_scene(),
                                                              c.wants(product::equations));
          }, "", "equations"},
-        {"multipliers", {product::multipliers}, {}, {"equations"}, has_coordinates,
+        {stage_id::multipliers, "multipliers", {product::multipliers}, {}, {stage_id::equations}, has_coordinates,
          [](stage_context& c) {
              if (c.scene.constraints.empty())
                  throw computation_error("`multipliers` needs a constraint (`constraint NAME: lhs = rhs`)");
@@ -165,7 +203,7 @@ const std::vector<stage_definition>& stage_table()
          }, "", "multipliers"},
         // Which constraints can be solved for a coordinate (shown with the constraints), and
         // the equations of the coordinates kept when `eliminated` is asked for.
-        {"elimination", {product::eliminated}, {product::equations, product::multipliers}, {"equations"},
+        {stage_id::elimination, "elimination", {product::eliminated}, {product::equations, product::multipliers}, {stage_id::equations},
          has_constraints,
          [](stage_context& c) {
              c.result.elimination = find_eliminations(c.scene, c.simplifier_for_scene());
@@ -174,17 +212,17 @@ const std::vector<stage_definition>& stage_table()
              c.result.elimination->equations =
                  reduced_equations(c.scene, *c.result.equations, *c.result.elimination, c.simplifier_for_scene());
          }, "", "eliminated"},
-        {"top", {}, {product::equations, product::inertia}, {"lagrangian"}, has_top,
+        {stage_id::top, "top", {}, {product::equations, product::inertia}, {stage_id::lagrangian}, has_top,
          [](stage_context& c) { c.result.tops = analyze_tops(c.scene, *c.result.lagrangian, c.simplifier_for_scene()); },
          "", ""},
         // Before anything else in the oscillation path: does L depend on t, and if so,
         // which points solve the equations at every t (else: no equilibrium, exit 1).
-        {"time", {}, {}, {"equations"}, has_time,
+        {stage_id::time, "time", {}, {}, {stage_id::equations}, has_time,
          [](stage_context& c) {
              c.result.time = analyze_time_dependence(c.scene, *c.result.lagrangian, *c.result.equations,
                                                      c.simplifier_for_scene());
          }, "", ""},
-        {"equilibrium", {product::equilibrium}, {}, {"lagrangian", "time"}, has_static_point,
+        {stage_id::equilibrium, "equilibrium", {product::equilibrium}, {}, {stage_id::lagrangian, stage_id::time}, has_static_point,
          [](stage_context& c) {
              if (c.result.time && c.result.time->depends_on_time)
                  throw computation_error("L depends on t, so there is no static equilibrium to linearize about; "
@@ -205,7 +243,7 @@ const std::vector<stage_definition>& stage_table()
              }
              c.result.equilibria = find_equilibria(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
-        {"linearization", {product::linearization}, {}, {"equilibrium"}, has_static_point,
+        {stage_id::linearization, "linearization", {product::linearization}, {}, {stage_id::equilibrium}, has_static_point,
          [](stage_context& c) {
              if (c.result.constrained) {
                  c.result.linearization = c.result.constrained->linear;
@@ -215,15 +253,15 @@ const std::vector<stage_definition>& stage_table()
              c.result.linearization =
                  linearize(c.scene, *c.result.lagrangian, point.position, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
-        {"characteristic", {product::characteristic}, {}, {"linearization"}, has_static_point,
+        {stage_id::characteristic, "characteristic", {product::characteristic}, {}, {stage_id::linearization}, has_static_point,
          [](stage_context& c) {
              c.result.characteristic = characteristic_polynomial(c.scene, *c.result.linearization);
              if (!c.result.characteristic->factored)
                  c.result.notes.push_back("the characteristic polynomial's coefficients are not factored: factoring "
                                           "them exceeded half of the stage's time budget (--max-seconds)");
          },
-         "small oscillations", "symbolic modes"},
-        {"modes", {product::frequencies, product::modes, product::normal_coordinates}, {}, {"characteristic"},
+         "small oscillations", "symbolic modes", handles_constraints, true, true},
+        {stage_id::modes, "modes", {product::frequencies, product::modes, product::normal_coordinates}, {}, {stage_id::characteristic},
          has_static_point,
          [](stage_context& c) {
              if (c.result.linearization->has_gyroscopic() &&
@@ -243,8 +281,25 @@ const std::vector<stage_definition>& stage_table()
                                                    vectors);
              if (c.result.constrained)
                  name_independent_coordinates(c.scene, c.result.constrained->independent, *c.result.modes);
-         }, "small oscillations", "symbolic modes"},
-        {"asymptotic", {product::asymptotic}, {}, {"modes"}, has_static_point,
+             if (!c.result.modes->closed_form && numeric_frequencies_possible(c.scene, c.result)) {
+                 want_numeric(c);
+                 c.result.notes.push_back("the frequencies have no closed form; they are given numerically at the "
+                                          "`values` points");
+             }
+             if (c.result.modes->vectors_left_out) {
+                 std::string note = "modes and normal coordinates not computed in closed form: an ω² is a root of "
+                                    "an irreducible cubic in the parameters, and each entry would be pages long";
+                 if (c.wants(product::numeric))
+                     note += "; the numeric modes give them";
+                 else if (!c.scene.values.empty() && c.result.linearization) {
+                     want_numeric(c);
+                     note += "; they are given numerically at the `values` points";
+                 } else
+                     note += "; give `values` to have them numerically";
+                 c.result.notes.push_back(note);
+             }
+         }, "small oscillations", "symbolic modes", handles_constraints, true, true},
+        {stage_id::asymptotic, "asymptotic", {product::asymptotic}, {}, {stage_id::modes}, has_static_point,
          [](stage_context& c) {
              if (c.result.modes->gyroscopic)
                  throw computation_error("`asymptotic` is not computed for a Lagrangian with a part linear in the "
@@ -252,20 +307,18 @@ const std::vector<stage_definition>& stage_table()
              if (c.result.modes->vectors_left_out)
                  throw computation_error("`asymptotic` needs the mode vectors, which are not computed in closed "
                                          "form for the roots of an irreducible cubic in the parameters");
-             refuse_constraints(c.scene, "`asymptotic`");
              c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes);
          },
-         "small oscillations", "symbolic modes"},
-        {"damping", {product::damping}, {}, {"linearization"}, has_static_point,
+         "small oscillations", "symbolic modes", refuses_constraints("`asymptotic`"), true, true},
+        {stage_id::damping, "damping", {product::damping}, {}, {stage_id::linearization}, has_static_point,
          [](stage_context& c) {
              if (c.result.linearization->has_gyroscopic())
                  throw computation_error("damped small oscillations with gyroscopic terms (G ≠ 0) are not "
                                          "computed");
-             refuse_constraints(c.scene, "`damping`");
              c.result.damping = damped_oscillations(c.scene, *c.result.linearization, c.simplifier_for_scene(),
                                                     c.result.modes ? &*c.result.modes : nullptr);
-         }, "small oscillations", "small oscillations"},
-        {"numeric", {product::numeric}, {}, {"linearization"}, has_static_point,
+         }, "small oscillations", "small oscillations", refuses_constraints("`damping`")},
+        {stage_id::numeric, "numeric", {product::numeric}, {}, {stage_id::linearization}, has_static_point,
          [](stage_context& c) {
              c.result.numeric = c.result.linearization->has_gyroscopic()
                                     ? numeric_gyroscopic_modes(c.scene, *c.result.linearization)
@@ -278,57 +331,54 @@ const std::vector<stage_definition>& stage_table()
              if (!is_zero_matrix(damping))
                  add_damped_eigenvalues(c.scene, *c.result.linearization, damping, *c.result.numeric);
          },
-         "small oscillations", "small oscillations"},
+         "small oscillations", "small oscillations", handles_constraints, false},
         // The linearized input–output system: A, B (and at the `values` points), then H(s).
-        {"state_space", {product::state_space}, {}, {"linearization"}, has_coordinates,
+        {stage_id::state_space, "state_space", {product::state_space}, {}, {stage_id::linearization}, has_coordinates,
          [](stage_context& c) {
-             refuse_constraints(c.scene, "`state_space`");
              const GiNaC::matrix damping =
                  c.result.damping ? c.result.damping->damping
                                   : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
              c.result.state_space =
                  derive_state_space(c.scene, *c.result.linearization, damping, c.simplifier_for_scene());
              c.result.state_space_values = state_space_at_values(c.scene, *c.result.state_space);
-         }, "linear system", "linear system"},
-        {"transfer", {product::transfer}, {}, {"state_space"}, has_coordinates,
+         }, "linear system", "linear system", refuses_constraints("`state_space`")},
+        {stage_id::transfer, "transfer", {product::transfer}, {}, {stage_id::state_space}, has_coordinates,
          [](stage_context& c) {
              c.result.transfer = transfer_functions(c.scene, *c.result.linearization, *c.result.state_space);
          }, "linear system", "linear system"},
-        {"floquet", {product::floquet}, {}, {"time"}, has_coordinates,
+        {stage_id::floquet, "floquet", {product::floquet}, {}, {stage_id::time}, has_coordinates,
          [](stage_context& c) {
              if (!c.result.time || !c.result.time->depends_on_time) {
                  if (c.by_default)
                      return;
                  throw computation_error("`floquet` needs an L that depends on t, and this L does not");
              }
+             // Refused here, not by the column: a default run of a scene whose L does not
+             // depend on t leaves floquet out above, constraints or not.
              refuse_constraints(c.scene, "`floquet`");
              c.result.floquet = floquet_multipliers(c.scene, *c.result.equations, *c.result.time);
          }, "", ""},
-        {"conserved", {product::conserved}, {}, {"equations"}, has_coordinates,
+        {stage_id::conserved, "conserved", {product::conserved}, {}, {stage_id::equations}, has_coordinates,
          [](stage_context& c) {
-             refuse_constraints(c.scene, "`conserved`");
              c.result.conserved = conserved_quantities(c.scene, *c.result.lagrangian, *c.result.equations,
                                                        c.simplifier_for_scene());
-         }, "symmetries", "symmetries"},
-        {"hamiltonian", {product::hamiltonian}, {}, {"equations"}, has_coordinates,
+         }, "symmetries", "symmetries", refuses_constraints("`conserved`")},
+        {stage_id::hamiltonian, "hamiltonian", {product::hamiltonian}, {}, {stage_id::equations}, has_coordinates,
          [](stage_context& c) {
-             refuse_constraints(c.scene, "`hamiltonian`");
              c.result.hamiltonian = derive_hamiltonian(c.scene, *c.result.lagrangian, *c.result.equations,
                                                        c.simplifier_for_scene());
-         }, "", "hamiltonian"},
-        {"reduced", {product::reduced}, {}, {"lagrangian"}, has_coordinates,
+         }, "", "hamiltonian", refuses_constraints("`hamiltonian`")},
+        {stage_id::reduced, "reduced", {product::reduced}, {}, {stage_id::lagrangian}, has_coordinates,
          [](stage_context& c) {
-             refuse_constraints(c.scene, "`reduced`");
              c.result.reduced = reduce_cyclic(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
-         }, "symmetries", "symmetries"},
+         }, "symmetries", "symmetries", refuses_constraints("`reduced`")},
         // An `equilibrium` line that names a steady rate: the motion on the reduced system.
-        {"steady", {}, {product::equilibrium, product::linearization, product::characteristic, product::frequencies,
-                        product::reduced}, {"reduced"}, has_steady,
+        {stage_id::steady, "steady", {}, {product::equilibrium, product::linearization, product::characteristic, product::frequencies,
+                        product::reduced}, {stage_id::reduced}, has_steady,
          [](stage_context& c) {
-             refuse_constraints(c.scene, "a steady motion");
              c.result.steady = steady_motion(c.scene, *c.result.lagrangian, *c.result.reduced, c.simplifier_for_scene());
-         }, "", ""},
-        {"simulation", {product::simulation}, {}, {"equations"}, any_scene,
+         }, "", "", refuses_constraints("a steady motion")},
+        {stage_id::simulation, "simulation", {product::simulation}, {}, {stage_id::equations}, any_scene,
          [](stage_context& c) {
              if (!c.result.lagrangian) {
                  if (!has_free_body(c.scene))
@@ -339,21 +389,20 @@ const std::vector<stage_definition>& stage_table()
                      ? simulate_constrained(c.scene, *c.result.equations, c.simulation)
                      : simulate(c.scene, *c.result.equations, equilibrium_of(c), c.simulation);
              }
-         }, "simulation", ""},
-        {"workprecision", {product::workprecision}, {}, {"equations"}, any_scene,
+         }, "simulation", "", handles_constraints, false},
+        {stage_id::workprecision, "workprecision", {product::workprecision}, {}, {stage_id::equations}, any_scene,
          [](stage_context& c) {
              if (!c.result.lagrangian) {
                  if (!has_free_body(c.scene))
                      throw computation_error("the scene has no coordinates to simulate");
                  c.result.workprecision = free_body_work_precision(c.scene, c.simulation);
              } else {
-                 refuse_constraints(c.scene, "`workprecision`");
                  c.result.workprecision =
                      scene_work_precision(c.scene, *c.result.equations, equilibrium_of(c), c.simulation);
              }
-         }, "simulation", ""},
+         }, "simulation", "", refuses_constraints("`workprecision`"), false},
         // Last: checks numerically whatever symbolic results the stages above computed.
-        {"verification", {}, every_product, {},
+        {stage_id::verification, "verification", {}, every_product(), {},
          [](const model& scene) { return !scene.coordinates.empty() || !scene.bodies.empty(); },
          [](stage_context& c) {
              c.result.verification = verify_results(c.scene, verification_input_of(c.result), c.result.wanted);
@@ -402,48 +451,6 @@ const std::set<product>& available_products()
 
 namespace {
 
-std::string name_of(product p)
-{
-    for (const auto& [q, name] : product_names())
-        if (q == p)
-            return name;
-    return "?";
-}
-
-/// The products a scene supports when it has no `want` line.
-std::set<product> default_products(const model& scene)
-{
-    std::set<product> products;
-    if (!scene.coordinates.empty() && scene.steady)
-        products.insert({product::equations, product::conserved, product::reduced, product::equilibrium,
-                         product::linearization, product::characteristic, product::frequencies});
-    else if (!scene.coordinates.empty())
-        products.insert({product::equations, product::equilibrium, product::linearization, product::characteristic,
-                         product::frequencies, product::modes, product::normal_coordinates});
-    if (!scene.bodies.empty())
-        products.insert(product::inertia);
-    for (const rigid_body& b : scene.bodies)
-        if (b.omega)
-            products.insert(product::euler);
-    if (scene.coordinates.empty())
-        return products;
-    if (scene.limit)
-        products.insert(product::asymptotic);
-    if (!scene.values.empty())
-        products.insert(product::numeric);
-    if (!scene.values.empty() && mentions_time(scene))
-        products.insert(product::floquet);
-    if (scene.has_generalized_forces())
-        products.insert(product::damping);
-    if (!scene.inputs.empty())
-        products.insert({product::state_space, product::transfer});
-    if (!scene.constraints.empty())
-        products.insert({product::multipliers, product::eliminated});
-    if (scene.simulation)
-        products.insert(product::simulation);
-    return products;
-}
-
 bool wants_any(const std::set<product>& wanted, const std::vector<product>& products)
 {
     for (product p : products)
@@ -452,24 +459,24 @@ bool wants_any(const std::set<product>& wanted, const std::vector<product>& prod
     return false;
 }
 
-const stage_definition* find_stage(const std::string& name)
+const stage_definition& find_stage(stage_id id)
 {
-    for (const stage_definition& stage : stage_table())
-        if (stage.name == name)
-            return &stage;
-    return nullptr;
+    const stage_definition& stage = stage_table().at(static_cast<std::size_t>(id));
+    if (stage.id != id) // the rows are in the order of stage_id
+        throw std::logic_error("the stage table is out of the order of stage_id at `" + stage.name + "`");
+    return stage;
 }
 
 /// The stages to run for `wanted`: those that apply to the scene and compute or are shown
 /// with a wanted product, and, walking back, what they need.
-std::set<std::string> plan(const model& scene, const std::set<product>& wanted)
+std::set<stage_id> plan(const model& scene, const std::set<product>& wanted)
 {
-    std::set<std::string> chosen;
+    std::set<stage_id> chosen;
     std::function<void(const stage_definition&)> choose = [&](const stage_definition& stage) {
-        if (!stage.applies(scene) || !chosen.insert(stage.name).second)
+        if (!stage.applies(scene) || !chosen.insert(stage.id).second)
             return;
-        for (const std::string& need : stage.needs)
-            choose(*find_stage(need));
+        for (stage_id need : stage.needs)
+            choose(find_stage(need));
     };
     for (const stage_definition& stage : stage_table())
         if (wants_any(wanted, stage.produces) || wants_any(wanted, stage.shown_with))
@@ -484,10 +491,9 @@ void run_stage(stage_context& context, const stage_definition& stage, const budg
 {
     auto start = std::chrono::steady_clock::now();
     try {
-        // The numeric and simulation stages take the time their settings ask for; the
-        // watchdog only ends symbolic stages that overrun.
-        const bool symbolic = stage.group != "simulation" && stage.name != "numeric";
-        budget_scope budget(stage.name, limits, symbolic);
+        budget_scope budget(stage.name, limits, stage.watched);
+        if (!stage.constraints.handled)
+            refuse_constraints(context.scene, stage.constraints.what);
         stage.run(context);
     } catch (const computation_error&) {
         throw;
@@ -502,18 +508,10 @@ void run_stage(stage_context& context, const stage_definition& stage, const budg
     context.result.stages.push_back({stage.name, elapsed.count()});
 }
 
-/// Whether the wanted frequencies, not found in closed form, can be given numerically
-/// instead: the numeric modes were not asked for, and the scene has `values` points.
-bool numeric_frequencies_possible(const model& scene, const analysis& result)
-{
-    return result.wanted.count(product::frequencies) && !result.wanted.count(product::numeric) &&
-           !scene.values.empty() && result.linearization;
-}
-
 /// Whether a budget overrun in `stage` leaves the wanted frequencies to be given numerically.
 bool numeric_frequencies_instead(const model& scene, const analysis& result, const stage_definition& stage)
 {
-    return stage.budget_note == "symbolic modes" && !result.modes && numeric_frequencies_possible(scene, result);
+    return stage.numeric_fallback && !result.modes && numeric_frequencies_possible(scene, result);
 }
 
 /// Runs the planned stages in table order. A stage runs once all that it needs has
@@ -529,46 +527,29 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
     for (product p : result.wanted)
         if (!available_products().count(p))
             throw computation_error("`" + name_of(p) + "` is not computed by this version of lagrange yet");
-    if (scene.coordinates.empty() && wants_any(result.wanted, coordinate_products))
+    if (scene.coordinates.empty() && std::any_of(result.wanted.begin(), result.wanted.end(), needs_coordinates))
         throw computation_error("the scene has no coordinates, so it has no equations of motion "
                                 "(only `inertia` and `euler`)");
 
     stage_context context{scene, result, simulation, by_default, std::nullopt};
-    std::set<std::string> planned = plan(scene, result.wanted);
-    auto add_numeric = [&] { // the numeric modes, where a symbolic product falls short
-        result.wanted.insert(product::numeric);
-        planned.insert("numeric");
-    };
-    std::set<std::string> done, failed_groups;
+    std::set<stage_id> planned = plan(scene, result.wanted);
+    // A stage may want more (the numeric modes where the symbolic ones fall short): the
+    // stages after it are planned again.
+    auto replan = [&] { planned = plan(scene, result.wanted); };
+    std::set<stage_id> done;
+    std::set<std::string> failed_groups;
     for (const stage_definition& stage : stage_table()) {
-        if (!planned.count(stage.name) || failed_groups.count(stage.group))
+        if (!planned.count(stage.id) || failed_groups.count(stage.group))
             continue;
         bool ready = true;
-        for (const std::string& need : stage.needs)
-            ready = ready && (done.count(need) || !find_stage(need)->applies(scene));
+        for (stage_id need : stage.needs)
+            ready = ready && (done.count(need) || !find_stage(need).applies(scene));
         if (!ready)
             continue;
+        const std::set<product> wanted_before = result.wanted;
         try {
             run_stage(context, stage, limits);
-            done.insert(stage.name);
-            if (stage.name == "modes" && result.modes && !result.modes->closed_form &&
-                numeric_frequencies_possible(scene, result)) {
-                add_numeric();
-                result.notes.push_back("the frequencies have no closed form; they are given numerically at the "
-                                       "`values` points");
-            }
-            if (stage.name == "modes" && result.modes && result.modes->vectors_left_out) {
-                std::string note = "modes and normal coordinates not computed in closed form: an ω² is a root of "
-                                   "an irreducible cubic in the parameters, and each entry would be pages long";
-                if (result.wanted.count(product::numeric))
-                    note += "; the numeric modes give them";
-                else if (!scene.values.empty() && result.linearization) {
-                    add_numeric();
-                    note += "; they are given numerically at the `values` points";
-                } else
-                    note += "; give `values` to have them numerically";
-                result.notes.push_back(note);
-            }
+            done.insert(stage.id);
         } catch (const budget_exceeded& error) {
             if (stage.budget_note.empty()) {
                 if (stage.group.empty() || !by_default)
@@ -578,11 +559,11 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
                 continue;
             }
             std::string note = stage.budget_note + " not computed: " + error.what();
-            if (stage.budget_note == "symbolic modes" && result.wanted.count(product::numeric))
+            if (stage.numeric_fallback && result.wanted.count(product::numeric))
                 note += "; the numeric modes are still computed";
             else if (numeric_frequencies_instead(scene, result, stage)) {
                 // degrade: the frequencies at the `values` points instead of in closed form
-                add_numeric();
+                want_numeric(context);
                 note += "; the frequencies are given numerically at the `values` points instead";
             }
             result.notes.push_back(note);
@@ -593,6 +574,8 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
             result.notes.push_back(stage.group + " not computed: " + error.what());
             failed_groups.insert(stage.group);
         }
+        if (result.wanted != wanted_before)
+            replan();
     }
     return result;
 }
@@ -601,8 +584,8 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
 bool computed_any(const analysis& result)
 {
     for (const stage_time& ran : result.stages)
-        if (const stage_definition* stage = find_stage(ran.stage))
-            if (wants_any(result.wanted, stage->produces))
+        for (const stage_definition& stage : stage_table())
+            if (stage.name == ran.stage && wants_any(result.wanted, stage.produces))
                 return true;
     return false;
 }

@@ -35,6 +35,172 @@ std::string join_names(const std::vector<std::string>& names, syntax s, const ch
     return out;
 }
 
+/// The Lagrangian's family (every scene with coordinates shows T, V and L).
+void write_lagrangian_text(std::ostream& out, const analysis& result, const document_options&)
+{
+    if (!result.lagrangian)
+        return;
+    const model& scene = *result.scene;
+    const lagrangian_result& l = *result.lagrangian;
+    out << "\nLagrangian\n";
+    if (l.split) {
+        out << "  T = " << print(l.kinetic, syntax::text, velocity_order(scene)) << '\n';
+        if (!l.gyroscopic.is_zero())
+            out << "  L1 = " << print(l.gyroscopic, syntax::text, velocity_order(scene)) << '\n';
+        out << "  V = " << print(l.potential, syntax::text) << '\n';
+    }
+    out << "  L = " << print(l.lagrangian, syntax::text, velocity_order(scene)) << '\n';
+}
+
+void write_lagrangian_latex(std::ostream& out, const analysis& result, const document_options&)
+{
+    if (!result.lagrangian)
+        return;
+    const model& scene = *result.scene;
+    const lagrangian_result& l = *result.lagrangian;
+    out << "\\subsection*{Lagrangian}\n";
+    std::vector<latex_row> rows;
+    if (l.split) {
+        rows.push_back({"T", print_terms(l.kinetic, syntax::latex, velocity_order(scene))});
+        if (!l.gyroscopic.is_zero())
+            rows.push_back({"L_1", print_terms(l.gyroscopic, syntax::latex, velocity_order(scene))});
+        rows.push_back({"V", print_terms(l.potential, syntax::latex)});
+    }
+    rows.push_back({"L", print_terms(l.lagrangian, syntax::latex, velocity_order(scene))});
+    out << latex_equations(rows);
+}
+
+void write_lagrangian_json(nlohmann::ordered_json& doc, const analysis& result, const document_options&)
+{
+    if (!result.lagrangian)
+        return;
+    const model& scene = *result.scene;
+    const lagrangian_result& l = *result.lagrangian;
+    doc["lagrangian"] = print(l.lagrangian, syntax::plain, velocity_order(scene));
+    if (l.split) {
+        doc["kinetic_energy"] = print(l.kinetic, syntax::plain, velocity_order(scene));
+        doc["potential_energy"] = print(l.potential, syntax::plain);
+    }
+}
+
+/// The equations of motion, as printed residuals (`= 0`).
+void write_equations_text(std::ostream& out, const analysis& result, const document_options&)
+{
+    if (!result.equations || !result.equations->residuals)
+        return;
+    const model& scene = *result.scene;
+    out << "\nEquations of motion\n";
+    for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
+        out << "  " << print_name(scene.coordinates[i].name, syntax::text) << ":  "
+            << print((*result.equations->residuals)[i], syntax::text, equation_order(scene)) << " = 0\n";
+}
+
+void write_equations_latex(std::ostream& out, const analysis& result, const document_options&)
+{
+    if (!result.equations || !result.equations->residuals)
+        return;
+    const model& scene = *result.scene;
+    out << "\\subsection*{Equations of motion}\n";
+    std::vector<latex_row> rows;
+    for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
+        rows.push_back({"", print_terms((*result.equations->residuals)[i], syntax::latex, equation_order(scene)), " = 0"});
+    out << latex_equations(rows);
+}
+
+void write_equations_json(nlohmann::ordered_json& doc, const analysis& result, const document_options&)
+{
+    if (!result.equations || !result.equations->residuals)
+        return;
+    doc["equations"] = nlohmann::json::array();
+    for (const GiNaC::ex& e : *result.equations->residuals)
+        doc["equations"].push_back(print(e, syntax::plain, equation_order(*result.scene)));
+}
+
+/// How each result was checked (JSON only: text and LaTeX do not print it).
+void write_verification_json(nlohmann::ordered_json& doc, const analysis& result, const document_options&)
+{
+    if (!result.verification || result.verification->entries.empty())
+        return;
+    nlohmann::ordered_json checks = nlohmann::ordered_json::object();
+    for (const verification_entry& entry : result.verification->entries)
+        checks[entry.item] = entry.how;
+    doc["verification"] = checks;
+}
+
+/// One output family: its text, LaTeX and JSON writers (null: the family has none in
+/// that format).
+struct family_writers {
+    void (*text)(std::ostream&, const analysis&, const document_options&);
+    void (*latex)(std::ostream&, const analysis&, const document_options&);
+    void (*json)(nlohmann::ordered_json&, const analysis&, const document_options&);
+};
+
+/// Every family, in the order the three documents show them. Adding a family is one row.
+const std::vector<family_writers>& families()
+{
+    using options = const document_options&;
+    static const std::vector<family_writers> table = {
+        {write_lagrangian_text, write_lagrangian_latex, write_lagrangian_json},
+        {write_equations_text, write_equations_latex, write_equations_json},
+        {[](std::ostream& out, const analysis& r, options) { write_constraints_text(out, r); },
+         [](std::ostream& out, const analysis& r, options) { write_constraints_latex(out, r); },
+         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_constraints_json(doc, r); }},
+        {[](std::ostream& out, const analysis& r, options) { write_oscillations_text(out, r); },
+         [](std::ostream& out, const analysis& r, options) { write_oscillations_latex(out, r); },
+         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_oscillations_json(doc, r); }},
+        {[](std::ostream& out, const analysis& r, options) { write_floquet_text(out, r); },
+         [](std::ostream& out, const analysis& r, options) { write_floquet_latex(out, r); },
+         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_floquet_json(doc, r); }},
+        {[](std::ostream& out, const analysis& r, options) {
+             if (r.damping)
+                 write_damping_text(out, *r.scene, *r.damping);
+         },
+         [](std::ostream& out, const analysis& r, options) {
+             if (r.damping)
+                 write_damping_latex(out, *r.scene, *r.damping);
+         },
+         [](nlohmann::ordered_json& doc, const analysis& r, options) {
+             if (r.damping)
+                 write_damping_json(doc, *r.scene, *r.damping);
+         }},
+        {[](std::ostream& out, const analysis& r, options) { write_linear_system_text(out, r); },
+         [](std::ostream& out, const analysis& r, options) { write_linear_system_latex(out, r); },
+         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_linear_system_json(doc, r); }},
+        {[](std::ostream& out, const analysis& r, options) { write_symmetries_text(out, r); },
+         [](std::ostream& out, const analysis& r, options) { write_symmetries_latex(out, r); },
+         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_symmetries_json(doc, r); }},
+        {[](std::ostream& out, const analysis& r, options) { write_bodies_text(out, r); },
+         [](std::ostream& out, const analysis& r, options) { write_bodies_latex(out, r); },
+         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_bodies_json(doc, r); }},
+        {[](std::ostream& out, const analysis& r, options o) {
+             if (r.simulation)
+                 write_simulation_text(out, *r.simulation, o.timings);
+         },
+         [](std::ostream& out, const analysis& r, options o) {
+             if (r.simulation)
+                 write_simulation_latex(out, *r.simulation, o.timings);
+         },
+         [](nlohmann::ordered_json& doc, const analysis& r, options o) {
+             if (r.simulation)
+                 doc["simulation"] = simulation_json(*r.simulation, o.timings);
+         }},
+        {[](std::ostream& out, const analysis& r, options) {
+             if (r.workprecision)
+                 write_workprecision_text(out, *r.workprecision);
+         },
+         [](std::ostream& out, const analysis& r, options) {
+             if (r.workprecision)
+                 write_workprecision_latex(out, *r.workprecision);
+         },
+         [](nlohmann::ordered_json& doc, const analysis& r, options) {
+             if (r.workprecision)
+                 doc["workprecision"] = workprecision_json(*r.workprecision);
+         }},
+        {nullptr, nullptr, write_verification_json},
+    };
+    return table;
+}
+
 } // namespace
 
 void write_text(std::ostream& out, const analysis& result, const document_options& options)
@@ -44,35 +210,9 @@ void write_text(std::ostream& out, const analysis& result, const document_option
         out << scene.title << "\n\n";
     out << "coordinates: " << join_names(coordinate_names(scene), syntax::text, ", ") << '\n';
     out << "parameters:  " << join_names(parameter_names(scene), syntax::text, ", ") << '\n';
-    if (result.lagrangian) {
-        const lagrangian_result& l = *result.lagrangian;
-        out << "\nLagrangian\n";
-        if (l.split) {
-            out << "  T = " << print(l.kinetic, syntax::text, velocity_order(scene)) << '\n';
-            if (!l.gyroscopic.is_zero())
-                out << "  L1 = " << print(l.gyroscopic, syntax::text, velocity_order(scene)) << '\n';
-            out << "  V = " << print(l.potential, syntax::text) << '\n';
-        }
-        out << "  L = " << print(l.lagrangian, syntax::text, velocity_order(scene)) << '\n';
-    }
-    if (result.equations && result.equations->residuals) {
-        out << "\nEquations of motion\n";
-        for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
-            out << "  " << print_name(scene.coordinates[i].name, syntax::text) << ":  "
-                << print((*result.equations->residuals)[i], syntax::text, equation_order(scene)) << " = 0\n";
-    }
-    write_constraints_text(out, result);
-    write_oscillations_text(out, result);
-    write_floquet_text(out, result);
-    if (result.damping)
-        write_damping_text(out, scene, *result.damping);
-    write_linear_system_text(out, result);
-    write_symmetries_text(out, result);
-    write_bodies_text(out, result);
-    if (result.simulation)
-        write_simulation_text(out, *result.simulation, options.timings);
-    if (result.workprecision)
-        write_workprecision_text(out, *result.workprecision);
+    for (const family_writers& family : families())
+        if (family.text)
+            family.text(out, result, options);
     for (const std::string& note : result.notes)
         out << "\nnote: " << note << '\n';
     if (options.timings) {
@@ -95,38 +235,9 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
     if (!scene.coordinates.empty()) // a free body's scene has none
         out << "Coordinates: $" << join_names(coordinate_names(scene), syntax::latex, ",\\ ") << "$.\\\\\n";
     out << "Parameters: $" << join_names(parameter_names(scene), syntax::latex, ",\\ ") << "$.\n";
-    if (result.lagrangian) {
-        const lagrangian_result& l = *result.lagrangian;
-        out << "\\subsection*{Lagrangian}\n";
-        std::vector<latex_row> rows;
-        if (l.split) {
-            rows.push_back({"T", print_terms(l.kinetic, syntax::latex, velocity_order(scene))});
-            if (!l.gyroscopic.is_zero())
-                rows.push_back({"L_1", print_terms(l.gyroscopic, syntax::latex, velocity_order(scene))});
-            rows.push_back({"V", print_terms(l.potential, syntax::latex)});
-        }
-        rows.push_back({"L", print_terms(l.lagrangian, syntax::latex, velocity_order(scene))});
-        out << latex_equations(rows);
-    }
-    if (result.equations && result.equations->residuals) {
-        out << "\\subsection*{Equations of motion}\n";
-        std::vector<latex_row> rows;
-        for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
-            rows.push_back({"", print_terms((*result.equations->residuals)[i], syntax::latex, equation_order(scene)), " = 0"});
-        out << latex_equations(rows);
-    }
-    write_constraints_latex(out, result);
-    write_oscillations_latex(out, result);
-    write_floquet_latex(out, result);
-    if (result.damping)
-        write_damping_latex(out, scene, *result.damping);
-    write_linear_system_latex(out, result);
-    write_symmetries_latex(out, result);
-    write_bodies_latex(out, result);
-    if (result.simulation)
-        write_simulation_latex(out, *result.simulation, options.timings);
-    if (result.workprecision)
-        write_workprecision_latex(out, *result.workprecision);
+    for (const family_writers& family : families())
+        if (family.latex)
+            family.latex(out, result, options);
     if (options.timings) {
         out << "\\subsection*{Stages}\n\\begin{tabular}{lr}\n";
         for (const stage_time& s : result.stages)
@@ -152,37 +263,9 @@ void write_json(std::ostream& out, const analysis& result, const document_option
             timings[s.stage] = s.seconds;
         doc["timings"] = timings;
     }
-    if (result.lagrangian) {
-        const lagrangian_result& l = *result.lagrangian;
-        doc["lagrangian"] = print(l.lagrangian, syntax::plain, velocity_order(scene));
-        if (l.split) {
-            doc["kinetic_energy"] = print(l.kinetic, syntax::plain, velocity_order(scene));
-            doc["potential_energy"] = print(l.potential, syntax::plain);
-        }
-    }
-    if (result.equations && result.equations->residuals) {
-        doc["equations"] = nlohmann::json::array();
-        for (const GiNaC::ex& e : *result.equations->residuals)
-            doc["equations"].push_back(print(e, syntax::plain, equation_order(scene)));
-    }
-    write_constraints_json(doc, result);
-    write_oscillations_json(doc, result);
-    write_floquet_json(doc, result);
-    if (result.damping)
-        write_damping_json(doc, scene, *result.damping);
-    write_linear_system_json(doc, result);
-    write_symmetries_json(doc, result);
-    write_bodies_json(doc, result);
-    if (result.simulation)
-        doc["simulation"] = simulation_json(*result.simulation, options.timings);
-    if (result.workprecision)
-        doc["workprecision"] = workprecision_json(*result.workprecision);
-    if (result.verification && !result.verification->entries.empty()) {
-        nlohmann::ordered_json checks = nlohmann::ordered_json::object();
-        for (const verification_entry& entry : result.verification->entries)
-            checks[entry.item] = entry.how;
-        doc["verification"] = checks;
-    }
+    for (const family_writers& family : families())
+        if (family.json)
+            family.json(doc, result, options);
     if (!result.notes.empty())
         doc["notes"] = result.notes;
     out << doc.dump(2) << '\n';
