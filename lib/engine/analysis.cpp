@@ -45,7 +45,7 @@ struct stage_context {
 enum class stage_id {
     inertia, euler, lagrangian, equations, multipliers, elimination, top, time, equilibrium, linearization,
     characteristic, modes, asymptotic, damping, numeric, state_space, transfer, floquet, conserved,
-    hamiltonian, reduced, steady, simulation, workprecision, verification
+    hamiltonian, reduced, steady, simulation, workprecision, virial, verification
 };
 
 /// What a stage does with a scene's constraints: handles them, or refuses them with
@@ -401,6 +401,13 @@ const std::vector<stage_definition>& stage_table()
                      scene_work_precision(c.scene, *c.result.equations, equilibrium_of(c), c.simulation);
              }
          }, "simulation", "", refuses_constraints("`workprecision`"), false},
+        {stage_id::virial, "virial", {product::virial}, {}, {stage_id::lagrangian, stage_id::simulation},
+         has_coordinates,
+         [](stage_context& c) {
+             if (!c.result.simulation)
+                 throw computation_error("`virial` needs a simulation: a `simulate until T` line or --until");
+             c.result.virial = time_averages(c.scene, *c.result.lagrangian, *c.result.simulation);
+         }, "simulation", "", handles_constraints, false},
         // Last: checks numerically whatever symbolic results the stages above computed.
         {stage_id::verification, "verification", {}, every_product(), {},
          [](const model& scene) { return !scene.coordinates.empty() || !scene.bodies.empty(); },

@@ -26,6 +26,7 @@
 #include "numeric/linear_response.h"
 #include "mechanics/time_dependence.h"
 #include "numeric/simulation.h"
+#include "numeric/virial.h"
 #include "verify/verify.h"
 #include "core/model.h"
 
@@ -60,6 +61,7 @@ struct analysis {
     std::optional<std::vector<top_result>> tops;        ///< bodies turned by three coordinates (heavy tops)
     std::optional<simulation_result> simulation;
     std::optional<workprecision_result> workprecision;
+    std::optional<virial_result> virial; ///< ⟨T⟩ and ⟨V⟩ over the simulation
     std::optional<damping_result> damping;   ///< damped small oscillations (dissipation, dampers)
     /// How each symbolic result was checked numerically before it is printed.
     std::optional<verification_result> verification;

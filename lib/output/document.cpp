@@ -15,6 +15,7 @@
 #include "output/symmetries_output.h"
 #include "output/print.h"
 #include "output/simulation_output.h"
+#include "output/virial_output.h"
 
 #include <nlohmann/json.hpp>
 
@@ -196,6 +197,9 @@ const std::vector<family_writers>& families()
              if (r.workprecision)
                  doc["workprecision"] = workprecision_json(*r.workprecision);
          }},
+        {[](std::ostream& out, const analysis& r, options) { write_virial_text(out, r); },
+         [](std::ostream& out, const analysis& r, options) { write_virial_latex(out, r); },
+         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_virial_json(doc, r); }},
         {nullptr, nullptr, write_verification_json},
     };
     return table;
