@@ -3,6 +3,7 @@
  *  The `lagrange` command: turns arguments into library calls, prints, and maps
  *  errors to exit codes (0 success, 1 computation not possible, 2 bad input or usage). */
 #include "engine/analysis.h"
+#include "ensemble/settings.h"
 #include "output/document.h"
 #include "output/ensemble_output.h"
 #include "output/report.h"
@@ -297,33 +298,17 @@ int ensemble_command(const ensemble_options& options)
         throw usage_error("`ensemble -o` takes a file ending in .csv, .json or .png, not `" + options.output + "`");
     if (options.resume && (!to_file || png || json))
         throw usage_error("--resume continues a CSV file: give it with -o FILE.csv");
-    if (options.seed != 1 && options.random == 0)
-        throw usage_error("--seed goes with --random N");
     lagrange::model scene = load_scene(options.scene_path, options.values);
     std::vector<lagrange::ensemble_axis> axes = lagrange::parse_ensemble_grid(options.grid, scene, options.random > 0);
     lagrange::ensemble_measure measure = lagrange::parse_ensemble_measure(options.measure, scene);
     lagrange::ensemble_settings settings;
-    const bool floquet = measure.what == lagrange::ensemble_measure::kind::floquet_stable;
-    if (options.until)
-        settings.until = *options.until;
-    else if (floquet)
-        settings.until = 1; // each run lasts one period of the drive
-    else if (scene.simulation)
-        settings.until = lagrange::real_value(scene.simulation->until, "the scene's `simulate until`");
-    else
-        throw usage_error("give the end time of every run with --until T (the scene has no `simulate until`)");
-    if (!(settings.until > 0) || !std::isfinite(settings.until))
-        throw usage_error("the end time must be a positive number");
-    if (options.tolerance)
-        settings.tolerance = *options.tolerance;
-    settings.random = options.random;
-    settings.seed = options.seed;
-    settings.native = !options.interpret;
-    // floquet_stable also needs the point that solves the equations at every t (the `time` stage).
-    std::set<lagrange::product> wanted{lagrange::product::equations};
-    if (floquet)
-        wanted.insert(lagrange::product::floquet);
-    lagrange::analysis result = lagrange::analyze(scene, wanted);
+    try {
+        settings = lagrange::ensemble_settings_for(
+            scene, measure, {options.until, options.tolerance, options.random, options.seed, !options.interpret});
+    } catch (const lagrange::ensemble_request_error& error) {
+        throw usage_error(error.what());
+    }
+    lagrange::analysis result = lagrange::analyze(scene, lagrange::ensemble_products(measure));
     lagrange::ensemble_problem problem(scene, *result.equations, axes, measure, settings,
                                        result.time ? &*result.time : nullptr);
 
