@@ -28,7 +28,8 @@ int main(int argc, char* argv[])
         const std::string tool = argv[++k];
         try {
             if (!lagrange_test::tool_available(tool)) {
-                std::cout << "skipped: `" << tool << "` is not installed\n";
+                std::cout << "skipped: " << (tool == "root" ? "not running as root" : "`" + tool + "` is not installed")
+                          << "\n";
                 return 77;
             }
         } catch (const std::invalid_argument& e) {

@@ -24,6 +24,8 @@ bool tool_available(const std::string& tool)
 {
     if (std::find(std::begin(known_tools), std::end(known_tools), tool) == std::end(known_tools))
         throw std::invalid_argument("unknown tool `" + tool + "`");
+    if (tool == "root")
+        return geteuid() == 0;
     const std::string program = tool == "cc" ? configured_compiler() : tool;
     if (program.find('/') != std::string::npos)
         return access(program.c_str(), X_OK) == 0;

@@ -219,9 +219,10 @@ TEST_CASE("extremes: the stated bound holds at random well- and ill-conditioned 
             CHECK(error[j] == r.error[0]);
         }
     }
-    CHECK(answered >= 300 + 100);
-    WARN("random points: " << answered << " answered, " << refused << " refused (" << ill
+    INFO("random points: " << answered << " answered, " << refused << " refused (" << ill
                            << " ill-conditioned), largest true error / bound " << worst_ratio);
+    CHECK(answered >= 300 + 100);
+    CHECK(worst_ratio <= 1);
 }
 
 namespace {
