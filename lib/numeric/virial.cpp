@@ -4,7 +4,9 @@
 #include "numeric/virial.h"
 
 #include "core/errors.h"
+#include "numeric/compiled_motion.h"
 #include "numeric/expression_program.h"
+#include "numeric/values.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,18 +43,9 @@ virial_result time_averages(const model& scene, const lagrangian_result& lagrang
     if (!(span > 0))
         throw computation_error("`virial` needs a simulated span longer than zero");
 
-    GiNaC::exmap values;
-    for (const parameter& p : scene.parameters)
-        if (auto it = motion.values.find(p.name); it != motion.values.end())
-            values[p.symbol] = it->second;
-    std::vector<GiNaC::ex> symbols;
-    for (const coordinate& c : scene.coordinates)
-        symbols.push_back(c.position);
-    for (const coordinate& c : scene.coordinates)
-        symbols.push_back(c.velocity);
-    symbols.push_back(scene.time);
-    const expression_program energies({lagrangian.kinetic_built.subs(values), lagrangian.potential_built.subs(values)},
-                                      symbols);
+    const expression_program energies({at_values(lagrangian.kinetic_built, scene, motion.values),
+                                       at_values(lagrangian.potential_built, scene, motion.values)},
+                                      state_symbols(scene));
 
     std::vector<double> kinetic(run.times.size()), potential(run.times.size()), in(2 * n + 1), out(2), scratch;
     for (std::size_t k = 0; k < run.times.size(); ++k) {
