@@ -600,6 +600,21 @@ GiNaC::matrix potential_hessian(const model& scene, const ex& potential, const s
     return hessian_at(scene, potential, at, true);
 }
 
+GiNaC::matrix kinetic_matrix(const model& scene, const ex& kinetic, const std::vector<ex>& at)
+{
+    const std::size_t n = scene.coordinates.size();
+    GiNaC::matrix mass(n, n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const ex row = differentiate(kinetic, scene.coordinates[i].velocity);
+        for (std::size_t j = i; j < n; ++j) {
+            const ex entry = tidy(evaluate_at(differentiate(row, scene.coordinates[j].velocity), scene, at));
+            mass(i, j) = entry;
+            mass(j, i) = entry;
+        }
+    }
+    return mass;
+}
+
 namespace {
 
 GiNaC::matrix hessian_at(const model& scene, const ex& potential, const std::vector<ex>& at, bool tidy_entries)

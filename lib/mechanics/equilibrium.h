@@ -50,4 +50,8 @@ GiNaC::ex reduce_trigonometric(const GiNaC::ex& e);
 /// ∂²V/∂qi∂qj at a point, each entry tidied (the V matrix of the linearization).
 GiNaC::matrix potential_hessian(const model& scene, const GiNaC::ex& potential, const std::vector<GiNaC::ex>& at);
 
+/// ∂²T/∂q̇i∂q̇j of the kinetic energy `kinetic` at a point, each entry tidied (the T
+/// matrix of the linearization).
+GiNaC::matrix kinetic_matrix(const model& scene, const GiNaC::ex& kinetic, const std::vector<GiNaC::ex>& at);
+
 } // namespace lagrange

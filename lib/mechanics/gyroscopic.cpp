@@ -284,16 +284,7 @@ stability gyroscopic_stability_at(const model& scene, const lagrangian_result& l
                                   stability potential_verdict, const simplifier& simplify)
 {
     std::size_t n = scene.coordinates.size();
-    ex kinetic = simplify.canonical(lagrangian.kinetic);
-    GiNaC::matrix mass(n, n);
-    for (std::size_t i = 0; i < n; ++i) {
-        ex row = differentiate(kinetic, scene.coordinates[i].velocity);
-        for (std::size_t j = i; j < n; ++j) {
-            ex entry = tidy(evaluate_at(differentiate(row, scene.coordinates[j].velocity), scene, at));
-            mass(i, j) = entry;
-            mass(j, i) = entry;
-        }
-    }
+    GiNaC::matrix mass = kinetic_matrix(scene, simplify.canonical(lagrangian.kinetic), at);
     GiNaC::matrix stiffness = potential_hessian(scene, simplify.canonical(lagrangian.potential), at);
     GiNaC::matrix g = gyroscopic_matrix(scene, simplify.canonical(lagrangian.gyroscopic), at);
     bool any = false;

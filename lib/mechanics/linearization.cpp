@@ -216,17 +216,8 @@ linearization_result linearize(const model& scene, const lagrangian_result& lagr
         throw std::invalid_argument("linearize: the equilibrium has " + std::to_string(at.size()) +
                                     " values for " + std::to_string(n) + " coordinates");
     linearization_result result{at, GiNaC::matrix(n, n), GiNaC::matrix(n, n), GiNaC::matrix(n, n)};
-    ex kinetic = simplify.canonical(lagrangian.kinetic);
-    ex potential = simplify.canonical(lagrangian.potential);
-    for (std::size_t i = 0; i < n; ++i) {
-        ex kinetic_row = differentiate(kinetic, scene.coordinates[i].velocity);
-        for (std::size_t j = i; j < n; ++j) {
-            ex entry = tidy(evaluate_at(differentiate(kinetic_row, scene.coordinates[j].velocity), scene, at));
-            result.kinetic(i, j) = entry;
-            result.kinetic(j, i) = entry;
-        }
-    }
-    result.potential = potential_hessian(scene, potential, at);
+    result.kinetic = kinetic_matrix(scene, simplify.canonical(lagrangian.kinetic), at);
+    result.potential = potential_hessian(scene, simplify.canonical(lagrangian.potential), at);
     if (!lagrangian.gyroscopic.is_zero())
         result.gyroscopic = gyroscopic_matrix(scene, simplify.canonical(lagrangian.gyroscopic), at);
     for (std::size_t i = 0; i < n; ++i)

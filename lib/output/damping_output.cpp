@@ -2,6 +2,7 @@
 /** @file damping_output.cpp
  *  Printers of the damped small oscillations. */
 #include "output/damping_output.h"
+#include "output/format.h"
 
 #include "output/latex_blocks.h"
 #include "output/print.h"
@@ -191,12 +192,9 @@ std::string ratio_text(double ratio) { return std::isnan(ratio) ? "none (s = 0)"
 /// One mode component as a + bi (b omitted when 0), in `s`.
 std::string component_text(std::complex<double> z, syntax s)
 {
-    const double re = z.real() == 0 ? 0.0 : z.real(); // no −0
     const bool latex = s == syntax::latex;
-    auto number = [&](double v) { return latex ? print(GiNaC::numeric(v), s) : round_trip(v); };
-    if (z.imag() == 0)
-        return number(re);
-    return number(re) + (z.imag() < 0 ? " - " : " + ") + number(std::abs(z.imag())) + (latex ? "\\,i" : "i");
+    return complex_number(
+        z, [&](double v) { return latex ? print(GiNaC::numeric(v), s) : round_trip(v); }, latex ? "\\,i" : "i");
 }
 
 /// Column k of the damped modes as (x₁, x₂, …), in text.

@@ -5,6 +5,7 @@
  *  eigenvalues at the `values` points; and the linearized input–output system (the
  *  state-space matrices and the transfer functions). */
 #include "output/report_sections.h"
+#include "output/format.h"
 
 #include "output/linear_system_output.h"
 #include "output/print.h"
@@ -19,10 +20,7 @@ namespace {
 
 std::string complex_latex(std::complex<double> z, int digits = 10)
 {
-    std::string value = report_writer::number(z.real() == 0 ? 0.0 : z.real(), digits);
-    if (z.imag() != 0)
-        value += (z.imag() < 0 ? " - " : " + ") + report_writer::number(std::abs(z.imag()), digits) + "\\,i";
-    return value;
+    return complex_number(z, [digits](double v) { return report_writer::number(v, digits); }, "\\,i");
 }
 
 } // namespace

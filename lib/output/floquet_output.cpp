@@ -2,6 +2,7 @@
 /** @file floquet_output.cpp
  *  Printers of the Floquet multipliers about points that solve the equations at every t. */
 #include "output/floquet_output.h"
+#include "output/format.h"
 
 #include "core/number_text.h"
 
@@ -32,13 +33,7 @@ std::string number_in(double x, syntax s)
 
 std::string multiplier_text(const std::complex<double>& mu, syntax s)
 {
-    std::string text = number_in(mu.real(), s);
-    if (mu.imag() != 0) {
-        text += mu.imag() < 0 ? " - " : " + ";
-        text += number_in(std::abs(mu.imag()), s);
-        text += s == syntax::latex ? "\\,i" : "i";
-    }
-    return text;
+    return complex_number(mu, [s](double v) { return number_in(v, s); }, s == syntax::latex ? "\\,i" : "i");
 }
 
 std::string point_text(const model& scene, const floquet_point& f, syntax s)

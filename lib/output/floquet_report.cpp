@@ -3,6 +3,7 @@
  *  The report's section on an L that depends on t: the points that solve the equations
  *  at every t and the Floquet multipliers about them. */
 #include "output/report_sections.h"
+#include "output/format.h"
 
 #include <cmath>
 #include <complex>
@@ -37,9 +38,8 @@ void write_floquet_section(report_writer& w)
         for (std::size_t k = 0; k < f.multipliers.size(); ++k) {
             const std::complex<double>& mu = f.multipliers[k];
             largest = std::max(largest, std::abs(mu));
-            std::string value = report_writer::number(mu.real(), 10);
-            if (mu.imag() != 0)
-                value += (mu.imag() < 0 ? " - " : " + ") + report_writer::number(std::abs(mu.imag()), 10) + "\\,i";
+            const std::string value =
+                complex_number(mu, [](double v) { return report_writer::number(v, 10); }, "\\,i");
             w.latex(std::to_string(k + 1) + " & $" + value + "$ & $" + report_writer::number(std::abs(mu), 10) +
                     "$\\\\\n");
         }

@@ -4,6 +4,7 @@
  *  gyroscopic matrix G and the Kelvin–Tait–Chetaev verdict, and the numeric values from
  *  the quadratic eigenproblem with their complex modes. */
 #include "output/report_sections.h"
+#include "output/format.h"
 
 #include "output/latex_blocks.h"
 
@@ -16,11 +17,7 @@ namespace {
 
 std::string complex_latex(std::complex<double> z)
 {
-    double re = z.real() == 0 ? 0.0 : z.real();
-    if (z.imag() == 0)
-        return report_writer::number(re, 6);
-    return report_writer::number(re, 6) + (z.imag() < 0 ? " - " : " + ") + report_writer::number(std::abs(z.imag()), 6) +
-           "\\,i";
+    return complex_number(z, [](double v) { return report_writer::number(v, 6); }, "\\,i");
 }
 
 } // namespace

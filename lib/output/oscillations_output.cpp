@@ -2,6 +2,7 @@
 /** @file oscillations_output.cpp
  *  The small-oscillations family in text, LaTeX and JSON (see oscillations_output.h). */
 #include "output/oscillations_output.h"
+#include "output/format.h"
 
 #include "core/number_text.h"
 #include "output/damping_output.h"
@@ -101,10 +102,7 @@ std::string normal_coordinate_text(const GiNaC::ex& zeta, const model& scene, sy
 /// A complex mode component as a + bi (b omitted when 0).
 std::string complex_text(std::complex<double> z)
 {
-    double re = z.real() == 0 ? 0.0 : z.real(); // no −0
-    if (z.imag() == 0)
-        return round_trip(re);
-    return round_trip(re) + (z.imag() < 0 ? " - " : " + ") + round_trip(std::abs(z.imag())) + "i";
+    return complex_number(z, round_trip, "i");
 }
 
 nlohmann::ordered_json matrix_json(const GiNaC::matrix& m)
