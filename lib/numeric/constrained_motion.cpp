@@ -169,17 +169,9 @@ simulation_result simulate_constrained(const model& scene, const equations_of_mo
     constrained_motion motion(scene, equations, result.values);
     const std::size_t n = motion.coordinates(), m = motion.constraints();
 
-    const double until = settings.until     ? *settings.until
-                         : scene.simulation ? real_value(scene.simulation->until, "the end time")
-                                            : 0;
-    if (!(until > 0) || !std::isfinite(until))
-        throw computation_error("the simulation needs an end time: a `simulate until T` line or --until");
-    result.tolerance = settings.tolerance ? *settings.tolerance
-                       : scene.simulation && scene.simulation->tolerance
-                           ? real_value(*scene.simulation->tolerance, "the tolerance")
-                           : 1e-9;
-    if (!(result.tolerance >= 1e-14 && result.tolerance < 1))
-        throw computation_error("the tolerance " + message_number(result.tolerance, 3) + " is outside 1e-14 … 1");
+    const simulation_span span = simulation_span_of(scene, settings);
+    const double until = span.until;
+    result.tolerance = span.tolerance;
     result.run_tolerance = result.tolerance;
     result.absolute_tolerance = result.tolerance; // projected pieces: absolute as relative
     const std::string method_name =

@@ -184,17 +184,9 @@ double absolute_scale(const std::vector<double>& x0, const std::vector<double>& 
 /// The end time and tolerance of the `simulate` line, or their overrides.
 void read_span(prepared_motion& p, const model& scene, const simulation_settings& settings)
 {
-    p.until = settings.until     ? *settings.until
-              : scene.simulation ? real_value(scene.simulation->until, "the end time")
-                                 : 0;
-    if (!(p.until > 0) || !std::isfinite(p.until))
-        throw computation_error("the simulation needs an end time: a `simulate until T` line or --until");
-    p.tolerance = settings.tolerance ? *settings.tolerance
-                  : scene.simulation && scene.simulation->tolerance
-                      ? real_value(*scene.simulation->tolerance, "the tolerance")
-                      : 1e-9;
-    if (!(p.tolerance >= 1e-14 && p.tolerance < 1))
-        throw computation_error("the tolerance " + message_number(p.tolerance, 3) + " is outside 1e-14 … 1");
+    const simulation_span span = simulation_span_of(scene, settings);
+    p.until = span.until;
+    p.tolerance = span.tolerance;
 }
 
 prepared_motion prepare(const model& scene, const equations_of_motion& equations,
@@ -606,6 +598,23 @@ workprecision_result work_precision(const ode_system& system, const std::vector<
         }
     }
     return result;
+}
+
+simulation_span simulation_span_of(const model& scene, const simulation_settings& settings)
+{
+    simulation_span span;
+    span.until = settings.until     ? *settings.until
+                 : scene.simulation ? real_value(scene.simulation->until, "the end time")
+                                    : 0;
+    if (!(span.until > 0) || !std::isfinite(span.until))
+        throw computation_error("the simulation needs an end time: a `simulate until T` line or --until");
+    span.tolerance = settings.tolerance ? *settings.tolerance
+                     : scene.simulation && scene.simulation->tolerance
+                         ? real_value(*scene.simulation->tolerance, "the tolerance")
+                         : 1e-9;
+    if (!(span.tolerance >= 1e-14 && span.tolerance < 1))
+        throw computation_error("the tolerance " + message_number(span.tolerance, 3) + " is outside 1e-14 … 1");
+    return span;
 }
 
 } // namespace lagrange

@@ -37,6 +37,18 @@ struct simulation_settings {
     progress_callback progress;
 };
 
+/// The end time and the tolerance of a run (time in the scene's unit; the tolerance a
+/// relative error, with no unit).
+struct simulation_span {
+    double until = 0;
+    double tolerance = 1e-9;
+};
+
+/// The settings' end time and tolerance, else those of the scene's `simulate` line (the
+/// tolerance 1e-9 when neither gives one). Throws computation_error when there is no end
+/// time or it is not positive and finite, or the tolerance is outside 1e-14 … 1.
+simulation_span simulation_span_of(const model& scene, const simulation_settings& settings);
+
 /// Beats: the envelope of a coordinate swells and fades with period 2π/(ω₂ − ω₁).
 struct beat_measurement {
     std::string coordinate;  ///< the coordinate whose envelope was measured
