@@ -14,6 +14,7 @@
 #include "scene/lower.h"
 #include "system/address_layout.h"
 #include "system/files.h"
+#include "system/gnuplot.h"
 #include "system/progress_line.h"
 #include "system/signals.h"
 
@@ -177,8 +178,21 @@ struct motion_options {
     bool timings = false;
 };
 
+/// A --plot path whose extension names no format is a usage error, before any work.
+void require_plot_format(const std::string& path)
+{
+    if (path.empty())
+        return;
+    try {
+        lagrange::plot_format_of(path);
+    } catch (const std::invalid_argument& error) {
+        throw usage_error(error.what());
+    }
+}
+
 int motion_command(const motion_options& options, lagrange::product wanted, const lagrange::budget_limits& budget)
 {
+    require_plot_format(options.plot);
     lagrange::model scene = load_scene(options.scene_path, options.values, budget.max_seconds);
     lagrange::simulation_settings settings;
     settings.until = options.until;
@@ -221,6 +235,7 @@ struct response_options {
 /// linearized system, as text, CSV or JSON, and its Bode diagram.
 int response_command(const response_options& options)
 {
+    require_plot_format(options.plot);
     lagrange::model scene = load_scene(options.scene_path, options.values);
     lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::state_space});
     lagrange::response_settings settings;
@@ -481,7 +496,7 @@ int run(int argc, char** argv)
         sub->add_option("--values", o->values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
         sub->add_option("--until", o->until, "end time (default: the scene's `simulate until`)")
             ->check(finite_number & CLI::PositiveNumber);
-        sub->add_option("--plot", o->plot, "draw a plot (SVG, with gnuplot)");
+        sub->add_option("--plot", o->plot, "draw a plot with gnuplot: .svg, .png or .pdf, by the extension");
         sub->add_option("--format", o->format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
         sub->add_option("-o,--output", o->output, "write the output to this file");
         sub->add_flag("--interpret", o->interpret,
@@ -518,7 +533,8 @@ int run(int argc, char** argv)
     response->add_option("--format", response_options.format, "output format")
         ->check(CLI::IsMember({"text", "csv", "json"}));
     response->add_option("-o,--output-file", response_options.output_path, "write the output to this file");
-    response->add_option("--plot", response_options.plot, "draw the Bode diagram (SVG, with gnuplot)");
+    response->add_option("--plot", response_options.plot,
+                         "draw the Bode diagram with gnuplot: .svg, .png or .pdf, by the extension");
 
     ensemble_options ensemble_options;
     CLI::App* ensemble = app.add_subcommand(

@@ -85,9 +85,7 @@ void plot_response(const std::string& path, const frequency_response& r, const s
         data << round_trip(r.omega[k]) << ' ' << round_trip(r.magnitude[k]) << ' ' << round_trip(r.phase_degrees[k]) << '\n';
     const std::string name = print_name(r.input, syntax::text) + " → " + print_name(r.output, syntax::text);
     std::ostringstream script;
-    script << "set terminal svg size 900,640 dynamic font 'sans,12'\n"
-              "set output 'plot.svg'\n"
-              "set multiplot layout 2,1 title "
+    script << "set multiplot layout 2,1 title "
            << gnuplot_string(title + ": Bode diagram of " + name) << " noenhanced\n"
            << "set logscale x\nset autoscale xfix\nset grid\nunset key\nset format x '%g'\n"
               "set lmargin 12\n" // the same left margin in both panels, so that their ω axes line up
@@ -106,7 +104,7 @@ void plot_response(const std::string& path, const frequency_response& r, const s
     script << "\nunset label 1\nunset logscale y\nset ylabel 'phase (degrees)'\nset xlabel 'ω'\n"
               "plot 'data.txt' using 1:3 with lines lw 1.5\n"
               "unset multiplot\n";
-    draw_gnuplot_svg(path, script.str(), {{"data.txt", data.str()}});
+    draw_gnuplot(path, "", 900, 640, "", script.str(), {{"data.txt", data.str()}});
 }
 
 } // namespace lagrange

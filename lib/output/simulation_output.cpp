@@ -43,17 +43,20 @@ std::string drift_of(const trajectory& run, const std::string& name)
 
 } // namespace
 
-void draw_gnuplot_svg(const std::string& path, const std::string& script,
-                      const std::vector<std::pair<std::string, std::string>>& files)
+void draw_gnuplot(const std::string& path, const std::string& preamble, int width, int height,
+                  const std::string& text_mode, const std::string& body,
+                  const std::vector<std::pair<std::string, std::string>>& files)
 {
+    const plot_format format = plot_format_of(path);
     if (!gnuplot_available())
         throw computation_error("gnuplot is not installed (Debian package gnuplot-nox): no plot drawn");
-    gnuplot_run run = run_gnuplot(script, "plot.svg", files);
+    const std::string name = format == plot_format::svg ? "plot.svg" : format == plot_format::png ? "plot.png" : "plot.pdf";
+    gnuplot_run run = run_gnuplot(preamble + gnuplot_terminal(format, width, height, text_mode, name) + body, name, files);
     if (run.timed_out)
         throw computation_error("gnuplot did not finish in time: no plot drawn");
     if (!run.drawn)
         throw computation_error("gnuplot failed to draw the plot");
-    write_output(path, run.plot);
+    write_output(path, format == plot_format::pdf ? strip_pdf_dates(run.plot) : run.plot);
 }
 
 void write_simulation_text(std::ostream& out, const simulation_result& s, bool timings)
@@ -352,10 +355,7 @@ void plot_trajectory(const std::string& path, const simulation_result& s, const 
     std::size_t panels = 0;
     const std::string body = trajectory_plot_script(s, 6, title + " (" + s.method + ")", panels);
     const std::size_t height = 90 + 170 * (panels > 0 ? panels : 2);
-    draw_gnuplot_svg(path,
-                     "set encoding utf8\nset terminal svg size 900," + std::to_string(height) +
-                         " dynamic noenhanced font 'sans,12'\nset output 'plot.svg'\n" + body,
-                     {});
+    draw_gnuplot(path, "set encoding utf8\n", 900, static_cast<int>(height), "noenhanced", body, {});
 }
 
 void plot_workprecision(const std::string& path, const workprecision_result& w, const std::string& title)
@@ -375,16 +375,14 @@ void plot_workprecision(const std::string& path, const workprecision_result& w, 
         data << "\n\n";
     }
     std::ostringstream script;
-    script << "set terminal svg size 900,560 dynamic enhanced font 'sans,12'\n"
-              "set output 'plot.svg'\n"
-              "set logscale xy\nset format x '1e%T'\nset format y '1e%T'\n"
+    script << "set logscale xy\nset format x '1e%T'\nset format y '1e%T'\n"
               "set xlabel 'run time (s)'\nset ylabel 'relative error'\nset grid\nset key outside right top\n"
            << "set title " << gnuplot_string(title + " — " + w.reference) << " noenhanced\nplot ";
     for (std::size_t k = 0; k < methods.size(); ++k)
         script << (k ? ", " : "") << "'data.txt' index " << k << " using 1:2 with linespoints lw 1.5 pt 7 ps 0.6 title "
                << gnuplot_string(methods[k]) << " noenhanced";
     script << '\n';
-    draw_gnuplot_svg(path, script.str(), {{"data.txt", data.str()}});
+    draw_gnuplot(path, "", 900, 560, "enhanced", script.str(), {{"data.txt", data.str()}});
 }
 
 } // namespace lagrange

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file simulation_output.h
  *  The `simulation` and `workprecision` sections of the text, LaTeX and JSON
- *  documents, the trajectory as CSV, and plots drawn by gnuplot (SVG). */
+ *  documents, the trajectory as CSV, and plots drawn by gnuplot (SVG, PNG or PDF). */
 #pragma once
 
 #include "numeric/simulation.h"
@@ -26,7 +26,7 @@ nlohmann::ordered_json workprecision_json(const workprecision_result& w);
 /// t, then each coordinate, then each velocity (`q_dot`), one row per output time.
 void write_trajectory_csv(std::ostream& out, const simulation_result& s);
 
-/// θ(t), φ(t), … against time, as SVG drawn by gnuplot: one panel per coordinate, stacked
+/// θ(t), φ(t), … against time, drawn by gnuplot (the format by the extension): one panel per coordinate, stacked
 /// over one time axis (up to 6; more share one panel). Throws computation_error if gnuplot
 /// is missing or fails.
 void plot_trajectory(const std::string& path, const simulation_result& s, const std::string& title);
@@ -39,13 +39,17 @@ void plot_trajectory(const std::string& path, const simulation_result& s, const 
 std::string trajectory_plot_script(const simulation_result& s, std::size_t max_panels, const std::string& title,
                                    std::size_t& panels);
 
-/// Error against run time, log–log, one line per method, as SVG drawn by gnuplot.
+/// Error against run time, log–log, one line per method, drawn by gnuplot.
 void plot_workprecision(const std::string& path, const workprecision_result& w, const std::string& title);
 
-/// Runs the gnuplot `script` (which must write 'plot.svg') in a private folder that holds
-/// `files` (name, bytes) and copies the SVG to `path`. Throws computation_error if gnuplot
+/// Draws a plot of `width` × `height` pixels into `path`, in the format its extension names
+/// (plot_format_of: SVG, PNG or PDF): `preamble` (such as `set encoding utf8`), the
+/// terminal for that format with `text_mode` ("enhanced", "noenhanced" or ""), then
+/// `body`, run by gnuplot in a private folder that holds `files` (name, bytes). Throws
+/// std::invalid_argument for another extension, computation_error if gnuplot
 /// is missing or fails, or the SVG cannot be written.
-void draw_gnuplot_svg(const std::string& path, const std::string& script,
-                      const std::vector<std::pair<std::string, std::string>>& files);
+void draw_gnuplot(const std::string& path, const std::string& preamble, int width, int height,
+                  const std::string& text_mode, const std::string& body,
+                  const std::vector<std::pair<std::string, std::string>>& files);
 
 } // namespace lagrange

@@ -7,6 +7,9 @@
 #include "system/external.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <stdexcept>
 #include <cstddef>
 
 namespace lagrange {
@@ -62,6 +65,46 @@ std::string strip_pdf_dates(std::string pdf)
         }
     }
     return pdf;
+}
+
+plot_format plot_format_of(const std::string& path)
+{
+    const std::size_t dot = path.rfind('.');
+    std::string extension = dot == std::string::npos || path.find('/', dot) != std::string::npos ? "" : path.substr(dot + 1);
+    for (char& c : extension)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == "svg")
+        return plot_format::svg;
+    if (extension == "png")
+        return plot_format::png;
+    if (extension == "pdf")
+        return plot_format::pdf;
+    throw std::invalid_argument("a plot is written as .svg, .png or .pdf, chosen by the file's extension, not `" +
+                                path + "`");
+}
+
+std::string gnuplot_terminal(plot_format format, int width, int height, const std::string& text_mode,
+                             const std::string& plot_name)
+{
+    const std::string mode = text_mode.empty() ? "" : " " + text_mode;
+    std::string terminal;
+    switch (format) {
+    case plot_format::svg:
+        terminal = "set terminal svg size " + std::to_string(width) + "," + std::to_string(height) + " dynamic" + mode +
+                   " font 'sans,12'";
+        break;
+    case plot_format::png:
+        terminal = "set terminal pngcairo size " + std::to_string(width) + "," + std::to_string(height) + mode +
+                   " font 'sans,10'";
+        break;
+    case plot_format::pdf: {
+        char size[64];
+        std::snprintf(size, sizeof size, "%.4gin,%.4gin", width / 96.0, height / 96.0);
+        terminal = std::string("set terminal pdfcairo size ") + size + mode + " color font 'sans,9'";
+        break;
+    }
+    }
+    return terminal + "\nset output " + gnuplot_string(plot_name) + "\n";
 }
 
 } // namespace lagrange

@@ -35,6 +35,19 @@ gnuplot_run run_gnuplot(const std::string& script, const std::string& plot_name,
 /// control characters, which would end the line of the script, dropped.
 std::string gnuplot_string(const std::string& text);
 
+/// The formats a plot is drawn in, chosen by the file's extension.
+enum class plot_format { svg, png, pdf };
+
+/// The format of a plot written to `path`: .svg, .png (gnuplot's pngcairo) or .pdf
+/// (pdfcairo), in any case. Throws std::invalid_argument naming the extensions otherwise.
+plot_format plot_format_of(const std::string& path);
+
+/// The gnuplot lines that choose the terminal for `format` at `width` × `height` pixels
+/// (a PDF at 96 pixels to the inch), with `text_mode` ("enhanced", "noenhanced" or ""),
+/// and write to `plot_name`.
+std::string gnuplot_terminal(plot_format format, int width, int height, const std::string& text_mode,
+                             const std::string& plot_name);
+
 /// Blanks the creation and modification dates cairo writes into a PDF (same length, so
 /// the cross-reference offsets stay valid): a figure then depends on its script only.
 std::string strip_pdf_dates(std::string pdf);

@@ -127,6 +127,42 @@ TEST_CASE("cli: --plot draws one panel per coordinate", "[cli][plot][gnuplot]")
     CHECK(plot.find("<text>φ</text>") < plot.find("<text>t</text>"));
 }
 
+TEST_CASE("cli: --plot draws SVG, PNG or PDF as the extension says, and refuses another", "[cli][plot][gnuplot]")
+{
+    const std::string scene = examples + "double_pendulum.lag";
+    const std::string response = examples + "damped_driven_oscillator.lag --input u --output x";
+    struct expected_format {
+        const char* extension;
+        std::string magic; // the file's first bytes
+    };
+    for (const expected_format& f : {expected_format{"svg", "<?xml"}, expected_format{"png", "\x89PNG\r\n\x1a\n"},
+                                     expected_format{"PNG", "\x89PNG\r\n\x1a\n"}, expected_format{"pdf", "%PDF-"}}) {
+        for (const std::string& command : {"simulate " + scene + " --until 2", "workprecision " + scene + " --until 0.5",
+                                           "response " + response}) {
+            const std::string path = temporary_file(std::string("formats.") + f.extension, "");
+            INFO(command << " --plot " << path);
+            cli_result r = run_cli(command + " --plot " + path, "", 60);
+            INFO(r.err);
+            REQUIRE(r.exit_code == 0);
+            CHECK(read_file(path).compare(0, f.magic.size(), f.magic) == 0);
+        }
+    }
+    // A PDF is the same bytes from run to run (no creation date).
+    const std::string first = temporary_file("first.pdf", ""), second = temporary_file("second.pdf", "");
+    REQUIRE(run_cli("simulate " + scene + " --until 2 --plot " + first, "", 60).exit_code == 0);
+    REQUIRE(run_cli("simulate " + scene + " --until 2 --plot " + second, "", 60).exit_code == 0);
+    CHECK(read_file(first) == read_file(second));
+    // Another extension: exit 2 before any work, with the formats named, and nothing written.
+    for (const std::string& command : {"simulate " + scene + " --until 2", "response " + response}) {
+        const std::string path = temporary_file("refused.txt", "old\n");
+        cli_result r = run_cli(command + " --plot " + path, "", 60);
+        CHECK(r.exit_code == 2);
+        CHECK(r.err.find(".svg, .png or .pdf") != std::string::npos);
+        CHECK(r.out.empty());
+        CHECK(read_file(path) == "old\n");
+    }
+}
+
 TEST_CASE("cli: a plot's title keeps the scene's quotes and backslashes", "[cli][plot][gnuplot]")
 {
     std::string scene = read_file(examples + "damped_driven_oscillator.lag");
@@ -147,7 +183,7 @@ TEST_CASE("cli: an unwritable -o, --plot or --csv exits alike, with 2 and the pa
     const std::string scene = examples + "beats.lag";
     const std::string response = examples + "damped_driven_oscillator.lag --input u --output x";
     for (const std::string& folder : {std::string("/no/such/folder"), std::string("/proc")}) {
-        const std::string path = folder + "/out.file";
+        const std::string path = folder + "/out.svg"; // an extension --plot takes
         for (const std::string& args :
              {"simulate " + scene + " --until 1 -o " + path, "simulate " + scene + " --until 1 --plot " + path,
               "simulate " + scene + " --until 1 --csv " + path, "workprecision " + scene + " --until 0.5 --plot " + path,
