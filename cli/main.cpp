@@ -57,19 +57,24 @@ lagrange::source_text read_scene(const std::string& path, double wait_seconds = 
 }
 
 /// The scene in `source` with the --values points added.
-lagrange::model load_scene(const lagrange::source_text& source, const std::vector<std::string>& values)
+lagrange::model load_scene(const lagrange::source_text& source, const std::vector<std::string>& values,
+                           const std::vector<std::string>& initial = {})
 {
     lagrange::model scene = lagrange::load_model(source);
     for (const std::string& v : values)
         lagrange::add_values(scene, v);
+    for (const std::string& i : initial)
+        lagrange::add_initial(scene, i);
     return scene;
 }
 
-/// The scene at `path` (standard input for "-") with the --values points added.
+/// The scene at `path` (standard input for "-") with the --values points added and the
+/// --initial values set.
 lagrange::model load_scene(const std::string& path, const std::vector<std::string>& values,
+                           const std::vector<std::string>& initial = {},
                            double wait_seconds = lagrange::budget_limits{}.max_seconds)
 {
-    return load_scene(read_scene(path, wait_seconds), values);
+    return load_scene(read_scene(path, wait_seconds), values, initial);
 }
 
 /// A plot's title: the scene's, or its file name.
@@ -105,6 +110,7 @@ struct run_options {
     std::string scene_path;
     std::string want;
     std::vector<std::string> values;
+    std::vector<std::string> initial; ///< --initial, applied in order
     std::string format = "text";
     std::string output;
     bool timings = false;
@@ -142,7 +148,7 @@ int sweep_scene(const run_options& options)
         throw usage_error("--sweep writes text or json, not latex");
     if (!options.want.empty())
         throw usage_error("--sweep computes the numeric modes only; leave out --want");
-    lagrange::model scene = load_scene(options.scene_path, options.values, options.budget.max_seconds);
+    lagrange::model scene = load_scene(options.scene_path, options.values, options.initial, options.budget.max_seconds);
     std::vector<lagrange::sweep_axis> axes;
     for (const std::string& s : options.sweeps)
         axes.push_back(lagrange::parse_sweep_axis(s, scene));
@@ -158,7 +164,7 @@ int analyze_scene(const run_options& options)
 {
     if (!options.sweeps.empty())
         return sweep_scene(options);
-    lagrange::model scene = load_scene(options.scene_path, options.values, options.budget.max_seconds);
+    lagrange::model scene = load_scene(options.scene_path, options.values, options.initial, options.budget.max_seconds);
     lagrange::analysis result = analyze_wanted(scene, options.want, options.budget);
     write_document(result, options.format, options.timings, options.output);
     return exit_ok;
@@ -167,6 +173,7 @@ int analyze_scene(const run_options& options)
 struct motion_options {
     std::string scene_path;
     std::vector<std::string> values;
+    std::vector<std::string> initial; ///< --initial, applied in order
     std::optional<double> until;
     std::string method;
     std::optional<double> tolerance;
@@ -193,7 +200,7 @@ void require_plot_format(const std::string& path)
 int motion_command(const motion_options& options, lagrange::product wanted, const lagrange::budget_limits& budget)
 {
     require_plot_format(options.plot);
-    lagrange::model scene = load_scene(options.scene_path, options.values, budget.max_seconds);
+    lagrange::model scene = load_scene(options.scene_path, options.values, options.initial, budget.max_seconds);
     lagrange::simulation_settings settings;
     settings.until = options.until;
     if (!options.method.empty())
@@ -271,6 +278,7 @@ struct ensemble_options {
     bool resume = false;
     bool interpret = false;
     std::vector<std::string> values;
+    std::vector<std::string> initial; ///< --initial, applied in order
 };
 
 /// Points done, points per second and the time left, on the progress line (a terminal only).
@@ -313,7 +321,7 @@ int ensemble_command(const ensemble_options& options)
         throw usage_error("`ensemble -o` takes a file ending in .csv, .json or .png, not `" + options.output + "`");
     if (options.resume && (!to_file || png || json))
         throw usage_error("--resume continues a CSV file: give it with -o FILE.csv");
-    lagrange::model scene = load_scene(options.scene_path, options.values);
+    lagrange::model scene = load_scene(options.scene_path, options.values, options.initial);
     std::vector<lagrange::ensemble_axis> axes = lagrange::parse_ensemble_grid(options.grid, scene, options.random > 0);
     lagrange::ensemble_measure measure = lagrange::parse_ensemble_measure(options.measure, scene);
     lagrange::ensemble_settings settings;
@@ -414,7 +422,7 @@ int report_scene(const run_options& options)
     if (!path.empty() && path != "-" && !pdf && !ends_with(".tex"))
         throw usage_error("`report -o` takes a file ending in .tex or .pdf, not `" + path + "`");
     lagrange::source_text source = read_scene(options.scene_path);
-    lagrange::model scene = load_scene(source, options.values);
+    lagrange::model scene = load_scene(source, options.values, options.initial);
     lagrange::analysis result = analyze_wanted(scene, options.want, lagrange::budget_limits{});
     lagrange::report_options report;
     // Figures go beside the .tex file, named after it (letters, digits and `-` only).
@@ -463,6 +471,7 @@ int run(int argc, char** argv)
     app.add_option("SCENE", options.scene_path, "the scene file (`-` for standard input)");
     app.add_option("--want", options.want, "products to compute, comma-separated (default: the scene's `want`)");
     app.add_option("--values", options.values, "a parameter point such as a=1,b=2.5 (repeatable)");
+    app.add_option("--initial", options.initial, "initial values such as \"theta=0.1, phi'=0\": they replace the scene's for those coordinates");
     app.add_option("--format", options.format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
     app.add_option("-o,--output", options.output, "write the output to this file");
     app.add_flag("--timings", options.timings, "show which stages ran and how long each took");
@@ -486,6 +495,7 @@ int run(int argc, char** argv)
     report->add_option("-o,--output", report_options.output, "FILE.tex (figures beside it) or FILE.pdf (needs pdflatex)");
     report->add_option("--want", report_options.want, "products to derive, comma-separated (default: the scene's `want`)");
     report->add_option("--values", report_options.values, "a parameter point such as a=1,b=2.5 (repeatable)");
+    report->add_option("--initial", report_options.initial, "initial values such as \"theta=0.1, phi'=0\": they replace the scene's for those coordinates");
     report->footer(products_help());
 
     motion_options simulate_options, workprecision_options;
@@ -494,6 +504,7 @@ int run(int argc, char** argv)
     for (auto [sub, o] : {std::pair{simulate, &simulate_options}, std::pair{workprecision, &workprecision_options}}) {
         sub->add_option("SCENE", o->scene_path, "the scene file (`-` for standard input)")->required();
         sub->add_option("--values", o->values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
+        sub->add_option("--initial", o->initial, "initial values such as \"theta=0.1, phi'=0\": they replace the scene's for those coordinates");
         sub->add_option("--until", o->until, "end time (default: the scene's `simulate until`)")
             ->check(finite_number & CLI::PositiveNumber);
         sub->add_option("--plot", o->plot, "draw a plot with gnuplot: .svg, .png or .pdf, by the extension");
@@ -560,6 +571,7 @@ int run(int argc, char** argv)
     ensemble->add_option("--seed", ensemble_options.seed, "seed of --random (default 1)");
     ensemble->add_flag("--resume", ensemble_options.resume, "continue the CSV file of an interrupted run (-o FILE.csv)");
     ensemble->add_option("--values", ensemble_options.values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
+    ensemble->add_option("--initial", ensemble_options.initial, "initial values such as \"theta=0.1, phi'=0\": they replace the scene's for those coordinates");
     ensemble->add_flag("--interpret", ensemble_options.interpret,
                        "evaluate the equations with the interpreter (default: machine code by the system's C compiler)");
 

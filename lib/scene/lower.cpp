@@ -44,6 +44,7 @@ public:
     }
 
     value_point values_line(const statement& s) { return lower_values(s); }
+    initial_state initial_line(const statement& s) { return initial_of(s); }
 
 private:
     // ---- statements ---------------------------------------------------------------
@@ -411,6 +412,11 @@ private:
     {
         if (scene_.initial)
             throw scene_error(s.where, "the initial state is given twice");
+        scene_.initial = initial_of(s);
+    }
+
+    initial_state initial_of(const statement& s)
+    {
         initial_state state;
         for (const assignment& a : s.assignments) {
             auto angular = names_.find(a.target.name);
@@ -430,7 +436,7 @@ private:
                 throw scene_error(a.target.where, "`" + name + (a.velocity ? "'" : "") + "` is given twice");
             target[name] = constant_value(*a.value, "an initial value");
         }
-        scene_.initial = state;
+        return state;
     }
 
     GiNaC::ex positive_constant(const expr_node& node, const char* what)
@@ -638,6 +644,36 @@ void add_values(model& scene, const std::string& text)
         value_point point = lower.values_line(ast.statements[0]);
         lowering::check_physical(scene, point, ast.statements[0]);
         scene.values.push_back(point);
+    } catch (scene_error& error) {
+        source_location at = error.where();
+        at.column = std::max(1, at.column - static_cast<int>(prefix.size()));
+        scene_error shifted(at, error.what());
+        shifted.attach_line_text(text);
+        throw shifted;
+    }
+}
+
+void add_initial(model& scene, const std::string& text)
+{
+    const std::string prefix = "initial ";
+    source_text source("--initial", prefix + text);
+    try {
+        std::vector<token> tokens = tokenize(source);
+        scene_ast ast = parse_scene(tokens);
+        if (ast.statements.size() != 1 || ast.statements[0].keyword != "initial")
+            throw scene_error({"--initial", 1, static_cast<int>(prefix.size()) + 1},
+                              "give initial values as `theta=0.1, phi'=0`");
+        lowering lower(source, {});
+        lower.adopt_names(scene);
+        const initial_state given = lower.initial_line(ast.statements[0]);
+        initial_state state = scene.initial.value_or(initial_state{});
+        for (const auto& [name, value] : given.positions)
+            state.positions[name] = value;
+        for (const auto& [name, value] : given.velocities)
+            state.velocities[name] = value;
+        for (const auto& [name, value] : given.others)
+            state.others[name] = value;
+        scene.initial = state;
     } catch (scene_error& error) {
         source_location at = error.where();
         at.column = std::max(1, at.column - static_cast<int>(prefix.size()));

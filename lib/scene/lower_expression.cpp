@@ -93,6 +93,10 @@ void expression_lowering::adopt_names(const model& scene)
                                              scene.coordinates[i].position, i, {}};
     for (const input_signal& u : scene.inputs)
         names_[u.name] = {name_entry::kind::input, u.symbol, 0, u.where};
+    for (const rigid_body& b : scene.bodies)
+        if (b.omega)
+            for (const GiNaC::realsymbol& w : *b.omega)
+                names_[w.get_name()] = {name_entry::kind::angular, w, 0, {}};
     coordinates_ = scene.coordinates;
     scene_.time = scene.time;
 }

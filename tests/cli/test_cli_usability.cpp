@@ -8,6 +8,7 @@
 #include "core/model.h"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cerrno>
 #include <cstdlib>
@@ -238,4 +239,32 @@ TEST_CASE("cli: progress shows on a terminal during the runs and stages, and nev
         }
         unsetenv("LAGRANGE_PROGRESS_DELAY");
     }
+}
+
+TEST_CASE("cli: --initial sets the initial values as an initial line does, errors located", "[cli][initial]")
+{
+    const std::string scene = examples + "double_pendulum.lag"; // initial theta = 0, phi = 0.05
+    cli_result r = run_cli("simulate " + scene + " --until 0.5 --initial \"theta=0.1, theta'=-0.2\" --format json", "", 60);
+    REQUIRE(r.exit_code == 0);
+    nlohmann::json doc = nlohmann::json::parse(r.out);
+    CHECK(doc["simulation"]["states"]["theta"][0].get<double>() == 0.1);
+    CHECK(doc["simulation"]["states"]["phi"][0].get<double>() == 0.05); // the scene's, kept
+    // The same start as a scene that says it in its `initial` line.
+    std::string text = read_file(scene);
+    const std::string line = "initial theta = 0, phi = 0.05, theta' = 0, phi' = 0";
+    REQUIRE(text.find(line) != std::string::npos);
+    text.replace(text.find(line), line.size(), "initial theta = 0.1, phi = 0.05, theta' = -0.2");
+    cli_result same = run_cli("simulate - --until 0.5 --format json", text, 60);
+    REQUIRE(same.exit_code == 0);
+    CHECK(nlohmann::json::parse(same.out)["simulation"]["states"] == doc["simulation"]["states"]);
+    // Bad input: exit 2, located in `--initial`.
+    cli_result unknown = run_cli("simulate " + scene + " --until 0.5 --initial \"thetx=0.1\"");
+    CHECK(unknown.exit_code == 2);
+    CHECK(unknown.err == "--initial:1:1: error: `thetx` is not a coordinate\nthetx=0.1\n^\n");
+    cli_result twice = run_cli("simulate " + scene + " --until 0.5 --initial \"phi=1, phi=2\"");
+    CHECK(twice.exit_code == 2);
+    CHECK(twice.err.rfind("--initial:1:8: error:", 0) == 0);
+    cli_result not_values = run_cli("simulate " + scene + " --until 0.5 --initial \"theta=0.1 simulate until 3\"");
+    CHECK(not_values.exit_code == 2);
+    CHECK(not_values.err.rfind("--initial:1:", 0) == 0);
 }
