@@ -74,8 +74,9 @@ std::string temporary_problem(const temporary_error& e)
     case EROFS:
         return folder + " is not writable, so the equations were not compiled";
     case ENOENT:
-    case ENOTDIR:
         return folder + " does not exist, so the equations were not compiled";
+    case ENOTDIR:
+        return folder + " is not a folder, so the equations were not compiled";
     default:
         return folder + " cannot be used to compile the equations (" + std::strerror(e.error) + ")";
     }
@@ -111,14 +112,14 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     // Compiled code is loaded from the private folder by its path: no one but root and this
     // user may be able to swap a folder above it (the rule of the cache, system/cache.h).
     const std::string temporary = temporary_folder();
-    if (std::string unsafe; !trusted_folder(temporary, &unsafe))
-        return refuse("the temporary folder " + temporary + " (TMPDIR) is not safe for compiled code: " + unsafe);
     std::optional<private_directory> folder;
     try {
         folder.emplace("lagrange-native");
     } catch (const temporary_error& e) {
         return refuse(temporary_problem(e));
     }
+    if (std::string unsafe; !trusted_folder(temporary, &unsafe))
+        return refuse("the temporary folder " + temporary + " (TMPDIR) is not safe for compiled code: " + unsafe);
     const std::string source = folder->path() + "/programs.c";
     const char* compiler = std::getenv("LAGRANGE_CC");
     const bool chosen = compiler && *compiler;
