@@ -165,7 +165,9 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         key += code.str();
         // A hit is loaded from a copy in our private folder of the bytes the cache checked,
         // never from the cache's own path; one that does not load, or lacks the programs, is
-        // removed and compiled again (so it is replaced, and cannot spoil later runs).
+        // removed and compiled again (so it is replaced, and cannot spoil later runs). Not
+        // dlopen("/proc/self/fd/N"): the loader knows a library by that name, and would hand
+        // back the old one for a later descriptor N of another file while it stays loaded.
         if (std::optional<std::string> found = cache.find(key)) {
             const std::string copy = folder->path() + "/cached" + suffix;
             try {
