@@ -102,8 +102,10 @@ void swap_everything(const std::string& folder)
     ++hook_runs;
     const std::string decoy = folder + ".decoy";
     std::filesystem::create_directory(decoy);
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-        const std::string name = entry.path().filename().string();
+    std::vector<std::string> names; // first: the loop below adds files to the folder
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+        names.push_back(entry.path().filename().string());
+    for (const std::string& name : names) {
         std::filesystem::copy_file(foreign_library, decoy + "/" + name);
         std::filesystem::copy_file(foreign_library, folder + "/" + name + ".swap");
         std::filesystem::rename(folder + "/" + name + ".swap", folder + "/" + name);

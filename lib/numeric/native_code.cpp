@@ -170,8 +170,10 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         // back the old one for a later descriptor N of another file while it stays loaded.
         if (std::optional<std::string> found = cache.find(key)) {
             const std::string copy = folder->path() + "/cached" + suffix;
+            bool copied = false;
             try {
                 folder->write("cached" + suffix, *found);
+                copied = true;
                 cache_testing::run_race_hook(cache.folder());
                 handle = dlopen(copy.c_str(), RTLD_NOW | RTLD_LOCAL);
             } catch (const temporary_error&) {
@@ -182,7 +184,8 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
             if (handle)
                 dlclose(handle);
             handle = nullptr;
-            cache.remove(key);
+            if (copied) // the entry's fault, not a full TMPDIR's
+                cache.remove(key);
         }
         try {
             folder->write("programs.c", code.str());
