@@ -11,7 +11,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <sstream>
 
@@ -36,6 +38,65 @@ bool sleef_wanted()
 #endif
 }
 
+/// The first few lines of the compiler's messages on one line (they go into the output's
+/// `evaluation:` line), without the private folder's path and without control characters.
+std::string first_lines(std::string log, const std::string& folder)
+{
+    for (std::size_t at; (at = log.find(folder + "/")) != std::string::npos;)
+        log.erase(at, folder.size() + 1);
+    std::string joined;
+    std::istringstream lines(log);
+    int kept = 0;
+    for (std::string line; kept < 3 && std::getline(lines, line);) {
+        for (char& c : line)
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+                c = ' ';
+        line.erase(0, line.find_first_not_of(' '));
+        if (line.empty())
+            continue;
+        if (line.size() > 200)
+            line = line.substr(0, 200) + "…";
+        joined += (kept++ ? "; " : "") + line;
+    }
+    return joined.empty() ? "it printed no message" : joined;
+}
+
+/// What is wrong with the temporary folder, for the user.
+std::string temporary_problem(const temporary_error& e)
+{
+    const std::string folder = "the temporary folder " + e.folder + " (TMPDIR)";
+    switch (e.error) {
+    case ENOSPC:
+    case EDQUOT:
+        return folder + " is full, so the equations were not compiled";
+    case EACCES:
+    case EPERM:
+    case EROFS:
+        return folder + " is not writable, so the equations were not compiled";
+    case ENOENT:
+        return folder + " does not exist, so the equations were not compiled";
+    case ENOTDIR:
+        return folder + " is not a folder, so the equations were not compiled";
+    default:
+        return folder + " cannot be used to compile the equations (" + std::strerror(e.error) + ")";
+    }
+}
+
+/// Why a loaded library cannot be used ("" when it can): it lacks the table of programs or
+/// holds another number of them (an entry or output that is not what was compiled).
+std::string unusable(void* handle, std::size_t count)
+{
+    dlerror();
+    if (!dlsym(handle, "lagrange_programs")) {
+        const char* error = dlerror();
+        return error ? error : "it has no lagrange_programs";
+    }
+    auto* stored = static_cast<const unsigned long*>(dlsym(handle, "lagrange_program_count"));
+    if (!stored || *stored != count)
+        return "it does not hold the " + std::to_string(count) + " programs compiled";
+    return "";
+}
+
 } // namespace
 
 std::shared_ptr<native_module> native_module::compile(const std::vector<const expression_program*>& programs,
@@ -48,20 +109,27 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     };
     bool sleef = sleef_wanted() &&
                  std::any_of(programs.begin(), programs.end(), [](const auto* p) { return p->trigonometric(); });
+    // Compiled code is loaded from the private folder by its path: no one but root and this
+    // user may be able to swap a folder above it (the rule of the cache, system/cache.h).
+    const std::string temporary = temporary_folder();
     std::optional<private_directory> folder;
     try {
         folder.emplace("lagrange-native");
-    } catch (const computation_error&) {
-        return refuse("no temporary folder could be made to compile the equations");
+    } catch (const temporary_error& e) {
+        return refuse(temporary_problem(e));
     }
-    std::string source = folder->path() + "/programs.c";
-    std::string library = folder->path() + "/programs.so";
+    if (std::string unsafe; !trusted_folder(temporary, &unsafe))
+        return refuse("the temporary folder " + temporary + " (TMPDIR) is not safe for compiled code: " + unsafe);
+    const std::string source = folder->path() + "/programs.c";
     const char* compiler = std::getenv("LAGRANGE_CC");
-    std::string cc = compiler && *compiler ? compiler : "cc";
+    const bool chosen = compiler && *compiler;
+    const std::string cc = chosen ? compiler : "cc";
+    const std::string cc_named = "`" + cc + "`" + (chosen ? " (LAGRANGE_CC)" : "");
     // -ffp-contract=off: no fused multiply-adds where the interpreter has none (with -mfma, or
     // on a CPU where FMA is the baseline), so native code rounds as the interpreter does;
     // only SLEEF's sines and cosines may differ from libm's, by an ulp or two.
-    bool too_large = false, timed_out = false, load_failed = false;
+    bool too_large = false, timed_out = false;
+    std::string failure; // why the last attempt failed
     const file_cache cache("native");
     void* handle = nullptr; // the loaded library: compiled now, or found in the cache
     auto build = [&](bool with_sleef) {
@@ -74,11 +142,15 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         code << "void (*lagrange_programs[])(const double*, double*) = {";
         for (std::size_t k = 0; k < programs.size(); ++k)
             code << (k ? ", " : "") << "program_" << k;
-        code << "};\n";
+        code << "};\nconst unsigned long lagrange_program_count = " << programs.size() << ";\n";
         if (code.tellp() > static_cast<std::streamoff>(limits.max_source_bytes)) {
             too_large = true;
+            failure = "the equations' C source is larger than " + std::to_string(limits.max_source_bytes >> 20) +
+                      " MB, too large for compiling to pay off";
             return false;
         }
+        const std::string suffix = with_sleef ? "_sleef.so" : ".so";
+        const std::string library = folder->path() + "/programs" + suffix;
         std::vector<std::string> arguments = {cc, "-O2", "-fno-math-errno", "-ffp-contract=off", "-shared", "-fPIC"};
         if (with_sleef)
             arguments.insert(arguments.end(), {"-mavx2", "-mfma"});
@@ -91,45 +163,100 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         for (const std::string& a : arguments)
             key += (a == library ? "OUTPUT" : a == source ? "SOURCE" : a) + "\n";
         key += code.str();
-        if (std::string found = cache.find(key); !found.empty() && (handle = dlopen(found.c_str(), RTLD_NOW | RTLD_LOCAL)))
-            return true;
+        // A hit is loaded from a copy in our private folder of the bytes the cache checked,
+        // never from the cache's own path; one that does not load, or lacks the programs, is
+        // removed and compiled again (so it is replaced, and cannot spoil later runs). Not
+        // dlopen("/proc/self/fd/N"): the loader knows a library by that name, and would hand
+        // back the old one for a later descriptor N of another file while it stays loaded.
+        if (std::optional<std::string> found = cache.find(key)) {
+            const std::string copy = folder->path() + "/cached" + suffix;
+            bool copied = false;
+            try {
+                folder->write("cached" + suffix, *found);
+                copied = true;
+                cache_testing::run_race_hook(cache.folder());
+                handle = dlopen(copy.c_str(), RTLD_NOW | RTLD_LOCAL);
+            } catch (const temporary_error&) {
+                handle = nullptr;
+            }
+            if (handle && unusable(handle, programs.size()).empty())
+                return true;
+            if (handle)
+                dlclose(handle);
+            handle = nullptr;
+            if (copied) // the entry's fault, not a full TMPDIR's
+                cache.remove(key);
+        }
         try {
             folder->write("programs.c", code.str());
-        } catch (const computation_error&) {
+        } catch (const temporary_error& e) {
+            failure = temporary_problem(e);
             return false;
         }
         // TMPDIR: the compiler's own temporary files go into the private folder too.
         program_result run = run_program(arguments, folder->path(), "cc.log", {"TMPDIR=" + folder->path()},
                                           limits.seconds);
-        timed_out = timed_out || run.timed_out;
-        if (run.exit_code != 0)
+        if (run.timed_out) {
+            timed_out = true;
+            failure = "compiling the equations took longer than the time budget";
             return false;
+        }
+        if (run.start_error != 0) {
+            const int e = run.start_error;
+            failure = e == ENOSPC || e == EDQUOT
+                          ? temporary_problem(temporary_error("", e, temporary))
+                      : e == ENOENT || e == EACCES || e == ENOEXEC || e == ENOTDIR || e == ELOOP || e == EPERM
+                          ? "no C compiler was found to compile the equations: " + cc_named + " could not be started (" +
+                                std::strerror(e) + ")"
+                          : "the C compiler " + cc_named + " could not be started (" + std::strerror(e) + ")";
+            return false;
+        }
+        if (run.exit_code != 0) {
+            std::string log;
+            try {
+                log = folder->read("cc.log");
+            } catch (const computation_error&) {
+            }
+            failure = std::string(log.find("No space left on device") != std::string::npos
+                                      ? "the temporary folder " + temporary + " (TMPDIR) is full: "
+                                      : "") +
+                      "compile error: " + cc_named +
+                      (run.signal ? " was ended by signal " + std::to_string(run.signal)
+                                  : " exited with status " + std::to_string(run.exit_code)) +
+                      ": " + first_lines(log, folder->path());
+            return false;
+        }
         handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
-        load_failed = !handle;
-        if (!handle)
+        if (!handle) {
+            const char* error = dlerror();
+            failure = std::string("the compiled equations could not be loaded: ") + (error ? error : "dlopen failed");
             return false;
+        }
+        if (std::string problem = unusable(handle, programs.size()); !problem.empty()) {
+            dlclose(handle);
+            handle = nullptr;
+            failure = "the compiled equations could not be loaded: " + problem;
+            return false;
+        }
         cache.store(key, library);
         return true;
     };
     bool built = sleef && build(true);
     if (sleef && !built && !too_large && !timed_out) {
-        sleef_failed = true;
-        sleef = false;
-    }
-    if (!sleef)
+        // Perhaps SLEEF is missing (no libsleef-dev): libm's then, and later modules of this
+        // process skip SLEEF when that works.
         built = build(false);
+        sleef = false;
+        if (built)
+            sleef_failed = true;
+    } else if (!sleef) {
+        built = build(false);
+    }
     if (!built)
-        return refuse(too_large ? "the equations' C source is larger than " +
-                                      std::to_string(limits.max_source_bytes >> 20) +
-                                      " MB, too large for compiling to pay off"
-                      : timed_out ? "compiling the equations took longer than the time budget"
-                      : load_failed ? "the compiled equations could not be loaded"
-                                    : "no C compiler was found to compile the equations");
+        return refuse(failure);
     std::shared_ptr<native_module> module(new native_module());
     module->handle_ = handle;
     auto* table = static_cast<function*>(dlsym(module->handle_, "lagrange_programs"));
-    if (!table)
-        return refuse("the compiled equations could not be loaded");
     module->functions_.assign(table, table + programs.size());
     module->sleef_ = sleef;
     return module; // the folder and its files go; the loaded library stays mapped

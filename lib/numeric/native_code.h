@@ -30,9 +30,12 @@ class native_module {
 public:
     using function = void (*)(const double* symbols, double* out);
 
-    /// Compiles `programs`; returns nullptr (never throws) when no compiler is available,
-    /// compilation fails or passes `limits`, so callers fall back to the interpreter; then
-    /// `why` (if given) says which, for the user.
+    /// Compiles `programs` (or loads them from the cache, system/cache.h); returns nullptr
+    /// (never throws) when they cannot be, so callers fall back to the interpreter; then `why`
+    /// (if given) says which failure it was, on one line, for the user: no compiler (the
+    /// command named), a compile error (the compiler's first lines), a library that does not
+    /// load (dlerror's text), a missing, full, unwritable or unsafe TMPDIR, the time budget,
+    /// or source too large.
     static std::shared_ptr<native_module> compile(const std::vector<const expression_program*>& programs,
                                                   const native_limits& limits = {}, std::string* why = nullptr);
 

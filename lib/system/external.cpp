@@ -24,14 +24,23 @@ extern char** environ;
 
 namespace lagrange {
 
-private_directory::private_directory(const std::string& prefix)
+std::string temporary_folder()
 {
     const char* base = std::getenv("TMPDIR");
-    std::string pattern = std::string(base && *base ? base : "/tmp") + "/" + prefix + "-XXXXXX";
+    return base && *base ? base : "/tmp";
+}
+
+private_directory::private_directory(const std::string& prefix)
+{
+    const std::string base = temporary_folder();
+    std::string pattern = base + "/" + prefix + "-XXXXXX";
     std::vector<char> buffer(pattern.begin(), pattern.end());
     buffer.push_back('\0');
-    if (!mkdtemp(buffer.data()))
-        throw computation_error("cannot create a temporary folder (" + std::string(std::strerror(errno)) + ")");
+    if (!mkdtemp(buffer.data())) {
+        int error = errno;
+        throw temporary_error("cannot create a temporary folder (" + std::string(std::strerror(error)) + ")", error,
+                              base);
+    }
     path_ = buffer.data();
     guard_ = removed_on_signal(path_, true);
 }
@@ -44,10 +53,23 @@ private_directory::~private_directory()
 
 void private_directory::write(const std::string& name, const std::string& bytes) const
 {
-    std::ofstream out(path_ + "/" + name, std::ios::binary);
-    out << bytes;
-    if (!out)
-        throw computation_error("cannot write the temporary file `" + name + "`");
+    // POSIX calls rather than a stream: the errno (a full disc) reaches the message.
+    int fd = open((path_ + "/" + name).c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    int error = fd < 0 ? errno : 0;
+    for (std::size_t done = 0; fd >= 0 && !error && done < bytes.size();) {
+        ssize_t put = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (put < 0 && errno == EINTR)
+            continue;
+        if (put <= 0)
+            error = put < 0 ? errno : EIO;
+        else
+            done += static_cast<std::size_t>(put);
+    }
+    if (fd >= 0 && close(fd) != 0 && !error)
+        error = errno;
+    if (error)
+        throw temporary_error("cannot write the temporary file `" + name + "` (" + std::strerror(error) + ")", error,
+                              temporary_folder());
 }
 
 std::string private_directory::read(const std::string& name) const
@@ -130,8 +152,10 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
     int started = prepared ? posix_spawnp(&child, argv[0], &actions, &attributes, argv.data(), envp.data()) : -1;
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attributes);
-    if (started != 0)
+    if (started != 0) {
+        result.start_error = started > 0 ? started : EINVAL;
         return result; // not found, not executable, or no folder or log: it could not be started
+    }
     killed_on_signal guard(child);
     auto deadline = std::chrono::steady_clock::now() +
                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -153,6 +177,8 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
     }
     if (WIFEXITED(status))
         result.exit_code = WEXITSTATUS(status);
+    else if (WIFSIGNALED(status))
+        result.signal = WTERMSIG(status);
     return result;
 }
 

@@ -6,24 +6,39 @@
  *  reaches a command line. Below the other modules: numeric/ and output/ both use it. */
 #pragma once
 
+#include "core/errors.h"
 #include "system/signals.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lagrange {
+
+/// A temporary folder or file that cannot be made or written: `error` is the errno (ENOSPC
+/// for a full disc, EACCES for a folder we may not write, ...) and `folder` the folder.
+class temporary_error : public computation_error {
+public:
+    temporary_error(const std::string& message, int error, std::string folder)
+        : computation_error(message), error(error), folder(std::move(folder)) {}
+    int error;
+    std::string folder;
+};
+
+/// The folder temporary folders are made in: $TMPDIR, or /tmp when it is unset or empty.
+std::string temporary_folder();
 
 /// A folder only this process can use (mkdtemp, mode 0700), removed with all its
 /// content when the object goes away.
 class private_directory {
 public:
-    /// Named `PREFIX-XXXXXX` in $TMPDIR (or /tmp); throws computation_error if it cannot be made.
+    /// Named `PREFIX-XXXXXX` in $TMPDIR (or /tmp); throws temporary_error if it cannot be made.
     explicit private_directory(const std::string& prefix = "lagrange");
     ~private_directory();
     private_directory(const private_directory&) = delete;
     private_directory& operator=(const private_directory&) = delete;
     const std::string& path() const { return path_; }
-    /// Writes `bytes` to `name` inside the folder; throws computation_error on failure.
+    /// Writes `bytes` to `name` inside the folder; throws temporary_error on failure.
     void write(const std::string& name, const std::string& bytes) const;
     /// The content of `name` inside the folder; throws computation_error if it cannot be read.
     std::string read(const std::string& name) const;
@@ -39,6 +54,8 @@ bool program_available(const std::string& program);
 struct program_result {
     int exit_code = -1;  ///< -1 if it could not be started, was killed, or timed out
     bool timed_out = false;
+    int start_error = 0; ///< the errno when it could not be started (ENOENT: no such program)
+    int signal = 0;      ///< the signal that ended it, if one did (not the timeout's)
 };
 
 /// Runs `arguments` (arguments[0] found through $PATH, no shell) in `directory`,

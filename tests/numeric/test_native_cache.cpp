@@ -79,18 +79,18 @@ TEST_CASE("file cache: stored under a key, found only by the same key", "[cache]
     REQUIRE(stat(cache.folder().c_str(), &info) == 0);
     CHECK((info.st_mode & 0777) == 0700);
 
-    CHECK(cache.find("key one").empty());
+    CHECK(!cache.find("key one"));
     cache.store("key one", made_file(scratch, "a", "first content"));
-    const std::string found = cache.find("key one");
-    REQUIRE(!found.empty());
-    CHECK(file_text(found) == "first content");
-    CHECK(cache.find("key one ").empty());
-    CHECK(cache.find("").empty());
+    const std::optional<std::string> found = cache.find("key one");
+    REQUIRE(found);
+    CHECK(*found == "first content");
+    CHECK(!cache.find("key one "));
+    CHECK(!cache.find(""));
 
-    // A key file that no longer holds the key (a hash collision, or tampering) is a miss.
-    const std::string key_file = found.substr(0, found.size() - 5) + ".key";
-    std::ofstream(key_file) << "another key";
-    CHECK(cache.find("key one").empty());
+    // An entry that no longer holds the key (a hash collision, or tampering) is a miss.
+    const std::string entry = cache.folder() + "/" + lagrange::file_cache::entry_name("key one");
+    std::ofstream(entry) << "lagrange cache entry 1\n11\nanother keyfirst content";
+    CHECK(!cache.find("key one"));
 }
 
 TEST_CASE("file cache: off when asked, and in folders others could write", "[cache]")
@@ -100,7 +100,7 @@ TEST_CASE("file cache: off when asked, and in folders others could write", "[cac
         lagrange::file_cache cache("test");
         CHECK(!cache.enabled());
         cache.store("k", made_file(scratch, "a", "x"));
-        CHECK(cache.find("k").empty());
+        CHECK(!cache.find("k"));
         CHECK(!std::filesystem::exists(scratch.path() + "/lagrange"));
     }
     {
@@ -127,23 +127,23 @@ TEST_CASE("file cache: the least recently used entries go past the limit", "[cac
     // Entry times one second apart, oldest first, whatever the clock's resolution; key 0 is
     // then used, so key 1 is the least recently used.
     for (int k = 0; k < 3; ++k) {
-        std::string key_file = cache.find("key " + std::to_string(k));
-        key_file = key_file.substr(0, key_file.size() - 5) + ".key";
+        const std::string key_file =
+            cache.folder() + "/" + lagrange::file_cache::entry_name("key " + std::to_string(k));
         const struct timespec times[2] = {{1000 + k, 0}, {1000 + k, 0}};
         REQUIRE(utimensat(AT_FDCWD, key_file.c_str(), times, 0) == 0);
     }
-    CHECK(!cache.find("key 0").empty());
+    CHECK(cache.find("key 0"));
     cache.store("key 3", file);
-    CHECK(!cache.find("key 0").empty());
-    CHECK(cache.find("key 1").empty());
-    CHECK(!cache.find("key 2").empty());
-    CHECK(!cache.find("key 3").empty());
+    CHECK(cache.find("key 0"));
+    CHECK(!cache.find("key 1"));
+    CHECK(cache.find("key 2"));
+    CHECK(cache.find("key 3"));
     std::size_t files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(cache.folder())) {
         (void)entry;
         ++files;
     }
-    CHECK(files == 6); // three keys and their files, no temporaries
+    CHECK(files == 3); // three entries (key and content in one file), no temporaries
 }
 
 TEST_CASE("native code: a second compile of the same programs uses the cache", "[cache][native][cc]")
