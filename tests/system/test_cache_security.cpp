@@ -9,6 +9,7 @@
 #include "numeric/native_code.h"
 #include "system/cache.h"
 #include "system/external.h"
+#include "helpers/tools.h"
 
 #include <catch2/catch.hpp>
 
@@ -27,8 +28,8 @@
 
 namespace {
 
-/// Points XDG_CACHE_HOME at a private folder while it lives, LAGRANGE_CC and LAGRANGE_CACHE
-/// unset; all three restored after.
+/// Points XDG_CACHE_HOME at a private folder while it lives, LAGRANGE_CACHE unset; these and
+/// LAGRANGE_CC (which a test may set to a wrapper of the configured compiler) restored after.
 class scratch_cache {
 public:
     scratch_cache() : folder_("lagrange-cache-security")
@@ -38,7 +39,6 @@ public:
             saved_.emplace_back(name, value ? std::optional<std::string>(value) : std::nullopt);
         }
         setenv("XDG_CACHE_HOME", folder_.path().c_str(), 1);
-        unsetenv("LAGRANGE_CC");
         unsetenv("LAGRANGE_CACHE");
     }
     ~scratch_cache()
@@ -71,7 +71,8 @@ std::string file_text(const std::string& path)
 bool compile_library(const lagrange::private_directory& folder, const std::string& source, const std::string& library)
 {
     lagrange::program_result run =
-        lagrange::run_program({"cc", "-shared", "-fPIC", "-o", library, source}, folder.path(), "cc.log");
+        lagrange::run_program({lagrange_test::configured_compiler(), "-shared", "-fPIC", "-o", library, source},
+                              folder.path(), "cc.log");
     return run.exit_code == 0;
 }
 
@@ -116,12 +117,8 @@ void swap_everything(const std::string& folder)
 
 } // namespace
 
-TEST_CASE("cache security: files swapped between the check and the load are never loaded", "[cache][security]")
+TEST_CASE("cache security: files swapped between the check and the load are never loaded", "[cache][security][cc]")
 {
-    if (!lagrange::program_available("cc")) {
-        WARN("no C compiler: the race is not tested");
-        return;
-    }
     scratch_cache scratch;
     lagrange::private_directory work("lagrange-race");
     // A foreign library with the right symbols, whose constructor leaves a marker.
@@ -191,17 +188,15 @@ TEST_CASE("cache security: an entry whose stored key differs is a miss", "[cache
     CHECK(cache.find("key a") == std::optional<std::string>("content of a"));
 }
 
-TEST_CASE("cache security: an entry that does not load, or lacks the programs, is replaced", "[cache][security]")
+TEST_CASE("cache security: an entry that does not load, or lacks the programs, is replaced",
+          "[cache][security][cc]")
 {
-    if (!lagrange::program_available("cc")) {
-        WARN("no C compiler: replacing entries is not tested");
-        return;
-    }
     scratch_cache scratch;
     lagrange::private_directory work("lagrange-corrupt");
     // A compiler that counts its runs.
     const std::string count = work.path() + "/count";
-    work.write("cc", "#!/bin/sh\necho run >> '" + count + "'\nexec cc \"$@\"\n");
+    work.write("cc", "#!/bin/sh\necho run >> '" + count + "'\nexec " + lagrange_test::configured_compiler() +
+                         " \"$@\"\n");
     std::filesystem::permissions(work.path() + "/cc", std::filesystem::perms::owner_all);
     work.write("garbage.so", "not a library at all");
     work.write("empty.c", "int lagrange_nothing;\n");
@@ -209,7 +204,7 @@ TEST_CASE("cache security: an entry that does not load, or lacks the programs, i
 
     GiNaC::symbol x("x"), y("y");
     lagrange::expression_program program({x * y + 1}, {x, y});
-    setenv("LAGRANGE_CC", (work.path() + "/cc").c_str(), 1);
+    lagrange_test::compiler_override wrapped(work.path() + "/cc");
     REQUIRE(lagrange::native_module::compile({&program}));
     const lagrange::file_cache cache("native");
     const auto [key, good] = only_entry(cache.folder());

@@ -4,10 +4,11 @@
  *  LAGRANGE_CC included), a compile error with the compiler's first lines, a load error with
  *  dlerror's text, a missing, full or unsafe TMPDIR; and the interpreter runs on. Every test
  *  restores the environment it changes. */
-#include "cli_runner.h"
+#include "helpers/cli_runner.h"
 #include "numeric/expression_program.h"
 #include "numeric/native_code.h"
 #include "system/external.h"
+#include "helpers/tools.h"
 
 #include <catch2/catch.hpp>
 
@@ -127,7 +128,7 @@ TEST_CASE("native failures: a compile error says so, with the compiler's first l
     CHECK(contains(no_room, "No space left on device"));
 }
 
-TEST_CASE("native failures: a library that does not load gives dlerror's text", "[native][native_failures]")
+TEST_CASE("native failures: a library that does not load gives dlerror's text", "[native][native_failures][cc]")
 {
     lagrange::private_directory folder("lagrange-test");
     const std::string garbage = script(folder, "garbage-cc", find_output + "echo 'not a library' > \"$out\"\n");
@@ -136,21 +137,19 @@ TEST_CASE("native failures: a library that does not load gives dlerror's text", 
     CHECK(contains(why, "the compiled equations could not be loaded: "));
     CHECK(contains(why, "programs")); // dlerror names the file
     CHECK(!contains(why, "no C compiler"));
-    if (!lagrange::program_available("cc")) {
-        WARN("no C compiler: a library without the programs is not tested");
-        return;
-    }
     // A real library, but without the programs.
     folder.write("empty.c", "int lagrange_nothing;\n");
     const std::string empty =
-        script(folder, "empty-cc", find_output + "exec cc -shared -fPIC -o \"$out\" '" + folder.path() + "/empty.c'\n");
+        script(folder, "empty-cc", find_output + "exec " + lagrange_test::configured_compiler() +
+                                       " -shared -fPIC -o \"$out\" '" + folder.path() + "/empty.c'\n");
     why = failure_with(empty);
     INFO(why);
     CHECK(contains(why, "could not be loaded"));
     CHECK(contains(why, "lagrange_programs"));
 }
 
-TEST_CASE("native failures: a missing or unsafe TMPDIR is told, not a missing compiler", "[native][native_failures]")
+TEST_CASE("native failures: a missing or unsafe TMPDIR is told, not a missing compiler",
+          "[native][native_failures][cc]")
 {
     environment_guard guard({"TMPDIR"});
     lagrange::private_directory folder("lagrange-test");
@@ -178,9 +177,8 @@ TEST_CASE("native failures: a missing or unsafe TMPDIR is told, not a missing co
 
     // With the sticky bit (as /tmp) it is used.
     REQUIRE(chmod(open.c_str(), 01777) == 0);
-    why = failure_with("cc");
-    if (lagrange::program_available("cc"))
-        CHECK(why.empty());
+    why = failure_with(lagrange_test::configured_compiler());
+    CHECK(why.empty());
 }
 
 TEST_CASE("native failures: the simulation runs on in the interpreter and says why", "[native][native_failures][cli]")
