@@ -310,7 +310,7 @@ TEST_CASE("sweep: the double pendulum over m/M = 1e-6 ... 1e6 matches the closed
     std::istringstream lines(read_file(out));
     std::string line;
     std::getline(lines, line);
-    CHECK(line == "# m omega1 omega2 error1 error2");
+    CHECK(line == "# m omega1 omega2 error1 error2 stability");
     std::size_t rows = 0;
     double previous = 0;
     while (std::getline(lines, line)) {
@@ -354,7 +354,9 @@ TEST_CASE("sweep: bad sweeps are located input errors; a singular point is named
     CHECK(run_cli(scene + " --sweep m=1..2").exit_code == 2);
     CHECK(run_cli(scene + " --sweep m=1..2:3 --format latex").exit_code == 2);
     std::string target = temporary_file("sweep-old.txt", "old\n");
-    cli_result singular = run_cli(scene + " --values M=0,l=1,g=1 --sweep m=-1..1:3 -o " + target);
+    std::string indefinite = temporary_file("indefinite.lag", "parameters m k\ncoordinates x\nT = 1/2*(m-1)*x'^2\n"
+                                                              "V = 1/2*k*x^2\nequilibrium x = 0\nvalues k = 1\n");
+    cli_result singular = run_cli(indefinite + " --sweep m=0.5..1.5:3 -o " + target);
     CHECK(singular.exit_code == 1);
     CHECK(singular.err.find("sweep point 1") != std::string::npos);
     CHECK(read_file(target) == "old\n");

@@ -8,18 +8,32 @@
 #include "numeric/damped_modes.h"
 #include "numeric/constrained_motion.h"
 #include "numeric/free_body_motion.h"
-#include "numeric/gyroscopic_modes.h"
+#include "numeric/point_modes.h"
 
 #include <chrono>
 #include <functional>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace lagrange {
 
 namespace {
+
+/// The damping matrix C at the linearization's equilibrium, for the numeric modes: the
+/// `damping` stage's where it ran; nothing without generalized forces or where C = 0.
+std::optional<GiNaC::matrix> damping_at_rest(const analysis& result, const simplifier& simplify)
+{
+    if (!result.scene->has_generalized_forces())
+        return std::nullopt;
+    GiNaC::matrix damping = result.damping ? result.damping->damping
+                                           : damping_matrix(*result.scene, result.linearization->at, simplify);
+    if (is_zero_matrix(damping))
+        return std::nullopt;
+    return damping;
+}
 
 /// What the stages share while they run.
 struct stage_context {
@@ -267,16 +281,8 @@ const std::vector<stage_definition>& stage_table()
          }, "small oscillations", "small oscillations"},
         {"numeric", {product::numeric}, {}, {"linearization"}, has_static_point,
          [](stage_context& c) {
-             c.result.numeric = c.result.linearization->has_gyroscopic()
-                                    ? numeric_gyroscopic_modes(c.scene, *c.result.linearization)
-                                    : numeric_normal_modes(c.scene, *c.result.linearization);
-             if (!c.scene.has_generalized_forces())
-                 return;
-             const GiNaC::matrix damping =
-                 c.result.damping ? c.result.damping->damping
-                                  : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
-             if (!is_zero_matrix(damping))
-                 add_damped_eigenvalues(c.scene, *c.result.linearization, damping, *c.result.numeric);
+             const std::optional<GiNaC::matrix> damping = damping_at_rest(c.result, c.simplifier_for_scene());
+             c.result.numeric = numeric_normal_modes(c.scene, *c.result.linearization, damping ? &*damping : nullptr);
          },
          "small oscillations", "small oscillations"},
         // The linearized input–output system: A, B (and at the `values` points), then H(s).
@@ -624,6 +630,14 @@ analysis analyze(const model& scene, const std::set<product>& wanted, const budg
 analysis analyze(const model& scene, const std::set<product>& wanted, const simulation_settings& simulation)
 {
     return analyze(scene, wanted, budget_limits{}, simulation);
+}
+
+point_modes numeric_modes_path(const analysis& result)
+{
+    if (!result.scene || !result.linearization)
+        throw std::invalid_argument("numeric_modes_path: the analysis has no linearization");
+    const std::optional<GiNaC::matrix> damping = damping_at_rest(result, make_simplifier(*result.scene));
+    return point_modes(*result.scene, *result.linearization, damping ? &*damping : nullptr);
 }
 
 } // namespace lagrange

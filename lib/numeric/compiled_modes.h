@@ -3,7 +3,8 @@
  *  Numeric normal modes at each `values` point: ω ascending, the mode matrix with
  *  Aᵀ T A = I, and an error estimate per frequency that bounds the error. T and V are
  *  compiled once (compiled_modes) and evaluated per point by the route that meets the
- *  tolerance; numeric_normal_modes is the stage over the scene's points. */
+ *  tolerance. numeric/point_modes.h is the one path from a linearization to the modes at
+ *  a point, for the `numeric` stage and sweeps alike. */
 #pragma once
 
 #include "mechanics/linearization.h"
@@ -162,10 +163,5 @@ private:
 /// real number.
 void read_value_point(const model& scene, const value_point& point, std::vector<double>& values,
                       std::vector<bool>& given);
-
-/// Numeric modes at every `values` point of the scene. Throws computation_error
-/// with the cause (singular kinetic matrix at these values, a parameter without a
-/// value, ...) rather than returning NaN or infinity.
-std::vector<numeric_modes> numeric_normal_modes(const model& scene, const linearization_result& linear);
 
 } // namespace lagrange

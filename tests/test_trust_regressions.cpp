@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file test_trust_regressions.cpp
+ *  Issue 32: answers that were wrong with exit 0. Each test failed on the code before
+ *  the fix: sweeps that dropped the gyroscopic matrix (the restricted three-body problem
+ *  at L4, Foucault's pendulum), parameter values that contradict the positivity the
+ *  derivation assumed, unstable modes printed as a negative frequency. */
+#include "cli_runner.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace lagrange_test;
+
+namespace {
+
+const std::string source = std::string(LAGRANGE_SOURCE_DIR) + "/";
+const std::string scenes = source + "tests/scenes/";
+const std::string examples = source + "examples/";
+
+/// The sweep's rows as JSON arrays (exit 0 checked).
+nlohmann::json sweep_rows(const std::string& args)
+{
+    cli_result r = run_cli(args + " --format json");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    return nlohmann::json::parse(r.out).at("sweep").at("points");
+}
+
+/// The first `numeric` entry (exit 0 checked).
+nlohmann::json numeric_entry(const std::string& args)
+{
+    cli_result r = run_cli(args + " --want numeric --format json");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    return nlohmann::json::parse(r.out).at("numeric").at(0);
+}
+
+/// A sweep over one value of `parameter` gives the `numeric` stage's ω at that value.
+void check_sweep_matches_numeric(const std::string& scene, const std::string& parameter, const std::string& value)
+{
+    nlohmann::json rows = sweep_rows(scene + " --sweep " + parameter + "=" + value + ".." + value + ":1");
+    nlohmann::json numeric = numeric_entry(scene);
+    const std::size_t n = numeric.at("omega").size();
+    REQUIRE(rows.size() == 1);
+    REQUIRE(rows[0].size() == 1 + 2 * n + 1); // the value, ω, errors, stability
+    for (std::size_t k = 0; k < n; ++k) {
+        INFO(scene << " mode " << k + 1);
+        CHECK(rows[0][1 + k].get<double>() == Approx(numeric["omega"][k].get<double>()).epsilon(1e-12));
+    }
+}
+
+} // namespace
+
+TEST_CASE("trust: the sweep keeps the gyroscopic matrix at L4 of the restricted three-body problem",
+          "[trust][sweep]")
+{
+    const std::string scene = scenes + "three_body_l4.lag";
+    check_sweep_matches_numeric(scene, "mu", "0.03");
+    // the roots of w^4 - w^2 + 27 mu (1 - mu)/4 = 0, stable below Routh's mass ratio 0.0385
+    nlohmann::json rows = sweep_rows(scene + " --sweep mu=0.03..0.03:1");
+    const double mu = 0.03, c = 27 * mu * (1 - mu) / 4;
+    CHECK(rows[0][1].get<double>() == Approx(std::sqrt((1 - std::sqrt(1 - 4 * c)) / 2)).epsilon(1e-12));
+    CHECK(rows[0][2].get<double>() == Approx(std::sqrt((1 + std::sqrt(1 - 4 * c)) / 2)).epsilon(1e-12));
+    CHECK(rows[0][5] == "stable");
+    nlohmann::json beyond = sweep_rows(scene + " --sweep mu=0.04..0.04:1");
+    CHECK(beyond[0][5] == "unstable");
+}
+
+TEST_CASE("trust: the sweep over latitude splits Foucault's frequencies by the precession",
+          "[trust][sweep]")
+{
+    const std::string scene = scenes + "foucault.lag";
+    check_sweep_matches_numeric(scene, "lat", "0.8");
+    nlohmann::json rows = sweep_rows(scene + " --sweep lat=0.5..1.5:3");
+    REQUIRE(rows.size() == 3);
+    for (const nlohmann::json& row : rows) {
+        const double lat = row[0].get<double>(), split = 0.5 * std::sin(lat);
+        CHECK(row[1].get<double>() == Approx(std::sqrt(9.81) - split).epsilon(1e-12));
+        CHECK(row[2].get<double>() == Approx(std::sqrt(9.81) + split).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("trust: damped and constrained scenes sweep as the numeric stage computes them", "[trust][sweep]")
+{
+    check_sweep_matches_numeric(examples + "damped_double_pendulum.lag", "c", "0.5");
+    // one independent coordinate: one ω column, not a second one of 0
+    check_sweep_matches_numeric(scenes + "rod_pendulum.lag", "l", "2");
+}
