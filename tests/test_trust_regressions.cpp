@@ -90,3 +90,41 @@ TEST_CASE("trust: damped and constrained scenes sweep as the numeric stage compu
     // one independent coordinate: one ω column, not a second one of 0
     check_sweep_matches_numeric(scenes + "rod_pendulum.lag", "l", "2");
 }
+
+namespace {
+
+/// The located error of a value that contradicts the positivity of parameters: exit 2,
+/// `FILE:LINE:COL: error: ...` naming the assumption, the line, and the caret at `column`.
+void check_refused(const cli_result& r, const std::string& file_line_column, const std::string& line,
+                   std::size_t column)
+{
+    INFO(r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.rfind(file_line_column + ": error: parameter `", 0) == 0);
+    CHECK(r.err.find("is assumed real and positive in the derivation") != std::string::npos);
+    CHECK(r.err.find("\n" + line + "\n" + std::string(column - 1, ' ') + "^\n") != std::string::npos);
+}
+
+} // namespace
+
+TEST_CASE("trust: a value that contradicts the positive parameters is a located bad input", "[trust][values]")
+{
+    const std::string scene = scenes + "rod_length_pendulum.lag";
+    REQUIRE(run_cli("simulate " + scene).exit_code == 0);
+    // --values of `simulate`, of the analysis, zero as well as negative
+    check_refused(run_cli("simulate " + scene + " --values l=-2"), "--values:1:3", "l=-2", 3);
+    check_refused(run_cli(scene + " --want numeric --values m=1,g=9.81,l=0"), "--values:1:14", "m=1,g=9.81,l=0", 14);
+    // a scene's `values` line
+    const std::string negative = temporary_file("negative_length.lag", "parameters m g l\ncoordinates th\n"
+                                                                      "point P mass m at (l*sin(th), -sqrt(l^2)*cos(th))\n"
+                                                                      "gravity g along (0, -1)\n"
+                                                                      "values m = 1, g = 9.81, l = -2\n");
+    check_refused(run_cli(negative + " --want numeric"), negative + ":5:29", "values m = 1, g = 9.81, l = -2", 29);
+    // sweeps and ensembles, at the end of the range that breaks it
+    check_refused(run_cli(scene + " --sweep l=-1..2:3"), "--sweep:1:3", "l=-1..2:3", 3);
+    check_refused(run_cli(scene + " --sweep g=1..-9.81:3"), "--sweep:1:6", "g=1..-9.81:3", 6);
+    check_refused(run_cli("ensemble " + scene + " --grid \"l=0..1:3\" --until 1"), "--grid:1:3", "l=0..1:3", 3);
+    // a value that is not a real number, from a scene: refused as well (exit 2)
+    CHECK(run_cli(scene + " --values \"l=sqrt(-1)\"").exit_code == 2);
+}

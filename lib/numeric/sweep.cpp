@@ -3,12 +3,14 @@
  *  Streamed numeric sweeps (see sweep.h). */
 #include "numeric/sweep.h"
 
+#include "core/assumptions.h"
 #include "core/number_text.h"
 
 
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 
 namespace lagrange {
 
@@ -85,6 +87,10 @@ sweep_axis parse_sweep_axis(const std::string& text, const model& scene)
     std::size_t count_end = second == std::string::npos ? text.size() : second;
     axis.from = parse_number(text, equals + 1, dots);
     axis.to = parse_number(text, dots + 2, colon);
+    // Every point lies between the ends, so the ends agreeing with the assumptions suffices.
+    for (auto [value, at] : {std::pair{axis.from, equals + 1}, std::pair{axis.to, dots + 2}})
+        if (std::optional<std::string> why = parameter_value_contradiction(axis.name, value))
+            bad_sweep(text, at, *why);
     std::string count = text.substr(colon + 1, count_end - colon - 1);
     double n = parse_number(text, colon + 1, count_end);
     if (!(n >= 1) || n != std::floor(n) || n > 1e10)
