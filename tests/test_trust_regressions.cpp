@@ -128,3 +128,55 @@ TEST_CASE("trust: a value that contradicts the positive parameters is a located 
     // a value that is not a real number, from a scene: refused as well (exit 2)
     CHECK(run_cli(scene + " --values \"l=sqrt(-1)\"").exit_code == 2);
 }
+
+TEST_CASE("trust: an unstable mode is printed as a growth rate in every format", "[trust][numeric]")
+{
+    const std::string scene = scenes + "rotating_wire.lag";
+    // text: never a negative ω
+    cli_result text = run_cli(scene + " --want numeric");
+    REQUIRE(text.exit_code == 0);
+    CHECK(text.out.find("ω = 1.438i, growth rate s = +1.438 (unstable)") != std::string::npos);
+    CHECK(text.out.find("ω = -") == std::string::npos);
+    // LaTeX
+    cli_result latex = run_cli(scene + " --want numeric --format latex");
+    REQUIRE(latex.exit_code == 0);
+    CHECK(latex.out.find("1.438\\,i,\\ \\text{growth rate } s = +1.438") != std::string::npos);
+    CHECK(latex.out.find("-1.438") == std::string::npos);
+    // JSON: the contract's `omega` floats stay (ω < 0: i|ω|); `growth_rate` and `stability` say it
+    cli_result json = run_cli(scene + " --want numeric --format json");
+    REQUIRE(json.exit_code == 0);
+    const nlohmann::json point = nlohmann::json::parse(json.out).at("numeric").at(0);
+    CHECK(point.at("omega").at(0).get<double>() == Approx(-1.438));
+    CHECK(point.at("growth_rate").at(0).get<double>() == Approx(1.438));
+    CHECK(point.at("stability") == "unstable");
+    // a stable scene's entries keep their keys
+    const nlohmann::json stable =
+        nlohmann::json::parse(run_cli(examples + "double_pendulum.lag --want numeric --format json").out);
+    CHECK_FALSE(stable.at("numeric").at(0).contains("growth_rate"));
+    // the report
+    const std::string tex = temporary_file("rotating_wire.tex", "");
+    REQUIRE(run_cli("report " + scene + " -o " + tex).exit_code == 0);
+    const std::string report = read_file(tex);
+    CHECK(report.find("1 & $1.438\\,i$ &") != std::string::npos);
+    CHECK(report.find("Mode 1 is unstable: it grows as $e^{\\gamma t}$ with growth rate $\\gamma = 1.438$") !=
+          std::string::npos);
+    CHECK(report.find("-1.438") == std::string::npos);
+    // the simulation does not call the growth rate a linearized frequency
+    cli_result simulation = run_cli("simulate " + scene);
+    REQUIRE(simulation.exit_code == 0);
+    CHECK(simulation.out.find("linearized frequencies:") == std::string::npos);
+    CHECK(simulation.out.find("linearized growth rates (unstable, q ∝ e^{st}): s = +1.438") != std::string::npos);
+    const nlohmann::json run =
+        nlohmann::json::parse(run_cli("simulate " + scene + " --format json").out).at("simulation");
+    CHECK(run.at("frequencies").empty());
+    CHECK(run.at("growth_rates").at(0).get<double>() == Approx(1.438));
+}
+
+TEST_CASE("trust: a gyroscopic mode that grows while it oscillates says so", "[trust][numeric]")
+{
+    // L4 beyond Routh's ratio: a Krein collision, s = γ ± iω
+    cli_result r = run_cli(scenes + "three_body_l4.lag --want numeric --values mu=0.04");
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("    unstable\n") != std::string::npos);
+    CHECK(r.out.find(", growth rate Re s = +0.0675") != std::string::npos);
+}

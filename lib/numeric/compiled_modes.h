@@ -29,6 +29,11 @@ struct numeric_modes {
     std::vector<double> error;                          ///< bound on the relative error of each ω;
                                                         ///< for a zero mode (ω = 0) the absolute error
     std::string method;                                 ///< which numeric path gave these
+    /// Per mode, the rate γ > 0 at which it grows (q ∝ e^{γt}; an unstable mode), else 0:
+    /// −ω for ω < 0 (ω² < 0, or a real eigenvalue s = γ with G), Re s beyond its error for a
+    /// complex s with G. Set by point_modes; printers show a growing mode by it, never as a
+    /// negative ω (output/mode_frequency.h).
+    std::vector<double> growth_rate;
     /// With a gyroscopic matrix G (numeric/gyroscopic_modes.h): `omega` holds the n
     /// frequencies from the upper half of `eigenvalues`, `modes` is empty and
     /// `complex_modes` holds their vectors; empty otherwise.

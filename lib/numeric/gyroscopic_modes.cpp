@@ -32,6 +32,9 @@ numeric_modes gyroscopic_modes_at(const Eigen::MatrixXd& kinetic, const Eigen::M
         modes.omega.push_back(omega);
         modes.omega_squared.push_back(std::copysign(omega * omega, omega));
         modes.error.push_back(std::abs(s) > q.error[k] ? q.error[k] / std::abs(s) : q.error[k]);
+        // a real pair ±γ grows at γ; a complex s = γ + iω (a Krein collision) at Re s
+        const double growth = s.imag() == 0 ? std::abs(s.real()) : s.real();
+        modes.growth_rate.push_back(growth > q.error[k] ? growth : 0.0);
         modes.complex_modes.col(static_cast<Eigen::Index>(k - n)) = q.vectors.col(static_cast<Eigen::Index>(k));
     }
     modes.stability = unstable ? "unstable" : zero ? "marginal" : "stable";

@@ -15,9 +15,10 @@ namespace lagrange {
 /// eigenvalues s in `eigenvalues`; `omega` the n of the upper half (ascending imaginary
 /// part): Im s for an oscillation, −|s| for a real s (a growth or decay rate, as in
 /// numeric_modes); `error` the estimated error of each ω, relative (absolute for ω = 0);
-/// `complex_modes` their vectors; `stability`: unstable when some s has a real part beyond
-/// its error, marginal when some s is 0 within its error. `values` and `method` are left
-/// to the caller. Throws computation_error (without a location) as solve_quadratic_modes.
+/// `growth_rate` of each (0 unless it grows); `complex_modes` their vectors; `stability`:
+/// unstable when some s has a real part beyond its error, marginal when some s is 0 within
+/// its error. `values` and `method` are left to the caller. Throws computation_error
+/// (without a location) as solve_quadratic_modes.
 numeric_modes gyroscopic_modes_at(const Eigen::MatrixXd& kinetic, const Eigen::MatrixXd& potential,
                                   const Eigen::MatrixXd& gyroscopic);
 

@@ -150,6 +150,9 @@ void point_modes::evaluate(const double* values, numeric_modes& out, const std::
                 throw computation_error("the frequencies are not finite at " + at +
                                         ": an entry of T or V overflows or leaves the domain of a function there");
             }
+        out.growth_rate.resize(n);
+        for (std::size_t k = 0; k < n; ++k)
+            out.growth_rate[k] = out.omega[k] < 0 ? -out.omega[k] : 0.0;
         out.eigenvalues.clear();
         out.complex_modes.resize(0, 0);
         out.stability.clear();
@@ -178,6 +181,7 @@ void point_modes::evaluate(const double* values, numeric_modes& out, const std::
             out.omega = std::move(modes.omega);
             out.omega_squared = std::move(modes.omega_squared);
             out.error = std::move(modes.error);
+            out.growth_rate = std::move(modes.growth_rate);
             out.modes.resize(0, 0);
             out.eigenvalues = std::move(modes.eigenvalues);
             out.complex_modes = std::move(modes.complex_modes);

@@ -3,6 +3,8 @@
  *  The small-oscillations family in text, LaTeX and JSON (see oscillations_output.h). */
 #include "output/oscillations_output.h"
 
+#include "output/mode_frequency.h"
+
 #include "core/number_text.h"
 #include "output/damping_output.h"
 #include "output/latex_blocks.h"
@@ -227,7 +229,7 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
             if (!n.stability.empty() && !n.damped)
                 out << "    " << n.stability << '\n';
             for (std::size_t k = 0; k < n.omega.size(); ++k) {
-                out << "    ω = " << round_trip(n.omega[k]) << "  (relative error ≤ " << round_trip(n.error[k])
+                out << "    " << mode_frequency_text(n, k) << "  (relative error ≤ " << round_trip(n.error[k])
                     << ")  mode (";
                 for (Eigen::Index i = 0; i < n.modes.rows(); ++i)
                     out << (i ? ", " : "") << round_trip(n.modes(i, static_cast<Eigen::Index>(k)));
@@ -324,7 +326,8 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
                     << print(GiNaC::numeric(n.values[i].second), s);
             out << "$" << (n.stability.empty() || n.damped ? "" : " (" + n.stability + ")") << ":\n\\begin{align*}\n";
             for (std::size_t k = 0; k < n.omega.size(); ++k)
-                out << "\\omega_{" << k + 1 << "} &= " << print(GiNaC::numeric(n.omega[k]), s)
+                out << mode_frequency_latex(n, k, "\\omega_{" + std::to_string(k + 1) + "} &",
+                                            [&](double x) { return print(GiNaC::numeric(x), s); })
                     << " & \\text{(relative error} &\\le " << print(GiNaC::numeric(n.error[k]), s) << ")"
                     << (k + 1 < n.omega.size() ? "\\\\\n" : "\n");
             out << "\\end{align*}\n";
@@ -415,6 +418,18 @@ void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result
             }
             points.push_back({{"values", values}, {"omega", n.omega}, {"modes", modes},
                               {"error", n.error}, {"method", n.method}});
+            // An unstable mode: `omega` keeps the contract's floats (ω < 0: the imaginary
+            // frequency i|ω|); `growth_rate` names the rate at which each mode grows.
+            bool grows = false;
+            for (std::size_t k = 0; k < n.omega.size(); ++k)
+                grows = grows || mode_grows(n, k);
+            if (grows) {
+                nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+                for (std::size_t k = 0; k < n.omega.size(); ++k)
+                    rates.push_back(mode_growth_rate(n, k));
+                points.back()["growth_rate"] = rates;
+                points.back()["stability"] = stability_of(n);
+            }
             if (!n.eigenvalues.empty()) {
                 nlohmann::ordered_json eigenvalues = nlohmann::ordered_json::array();
                 for (const std::complex<double>& e : n.eigenvalues)
