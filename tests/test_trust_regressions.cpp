@@ -140,7 +140,9 @@ TEST_CASE("trust: an unstable mode is printed as a growth rate in every format",
     // LaTeX
     cli_result latex = run_cli(scene + " --want numeric --format latex");
     REQUIRE(latex.exit_code == 0);
-    CHECK(latex.out.find("1.438\\,i,\\ \\text{growth rate } s = +1.438") != std::string::npos);
+    CHECK(latex.out.find("\\omega_{1} &= 1.438\\,i &") != std::string::npos);
+    CHECK(latex.out.find("Mode 1 is unstable: it grows as $e^{\\gamma t}$ with growth rate $\\gamma = 1.438$.") !=
+          std::string::npos);
     CHECK(latex.out.find("-1.438") == std::string::npos);
     // JSON: the contract's `omega` floats stay (ω < 0: i|ω|); `growth_rate` and `stability` say it
     cli_result json = run_cli(scene + " --want numeric --format json");

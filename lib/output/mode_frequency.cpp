@@ -41,14 +41,13 @@ std::string omega_value_latex(const numeric_modes& n, std::size_t k, const std::
     return imaginary(n, k) ? number(-w) + "\\,i" : number(w);
 }
 
-std::string mode_frequency_latex(const numeric_modes& n, std::size_t k, const std::string& omega,
-                                 const std::function<std::string(double)>& number)
+std::string growth_sentence_latex(const numeric_modes& n, std::size_t k,
+                                  const std::function<std::string(double)>& number)
 {
-    std::string text = omega + " = " + omega_value_latex(n, k, number);
-    if (mode_grows(n, k))
-        text += std::string(",\\ \\text{growth rate } ") + (imaginary(n, k) ? "s" : "\\operatorname{Re} s") + " = +" +
-                number(mode_growth_rate(n, k)) + "\\ \\text{(unstable)}";
-    return text;
+    if (!mode_grows(n, k))
+        return "";
+    return "Mode " + std::to_string(k + 1) + " is unstable: it grows as $e^{\\gamma t}$ with growth rate $\\gamma = " +
+           std::string(imaginary(n, k) ? "" : "\\operatorname{Re} s = ") + number(mode_growth_rate(n, k)) + "$. ";
 }
 
 } // namespace lagrange

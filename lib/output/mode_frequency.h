@@ -24,10 +24,11 @@ bool mode_grows(const numeric_modes& n, std::size_t k);
 std::string mode_frequency_text(const numeric_modes& n, std::size_t k,
                                 const std::function<std::string(double)>& number = nullptr);
 
-/// The same in LaTeX math (without the dollars), ω named `omega` (e.g. "\\omega_{1}"):
-/// "\\omega_{1} = 1.438\\,i,\\ \\text{growth rate } s = +1.438\\ \\text{(unstable)}".
-std::string mode_frequency_latex(const numeric_modes& n, std::size_t k, const std::string& omega,
-                                 const std::function<std::string(double)>& number);
+/// For LaTeX, after the table or display whose ω column shows `1.438\\,i`: "Mode 1 is
+/// unstable: it grows as $e^{\\gamma t}$ with growth rate $\\gamma = 1.438$. " (with
+/// "\\operatorname{Re} s = " for a complex s); empty for a mode that does not grow.
+std::string growth_sentence_latex(const numeric_modes& n, std::size_t k,
+                                  const std::function<std::string(double)>& number);
 
 /// The value of ω alone in LaTeX: the number, or "1.438\\,i" for an imaginary frequency.
 std::string omega_value_latex(const numeric_modes& n, std::size_t k, const std::function<std::string(double)>& number);

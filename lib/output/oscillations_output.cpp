@@ -326,11 +326,16 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
                     << print(GiNaC::numeric(n.values[i].second), s);
             out << "$" << (n.stability.empty() || n.damped ? "" : " (" + n.stability + ")") << ":\n\\begin{align*}\n";
             for (std::size_t k = 0; k < n.omega.size(); ++k)
-                out << mode_frequency_latex(n, k, "\\omega_{" + std::to_string(k + 1) + "} &",
-                                            [&](double x) { return print(GiNaC::numeric(x), s); })
+                out << "\\omega_{" << k + 1 << "} &= "
+                    << omega_value_latex(n, k, [&](double x) { return print(GiNaC::numeric(x), s); })
                     << " & \\text{(relative error} &\\le " << print(GiNaC::numeric(n.error[k]), s) << ")"
                     << (k + 1 < n.omega.size() ? "\\\\\n" : "\n");
             out << "\\end{align*}\n";
+            std::string growth;
+            for (std::size_t k = 0; k < n.omega.size(); ++k)
+                growth += growth_sentence_latex(n, k, [&](double x) { return print(GiNaC::numeric(x), s); });
+            if (!growth.empty())
+                out << growth.substr(0, growth.size() - 1) << "\n\n";
             if (n.damped)
                 write_damped_eigenvalues_latex(out, n);
         }

@@ -699,14 +699,11 @@ std::string compile_report(const report_document& document)
 
 void write_growth_rates(report_writer& w, const numeric_modes& nm)
 {
+    std::string growth;
     for (std::size_t k = 0; k < nm.omega.size(); ++k)
-        if (mode_grows(nm, k))
-            w.text("Mode " + std::to_string(k + 1) + " is unstable: it grows as ")
-                .latex("$e^{\\gamma t}$")
-                .text(" with growth rate ")
-                .latex("$\\gamma = " + std::string(nm.omega[k] < 0 ? "" : "\\operatorname{Re} s = ") +
-                       report_writer::number(mode_growth_rate(nm, k)) + "$")
-                .text(". ");
+        growth += growth_sentence_latex(nm, k, [](double x) { return report_writer::number(x); });
+    if (!growth.empty())
+        w.latex(growth);
 }
 
 std::string values_latex(const numeric_modes& point)
