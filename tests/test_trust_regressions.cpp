@@ -182,3 +182,32 @@ TEST_CASE("trust: a gyroscopic mode that grows while it oscillates says so", "[t
     CHECK(r.out.find("    unstable\n") != std::string::npos);
     CHECK(r.out.find(", growth rate Re s = +0.0675") != std::string::npos);
 }
+
+TEST_CASE("trust: the contract's items gyroscopic and verification are products", "[trust][cli]")
+{
+    // G ≠ 0: the Penning trap's magnetic field
+    cli_result penning = run_cli(examples + "penning_trap.lag --want gyroscopic --format json");
+    INFO(penning.err);
+    REQUIRE(penning.exit_code == 0);
+    const nlohmann::json g = nlohmann::json::parse(penning.out).at("gyroscopic");
+    CHECK(g.at(0).at(1) == "B*q0");
+    CHECK(g.at(1).at(0) == "-B*q0");
+    // asked for where G = 0: the zero matrix, not a refusal
+    cli_result pendulum = run_cli(examples + "double_pendulum.lag --want gyroscopic");
+    REQUIRE(pendulum.exit_code == 0);
+    CHECK(pendulum.out.find("  G = [0, 0]\n") != std::string::npos);
+    // verification with other items: their checks, in every format
+    cli_result text = run_cli(examples + "penning_trap.lag --want linearization,verification");
+    REQUIRE(text.exit_code == 0);
+    CHECK(text.out.find("\nVerification (each result checked numerically by an independent route)\n"
+                        "  equilibrium: ") != std::string::npos);
+    cli_result latex = run_cli(examples + "penning_trap.lag --want linearization,verification --format latex");
+    REQUIRE(latex.exit_code == 0);
+    CHECK(latex.out.find("\\subsection*{Verification}") != std::string::npos);
+    // alone: the default run's products, checked
+    cli_result alone = run_cli(examples + "linear_molecule.lag --want verification --format json");
+    REQUIRE(alone.exit_code == 0);
+    const nlohmann::json doc = nlohmann::json::parse(alone.out);
+    CHECK(doc.contains("frequencies"));
+    CHECK(doc.at("verification").contains("frequencies"));
+}

@@ -31,6 +31,8 @@ const std::vector<std::pair<product, std::string>>& product_names()
         {product::reduced, "reduced"},
         {product::multipliers, "multipliers"},
         {product::eliminated, "eliminated"},
+        {product::gyroscopic, "gyroscopic"},
+        {product::verification, "verification"},
     };
     return names;
 }

@@ -201,6 +201,8 @@ enum class product {
     reduced,
     multipliers,
     eliminated,
+    gyroscopic,   ///< the matrix G at the equilibrium (computed with the linearization)
+    verification, ///< how each symbolic result was checked numerically
 };
 
 /// Spec names of the products, in order.

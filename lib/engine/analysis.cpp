@@ -125,14 +125,14 @@ const std::vector<product> coordinate_products = {
     product::equations, product::equilibrium, product::linearization, product::characteristic,
     product::frequencies, product::modes, product::normal_coordinates, product::asymptotic, product::numeric,
     product::floquet, product::damping, product::state_space, product::transfer, product::conserved,
-    product::hamiltonian, product::reduced, product::multipliers, product::eliminated};
+    product::hamiltonian, product::reduced, product::multipliers, product::eliminated, product::gyroscopic};
 
 const std::vector<product> every_product = {
     product::equations,  product::equilibrium, product::linearization, product::characteristic, product::frequencies,
     product::modes,      product::normal_coordinates, product::asymptotic, product::numeric, product::inertia,
     product::euler,      product::simulation, product::workprecision, product::floquet, product::damping,
     product::state_space, product::transfer, product::conserved, product::hamiltonian, product::reduced,
-    product::multipliers, product::eliminated};
+    product::multipliers, product::eliminated, product::gyroscopic};
 
 /// The stages in the order they run. Adding a product is one row here, one result
 /// field in `analysis`, and one writer per output family.
@@ -219,7 +219,7 @@ const std::vector<stage_definition>& stage_table()
              }
              c.result.equilibria = find_equilibria(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
-        {"linearization", {product::linearization}, {}, {"equilibrium"}, has_static_point,
+        {"linearization", {product::linearization, product::gyroscopic}, {}, {"equilibrium"}, has_static_point,
          [](stage_context& c) {
              if (c.result.constrained) {
                  c.result.linearization = c.result.constrained->linear;
@@ -359,7 +359,7 @@ const std::vector<stage_definition>& stage_table()
              }
          }, "simulation", ""},
         // Last: checks numerically whatever symbolic results the stages above computed.
-        {"verification", {}, every_product, {},
+        {"verification", {product::verification}, every_product, {},
          [](const model& scene) { return !scene.coordinates.empty() || !scene.bodies.empty(); },
          [](stage_context& c) {
              c.result.verification = verify_results(c.scene, verification_input_of(c.result), c.result.wanted);
@@ -530,8 +530,13 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
 {
     analysis result;
     result.scene = &scene;
-    const bool by_default = wanted.empty() && scene.wanted.empty();
-    result.wanted = !wanted.empty() ? wanted : !scene.wanted.empty() ? scene.wanted : default_products(scene);
+    const std::set<product> verification_only{product::verification};
+    const std::set<product>& asked = !wanted.empty() ? wanted : scene.wanted;
+    // `verification` alone checks what a default run computes: those products, with their checks
+    const bool by_default = asked.empty() || asked == verification_only;
+    result.wanted = !asked.empty() ? asked : default_products(scene);
+    if (asked == verification_only)
+        result.wanted.merge(default_products(scene));
     for (product p : result.wanted)
         if (!available_products().count(p))
             throw computation_error("`" + name_of(p) + "` is not computed by this version of lagrange yet");

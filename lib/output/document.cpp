@@ -73,6 +73,11 @@ void write_text(std::ostream& out, const analysis& result, const document_option
         write_simulation_text(out, *result.simulation, options.timings);
     if (result.workprecision)
         write_workprecision_text(out, *result.workprecision);
+    if (result.verification && result.wanted.count(product::verification)) {
+        out << "\nVerification (each result checked numerically by an independent route)\n";
+        for (const verification_entry& entry : result.verification->entries)
+            out << "  " << entry.item << ": " << entry.how << '\n';
+    }
     for (const std::string& note : result.notes)
         out << "\nnote: " << note << '\n';
     if (options.timings) {
@@ -127,6 +132,13 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
         write_simulation_latex(out, *result.simulation, options.timings);
     if (result.workprecision)
         write_workprecision_latex(out, *result.workprecision);
+    if (result.verification && result.wanted.count(product::verification) && !result.verification->entries.empty()) {
+        out << "\\subsection*{Verification}\nEach result checked numerically by an independent route:\n"
+               "\\begin{itemize}\n";
+        for (const verification_entry& entry : result.verification->entries)
+            out << "\\item " << latex_text(entry.item) << ": " << latex_text(entry.how) << "\n";
+        out << "\\end{itemize}\n";
+    }
     if (options.timings) {
         out << "\\subsection*{Stages}\n\\begin{tabular}{lr}\n";
         for (const stage_time& s : result.stages)
@@ -177,7 +189,7 @@ void write_json(std::ostream& out, const analysis& result, const document_option
         doc["simulation"] = simulation_json(*result.simulation, options.timings);
     if (result.workprecision)
         doc["workprecision"] = workprecision_json(*result.workprecision);
-    if (result.verification && !result.verification->entries.empty()) {
+    if (result.verification && (!result.verification->entries.empty() || result.wanted.count(product::verification))) {
         nlohmann::ordered_json checks = nlohmann::ordered_json::object();
         for (const verification_entry& entry : result.verification->entries)
             checks[entry.item] = entry.how;

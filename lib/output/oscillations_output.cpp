@@ -137,6 +137,14 @@ nlohmann::ordered_json vectors_json(const std::vector<std::vector<GiNaC::ex>>& v
     return list;
 }
 
+/// G is shown where it is not zero, and where `gyroscopic` is asked for (then also G = 0).
+bool shows_gyroscopic(const analysis& result)
+{
+    const linearization_result& l = *result.linearization;
+    return l.has_gyroscopic() || (result.wanted.count(product::gyroscopic) && l.gyroscopic.rows() == l.kinetic.rows() &&
+                                  l.gyroscopic.cols() == l.kinetic.cols());
+}
+
 } // namespace
 
 void write_oscillations_text(std::ostream& out, const analysis& result)
@@ -155,7 +163,7 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
         const linearization_result& l = *result.linearization;
         out << "\nLinearization\n";
         std::vector<const char*> matrices{"T", "V"};
-        if (l.has_gyroscopic())
+        if (shows_gyroscopic(result))
             matrices.push_back("G");
         for (const char* which : matrices) {
             const GiNaC::matrix& m = std::string(which) == "T" ? l.kinetic
@@ -257,7 +265,7 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
         // T and V (and G) side by side when they fit on a line, else one below the other.
         const linearization_result& l = *result.linearization;
         std::vector<latex_row> rows{{"T", {latex_matrix(l.kinetic)}}, {"V", {latex_matrix(l.potential)}}};
-        if (l.has_gyroscopic())
+        if (shows_gyroscopic(result))
             rows.push_back({"G", {latex_matrix(l.gyroscopic)}});
         std::string side_by_side;
         for (const latex_row& r : rows)
@@ -366,7 +374,7 @@ void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result
     if (result.linearization) {
         doc["T"] = matrix_json(result.linearization->kinetic);
         doc["V"] = matrix_json(result.linearization->potential);
-        if (result.linearization->has_gyroscopic())
+        if (shows_gyroscopic(result))
             doc["gyroscopic"] = matrix_json(result.linearization->gyroscopic);
     }
     if (result.characteristic)
