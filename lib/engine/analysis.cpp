@@ -28,6 +28,11 @@ std::optional<GiNaC::matrix> damping_at_rest(const analysis& result, const simpl
 {
     if (!result.scene->has_generalized_forces())
         return std::nullopt;
+    // The linearization of a constrained scene is in its independent coordinates; C is not
+    // projected onto them, and leaving it out would misstate the stability.
+    if (result.constrained)
+        throw computation_error("damped small oscillations with constraints (`constraint`) are not computed by "
+                                "this version, so neither are the numeric modes of this scene");
     GiNaC::matrix damping = result.damping ? result.damping->damping
                                            : damping_matrix(*result.scene, result.linearization->at, simplify);
     if (is_zero_matrix(damping))
