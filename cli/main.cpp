@@ -155,7 +155,8 @@ int sweep_scene(const run_options& options)
     lagrange::sweep_size(axes);
     lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::linearization}, options.budget);
     output_file out(options.output);
-    lagrange::write_sweep(out.stream(), scene, *result.linearization, axes, options.format);
+    lagrange::point_modes path = lagrange::numeric_modes_path(result);
+    lagrange::write_sweep(out.stream(), scene, path, axes, options.format);
     out.commit();
     return exit_ok;
 }

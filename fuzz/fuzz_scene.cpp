@@ -59,8 +59,9 @@ void sweep(const std::string& text, const lagrange::model& scene, const lagrange
     }
     if (lagrange::sweep_size(axes) > 64)
         return;
-    lagrange::write_sweep(out, scene, *result.linearization, axes, "text");
-    lagrange::write_sweep(out, scene, *result.linearization, axes, "json");
+    lagrange::point_modes path = lagrange::numeric_modes_path(result);
+    lagrange::write_sweep(out, scene, path, axes, "text");
+    lagrange::write_sweep(out, scene, path, axes, "json");
 }
 
 /// A private folder of odd files, made once: what `use` and -o meet on a user's disc.

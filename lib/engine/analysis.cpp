@@ -9,20 +9,38 @@
 #include "numeric/damped_modes.h"
 #include "numeric/constrained_motion.h"
 #include "numeric/free_body_motion.h"
-#include "numeric/gyroscopic_modes.h"
+#include "numeric/point_modes.h"
 
 #include <algorithm>
 #include <chrono>
 #include <functional>
-#include <stdexcept>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace lagrange {
 
 namespace {
+
+/// The damping matrix C at the linearization's equilibrium, for the numeric modes: the
+/// `damping` stage's where it ran; nothing without generalized forces or where C = 0.
+std::optional<GiNaC::matrix> damping_at_rest(const analysis& result, const simplifier& simplify)
+{
+    if (!result.scene->has_generalized_forces())
+        return std::nullopt;
+    // The linearization of a constrained scene is in its independent coordinates; C is not
+    // projected onto them, and leaving it out would misstate the stability.
+    if (result.constrained)
+        throw computation_error("damped small oscillations with constraints (`constraint`) are not computed by "
+                                "this version, so neither are the numeric modes of this scene");
+    GiNaC::matrix damping = result.damping ? result.damping->damping
+                                           : damping_matrix(*result.scene, result.linearization->at, simplify);
+    if (is_zero_matrix(damping))
+        return std::nullopt;
+    return damping;
+}
 
 /// What the stages share while they run.
 struct stage_context {
@@ -243,7 +261,7 @@ const std::vector<stage_definition>& stage_table()
              }
              c.result.equilibria = find_equilibria(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
          }, "small oscillations", "small oscillations"},
-        {stage_id::linearization, "linearization", {product::linearization}, {}, {stage_id::equilibrium}, has_static_point,
+        {stage_id::linearization, "linearization", {product::linearization, product::gyroscopic}, {}, {stage_id::equilibrium}, has_static_point,
          [](stage_context& c) {
              if (c.result.constrained) {
                  c.result.linearization = c.result.constrained->linear;
@@ -320,16 +338,8 @@ const std::vector<stage_definition>& stage_table()
          }, "small oscillations", "small oscillations", refuses_constraints("`damping`")},
         {stage_id::numeric, "numeric", {product::numeric}, {}, {stage_id::linearization}, has_static_point,
          [](stage_context& c) {
-             c.result.numeric = c.result.linearization->has_gyroscopic()
-                                    ? numeric_gyroscopic_modes(c.scene, *c.result.linearization)
-                                    : numeric_normal_modes(c.scene, *c.result.linearization);
-             if (!c.scene.has_generalized_forces())
-                 return;
-             const GiNaC::matrix damping =
-                 c.result.damping ? c.result.damping->damping
-                                  : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
-             if (!is_zero_matrix(damping))
-                 add_damped_eigenvalues(c.scene, *c.result.linearization, damping, *c.result.numeric);
+             const std::optional<GiNaC::matrix> damping = damping_at_rest(c.result, c.simplifier_for_scene());
+             c.result.numeric = numeric_normal_modes(c.scene, *c.result.linearization, damping ? &*damping : nullptr);
          },
          "small oscillations", "small oscillations", handles_constraints, false},
         // The linearized input–output system: A, B (and at the `values` points), then H(s).
@@ -409,7 +419,7 @@ const std::vector<stage_definition>& stage_table()
              c.result.virial = time_averages(c.scene, *c.result.lagrangian, *c.result.simulation);
          }, "simulation", "", handles_constraints, false},
         // Last: checks numerically whatever symbolic results the stages above computed.
-        {stage_id::verification, "verification", {}, every_product(), {},
+        {stage_id::verification, "verification", {product::verification}, every_product(), {},
          [](const model& scene) { return !scene.coordinates.empty() || !scene.bodies.empty(); },
          [](stage_context& c) {
              c.result.verification = verify_results(c.scene, verification_input_of(c.result), c.result.wanted);
@@ -529,8 +539,13 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
 {
     analysis result;
     result.scene = &scene;
-    const bool by_default = wanted.empty() && scene.wanted.empty();
-    result.wanted = !wanted.empty() ? wanted : !scene.wanted.empty() ? scene.wanted : default_products(scene);
+    const std::set<product> verification_only{product::verification};
+    const std::set<product>& asked = !wanted.empty() ? wanted : scene.wanted;
+    // `verification` alone checks what a default run computes: those products, with their checks
+    const bool by_default = asked.empty() || asked == verification_only;
+    result.wanted = !asked.empty() ? asked : default_products(scene);
+    if (asked == verification_only)
+        result.wanted.merge(default_products(scene));
     for (product p : result.wanted)
         if (!available_products().count(p))
             throw computation_error("`" + name_of(p) + "` is not computed by this version of lagrange yet");
@@ -614,6 +629,14 @@ analysis analyze(const model& scene, const std::set<product>& wanted, const budg
 analysis analyze(const model& scene, const std::set<product>& wanted, const simulation_settings& simulation)
 {
     return analyze(scene, wanted, budget_limits{}, simulation);
+}
+
+point_modes numeric_modes_path(const analysis& result)
+{
+    if (!result.scene || !result.linearization)
+        throw std::invalid_argument("numeric_modes_path: the analysis has no linearization");
+    const std::optional<GiNaC::matrix> damping = damping_at_rest(result, make_simplifier(*result.scene));
+    return point_modes(*result.scene, *result.linearization, damping ? &*damping : nullptr);
 }
 
 } // namespace lagrange

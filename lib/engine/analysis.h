@@ -24,6 +24,7 @@
 #include "numeric/compiled_modes.h"
 #include "numeric/floquet.h"
 #include "numeric/linear_response.h"
+#include "numeric/point_modes.h"
 #include "mechanics/time_dependence.h"
 #include "numeric/simulation.h"
 #include "numeric/virial.h"
@@ -104,5 +105,11 @@ analysis analyze(const model& scene, const std::set<product>& wanted = {}, const
 
 /// The same, with the default budgets.
 analysis analyze(const model& scene, const std::set<product>& wanted, const simulation_settings& simulation);
+
+/// The numeric modes' path for `result` (which holds a linearization): its T, V, G and, when
+/// the scene has dissipation, the damping matrix C at the same equilibrium: what the
+/// `numeric` stage evaluates at the `values` points and `--sweep` at the points of its grid.
+/// It refers to `result`, which must outlive it.
+point_modes numeric_modes_path(const analysis& result);
 
 } // namespace lagrange

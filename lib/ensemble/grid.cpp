@@ -3,8 +3,12 @@
  *  The `--grid` and `--measure` options of `lagrange ensemble` (see ensemble.h). */
 #include "ensemble/ensemble.h"
 
+#include "core/assumptions.h"
+
 #include <cmath>
 #include <cstdlib>
+#include <optional>
+#include <utility>
 
 namespace lagrange {
 
@@ -128,6 +132,11 @@ ensemble_axis parse_axis(const std::string& text, std::size_t begin, std::size_t
     if (axis.from > axis.to)
         bad_option("--grid", text, skip_blanks(text, equals + 1, end),
                    "the range of `" + name + "` runs backwards: give it as from..to with from <= to");
+    // Every point lies between the ends, so the ends agreeing with the assumptions suffices.
+    if (axis.kind == ensemble_axis::target::parameter)
+        for (auto [value, at] : {std::pair{axis.from, equals + 1}, std::pair{axis.to, dots + 2}})
+            if (std::optional<std::string> why = parameter_value_contradiction(name, value))
+                bad_option("--grid", text, skip_blanks(text, at, end), *why);
     return axis;
 }
 

@@ -149,6 +149,8 @@ GiNaC::matrix damping_matrix(const model& scene, const std::vector<ex>& at, cons
     GiNaC::matrix damping(n, n);
     if (!scene.has_generalized_forces())
         return damping;
+    if (at.size() != n)
+        throw computation_error("the damping matrix needs a value of every coordinate at the equilibrium");
     generalized_forces forces = derive_generalized_forces(scene, simplify);
     GiNaC::exmap inputs_off;
     for (const input_signal& u : scene.inputs)

@@ -615,51 +615,6 @@ modes_method compiled_modes::generalized(const double* p, double* w2, double* w,
     return modes_method::eigen_generalized;
 }
 
-namespace {
-
-/// Called when the numeric modes fail at a point: finds an entry of T or V that is
-/// not a finite real number there and throws an error naming it and the cause
-/// (overflow of double, or a value outside the domain of sqrt, log, ...). Exact
-/// evaluation with GiNaC, used only on this error path. Returns if every entry is fine.
-void diagnose_point(const model& scene, const linearization_result& linear, const value_point& point)
-{
-    GiNaC::exmap at;
-    for (const auto& [name, value] : point.values)
-        for (const parameter& p : scene.parameters)
-            if (p.name == name)
-                at[p.symbol] = value;
-    const std::string where = " at the values on line " + std::to_string(point.where.line);
-    for (const auto* m : {&linear.kinetic, &linear.potential})
-        for (unsigned i = 0; i < m->rows(); ++i)
-            for (unsigned j = i; j < m->cols(); ++j) {
-                const std::string entry = std::string(m == &linear.kinetic ? "T" : "V") + "(" +
-                                          std::to_string(i + 1) + "," + std::to_string(j + 1) + ")";
-                GiNaC::ex value;
-                try {
-                    value = (*m)(i, j).subs(at).evalf();
-                } catch (const std::exception&) {
-                    throw computation_error("the entry " + entry + " of the " +
-                                            (m == &linear.kinetic ? "kinetic" : "potential") +
-                                            " matrix cannot be evaluated" + where +
-                                            " (a singularity: a division by zero, or log of zero)");
-                }
-                if (!GiNaC::is_a<GiNaC::numeric>(value))
-                    continue; // a parameter without a value: reported elsewhere
-                const GiNaC::numeric number = GiNaC::ex_to<GiNaC::numeric>(value);
-                if (!number.is_real())
-                    throw computation_error("the entry " + entry + " of the " +
-                                            (m == &linear.kinetic ? "kinetic" : "potential") + " matrix is not real" +
-                                            where + ": a value outside the domain of sqrt, log or an inverse function");
-                if (!std::isfinite(number.to_double()))
-                    throw computation_error("the entry " + entry + " of the " +
-                                            (m == &linear.kinetic ? "kinetic" : "potential") +
-                                            " matrix overflows double precision" + where +
-                                            " (its magnitude is beyond 1.8e308)");
-            }
-}
-
-} // namespace
-
 void read_value_point(const model& scene, const value_point& point, std::vector<double>& values,
                       std::vector<bool>& given)
 {
@@ -672,45 +627,6 @@ void read_value_point(const model& scene, const value_point& point, std::vector<
                 values[k] = GiNaC::ex_to<GiNaC::numeric>(number).to_double();
                 given[k] = true;
             }
-}
-
-std::vector<numeric_modes> numeric_normal_modes(const model& scene, const linearization_result& linear)
-{
-    compiled_modes compiled(scene.parameters, linear, {}, coordinate_names(scene));
-    std::vector<numeric_modes> results;
-    for (const value_point& point : scene.values) {
-        std::vector<double> values(scene.parameters.size(), std::nan(""));
-        std::vector<bool> given(scene.parameters.size(), false);
-        read_value_point(scene, point, values, given);
-        for (std::size_t k = 0; k < scene.parameters.size(); ++k)
-            if (compiled.uses(k) && !given[k])
-                throw computation_error("no value for parameter `" + scene.parameters[k].name + "` at the values on line "
-                                        + std::to_string(point.where.line));
-        numeric_modes modes;
-        try {
-            modes = compiled.evaluate(values.data());
-        } catch (const computation_error&) {
-            diagnose_point(scene, linear, point);
-            throw;
-        } catch (const std::exception&) { // GiNaC's pole_error and kin from exact arithmetic
-            diagnose_point(scene, linear, point);
-            throw computation_error("the numeric modes cannot be evaluated at the values on line " +
-                                    std::to_string(point.where.line));
-        }
-        for (std::size_t k = 0; k < modes.omega.size(); ++k)
-            if (!std::isfinite(modes.omega[k]) || !std::isfinite(modes.error[k])) {
-                diagnose_point(scene, linear, point);
-                throw computation_error("the frequencies are not finite at the values on line "
-                                        + std::to_string(point.where.line));
-            }
-        // echo every value the user gave, also those the modes do not need, in declared order
-        modes.values.clear();
-        for (std::size_t k = 0; k < scene.parameters.size(); ++k)
-            if (given[k])
-                modes.values.emplace_back(scene.parameters[k].name, values[k]);
-        results.push_back(std::move(modes));
-    }
-    return results;
 }
 
 } // namespace lagrange

@@ -3,7 +3,8 @@
  *  Numeric normal modes at each `values` point: ω ascending, the mode matrix with
  *  Aᵀ T A = I, and an error estimate per frequency that bounds the error. T and V are
  *  compiled once (compiled_modes) and evaluated per point by the route that meets the
- *  tolerance; numeric_normal_modes is the stage over the scene's points. */
+ *  tolerance. numeric/point_modes.h is the one path from a linearization to the modes at
+ *  a point, for the `numeric` stage and sweeps alike. */
 #pragma once
 
 #include "mechanics/linearization.h"
@@ -28,6 +29,11 @@ struct numeric_modes {
     std::vector<double> error;                          ///< bound on the relative error of each ω;
                                                         ///< for a zero mode (ω = 0) the absolute error
     std::string method;                                 ///< which numeric path gave these
+    /// Per mode, the rate γ > 0 at which it grows (q ∝ e^{γt}; an unstable mode), else 0:
+    /// −ω for ω < 0 (ω² < 0, or a real eigenvalue s = γ with G), Re s beyond its error for a
+    /// complex s with G. Set by point_modes; printers show a growing mode by it, never as a
+    /// negative ω (output/mode_frequency.h).
+    std::vector<double> growth_rate;
     /// With a gyroscopic matrix G (numeric/gyroscopic_modes.h): `omega` holds the n
     /// frequencies from the upper half of `eigenvalues`, `modes` is empty and
     /// `complex_modes` holds their vectors; empty otherwise.
@@ -162,10 +168,5 @@ private:
 /// real number.
 void read_value_point(const model& scene, const value_point& point, std::vector<double>& values,
                       std::vector<bool>& given);
-
-/// Numeric modes at every `values` point of the scene. Throws computation_error
-/// with the cause (singular kinetic matrix at these values, a parameter without a
-/// value, ...) rather than returning NaN or infinity.
-std::vector<numeric_modes> numeric_normal_modes(const model& scene, const linearization_result& linear);
 
 } // namespace lagrange

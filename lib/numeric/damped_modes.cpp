@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file damped_modes.cpp
- *  M, K, C and G compiled into one straight-line program, evaluated per `values` point,
- *  and the damped quadratic eigenproblem solved there. */
+ *  The damped quadratic eigenproblem at one point; the linearization's matrices at a
+ *  `values` point. */
 #include "numeric/damped_modes.h"
 
 #include "core/errors.h"
@@ -141,40 +141,26 @@ void set_damped_modes(numeric_modes& entry, const quadratic_modes& q, const Eige
 
 } // namespace
 
-void add_damped_eigenvalues(const model& scene, const linearization_result& linear, const GiNaC::matrix& damping,
-                            std::vector<numeric_modes>& entries)
+void add_damped_eigenvalues(numeric_modes& entry, const Eigen::MatrixXd& kinetic, const Eigen::MatrixXd& potential,
+                            const Eigen::MatrixXd& damping, const Eigen::MatrixXd& gyroscopic)
 {
-    if (entries.size() != scene.values.size())
-        throw std::invalid_argument("add_damped_eigenvalues: one numeric entry per values point");
-    for (std::size_t p = 0; p < scene.values.size(); ++p) {
-        const value_point& point = scene.values[p];
-        std::vector<Eigen::MatrixXd> at =
-            matrices_at(scene, {&linear.kinetic, &linear.potential, &damping, &linear.gyroscopic}, point);
-        quadratic_modes q;
-        try {
-            q = solve_quadratic_modes(at[0], at[2] - at[3], at[1]);
-        } catch (const computation_error& error) {
-            throw computation_error(std::string(error.what()) + " at the values on line " +
-                                    std::to_string(point.where.line));
-        }
-        numeric_modes& entry = entries[p];
-        entry.damped = true;
-        entry.eigenvalues = q.eigenvalues;
-        entry.eigenvalue_error = q.error;
-        entry.damping_ratio.clear();
-        const bool proportional = at[3].isZero(0) && proportional_at(at[0], at[2], at[1]);
-        set_damped_modes(entry, q, at[0], at[2] - at[3], at[1], proportional);
-        bool unstable = false, marginal = false;
-        for (std::size_t k = 0; k < q.eigenvalues.size(); ++k) {
-            const std::complex<double> s = q.eigenvalues[k];
-            entry.damping_ratio.push_back(damping_ratio(s));
-            unstable = unstable || s.real() > q.error[k];
-            marginal = marginal || s.real() >= -q.error[k];
-        }
-        // Stable: every s decays beyond its error; marginal: some s has a real part that
-        // cannot be told from 0 (a free coordinate, an undamped mode).
-        entry.stability = unstable ? "unstable" : marginal ? "marginal" : "stable";
+    const quadratic_modes q = solve_quadratic_modes(kinetic, damping - gyroscopic, potential);
+    entry.damped = true;
+    entry.eigenvalues = q.eigenvalues;
+    entry.eigenvalue_error = q.error;
+    entry.damping_ratio.clear();
+    const bool proportional = gyroscopic.isZero(0) && proportional_at(kinetic, damping, potential);
+    set_damped_modes(entry, q, kinetic, damping - gyroscopic, potential, proportional);
+    bool unstable = false, marginal = false;
+    for (std::size_t k = 0; k < q.eigenvalues.size(); ++k) {
+        const std::complex<double> s = q.eigenvalues[k];
+        entry.damping_ratio.push_back(damping_ratio(s));
+        unstable = unstable || s.real() > q.error[k];
+        marginal = marginal || s.real() >= -q.error[k];
     }
+    // Stable: every s decays beyond its error; marginal: some s has a real part that
+    // cannot be told from 0 (a free coordinate, an undamped mode).
+    entry.stability = unstable ? "unstable" : marginal ? "marginal" : "stable";
 }
 
 } // namespace lagrange

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file damped_modes.h
- *  Numeric damped small oscillations at each `values` point: M, K, C (and G) compiled
- *  once, then the quadratic eigenproblem (s²M + s(C − G) + K)x = 0 of
- *  M q̈ + (C − G) q̇ + K q = 0 (numeric/quadratic_modes.h) per point, with the damping
- *  ratio −Re s/|s| of each eigenvalue. */
+ *  Numeric damped small oscillations at one parameter point: the quadratic eigenproblem
+ *  (s²M + s(C − G) + K)x = 0 of M q̈ + (C − G) q̇ + K q = 0 (numeric/quadratic_modes.h),
+ *  with the damping ratio −Re s/|s| of each eigenvalue. numeric/point_modes.h evaluates
+ *  the matrices and calls it. */
 #pragma once
 
 #include "core/model.h"
@@ -16,15 +16,15 @@
 
 namespace lagrange {
 
-/// Adds to `entries` (the numeric modes, one per `values` point in scene order) the damped
-/// eigenvalues with the damping matrix `damping` at the same equilibrium: `eigenvalues` (all
-/// 2n s, quadratic_modes order), `eigenvalue_error`, `damping_ratio`, `stability`, the mode
-/// of each eigenvalue (`damped_modes`, largest component 1, with its backward error) and
+/// Adds to `entry` (the numeric modes at one point) the damped eigenvalues with the
+/// damping matrix C, all four matrices evaluated at that point: `eigenvalues` (all 2n s,
+/// quadratic_modes order), `eigenvalue_error`, `damping_ratio`, `stability`, the mode of
+/// each eigenvalue (`damped_modes`, largest component 1, with its backward error) and
 /// whether the damping is proportional at the point (then the modes are real), and sets
 /// `damped`. `omega` and `modes` stay those of the undamped system (C = 0). Throws
-/// computation_error as numeric_normal_modes does.
-void add_damped_eigenvalues(const model& scene, const linearization_result& linear, const GiNaC::matrix& damping,
-                            std::vector<numeric_modes>& entries);
+/// computation_error (without a location) as solve_quadratic_modes.
+void add_damped_eigenvalues(numeric_modes& entry, const Eigen::MatrixXd& kinetic, const Eigen::MatrixXd& potential,
+                            const Eigen::MatrixXd& damping, const Eigen::MatrixXd& gyroscopic);
 
 /// −Re s/|s|; NaN for s = 0, which has no damping ratio.
 double damping_ratio(std::complex<double> s);

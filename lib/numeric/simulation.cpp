@@ -31,8 +31,11 @@ GiNaC::ex substitute(const GiNaC::ex& e, const model& scene, const std::map<std:
 
 } // namespace
 
-std::vector<double> linearized_frequencies(const ode_system& system, const std::vector<double>& x)
+std::vector<double> linearized_frequencies(const ode_system& system, const std::vector<double>& x,
+                                           std::vector<double>* growth_rates)
 {
+    if (growth_rates)
+        growth_rates->clear();
     const auto d = static_cast<Eigen::Index>(system.dimension);
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> jacobian(d, d);
     system.jacobian(0, x.data(), jacobian.data());
@@ -59,8 +62,12 @@ std::vector<double> linearized_frequencies(const ode_system& system, const std::
                 decay_alone = false;
         if (lambda.imag() > 0 || (lambda.imag() == 0 && lambda.real() > 0) || decay_alone)
             frequencies.push_back(size);
+        if (growth_rates && lambda.imag() == 0 && lambda.real() > 0)
+            growth_rates->push_back(size);
     }
     std::sort(frequencies.begin(), frequencies.end());
+    if (growth_rates)
+        std::sort(growth_rates->begin(), growth_rates->end());
     return frequencies;
 }
 
@@ -161,6 +168,7 @@ struct prepared_motion {
     double tolerance = 1e-9;
     double absolute_scale = 1;                    ///< integration_options::absolute_scale
     std::vector<double> frequencies;
+    std::vector<double> growth_rates;             ///< those of `frequencies` that are real λ > 0
     double stiffness = 1;
     double rate = 0;                              ///< fastest rate of the motion (0: the largest frequency)
     ode_system system;
@@ -220,7 +228,7 @@ prepared_motion prepare(const model& scene, const equations_of_motion& equations
     if ((p.motion->conservative() || p.motion->accumulates_work()) && equilibrium)
         energy_scale = std::abs(p.motion->energy(p.x0.data()) - p.motion->energy(reference_state.data()));
     p.system = p.motion->system(energy_scale);
-    p.frequencies = linearized_frequencies(p.system, reference_state);
+    p.frequencies = linearized_frequencies(p.system, reference_state, &p.growth_rates);
     if (p.frequencies.size() >= 2)
         p.stiffness = p.frequencies.back() / p.frequencies.front();
     return p;
@@ -241,7 +249,7 @@ prepared_motion prepare_free_body(const model& scene, const simulation_settings&
     p.x0 = p.free_body->initial();
     read_span(p, scene, settings);
     p.system = p.free_body->system();
-    p.frequencies = linearized_frequencies(p.system, p.x0);
+    p.frequencies = linearized_frequencies(p.system, p.x0, &p.growth_rates);
     // The body turns at |ω|; the linearization about ω0 gives the wobble (polhode) rate.
     double spin = std::sqrt(p.x0[0] * p.x0[0] + p.x0[1] * p.x0[1] + p.x0[2] * p.x0[2]);
     if (p.frequencies.size() >= 2)
@@ -265,7 +273,16 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
     const std::vector<double>& x0 = prepared.x0;
     const double until = prepared.until;
     result.tolerance = prepared.tolerance;
-    result.frequencies = prepared.frequencies;
+    // the growth rates apart: an unstable mode is not a frequency
+    result.growth_rates = prepared.growth_rates;
+    std::vector<double> growing = prepared.growth_rates;
+    for (double rate : prepared.frequencies) {
+        auto found = std::find(growing.begin(), growing.end(), rate);
+        if (found != growing.end())
+            growing.erase(found);
+        else
+            result.frequencies.push_back(rate);
+    }
     result.stiffness = prepared.stiffness;
     ode_system& system = prepared.system;
 

@@ -78,7 +78,12 @@ struct simulation_result {
     /// estimate of a first run missed `tolerance` and the run was repeated.
     double run_tolerance = 0;
     std::optional<double> missed_error;       ///< the first run's error estimate, when it missed
-    std::vector<double> frequencies;          ///< linearized angular frequencies at the equilibrium (ascending)
+    /// The linearized rates at the equilibrium that do not grow (ascending): angular
+    /// frequencies, and decay rates of modes that only decay.
+    std::vector<double> frequencies;
+    /// The growth rates γ > 0 of its unstable modes (q ∝ e^{γt}), ascending; printed as such,
+    /// never as frequencies.
+    std::vector<double> growth_rates;
     double stiffness = 1;                     ///< ω_max/ω_min of the linearization
     trajectory run;
     std::optional<double> error_estimate;     ///< relative trajectory error
@@ -109,8 +114,11 @@ simulation_result simulate(const model& scene, const equations_of_motion& equati
 simulation_result simulate_free_body(const model& scene, const simulation_settings& settings = {});
 
 /// Linearized angular frequencies of `system` about the state `x` (|Im λ| and |Re λ|
-/// of the Jacobian's eigenvalues, each pair once), ascending, zeros dropped.
-std::vector<double> linearized_frequencies(const ode_system& system, const std::vector<double>& x);
+/// of the Jacobian's eigenvalues, each pair once), ascending, zeros dropped: the rates that
+/// set the method and the step. `growth_rates` (may be null) gets, ascending, those of them
+/// that are real λ > 0: unstable modes, which grow as e^{λt} rather than oscillate.
+std::vector<double> linearized_frequencies(const ode_system& system, const std::vector<double>& x,
+                                           std::vector<double>* growth_rates = nullptr);
 
 /// The exact solution of a linear conservative system x = (q, q̇), q̈ = −M⁻¹K q, by its
 /// normal modes, if the Jacobian is the same at every state (checked at a few states);

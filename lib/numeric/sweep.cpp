@@ -3,13 +3,14 @@
  *  Streamed numeric sweeps (see sweep.h). */
 #include "numeric/sweep.h"
 
+#include "core/assumptions.h"
 #include "core/number_text.h"
 
-#include "numeric/compiled_modes.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 
 namespace lagrange {
 
@@ -86,6 +87,10 @@ sweep_axis parse_sweep_axis(const std::string& text, const model& scene)
     std::size_t count_end = second == std::string::npos ? text.size() : second;
     axis.from = parse_number(text, equals + 1, dots);
     axis.to = parse_number(text, dots + 2, colon);
+    // Every point lies between the ends, so the ends agreeing with the assumptions suffices.
+    for (auto [value, at] : {std::pair{axis.from, equals + 1}, std::pair{axis.to, dots + 2}})
+        if (std::optional<std::string> why = parameter_value_contradiction(axis.name, value))
+            bad_sweep(text, at, *why);
     std::string count = text.substr(colon + 1, count_end - colon - 1);
     double n = parse_number(text, colon + 1, count_end);
     if (!(n >= 1) || n != std::floor(n) || n > 1e10)
@@ -114,11 +119,10 @@ std::size_t sweep_size(const std::vector<sweep_axis>& axes)
     return n;
 }
 
-void sweep_numeric_modes(const model& scene, const linearization_result& linear, const std::vector<sweep_axis>& axes,
+void sweep_numeric_modes(const model& scene, point_modes& path, const std::vector<sweep_axis>& axes,
                          const std::function<void(const sweep_row&)>& each)
 {
     const std::size_t points = sweep_size(axes);
-    compiled_modes compiled(scene.parameters, linear, {}, coordinate_names(scene));
     std::vector<double> values(scene.parameters.size(), std::nan(""));
     std::vector<bool> given(scene.parameters.size(), false);
     for (const value_point& point : scene.values)
@@ -126,33 +130,24 @@ void sweep_numeric_modes(const model& scene, const linearization_result& linear,
     for (const sweep_axis& a : axes)
         given[a.parameter] = true;
     for (std::size_t k = 0; k < scene.parameters.size(); ++k)
-        if (compiled.uses(k) && !given[k])
+        if (path.uses(k) && !given[k])
             throw computation_error("no value for parameter `" + scene.parameters[k].name +
                                     "` in the sweep: give it with `values` or --values");
-    const std::size_t n = compiled.size();
-    std::vector<double> w2(n), omega(n), error(n);
+    numeric_modes modes;
     sweep_row row;
     row.parameter_values = values.data();
-    row.omega = omega.data();
-    row.error = error.data();
+    row.modes = &modes;
     for (std::size_t index = 0; index < points; ++index) {
         std::size_t rest = index;
         for (std::size_t a = axes.size(); a-- > 0;) {
             values[axes[a].parameter] = axes[a].at(rest % axes[a].count);
             rest /= axes[a].count;
         }
-        try {
-            compiled.evaluate(values.data(), w2.data(), omega.data(), error.data(), nullptr);
-        } catch (const computation_error& e) {
-            throw computation_error(std::string(e.what()) + " (sweep point " + std::to_string(index + 1) + ": " +
-                                    point_text(scene, values) + ")");
-        }
-        for (std::size_t k = 0; k < n; ++k)
-            if (!std::isfinite(omega[k]) || !std::isfinite(error[k]))
-                throw computation_error("the frequencies are not finite at sweep point " + std::to_string(index + 1) +
-                                        " (" + point_text(scene, values) +
-                                        "): an entry of T or V overflows or leaves the domain of a function there");
+        path.evaluate(values.data(), modes, [&] {
+            return "sweep point " + std::to_string(index + 1) + " (" + point_text(scene, values) + ")";
+        });
         row.index = index;
+        row.stability = stability_of(modes);
         each(row);
     }
 }

@@ -5,8 +5,8 @@
  *  length runs in constant memory. */
 #pragma once
 
-#include "mechanics/linearization.h"
 #include "core/model.h"
+#include "numeric/point_modes.h"
 
 #include <cstddef>
 #include <functional>
@@ -34,16 +34,20 @@ sweep_axis parse_sweep_axis(const std::string& text, const model& scene);
 struct sweep_row {
     std::size_t index = 0;                 ///< 0-based, the last axis varies fastest
     const double* parameter_values = nullptr; ///< every parameter, in model::parameters order
-    const double* omega = nullptr;         ///< size() entries, ascending (sign(ω²)·√|ω²|)
-    const double* error = nullptr;         ///< bound on the relative error of each ω
+    /// The modes there, as the `numeric` stage gives them at the same values (point_modes):
+    /// `omega` ascending, a negative entry the growth rate of an unstable mode
+    /// (sign(ω²)·√|ω²|), `error` the bound on each, `eigenvalues` with G or C ≠ 0.
+    const numeric_modes* modes = nullptr;
+    std::string stability;                 ///< "stable", "marginal" or "unstable" (stability_of)
 };
 
 /// The modes at every point of the grid `axes` (Cartesian product, the last axis
-/// fastest). Parameters not swept take their values from the scene's `values`
-/// points (and --values), later points overriding earlier ones. Throws
-/// computation_error naming the point where the modes cannot be computed, or a
-/// parameter that has no value.
-void sweep_numeric_modes(const model& scene, const linearization_result& linear, const std::vector<sweep_axis>& axes,
+/// fastest), by `path`, the one that the `numeric` stage takes (engine's
+/// numeric_modes_path): gyroscopic, damped and constrained scenes alike. Parameters not
+/// swept take their values from the scene's `values` points (and --values), later points
+/// overriding earlier ones. Throws computation_error naming the point where the modes
+/// cannot be computed, or a parameter that has no value.
+void sweep_numeric_modes(const model& scene, point_modes& path, const std::vector<sweep_axis>& axes,
                          const std::function<void(const sweep_row&)>& each);
 
 /// The number of points of the grid (throws computation_error above 1e10).

@@ -117,10 +117,32 @@ void write_equations_json(nlohmann::ordered_json& doc, const analysis& result, c
         doc["equations"].push_back(print(e, syntax::plain, equation_order(*result.scene)));
 }
 
-/// How each result was checked (JSON only: text and LaTeX do not print it).
+/// How each result was checked: in JSON whenever there are checks (or `verification` was
+/// asked for), in text and LaTeX only when `verification` was asked for.
+void write_verification_text(std::ostream& out, const analysis& result, const document_options&)
+{
+    if (!result.verification || !result.wanted.count(product::verification))
+        return;
+    out << "\nVerification (each result checked numerically by an independent route)\n";
+    for (const verification_entry& entry : result.verification->entries)
+        out << "  " << entry.item << ": " << entry.how << '\n';
+}
+
+void write_verification_latex(std::ostream& out, const analysis& result, const document_options&)
+{
+    if (!result.verification || !result.wanted.count(product::verification) || result.verification->entries.empty())
+        return;
+    out << "\\subsection*{Verification}\nEach result checked numerically by an independent route:\n"
+           "\\begin{itemize}\n";
+    for (const verification_entry& entry : result.verification->entries)
+        out << "\\item " << latex_text(entry.item) << ": " << latex_text(entry.how) << "\n";
+    out << "\\end{itemize}\n";
+}
+
 void write_verification_json(nlohmann::ordered_json& doc, const analysis& result, const document_options&)
 {
-    if (!result.verification || result.verification->entries.empty())
+    if (!result.verification ||
+        (result.verification->entries.empty() && !result.wanted.count(product::verification)))
         return;
     nlohmann::ordered_json checks = nlohmann::ordered_json::object();
     for (const verification_entry& entry : result.verification->entries)
@@ -200,7 +222,7 @@ const std::vector<family_writers>& families()
         {[](std::ostream& out, const analysis& r, options) { write_virial_text(out, r); },
          [](std::ostream& out, const analysis& r, options) { write_virial_latex(out, r); },
          [](nlohmann::ordered_json& doc, const analysis& r, options) { write_virial_json(doc, r); }},
-        {nullptr, nullptr, write_verification_json},
+        {write_verification_text, write_verification_latex, write_verification_json},
     };
     return table;
 }

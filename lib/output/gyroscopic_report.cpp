@@ -7,6 +7,7 @@
 #include "output/format.h"
 
 #include "output/latex_blocks.h"
+#include "output/mode_frequency.h"
 
 #include <complex>
 #include <string>
@@ -54,7 +55,8 @@ void write_gyroscopic_numeric(report_writer& w)
     w.text("At each parameter point the engine evaluates T, V and G and solves the quadratic eigenproblem ")
         .latex("$(s^{2}\\mathbf{T} - s\\mathbf{G} + \\mathbf{V})\\,x = 0$")
         .text(" through the real eigenproblem of the first-order system. The frequencies are the imaginary parts "
-              "of the eigenvalues in the upper half plane (a negative value is the rate of a real eigenvalue); each "
+              "of the eigenvalues in the upper half plane; a real eigenvalue s = γ > 0 is an imaginary frequency "
+              "iγ, and a mode whose eigenvalue has a positive real part is shown with that growth rate. Each "
               "comes with an estimate of its relative error. The modes are complex, normalized so that ")
         .latex("$x^{*}\\mathbf{T}x = 1$")
         .text(" with their first largest component real and positive.");
@@ -68,10 +70,12 @@ void write_gyroscopic_numeric(report_writer& w)
             std::string mode;
             for (Eigen::Index i = 0; i < nm.complex_modes.rows(); ++i)
                 mode += (i ? ",\\ " : "") + complex_latex(nm.complex_modes(i, static_cast<Eigen::Index>(k)));
-            w.latex(std::to_string(k + 1) + " & $" + report_writer::number(nm.omega[k]) + "$ & $\\le " +
+            w.latex(std::to_string(k + 1) + " & $" +
+                    omega_value_latex(nm, k, [](double x) { return report_writer::number(x); }) + "$ & $\\le " +
                     report_writer::number(nm.error[k], 2) + "$ & $(" + mode + ")$\\\\\n");
         }
         w.latex("\\hline\n\\end{tabular}\n\\end{center}\n");
+        write_growth_rates(w, nm);
         w.text("Method: " + nm.method + ".");
         w.latex("\n");
     }

@@ -4,6 +4,8 @@
 #include "output/oscillations_output.h"
 #include "output/format.h"
 
+#include "output/mode_frequency.h"
+
 #include "core/number_text.h"
 #include "output/damping_output.h"
 #include "output/latex_blocks.h"
@@ -133,6 +135,14 @@ nlohmann::ordered_json vectors_json(const std::vector<std::vector<GiNaC::ex>>& v
     return list;
 }
 
+/// G is shown where it is not zero, and where `gyroscopic` is asked for (then also G = 0).
+bool shows_gyroscopic(const analysis& result)
+{
+    const linearization_result& l = *result.linearization;
+    return l.has_gyroscopic() || (result.wanted.count(product::gyroscopic) && l.gyroscopic.rows() == l.kinetic.rows() &&
+                                  l.gyroscopic.cols() == l.kinetic.cols());
+}
+
 } // namespace
 
 void write_oscillations_text(std::ostream& out, const analysis& result)
@@ -151,7 +161,7 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
         const linearization_result& l = *result.linearization;
         out << "\nLinearization\n";
         std::vector<const char*> matrices{"T", "V"};
-        if (l.has_gyroscopic())
+        if (shows_gyroscopic(result))
             matrices.push_back("G");
         for (const char* which : matrices) {
             const GiNaC::matrix& m = std::string(which) == "T" ? l.kinetic
@@ -225,7 +235,7 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
             if (!n.stability.empty() && !n.damped)
                 out << "    " << n.stability << '\n';
             for (std::size_t k = 0; k < n.omega.size(); ++k) {
-                out << "    ω = " << round_trip(n.omega[k]) << "  (relative error ≤ " << round_trip(n.error[k])
+                out << "    " << mode_frequency_text(n, k) << "  (relative error ≤ " << round_trip(n.error[k])
                     << ")  mode (";
                 for (Eigen::Index i = 0; i < n.modes.rows(); ++i)
                     out << (i ? ", " : "") << round_trip(n.modes(i, static_cast<Eigen::Index>(k)));
@@ -253,7 +263,7 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
         // T and V (and G) side by side when they fit on a line, else one below the other.
         const linearization_result& l = *result.linearization;
         std::vector<latex_row> rows{{"T", {latex_matrix(l.kinetic)}}, {"V", {latex_matrix(l.potential)}}};
-        if (l.has_gyroscopic())
+        if (shows_gyroscopic(result))
             rows.push_back({"G", {latex_matrix(l.gyroscopic)}});
         std::string side_by_side;
         for (const latex_row& r : rows)
@@ -322,10 +332,16 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
                     << print(GiNaC::numeric(n.values[i].second), s);
             out << "$" << (n.stability.empty() || n.damped ? "" : " (" + n.stability + ")") << ":\n\\begin{align*}\n";
             for (std::size_t k = 0; k < n.omega.size(); ++k)
-                out << "\\omega_{" << k + 1 << "} &= " << print(GiNaC::numeric(n.omega[k]), s)
+                out << "\\omega_{" << k + 1 << "} &= "
+                    << omega_value_latex(n, k, [&](double x) { return print(GiNaC::numeric(x), s); })
                     << " & \\text{(relative error} &\\le " << print(GiNaC::numeric(n.error[k]), s) << ")"
                     << (k + 1 < n.omega.size() ? "\\\\\n" : "\n");
             out << "\\end{align*}\n";
+            std::string growth;
+            for (std::size_t k = 0; k < n.omega.size(); ++k)
+                growth += growth_sentence_latex(n, k, [&](double x) { return print(GiNaC::numeric(x), s); });
+            if (!growth.empty())
+                out << growth.substr(0, growth.size() - 1) << "\n\n";
             if (n.damped)
                 write_damped_eigenvalues_latex(out, n);
         }
@@ -356,7 +372,7 @@ void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result
     if (result.linearization) {
         doc["T"] = matrix_json(result.linearization->kinetic);
         doc["V"] = matrix_json(result.linearization->potential);
-        if (result.linearization->has_gyroscopic())
+        if (shows_gyroscopic(result))
             doc["gyroscopic"] = matrix_json(result.linearization->gyroscopic);
     }
     if (result.characteristic)
@@ -413,6 +429,18 @@ void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result
             }
             points.push_back({{"values", values}, {"omega", n.omega}, {"modes", modes},
                               {"error", n.error}, {"method", n.method}});
+            // An unstable mode: `omega` keeps the contract's floats (ω < 0: the imaginary
+            // frequency i|ω|); `growth_rate` names the rate at which each mode grows.
+            bool grows = false;
+            for (std::size_t k = 0; k < n.omega.size(); ++k)
+                grows = grows || mode_grows(n, k);
+            if (grows) {
+                nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+                for (std::size_t k = 0; k < n.omega.size(); ++k)
+                    rates.push_back(mode_growth_rate(n, k));
+                points.back()["growth_rate"] = rates;
+                points.back()["stability"] = stability_of(n);
+            }
             if (!n.eigenvalues.empty()) {
                 nlohmann::ordered_json eigenvalues = nlohmann::ordered_json::array();
                 for (const std::complex<double>& e : n.eigenvalues)

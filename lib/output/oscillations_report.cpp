@@ -7,6 +7,7 @@
 
 #include "core/number_text.h"
 
+#include "output/mode_frequency.h"
 #include "output/print.h"
 
 #include <algorithm>
@@ -230,7 +231,9 @@ std::optional<std::string> pendulum_script(const analysis& result, const numeric
             }
             data << "EOD\n";
         }
-        plots << "set title \"mode " << k + 1 << ":  ω = " << significant(numbers.omega[k], 4) << "\"\n"
+        plots << "set title \"mode " << k + 1 << ":  "
+              << mode_frequency_text(numbers, k, [](double x) { return significant(x, 4); })
+              << "\"\n"
               << "plot $rest_lines_" << k << " with lines lc rgb '#b8b8b8' lw 3, "
               << "$rest_masses_" << k << " with points pt 7 ps 0.9 lc rgb '#b8b8b8', "
               << "$minus_lines_" << k << " with lines lc rgb '#c0392b' lw 2 dt 2, "
@@ -278,7 +281,9 @@ std::string bar_script(const model& scene, const numeric_modes& numbers)
            << "set xrange [0.4:" << n << ".6]\nset xzeroaxis lt -1\nset ytics 0.5\nset grid ytics lc rgb '#dddddd'\n"
            << "set multiplot layout 1," << n << "\n";
     for (std::size_t k = 0; k < n; ++k) {
-        script << "set title \"mode " << k + 1 << ":  ω = " << significant(numbers.omega[k], 4) << "\"\n"
+        script << "set title \"mode " << k + 1 << ":  "
+              << mode_frequency_text(numbers, k, [](double x) { return significant(x, 4); })
+              << "\"\n"
                << "plot $mode_" << k << " using 1:2:xtic(3) with boxes lc rgb '#1f4e9c'\n";
     }
     script << "unset multiplot\n";
@@ -308,7 +313,7 @@ void write_mode_figures(report_writer& w)
         for (std::size_t k = 0; k < 2; ++k) {
             double product = numbers->modes(0, static_cast<Eigen::Index>(k)) * numbers->modes(1, static_cast<Eigen::Index>(k));
             w.text((k == 0 ? "In mode " : "mode ") + std::to_string(k + 1) + " (").latex("$" + report_writer::name("omega") + index(k) +
-                                                                    " = " + report_writer::number(numbers->omega[k], 6) + "$")
+                                                                    " = " + omega_value_latex(*numbers, k, [](double x) { return report_writer::number(x, 6); }) + "$")
                 .text(std::string(") the coordinates move ") + (product > 0 ? "in phase" : product < 0 ? "in antiphase" : "one at a time") +
                       (k == 0 ? "; in " : "."));
         }

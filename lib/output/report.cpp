@@ -13,6 +13,7 @@
 #include "system/gnuplot.h"
 #include "system/latex.h"
 #include "output/latex_blocks.h"
+#include "output/mode_frequency.h"
 #include "output/print.h"
 #include "output/report_sections.h"
 
@@ -440,9 +441,13 @@ void write_numeric(report_writer& w)
     w.text("At each parameter point the engine evaluates T and V and solves the generalized eigenproblem; each "
            "frequency comes with a bound on its relative error. The columns of A are the mode vectors with ")
         .latex("$A^{\\mathsf{T}}\\mathbf{T}A = I$")
-        .text(". (A negative ")
-        .latex("$\\omega$")
-        .text(" is the growth rate of an unstable mode.)");
+        .text(". An unstable mode (")
+        .latex("$\\omega^{2} < 0$")
+        .text(") has the imaginary frequency ")
+        .latex("$\\omega = i\\gamma$")
+        .text(" and grows as ")
+        .latex("$e^{\\gamma t}$")
+        .text(": it is shown by its growth rate.");
     if (modes_are_undamped(result))
         w.text(" These are the frequencies and modes of the undamped system (C = 0); the damped eigenvalues are in "
                "the section on damping.");
@@ -453,9 +458,11 @@ void write_numeric(report_writer& w)
         w.latex("\\begin{center}\n\\renewcommand{\\arraystretch}{1.3}\n\\begin{tabular}{rll}\n\\hline\n$k$ & $\\omega_{k}$ & relative error bound\\\\\n"
                 "\\hline\n");
         for (std::size_t k = 0; k < nm.omega.size(); ++k)
-            w.latex(std::to_string(k + 1) + " & $" + report_writer::number(nm.omega[k]) + "$ & $\\le " +
+            w.latex(std::to_string(k + 1) + " & $" +
+                    omega_value_latex(nm, k, [](double x) { return report_writer::number(x); }) + "$ & $\\le " +
                     report_writer::number(nm.error[k], 2) + "$\\\\\n");
         w.latex("\\hline\n\\end{tabular}\n\\end{center}\n");
+        write_growth_rates(w, nm);
         w.text("Method: " + nm.method + ". The mode matrix:");
         GiNaC::matrix modes(static_cast<unsigned>(nm.modes.rows()), static_cast<unsigned>(nm.modes.cols()));
         std::string rows = "\\begin{pmatrix}";
@@ -688,6 +695,15 @@ std::string compile_report(const report_document& document)
     for (const report_file& f : document.figures)
         files.emplace_back(f.name, f.bytes);
     return compile_latex(document.latex, files);
+}
+
+void write_growth_rates(report_writer& w, const numeric_modes& nm)
+{
+    std::string growth;
+    for (std::size_t k = 0; k < nm.omega.size(); ++k)
+        growth += growth_sentence_latex(nm, k, [](double x) { return report_writer::number(x); });
+    if (!growth.empty())
+        w.latex(growth);
 }
 
 std::string values_latex(const numeric_modes& point)

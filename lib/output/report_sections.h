@@ -48,4 +48,8 @@ void write_constraints_section(report_writer& w);
 /// subsection titles).
 std::string values_latex(const numeric_modes& point);
 
+/// After a numeric point's table: one sentence per mode that grows, naming its growth rate
+/// (output/mode_frequency.h), so that the table's imaginary ω is never read as a frequency.
+void write_growth_rates(report_writer& w, const numeric_modes& nm);
+
 } // namespace lagrange

@@ -77,6 +77,12 @@ void write_simulation_text(std::ostream& out, const simulation_result& s, bool t
             out << (k ? ", " : " ") << number(s.frequencies[k]);
         out << '\n';
     }
+    if (!s.growth_rates.empty()) {
+        out << "  linearized growth rates (unstable, q ∝ e^{st}): s =";
+        for (std::size_t k = 0; k < s.growth_rates.size(); ++k)
+            out << (k ? ", " : " ") << "+" << number(s.growth_rates[k]);
+        out << '\n';
+    }
     out << "  steps: " << run.steps << " (" << run.evaluations << " evaluations, " << run.jacobians
         << " Jacobians)\n";
     if (s.error_estimate)
@@ -167,6 +173,12 @@ void write_simulation_latex(std::ostream& out, const simulation_result& s, bool 
         << " Jacobians)\\\\\n";
     if (s.error_estimate)
         out << "error estimate & $" << short_latex(*s.error_estimate) << "$ relative\\\\\n";
+    if (!s.growth_rates.empty()) {
+        out << "linearized growth rates (unstable, $q \\propto e^{st}$) & $s =";
+        for (std::size_t k = 0; k < s.growth_rates.size(); ++k)
+            out << (k ? ",\\ " : " ") << "+" << short_latex(s.growth_rates[k], 6);
+        out << "$\\\\\n";
+    }
     for (const auto& [name, drift] : run.invariant_drift) {
         if (name == "energy_balance")
             out << "energy balance $h(t)-h(0)-\\int Q\\cdot\\dot q\\,dt$ & $" << short_latex(drift)
@@ -251,6 +263,8 @@ nlohmann::ordered_json simulation_json(const simulation_result& s, bool timings)
         doc["error_estimate"] = *s.error_estimate;
     doc["error_basis"] = s.error_basis;
     doc["frequencies"] = s.frequencies;
+    if (!s.growth_rates.empty())
+        doc["growth_rates"] = s.growth_rates;
     if (s.beats)
         doc["beats"] = {{"coordinate", s.beats->coordinate},
                         {"measured", s.beats->measured},

@@ -88,6 +88,16 @@ void write_simulation(report_writer& w, const simulation_result& s)
             list += (k ? ",\\ " : "") + report_writer::number(s.frequencies[k], 6);
         w.text(" The linearized frequencies about the equilibrium are ").latex("$\\omega = " + list + "$").text(".\n");
     }
+    if (!s.growth_rates.empty()) {
+        std::string list;
+        for (std::size_t k = 0; k < s.growth_rates.size(); ++k)
+            list += (k ? ",\\ " : "") + report_writer::number(s.growth_rates[k], 6);
+        w.text(" The equilibrium is unstable: linearized about it, the motion grows as ")
+            .latex("$e^{st}$")
+            .text(" with growth rate ")
+            .latex("$s = " + list + "$")
+            .text(".\n");
+    }
 
     // The coordinates against time, one panel each (at most 3000 points drawn).
     if (s.run.states.empty() || s.run.times.size() != s.run.states.size() || n == 0)

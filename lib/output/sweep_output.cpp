@@ -18,10 +18,10 @@ void put_number(std::ostream& out, double x) { out << shortest(x); }
 
 } // namespace
 
-void write_sweep(std::ostream& out, const model& scene, const linearization_result& linear,
-                 const std::vector<sweep_axis>& axes, const std::string& format)
+void write_sweep(std::ostream& out, const model& scene, point_modes& path, const std::vector<sweep_axis>& axes,
+                 const std::string& format)
 {
-    const std::size_t n = scene.coordinates.size();
+    const std::size_t n = path.size();
     const bool json = format == "json";
     if (json) {
         nlohmann::json names = nlohmann::json::array(), columns = nlohmann::json::array();
@@ -33,6 +33,7 @@ void write_sweep(std::ostream& out, const model& scene, const linearization_resu
             columns.push_back("omega" + std::to_string(k));
         for (std::size_t k = 1; k <= n; ++k)
             columns.push_back("error" + std::to_string(k));
+        columns.push_back("stability");
         out << "{\"sweep\": {\"parameters\": " << names.dump() << ", \"columns\": " << columns.dump()
             << ", \"points\": [";
     } else {
@@ -43,9 +44,9 @@ void write_sweep(std::ostream& out, const model& scene, const linearization_resu
             out << " omega" << k;
         for (std::size_t k = 1; k <= n; ++k)
             out << " error" << k;
-        out << '\n';
+        out << " stability\n";
     }
-    sweep_numeric_modes(scene, linear, axes, [&](const sweep_row& row) {
+    sweep_numeric_modes(scene, path, axes, [&](const sweep_row& row) {
         if (json)
             out << (row.index ? ",\n" : "\n") << '[';
         bool first = true;
@@ -58,10 +59,10 @@ void write_sweep(std::ostream& out, const model& scene, const linearization_resu
         for (const sweep_axis& a : axes)
             cell(row.parameter_values[a.parameter]);
         for (std::size_t k = 0; k < n; ++k)
-            cell(row.omega[k]);
+            cell(row.modes->omega[k]);
         for (std::size_t k = 0; k < n; ++k)
-            cell(row.error[k]);
-        out << (json ? "]" : "\n");
+            cell(row.modes->error[k]);
+        out << (json ? ", \"" + row.stability + "\"]" : " " + row.stability + "\n");
     });
     if (json)
         out << "\n]}}\n";

@@ -10,8 +10,10 @@
 
 namespace lagrange {
 
-/// Runs the sweep and writes it to `out` (format "text" or "json"), point by point.
-void write_sweep(std::ostream& out, const model& scene, const linearization_result& linear,
-                 const std::vector<sweep_axis>& axes, const std::string& format);
+/// Runs the sweep by `path` (engine's numeric_modes_path) and writes it to `out` (format
+/// "text" or "json"), point by point: the swept values, ω₁ … ωₙ (a negative entry is the
+/// growth rate of an unstable mode), their error bounds, and the stability at the point.
+void write_sweep(std::ostream& out, const model& scene, point_modes& path, const std::vector<sweep_axis>& axes,
+                 const std::string& format);
 
 } // namespace lagrange

@@ -6,6 +6,8 @@
  *  lower_body.cpp. */
 #include "scene/lower.h"
 
+#include "core/assumptions.h"
+
 #include "scene/lexer.h"
 #include "scene/lower_body.h"
 #include "scene/lower_constraint.h"
@@ -538,13 +540,29 @@ private:
         if (spatial_gravity_ && !scene_.points.empty() && !spatial_point_ && scene_.bodies.empty())
             throw scene_error(*spatial_gravity_, "the points are planar (x, y), so gravity has two components "
                                                  "`(dx, dy)`; give the points three components to use a third");
-        for (std::size_t k = 0; k < value_statements_.size(); ++k)
+        for (std::size_t k = 0; k < value_statements_.size(); ++k) {
             check_physical(scene_, scene_.values[k], *value_statements_[k]);
+            check_assumptions(scene_.values[k], *value_statements_[k]);
+        }
         resolve_body_attachments();
         check_constraints(scene_);
     }
 
 public:
+    /// Rejects a parameter value of a `values` statement that contradicts what the derivation
+    /// assumes of parameters (core/assumptions.h), with the caret at the value. After
+    /// check_physical, whose message names the quantity (a negative mass) where there is one.
+    static void check_assumptions(const value_point& point, const statement& s)
+    {
+        for (const auto& [name, value] : point.values)
+            if (std::optional<std::string> why = parameter_value_contradiction(name, value)) {
+                for (const assignment& a : s.assignments)
+                    if (a.target.name == name && !a.velocity)
+                        throw scene_error(a.value->where, *why);
+                throw scene_error(s.where, *why);
+            }
+    }
+
     /// Rejects a `values` point that makes a mass, a body's dimension or moment zero or
     /// negative, with the caret at the value of a parameter the quantity depends on.
     static void check_physical(const model& scene, const value_point& point, const statement& s)
@@ -643,6 +661,7 @@ void add_values(model& scene, const std::string& text)
         lower.adopt_names(scene);
         value_point point = lower.values_line(ast.statements[0]);
         lowering::check_physical(scene, point, ast.statements[0]);
+        lowering::check_assumptions(point, ast.statements[0]);
         scene.values.push_back(point);
     } catch (scene_error& error) {
         source_location at = error.where();

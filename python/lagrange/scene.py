@@ -196,7 +196,9 @@ class Scene:
         """Frequencies and modes at parameter values: one Result per point with ``values``
         (dict), ``omega`` (ascending, numpy), ``modes`` (numpy; mode i is ``modes[i]``,
         normalized so that Aᵀ T A = I), ``error`` (estimated relative error of each ω) and,
-        with damping, ``eigenvalues`` (complex numpy) and ``damping_ratio``. ``values``: a
+        with damping, ``eigenvalues`` (complex numpy) and ``damping_ratio``; where a mode grows
+        (unstable), ``growth_rate`` (the rate γ of each mode, 0 for the others; its ``omega``
+        entry is −γ) and ``stability``. ``values``: a
         dict ``{"m": 1, ...}``, a string "m=1,l=2" or a list of them (several points); they
         replace the scene's `values` lines."""
         doc, c = self._parts("numeric", ["numeric"], values, settings)

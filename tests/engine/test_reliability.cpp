@@ -310,7 +310,7 @@ TEST_CASE("sweep: the double pendulum over m/M = 1e-6 ... 1e6 matches the closed
     std::istringstream lines(read_file(out));
     std::string line;
     std::getline(lines, line);
-    CHECK(line == "# m omega1 omega2 error1 error2");
+    CHECK(line == "# m omega1 omega2 error1 error2 stability");
     std::size_t rows = 0;
     double previous = 0;
     while (std::getline(lines, line)) {
@@ -370,13 +370,13 @@ TEST_CASE("numeric modes: a non-finite value is an error naming its cause", "[nu
     CHECK(overflow.err == "lagrange: error: the entry T(1,1) of the kinetic matrix overflows double precision at the "
                           "values on line 1 (its magnitude is beyond 1.8e308)\n");
     std::string root = temporary_file("sqrt.lag", "parameters m k\ncoordinates x\nT = 1/2*m*x'^2\n"
-                                                  "V = 1/2*sqrt(k)*x^2\nequilibrium x = 0\nvalues m = 1, k = -1\n");
+                                                  "V = 1/2*sqrt(k-2)*x^2\nequilibrium x = 0\nvalues m = 1, k = 1\n");
     cli_result domain = run_cli(root + " --want numeric");
     CHECK(domain.exit_code == 1);
     CHECK(domain.err.find("the entry V(1,1) of the potential matrix is not real at the values on line 6: a value "
                           "outside the domain of sqrt") != std::string::npos);
     std::string log = temporary_file("log.lag", "parameters m k\ncoordinates x\nT = 1/2*m*x'^2\n"
-                                                "V = 1/2*log(k)*x^2\nequilibrium x = 0\nvalues m = 1, k = 0\n");
+                                                "V = 1/2*log(k-1)*x^2\nequilibrium x = 0\nvalues m = 1, k = 1\n");
     cli_result pole = run_cli(log + " --want numeric");
     CHECK(pole.exit_code == 1);
     CHECK(pole.err.find("V(1,1) of the potential matrix cannot be evaluated at the values on line 6") !=

@@ -4,6 +4,7 @@
  *  a 50-digit CLN reference, a stiff spring chain, zero and unstable modes, errors. */
 #include "numeric/compiled_modes.h"
 #include "numeric/double_double.h"
+#include "numeric/point_modes.h"
 #include "scene/lower.h"
 
 #include <catch2/catch.hpp>

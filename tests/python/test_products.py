@@ -224,6 +224,13 @@ def test_bad_values_are_scene_errors(example):
         example("double_pendulum.lag").numeric({"M": 1, "nosuch": 2})
 
 
+def test_values_that_contradict_positive_parameters_are_scene_errors(example):
+    # parameters are assumed positive (sqrt(l^2) = l): l = -1 would be a different system
+    with pytest.raises(lagrange.SceneError, match="assumed real and positive") as caught:
+        example("double_pendulum.lag").numeric({"M": 1, "m": 0.01, "l": -1, "g": 9.81})
+    assert caught.value.file == "--values"
+
+
 def test_computation_error():
     scene = lagrange.Scene.from_text("parameters m k\ncoordinates x\nT = 1/2*m*x'^2\nV = k*x\n")
     with pytest.raises(lagrange.ComputationError, match="no equilibrium"):

@@ -132,7 +132,9 @@ TEST_CASE("lower: scenes that make no sense are rejected at the offending line",
     require_error("parameters M I1 I2\ncoordinates q\nbody B inertia (I1, I2, I1) mass M\nvalues M = 1, I1 = 1, "
                   "I2 = -2\n",
                   4, 28, "a moment of inertia of body `B` negative");
-    CHECK(load(header + "point P mass m at (q, 0)\nvalues m = 2, g = -1, l = 1\n").values.size() == 1);
+    // every parameter is assumed positive, not only masses (issue 32)
+    require_error(header + "point P mass m at (q, 0)\nvalues m = 2, g = -1, l = 1\n", 4, 19,
+                  "parameter `g` is assumed real and positive");
     {
         model scene = load(header + "point P mass m at (q, 0)\n");
         REQUIRE_THROWS_AS(add_values(scene, "m=0"), scene_error);
