@@ -359,7 +359,7 @@ TEST_CASE("sweep: bad sweeps are located input errors, a singular point is named
     std::string target = temporary_file("sweep-old.txt", "old\n");
     cli_result singular = run_cli(singular_scene + " --sweep a=3..1:3 -o " + target);
     CHECK(singular.exit_code == 1);
-    CHECK(singular.err.find("sweep point 3: a = 1, b = 1, k = 1") != std::string::npos);
+    CHECK(singular.err.find("sweep point 3 (a = 1, b = 1, k = 1)") != std::string::npos);
     CHECK(read_file(target) == "old\n");
 }
 
