@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file canonical_order.cpp
+ *  Keys and signs independent of GiNaC's hash order (canonical_order.h). */
+#include "algebra/canonical_order.h"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+namespace lagrange {
+
+namespace {
+
+using GiNaC::ex;
+using GiNaC::is_a;
+
+std::string number_text(const GiNaC::numeric& n)
+{
+    std::ostringstream text;
+    text << n;
+    return text.str();
+}
+
+bool negative_number(const GiNaC::numeric& c)
+{
+    const GiNaC::numeric re = c.real();
+    return re.is_zero() ? c.imag().is_negative() : re.is_negative();
+}
+
+std::string joined(const char* head, std::vector<std::string> keys, bool sorted)
+{
+    if (sorted)
+        std::sort(keys.begin(), keys.end());
+    std::string key = std::string(head) + "(";
+    for (const std::string& k : keys)
+        key += k + ",";
+    return key + ")";
+}
+
+bool odd_integer(const ex& e)
+{
+    return is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_odd();
+}
+
+} // namespace
+
+canonical_term canonical_keys::term(const ex& e)
+{
+    if (is_a<GiNaC::numeric>(e))
+        return {GiNaC::ex_to<GiNaC::numeric>(e), "1"};
+    auto found = terms_.find(e);
+    if (found != terms_.end())
+        return found->second;
+    canonical_term result{1, ""};
+    if (is_a<GiNaC::mul>(e)) {
+        std::vector<std::string> keys;
+        for (const ex& f : e) {
+            if (is_a<GiNaC::numeric>(f)) {
+                result.coefficient *= GiNaC::ex_to<GiNaC::numeric>(f);
+                continue;
+            }
+            canonical_factor c = factor(f);
+            if (c.negative)
+                result.coefficient = -result.coefficient;
+            keys.push_back(c.key);
+        }
+        result.rest = keys.size() == 1 ? keys.front() : joined("mul", keys, true);
+    } else {
+        canonical_factor c = factor(e);
+        result.coefficient = c.negative ? -1 : 1;
+        result.rest = c.key;
+    }
+    terms_.emplace(e, result);
+    return result;
+}
+
+canonical_factor canonical_keys::sum(const ex& e)
+{
+    std::vector<canonical_term> parts;
+    for (const ex& t : e)
+        parts.push_back(term(t));
+    std::size_t lead = 0;
+    for (std::size_t k = 1; k < parts.size(); ++k)
+        if (parts[k].rest < parts[lead].rest)
+            lead = k;
+    const bool negative = !parts.empty() && negative_number(parts[lead].coefficient);
+    std::vector<std::string> keys;
+    for (const canonical_term& p : parts)
+        keys.push_back(p.rest + "*" + number_text(negative ? -p.coefficient : p.coefficient));
+    return {negative, joined("add", keys, true)};
+}
+
+canonical_factor canonical_keys::factor(const ex& e)
+{
+    auto found = factors_.find(e);
+    if (found != factors_.end())
+        return found->second;
+    canonical_factor result;
+    if (is_a<GiNaC::add>(e)) {
+        result = sum(e);
+    } else if (is_a<GiNaC::power>(e) && is_a<GiNaC::add>(e.op(0)) && e.op(1).info(GiNaC::info_flags::integer)) {
+        canonical_factor base = sum(e.op(0));
+        result = {base.negative && odd_integer(e.op(1)), joined("power", {base.key, key(e.op(1))}, false)};
+    } else if (is_a<GiNaC::symbol>(e)) {
+        result.key = "s" + GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+    } else if (is_a<GiNaC::numeric>(e)) {
+        result.key = "n" + number_text(GiNaC::ex_to<GiNaC::numeric>(e));
+    } else if (is_a<GiNaC::constant>(e)) {
+        std::ostringstream text;
+        text << e;
+        result.key = "c" + text.str();
+    } else {
+        std::vector<std::string> keys;
+        for (const ex& operand : e)
+            keys.push_back(key(operand));
+        const std::string head = is_a<GiNaC::function>(e) ? GiNaC::ex_to<GiNaC::function>(e).get_name()
+                                                          : GiNaC::ex_to<GiNaC::basic>(e).class_name();
+        result.key = joined(head.c_str(), keys, false);
+    }
+    factors_.emplace(e, result);
+    return result;
+}
+
+std::string canonical_keys::key(const ex& e)
+{
+    if (is_a<GiNaC::add>(e)) {
+        std::vector<std::string> keys;
+        for (const ex& t : e) {
+            canonical_term p = term(t);
+            keys.push_back(p.rest + "*" + number_text(p.coefficient));
+        }
+        return joined("add", keys, true);
+    }
+    canonical_term p = term(e);
+    return p.rest + "*" + number_text(p.coefficient);
+}
+
+std::string canonical_key(const ex& e)
+{
+    canonical_keys keys;
+    return keys.key(e);
+}
+
+bool canonical_less(const ex& a, const ex& b)
+{
+    canonical_keys keys;
+    return keys.key(a) < keys.key(b);
+}
+
+} // namespace lagrange
