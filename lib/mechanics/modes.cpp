@@ -11,6 +11,7 @@
 #include "algebra/expression.h"
 #include "algebra/factor.h"
 #include "algebra/sign.h"
+#include "algebra/canonical_order.h"
 #include "algebra/sorted_terms.h"
 #include "algebra/surd.h"
 
@@ -46,6 +47,10 @@ struct factor_roots {
 std::optional<factor_roots> roots_of_factor(const ex& factor, const GiNaC::symbol& w)
 {
     ex p = factor.expand();
+    // factor() gives a factor either sign by GiNaC's hash order; the roots' forms follow
+    // the sign, so take the canonical one (canonical_order.h).
+    if (is_a<GiNaC::add>(p) && canonical_keys().sum(p).negative)
+        p = (-p).expand();
     int degree = p.degree(w);
     std::vector<ex> c;
     for (int k = 0; k <= degree; ++k)
