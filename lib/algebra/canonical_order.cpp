@@ -121,18 +121,24 @@ canonical_factor canonical_keys::factor(const ex& e)
     return result;
 }
 
-std::string canonical_keys::key(const ex& e)
+std::string canonical_keys::key(const ex& e, bool negated)
 {
     if (is_a<GiNaC::add>(e)) {
         std::vector<std::string> keys;
         for (const ex& t : e) {
             canonical_term p = term(t);
-            keys.push_back(p.rest + "*" + number_text(p.coefficient));
+            keys.push_back(p.rest + "*" + number_text(negated ? -p.coefficient : p.coefficient));
         }
         return joined("add", keys, true);
     }
     canonical_term p = term(e);
-    return p.rest + "*" + number_text(p.coefficient);
+    return p.rest + "*" + number_text(negated ? -p.coefficient : p.coefficient);
+}
+
+bool canonically_negative(const ex& e)
+{
+    canonical_keys keys;
+    return is_a<GiNaC::add>(e) ? keys.sum(e).negative : negative_number(keys.term(e).coefficient);
 }
 
 std::string canonical_key(const ex& e)

@@ -38,9 +38,9 @@ struct canonical_factor {
 /// value, the operands of sums and products sorted), remembered per expression.
 class canonical_keys {
 public:
-    /// The key of e's value: equal values written with factors of either sign, in any
-    /// GiNaC order, have equal keys.
-    std::string key(const GiNaC::ex& e);
+    /// The key of e's value (of −e's if `negated`): equal values written with factors of
+    /// either sign, in any GiNaC order, have equal keys.
+    std::string key(const GiNaC::ex& e, bool negated = false);
     canonical_term term(const GiNaC::ex& e);
     canonical_factor factor(const GiNaC::ex& e);
     /// A sum's canonical sign: negative if its leading term (least rest) has a negative
@@ -51,6 +51,12 @@ private:
     std::map<GiNaC::ex, canonical_term, GiNaC::ex_is_less> terms_;
     std::map<GiNaC::ex, canonical_factor, GiNaC::ex_is_less> factors_;
 };
+
+/// Whether e is canonically negative: a sum whose leading term is negative, a product
+/// whose coefficient is negative once its factor sums have their canonical signs, a
+/// negative number. e or −e is, unless e is 0: choose the sign of a numerator and
+/// denominator pair, or of a polynomial, by it.
+bool canonically_negative(const GiNaC::ex& e);
 
 /// canonical_keys().key(e), for one-off use.
 std::string canonical_key(const GiNaC::ex& e);

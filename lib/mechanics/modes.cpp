@@ -221,6 +221,9 @@ std::optional<ex> clean_normal_coordinate(const std::vector<ex>& displacements, 
         ex scale_squared = simplify_with(weights[pivot] * weights[pivot] / norm_squared, r);
         // the squares come out of the root; the numeric denominator stays in it
         ex fraction = tidy(scale_squared).numer_denom();
+        // √m/√X, not √(−m)/√(−X): GiNaC gives the pair a sign by its hash order.
+        if (canonically_negative(fraction.op(1)))
+            fraction = GiNaC::lst{(-fraction.op(0)).expand(), (-fraction.op(1)).expand()};
         auto [numerator_out, numerator_in] = square_root_parts_of_product(factor_if_quick(fraction.op(0)));
         auto [denominator_out, denominator_in] = square_root_parts_of_product(factor_if_quick(fraction.op(1)));
         ex scale = numerator_out / denominator_out * GiNaC::sqrt(r.restore(numerator_in)) /

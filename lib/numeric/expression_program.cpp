@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <unordered_map>
 #include <sstream>
 #include <stdexcept>
 
@@ -41,11 +42,12 @@ private:
     /// whatever order and signs GiNaC chose.
     int value(const GiNaC::ex& e, bool negate)
     {
-        auto found = memo_.find({e, negate});
+        std::string key = keys_.key(e, negate);
+        auto found = memo_.find(key);
         if (found != memo_.end())
             return found->second;
         int result = GiNaC::is_a<GiNaC::add>(e) ? sum(e, negate) : term(e, negate);
-        memo_.emplace(std::make_pair(e, negate), result);
+        memo_.emplace(std::move(key), result);
         return result;
     }
 
@@ -98,11 +100,12 @@ private:
     {
         if (GiNaC::is_a<GiNaC::add>(f))
             return value(f, keys_.sum(f).negative);
-        auto found = memo_.find({f, false});
+        std::string key = keys_.key(f);
+        auto found = memo_.find(key);
         if (found != memo_.end())
             return found->second;
         int result = build(f);
-        memo_.emplace(std::make_pair(f, false), result);
+        memo_.emplace(std::move(key), result);
         return result;
     }
 
@@ -219,14 +222,9 @@ private:
     const std::vector<GiNaC::ex>& symbols_;
     std::vector<instruction>& code_;
     bool& algebraic_;
-    struct signed_less {
-        bool operator()(const std::pair<GiNaC::ex, bool>& a, const std::pair<GiNaC::ex, bool>& b) const
-        {
-            const int c = a.first.compare(b.first);
-            return c != 0 ? c < 0 : a.second < b.second;
-        }
-    };
-    std::map<std::pair<GiNaC::ex, bool>, int, signed_less> memo_; ///< lookups only: never iterated
+    /// Slots by the canonical key of their value: one slot for a value however GiNaC
+    /// wrote it (lookups only, never iterated).
+    std::unordered_map<std::string, int> memo_;
     canonical_keys keys_;
 };
 
