@@ -141,6 +141,76 @@ bool canonically_negative(const ex& e)
     return is_a<GiNaC::add>(e) ? keys.sum(e).negative : negative_number(keys.term(e).coefficient);
 }
 
+ex canonical_numer_denom(const ex& e)
+{
+    const ex fraction = e.normal().numer_denom();
+    if (!canonically_negative(fraction.op(1)))
+        return fraction;
+    return GiNaC::lst{(-fraction.op(0)).expand(), (-fraction.op(1)).expand()};
+}
+
+ex merge_signed_powers(const ex& e)
+{
+    if (is_a<GiNaC::add>(e) || is_a<GiNaC::function>(e) || is_a<GiNaC::power>(e)) {
+        struct recurse : GiNaC::map_function {
+            ex operator()(const ex& x) override { return merge_signed_powers(x); }
+        } each;
+        return e.map(each);
+    }
+    if (!is_a<GiNaC::mul>(e))
+        return e;
+    canonical_keys keys;
+    struct power_of_sum {
+        ex base, exponent;
+        std::string key;
+    };
+    std::vector<power_of_sum> powers;
+    GiNaC::exvector others;
+    for (const ex& f : e) {
+        const ex g = merge_signed_powers(f);
+        const bool power = is_a<GiNaC::power>(g) && is_a<GiNaC::add>(g.op(0)) && is_a<GiNaC::numeric>(g.op(1));
+        if (power || is_a<GiNaC::add>(g)) {
+            const ex base = power ? g.op(0) : g, exponent = power ? g.op(1) : ex(1);
+            powers.push_back({base, exponent, keys.sum(base).key});
+        } else {
+            others.push_back(g);
+        }
+    }
+    ex result = GiNaC::mul(others);
+    std::vector<bool> done(powers.size(), false);
+    for (std::size_t i = 0; i < powers.size(); ++i) {
+        if (done[i])
+            continue;
+        // The group of powers of ±base; the base that a root (a non-integer exponent) has.
+        std::vector<std::size_t> group;
+        ex base = powers[i].base;
+        for (std::size_t j = i; j < powers.size(); ++j)
+            if (!done[j] && powers[j].key == powers[i].key) {
+                group.push_back(j);
+                done[j] = true;
+                if (!powers[j].exponent.info(GiNaC::info_flags::integer))
+                    base = powers[j].base;
+            }
+        ex exponent = 0, sign = 1;
+        bool mergeable = true;
+        for (std::size_t j : group) {
+            const bool same = (powers[j].base - base).expand().is_zero();
+            if (!same && !powers[j].exponent.info(GiNaC::info_flags::integer))
+                mergeable = false; // roots of both signs: leave them
+            exponent += powers[j].exponent;
+            if (!same && GiNaC::ex_to<GiNaC::numeric>(powers[j].exponent).is_odd())
+                sign = -sign;
+        }
+        if (!mergeable || group.size() == 1) {
+            for (std::size_t j : group)
+                result *= GiNaC::pow(powers[j].base, powers[j].exponent);
+            continue;
+        }
+        result *= sign * GiNaC::pow(base, exponent);
+    }
+    return result;
+}
+
 std::string canonical_key(const ex& e)
 {
     canonical_keys keys;

@@ -58,6 +58,17 @@ private:
 /// denominator pair, or of a polynomial, by it.
 bool canonically_negative(const GiNaC::ex& e);
 
+/// e.normal().numer_denom() with the denominator's canonical sign: normal() gives the
+/// pair a sign by GiNaC's hash order, (−a)/(−b) in one process and a/b in another.
+GiNaC::ex canonical_numer_denom(const GiNaC::ex& e);
+
+/// A product with the powers of sums that differ only in sign merged: (−D)²·√D is D^(5/2).
+/// GiNaC gives a sum to an integer power the sign its hash order picks and leaves the
+/// base of a root as it is, so it merges the two in some processes and not in others.
+/// The root's base keeps its sign; integer powers take it, with (−1)^n. Recurses into
+/// sums, powers and functions.
+GiNaC::ex merge_signed_powers(const GiNaC::ex& e);
+
 /// canonical_keys().key(e), for one-off use.
 std::string canonical_key(const GiNaC::ex& e);
 
