@@ -12,7 +12,6 @@
 #include "output/sweep_output.h"
 #include "numeric/values.h"
 #include "scene/lower.h"
-#include "system/address_layout.h"
 #include "system/files.h"
 #include "system/gnuplot.h"
 #include "system/progress_line.h"
@@ -606,8 +605,6 @@ int run(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
-    // Byte-identical output in every run: see system/address_layout.h.
-    lagrange::use_fixed_address_layout(argv);
     lagrange::guard_standard_streams();
     // SIGINT and SIGTERM remove temporary files and end the compiler: exit 130 or 143.
     lagrange::install_signal_cleanup();

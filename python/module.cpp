@@ -10,7 +10,6 @@
 #include "output/document.h"
 #include "scene/lower.h"
 #include "scene/source.h"
-#include "system/address_layout.h"
 #include "system/files.h"
 
 #include <pybind11/pybind11.h>
@@ -146,7 +145,4 @@ PYBIND11_MODULE(_lagrange, m)
             names.push_back(entry.second);
         return names;
     }, "The `want` items this version computes, in the spec's order.");
-
-    m.def("address_layout_fixed", &lagrange::address_layout_fixed,
-          "True if address-space randomization is off in this process (byte-identical output).");
 }

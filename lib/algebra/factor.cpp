@@ -44,6 +44,28 @@ ex factor_one(const ex& f)
     return GiNaC::factor(f);
 }
 
+/// A factor that GiNaC's factor() wrote nested, ((2·M + m)·l² + m), collected in a main
+/// variable it picks by its hash order (the first in an exset), as the plain sum
+/// 2·M·l² + l²·m + m, which the printers order themselves: the same in every process.
+ex flat(const ex& f)
+{
+    if (is_a<GiNaC::add>(f)) {
+        for (const ex& term : f)
+            if (term.info(GiNaC::info_flags::polynomial) && !term.is_equal(term.expand()))
+                return f.expand();
+        return f;
+    }
+    if (is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::posint))
+        return GiNaC::pow(flat(f.op(0)), f.op(1));
+    if (is_a<GiNaC::mul>(f)) {
+        GiNaC::exvector factors;
+        for (const ex& g : f)
+            factors.push_back(flat(g));
+        return GiNaC::mul(factors);
+    }
+    return f;
+}
+
 } // namespace
 
 bool too_large_to_factor(const GiNaC::ex& e)
@@ -68,7 +90,7 @@ GiNaC::ex factor_if_quick(const GiNaC::ex& e)
     if (too_large_to_factor(e))
         return e;
     if (!e.info(GiNaC::info_flags::rational_polynomial))
-        return GiNaC::factor(e);
+        return flat(GiNaC::factor(e));
     // each explicit factor on its own, as GiNaC's factor() does
     const GiNaC::exvector factors = is_a<GiNaC::mul>(e) ? GiNaC::exvector(e.begin(), e.end()) : GiNaC::exvector{e};
     ex result = 1;
@@ -78,7 +100,7 @@ GiNaC::ex factor_if_quick(const GiNaC::ex& e)
         else
             result *= factor_one(f);
     }
-    return result;
+    return flat(result);
 }
 
 GiNaC::ex polynomial_content(const std::vector<GiNaC::ex>& polynomials)

@@ -4,6 +4,7 @@
 #include "algebra/sign.h"
 
 #include "algebra/budget.h"
+#include "algebra/canonical_order.h"
 #include "algebra/expression.h"
 #include "algebra/factor.h"
 
@@ -141,7 +142,7 @@ ex tidy(const ex& e)
 {
     try {
         budget_check(); // GiNaC's normal and factor can take long: a checkpoint before each
-        ex fraction = e.normal().numer_denom();
+        ex fraction = canonical_numer_denom(e);
         budget_check();
         ex numerator = factor_if_quick(fraction.op(0));
         budget_check();

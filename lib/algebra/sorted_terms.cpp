@@ -3,6 +3,8 @@
  *  The sorted-term core (see sorted_terms.h). */
 #include "algebra/sorted_terms.h"
 
+#include "algebra/canonical_order.h"
+
 #include <algorithm>
 #include <sstream>
 #include <utility>
@@ -138,10 +140,13 @@ std::string message_text(const ex& e)
 
 GiNaC::exvector sorted_factors(const ex& product)
 {
+    // By keys that do not depend on the sign factor() gave each factor ((x − a) or (a − x)),
+    // a choice GiNaC makes by its hash order.
+    canonical_keys keys;
     std::vector<std::pair<std::string, ex>> keyed;
     for (const ex& f : is_a<GiNaC::mul>(product) ? GiNaC::exvector(product.begin(), product.end())
                                                  : GiNaC::exvector{product})
-        keyed.emplace_back(message_text(f), f);
+        keyed.emplace_back(keys.factor(f).key, f);
     std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     GiNaC::exvector factors;
     for (const auto& [key, f] : keyed)

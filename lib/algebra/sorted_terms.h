@@ -53,7 +53,8 @@ int compare_degrees(const term_degrees& a, const term_degrees& b);
 /// them, sorted by that text.
 std::vector<std::string> sorted_operands(const GiNaC::ex& e, const std::function<std::string(const GiNaC::ex&)>& text);
 
-/// The factors of a product (a non-product is one factor) sorted by their message_text:
+/// The factors of a product (a non-product is one factor) sorted by their canonical key
+/// (canonical_order.h), whatever sign each factor has:
 /// an order of, say, a factored polynomial's factors that GiNaC's hash order does not move.
 GiNaC::exvector sorted_factors(const GiNaC::ex& product);
 

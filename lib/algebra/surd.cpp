@@ -4,6 +4,7 @@
 #include "algebra/surd.h"
 
 #include "algebra/budget.h"
+#include "algebra/canonical_order.h"
 #include "algebra/expression.h"
 #include "algebra/factor.h"
 #include "algebra/sign.h"
@@ -50,11 +51,44 @@ std::size_t printed_length(const ex& e)
 
 std::pair<ex, ex> square_root_parts_of_product(const ex& product)
 {
-    exvector factors;
+    exvector given;
     if (is_a<GiNaC::mul>(product))
-        factors.assign(product.begin(), product.end());
+        given.assign(product.begin(), product.end());
     else
-        factors.push_back(product);
+        given.push_back(product);
+    // A sum's integer content on its own, 4·(a² − a·b + b²) whether factor() kept the 4
+    // apart or GiNaC multiplied it in (which it does for a number times one sum), so
+    // that its square leaves the root the same way in every process.
+    // And each sum with its canonical sign, the −1s with the numbers: −4·(a·b − a² − b²)
+    // and 4·(a² − a·b + b²) are one product.
+    exvector factors;
+    GiNaC::numeric coefficient = 1;
+    for (const ex& factor : given) {
+        if (is_a<GiNaC::numeric>(factor) && ex_to<GiNaC::numeric>(factor).is_rational()) {
+            coefficient *= ex_to<GiNaC::numeric>(factor);
+            continue;
+        }
+        const bool power = is_a<GiNaC::power>(factor) && factor.op(1).info(GiNaC::info_flags::posint);
+        ex base = power ? factor.op(0) : factor;
+        const ex exponent = power ? factor.op(1) : ex(1);
+        if (is_a<GiNaC::add>(base) && base.info(GiNaC::info_flags::rational_polynomial)) {
+            if (canonically_negative(base)) {
+                base = (-base).expand();
+                if (ex_to<GiNaC::numeric>(exponent).is_odd())
+                    coefficient = -coefficient;
+            }
+            const GiNaC::numeric content = base.integer_content();
+            if (content.is_positive() && !content.is_equal(1)) {
+                coefficient *= ex_to<GiNaC::numeric>(GiNaC::pow(content, exponent));
+                base = (base / content).expand();
+            }
+            factors.push_back(GiNaC::pow(base, exponent));
+            continue;
+        }
+        factors.push_back(factor);
+    }
+    if (!coefficient.is_equal(1))
+        factors.insert(factors.begin(), coefficient);
     ex outside = 1, inside = 1;
     for (const ex& factor : factors) {
         ex base = factor;
@@ -84,7 +118,7 @@ std::pair<ex, ex> square_root_parts_of_product(const ex& product)
 std::pair<ex, ex> square_root_parts(const ex& e)
 {
     try {
-        ex fraction = e.normal().numer_denom();
+        ex fraction = canonical_numer_denom(e);
         auto [numerator_out, numerator_in] = square_root_parts_of_product(factor_if_quick(fraction.op(0)));
         auto [denominator_out, denominator_in] = square_root_parts_of_product(factor_if_quick(fraction.op(1)));
         // √(a/b) = √(a b)/b

@@ -11,6 +11,7 @@
 #include "algebra/expression.h"
 #include "algebra/factor.h"
 #include "algebra/sign.h"
+#include "algebra/canonical_order.h"
 #include "algebra/sorted_terms.h"
 #include "algebra/surd.h"
 
@@ -46,6 +47,10 @@ struct factor_roots {
 std::optional<factor_roots> roots_of_factor(const ex& factor, const GiNaC::symbol& w)
 {
     ex p = factor.expand();
+    // factor() gives a factor either sign by GiNaC's hash order; the roots' forms follow
+    // the sign, so take the canonical one (canonical_order.h).
+    if (is_a<GiNaC::add>(p) && canonical_keys().sum(p).negative)
+        p = (-p).expand();
     int degree = p.degree(w);
     std::vector<ex> c;
     for (int k = 0; k <= degree; ++k)
@@ -74,7 +79,7 @@ std::optional<factor_roots> roots_of_factor(const ex& factor, const GiNaC::symbo
         if (vanishes(p_depressed))
             return factor_roots{std::vector<closed_root>(3, closed_root{shift_value, surd{}}), true};
         ex amplitude = 2 * square_root(-p_depressed / 3);
-        ex cosine = tidy(3 * q_depressed / (2 * p_depressed)) * square_root(-3 / p_depressed);
+        ex cosine = merge_signed_powers(tidy(3 * q_depressed / (2 * p_depressed)) * square_root(-3 / p_depressed));
         ex angle = GiNaC::acos(cosine) / 3;
         const bool unwieldy = has_symbol(cosine);
         // With the angle in [0, π/3], cos(angle − 4π/3) ≤ cos(angle − 2π/3) ≤ cos(angle):
@@ -215,7 +220,8 @@ std::optional<ex> clean_normal_coordinate(const std::vector<ex>& displacements, 
             return std::nullopt; // (w_p/√norm² written out is longer than the plain sum)
         ex scale_squared = simplify_with(weights[pivot] * weights[pivot] / norm_squared, r);
         // the squares come out of the root; the numeric denominator stays in it
-        ex fraction = tidy(scale_squared).numer_denom();
+        // √m/√X, not √(−m)/√(−X): GiNaC gives the pair a sign by its hash order.
+        ex fraction = canonical_numer_denom(tidy(scale_squared));
         auto [numerator_out, numerator_in] = square_root_parts_of_product(factor_if_quick(fraction.op(0)));
         auto [denominator_out, denominator_in] = square_root_parts_of_product(factor_if_quick(fraction.op(1)));
         ex scale = numerator_out / denominator_out * GiNaC::sqrt(r.restore(numerator_in)) /

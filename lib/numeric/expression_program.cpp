@@ -8,59 +8,21 @@
  *  switch loop. */
 #include "numeric/expression_program.h"
 
+#include "algebra/canonical_order.h"
+
 #include <cln/cln.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <unordered_map>
 #include <sstream>
 #include <stdexcept>
 
 namespace lagrange {
 
 namespace {
-
-/// A key for an expression that does not depend on GiNaC's internal operand order
-/// (which follows hash values and changes from run to run): the operands of sums
-/// and products are keyed and sorted.
-std::string stable_key(const GiNaC::ex& e)
-{
-    if (GiNaC::is_a<GiNaC::symbol>(e))
-        return "s" + GiNaC::ex_to<GiNaC::symbol>(e).get_name();
-    if (GiNaC::is_a<GiNaC::numeric>(e)) {
-        std::ostringstream text;
-        text << e;
-        return "n" + text.str();
-    }
-    std::vector<std::string> keys;
-    for (const GiNaC::ex& operand : e)
-        keys.push_back(stable_key(operand));
-    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e))
-        std::sort(keys.begin(), keys.end());
-    std::string head = GiNaC::is_a<GiNaC::function>(e) ? GiNaC::ex_to<GiNaC::function>(e).get_name()
-                                                       : GiNaC::ex_to<GiNaC::basic>(e).class_name();
-    std::string key = head + "(";
-    for (const std::string& k : keys)
-        key += k + ",";
-    return key + ")";
-}
-
-/// The operands of a sum or product in an order that is the same in every run,
-/// so that the compiled program, and its rounding, is too.
-GiNaC::exvector in_stable_order(const GiNaC::ex& e)
-{
-    std::vector<std::pair<std::string, GiNaC::ex>> keyed;
-    for (const GiNaC::ex& operand : e)
-        keyed.emplace_back(stable_key(operand), operand);
-    std::stable_sort(keyed.begin(), keyed.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    GiNaC::exvector operands;
-    for (const auto& [key, operand] : keyed)
-        operands.push_back(operand);
-    return operands;
-}
-
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
@@ -70,17 +32,83 @@ public:
     compiler(const std::vector<GiNaC::ex>& symbols, std::vector<instruction>& code, bool& algebraic)
         : symbols_(symbols), code_(code), algebraic_(algebraic) {}
 
-    int slot(const GiNaC::ex& e)
+    int slot(const GiNaC::ex& e) { return value(e, false); }
+
+private:
+    /// The slot of e, or of −e: the same subexpression, sum or product, with either sign,
+    /// is compiled once. Sums add their terms in canonical order, and a sum that is a
+    /// factor is taken with its canonical sign (canonical_order.h), so that the program,
+    /// and the rounding of its floating-point operations, is the same in every process
+    /// whatever order and signs GiNaC chose.
+    int value(const GiNaC::ex& e, bool negate)
     {
-        auto found = memo_.find(e);
+        std::string key = keys_.key(e, negate);
+        auto found = memo_.find(key);
         if (found != memo_.end())
             return found->second;
-        int result = build(e);
-        memo_.emplace(e, result);
+        int result = GiNaC::is_a<GiNaC::add>(e) ? sum(e, negate) : term(e, negate);
+        memo_.emplace(std::move(key), result);
         return result;
     }
 
-private:
+    int sum(const GiNaC::ex& e, bool negate)
+    {
+        std::vector<std::pair<std::string, GiNaC::ex>> terms;
+        for (const GiNaC::ex& t : e)
+            terms.emplace_back(keys_.term(t).rest, t);
+        std::sort(terms.begin(), terms.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        int result = -1;
+        for (const auto& [key, t] : terms) {
+            int s = value(t, negate);
+            result = result < 0 ? s : binary(instruction::code::add, result, s);
+        }
+        return result;
+    }
+
+    int term(const GiNaC::ex& t, bool negate)
+    {
+        if (GiNaC::is_a<GiNaC::numeric>(t))
+            return constant(negate ? -GiNaC::ex_to<GiNaC::numeric>(t) : GiNaC::ex_to<GiNaC::numeric>(t));
+        GiNaC::numeric coefficient = 1;
+        std::vector<std::pair<std::string, GiNaC::ex>> factors;
+        const GiNaC::exvector operands = GiNaC::is_a<GiNaC::mul>(t) ? GiNaC::exvector(t.begin(), t.end())
+                                                                     : GiNaC::exvector{t};
+        for (const GiNaC::ex& f : operands) {
+            if (GiNaC::is_a<GiNaC::numeric>(f)) {
+                coefficient *= GiNaC::ex_to<GiNaC::numeric>(f);
+                continue;
+            }
+            canonical_factor c = keys_.factor(f);
+            negate = negate != c.negative;
+            factors.emplace_back(c.key, f);
+        }
+        if (negate)
+            coefficient = -coefficient;
+        std::stable_sort(factors.begin(), factors.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        int product = coefficient == 1 || coefficient == -1 ? -1 : constant(coefficient);
+        for (const auto& [key, f] : factors) {
+            int s = factor(f);
+            product = product < 0 ? s : binary(instruction::code::mul, product, s);
+        }
+        if (product < 0)
+            product = constant(GiNaC::numeric(1));
+        return coefficient == -1 ? unary(instruction::code::neg, product) : product;
+    }
+
+    /// The slot of a factor taken with its canonical sign.
+    int factor(const GiNaC::ex& f)
+    {
+        if (GiNaC::is_a<GiNaC::add>(f))
+            return value(f, keys_.sum(f).negative);
+        std::string key = keys_.key(f);
+        auto found = memo_.find(key);
+        if (found != memo_.end())
+            return found->second;
+        int result = build(f);
+        memo_.emplace(std::move(key), result);
+        return result;
+    }
+
     int emit(instruction i)
     {
         code_.push_back(i);
@@ -142,31 +170,12 @@ private:
                 }
             throw std::invalid_argument("the symbol `" + to_text(e) + "` is not a parameter");
         }
-        if (GiNaC::is_a<GiNaC::add>(e)) {
-            GiNaC::exvector terms = in_stable_order(e);
-            int sum = slot(terms[0]);
-            for (std::size_t k = 1; k < terms.size(); ++k)
-                sum = binary(code::add, sum, slot(terms[k]));
-            return sum;
-        }
-        if (GiNaC::is_a<GiNaC::mul>(e)) {
-            bool negate = false;
-            int product = -1;
-            for (const GiNaC::ex& factor : in_stable_order(e)) {
-                if (GiNaC::is_a<GiNaC::numeric>(factor) && factor.is_equal(-1)) {
-                    negate = !negate;
-                    continue;
-                }
-                int s = slot(factor);
-                product = product < 0 ? s : binary(code::mul, product, s);
-            }
-            if (product < 0)
-                product = constant(GiNaC::numeric(1));
-            return negate ? unary(code::neg, product) : product;
-        }
         if (GiNaC::is_a<GiNaC::power>(e)) {
             GiNaC::ex exponent = e.op(1);
-            int base = slot(e.op(0));
+            // A sum to an integer power is the power of the sum with its canonical sign
+            // (factor() has put the sign in the term's coefficient).
+            const bool canonical_base = GiNaC::is_a<GiNaC::add>(e.op(0)) && exponent.info(GiNaC::info_flags::integer);
+            int base = canonical_base ? factor(e.op(0)) : slot(e.op(0));
             if (GiNaC::is_a<GiNaC::numeric>(exponent)) {
                 GiNaC::numeric p = GiNaC::ex_to<GiNaC::numeric>(exponent);
                 GiNaC::numeric twice = p * 2;
@@ -213,7 +222,10 @@ private:
     const std::vector<GiNaC::ex>& symbols_;
     std::vector<instruction>& code_;
     bool& algebraic_;
-    std::map<GiNaC::ex, int, GiNaC::ex_is_less> memo_;
+    /// Slots by the canonical key of their value: one slot for a value however GiNaC
+    /// wrote it (lookups only, never iterated).
+    std::unordered_map<std::string, int> memo_;
+    canonical_keys keys_;
 };
 
 // ---- the three arithmetics, as overloads the interpreter picks from ----
@@ -707,6 +719,7 @@ void expression_program::check_block(const double* s, std::size_t count, a_prior
 expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols)
 {
     compiler build(symbols, code_, algebraic_);
+    // The same operations in every process: see compiler::value.
     for (const GiNaC::ex& e : outputs)
         outputs_.push_back(build.slot(e));
     for (const instruction& i : code_)

@@ -8,6 +8,8 @@
 #include "core/errors.h"
 #include "core/model.h"
 
+#include <cln/cln.h>
+
 #include <cmath>
 #include <cstdio>
 
@@ -66,6 +68,33 @@ std::map<std::string, GiNaC::ex> merged_values(const model& scene)
     return values;
 }
 
+namespace {
+
+GiNaC::numeric exact_number(const GiNaC::numeric& n)
+{
+    if (n.is_rational())
+        return n;
+    const cln::cl_N z = n.to_cl_N();
+    return GiNaC::numeric(cln::complex(cln::rational(cln::realpart(z)), cln::rational(cln::imagpart(z))));
+}
+
+struct exact_numbers_map : GiNaC::map_function {
+    GiNaC::ex operator()(const GiNaC::ex& e) override
+    {
+        if (GiNaC::is_a<GiNaC::numeric>(e))
+            return exact_number(GiNaC::ex_to<GiNaC::numeric>(e));
+        return e.map(*this);
+    }
+};
+
+} // namespace
+
+GiNaC::ex exact_numbers(const GiNaC::ex& e)
+{
+    exact_numbers_map exact;
+    return exact(e);
+}
+
 GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values)
 {
     GiNaC::exmap inputs;
@@ -77,14 +106,14 @@ GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::
             error.attach_line_text(u.line_text);
             throw error;
         }
-        inputs[u.symbol] = found->second;
+        inputs[u.symbol] = exact_numbers(found->second);
     }
     GiNaC::ex with_inputs = inputs.empty() ? e : e.subs(inputs);
     GiNaC::lst substitutions;
     for (const parameter& p : scene.parameters) {
         auto found = values.find(p.name);
         if (found != values.end())
-            substitutions.append(p.symbol == found->second);
+            substitutions.append(p.symbol == exact_numbers(found->second));
         else if (with_inputs.has(p.symbol))
             throw computation_error("the simulation needs a value for the parameter `" + p.name +
                                     "` (a `values` line or --values)");

@@ -35,7 +35,14 @@ std::string message_number(double x, int digits = 6);
 /// the inputs' values (expressions in t) are among them, by name.
 std::map<std::string, GiNaC::ex> merged_values(const model& scene);
 
-/// Substitutes the inputs' and parameters' values; throws computation_error naming a parameter
+/// `e` with every floating-point number (a `values` line's 0.1) replaced by the rational
+/// number that the double stands for exactly. GiNaC combines the numbers of a sum or a
+/// product in its internal order, which changes from process to process; in floating
+/// point that order changes the rounding, in rationals it does not.
+GiNaC::ex exact_numbers(const GiNaC::ex& e);
+
+/// Substitutes the inputs' and parameters' values (exact_numbers of them, so that the
+/// result is the same in every process); throws computation_error naming a parameter
 /// that `e` uses without one, and scene_error at an input without a value.
 GiNaC::ex at_values(const GiNaC::ex& e, const model& scene, const std::map<std::string, GiNaC::ex>& values);
 

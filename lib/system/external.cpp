@@ -182,6 +182,4 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
     return result;
 }
 
-void execute_self_again(char** argv) { execv("/proc/self/exe", argv); }
-
 } // namespace lagrange

@@ -67,8 +67,4 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
                            const std::string& log_name, const std::vector<std::string>& environment = {},
                            double timeout_seconds = 120);
 
-/// Replaces this process by a new run of the same program (/proc/self/exe) with the
-/// same arguments and environment; returns only if the exec was refused.
-void execute_self_again(char** argv);
-
 } // namespace lagrange

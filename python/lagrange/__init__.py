@@ -17,7 +17,6 @@ from .scene import Scene
 __version__ = _lagrange.__version__
 
 products = _lagrange.products
-address_layout_fixed = _lagrange.address_layout_fixed
 
 __all__ = ["Scene", "SceneError", "ComputationError", "BudgetExceeded", "LagrangeError", "to_expr",
-           "latex_name", "products", "address_layout_fixed", "__version__"]
+           "latex_name", "products", "__version__"]

@@ -3,7 +3,8 @@
  *  Byte-identical output from run to run on scenes nobody wrote by hand: a seeded
  *  generator of textbook-like systems (pendulum chains, spring chains, pendulums on
  *  carts and springs, two-dimensional oscillators, rigid bodies) and the fuzz seeds,
- *  each run in three processes. */
+ *  each run in three processes. The command runs with address-space randomization on
+ *  (it no longer fixes its layout), so each process has its own GiNaC hash order. */
 #include "helpers/cli_runner.h"
 
 #include <catch2/catch.hpp>
