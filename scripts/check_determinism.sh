@@ -36,6 +36,10 @@ one() {
             (cd "$dir" && timeout 120 "$cli" "$scene" --format "$format" >out 2>err; echo "exit $?" >>err) || true
             hashes+="$(cat "$dir/out" "$dir/err" | sha1sum)"$'\n'
         fi
+        # A crash (a signal: exit 128 + N) fails too, even when every run crashes alike.
+        if grep -qE '^exit (1(2[89]|[3-9][0-9])|2[0-9][0-9])$' "$dir/err"; then
+            echo "${scene#"$root"/} $format crashed: $(tail -1 "$dir/err")"
+        fi
         rm -rf "$dir"
     done
     if [ "$(printf '%s' "$hashes" | sort -u | wc -l)" -ne 1 ]; then
@@ -50,7 +54,7 @@ differ=$(for s in "${scenes[@]}"; do for f in text latex json report; do printf 
     xargs -0 -n 2 -P "$jobs" bash -c 'one "$0" "$1"' | sort)
 elapsed=$((SECONDS - start))
 if [ -n "$differ" ]; then
-    echo "check_determinism: these differ from run to run ($runs runs, ${elapsed}s):"
+    echo "check_determinism: these differ from run to run, or crashed ($runs runs, ${elapsed}s):"
     echo "$differ" | sed 's/^/  /'
     exit 1
 fi

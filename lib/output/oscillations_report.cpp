@@ -64,7 +64,8 @@ std::optional<std::string> pendulum_script(const analysis& result, const numeric
 {
     const model& scene = *result.scene;
     const std::size_t n = scene.coordinates.size();
-    if (scene.points.empty() || !result.linearization)
+    // With constraints the modes are in the independent coordinates: no positions to draw.
+    if (scene.points.empty() || !result.linearization || result.constrained)
         return std::nullopt;
     for (const point_mass& p : scene.points)
         if (p.position.size() < 2 || p.position.size() > 3 ||
@@ -257,9 +258,9 @@ std::optional<std::string> pendulum_script(const analysis& result, const numeric
 }
 
 /// Bar charts of the mode vector components (largest component 1 in size, last nonzero positive).
-std::string bar_script(const model& scene, const numeric_modes& numbers)
+std::string bar_script(const std::vector<std::string>& coordinates, const numeric_modes& numbers)
 {
-    const std::size_t n = scene.coordinates.size();
+    const std::size_t n = coordinates.size();
     std::ostringstream script;
     for (std::size_t k = 0; k < n; ++k) {
         double largest = 0, sign = 1;
@@ -273,7 +274,7 @@ std::string bar_script(const model& scene, const numeric_modes& numbers)
         for (std::size_t i = 0; i < n; ++i) {
             double a = numbers.modes(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
             script << i + 1 << ' ' << gnuplot_number(largest > 0 ? sign * a / largest : 0.0) << " \""
-                   << print_name(scene.coordinates[i].name, syntax::text) << "\"\n";
+                   << print_name(coordinates[i], syntax::text) << "\"\n";
         }
         script << "EOD\n";
     }
@@ -307,7 +308,15 @@ void write_mode_figures(report_writer& w)
     for (std::size_t i = 0; i < numbers->values.size(); ++i)
         at += (i ? ",\\ " : "") + report_writer::name(numbers->values[i].first) + " = " +
               report_writer::number(numbers->values[i].second);
-    const std::size_t n = scene.coordinates.size();
+    // The coordinates the modes are in: with constraints, the independent ones.
+    std::vector<std::string> coordinates;
+    if (result.constrained)
+        for (std::size_t i : result.constrained->independent)
+            coordinates.push_back(scene.coordinates[i].name);
+    else
+        for (const coordinate& c : scene.coordinates)
+            coordinates.push_back(c.name);
+    const std::size_t n = coordinates.size();
     // In phase / antiphase, for two coordinates.
     if (n == 2) {
         for (std::size_t k = 0; k < 2; ++k) {
@@ -329,7 +338,7 @@ void write_mode_figures(report_writer& w)
                  "The normal modes at $" + at + "$: the equilibrium (grey) and the system displaced along each "
                  "mode, one way (solid, blue) and the other (dashed, red). The displacement is exaggerated.");
     } else if (n >= 2) {
-        w.figure("modes", bar_script(scene, *numbers), width, 5.5,
+        w.figure("modes", bar_script(coordinates, *numbers), width, 5.5,
                  "The components of each mode vector at $" + at +
                      "$, scaled so that the largest is 1 in size.");
     }

@@ -648,21 +648,25 @@ model load_model(const source_text& source, const file_reader& read_file)
     });
 }
 
-void add_values(model& scene, const std::string& text)
+namespace {
+
+/// Parses `text`, given on the command line as option `option` (--values, --initial), as
+/// the one statement `keyword text` of a scene, lowered with the names of `scene`, and
+/// hands it to `use`. An error is located in the option's own text.
+template <typename Use>
+void lower_option(const model& scene, const std::string& option, const std::string& keyword, const std::string& text,
+                  const char* usage, Use use)
 {
-    const std::string prefix = "values ";
-    source_text source("--values", prefix + text);
+    const std::string prefix = keyword + " ";
+    source_text source(option, prefix + text);
     try {
         std::vector<token> tokens = tokenize(source);
         scene_ast ast = parse_scene(tokens);
-        if (ast.statements.size() != 1)
-            throw scene_error({"--values", 1, 1}, "give values as `a=1,b=2`");
+        if (ast.statements.size() != 1 || ast.statements[0].keyword != keyword)
+            throw scene_error({option, 1, static_cast<int>(prefix.size()) + 1}, usage);
         lowering lower(source, {});
         lower.adopt_names(scene);
-        value_point point = lower.values_line(ast.statements[0]);
-        lowering::check_physical(scene, point, ast.statements[0]);
-        lowering::check_assumptions(point, ast.statements[0]);
-        scene.values.push_back(point);
+        use(lower, ast.statements[0]);
     } catch (scene_error& error) {
         source_location at = error.where();
         at.column = std::max(1, at.column - static_cast<int>(prefix.size()));
@@ -672,34 +676,33 @@ void add_values(model& scene, const std::string& text)
     }
 }
 
+} // namespace
+
+void add_values(model& scene, const std::string& text)
+{
+    lower_option(scene, "--values", "values", text, "give values as `a=1,b=2`",
+                 [&](lowering& lower, const statement& s) {
+                     value_point point = lower.values_line(s);
+                     lowering::check_physical(scene, point, s);
+                     lowering::check_assumptions(point, s);
+                     scene.values.push_back(point);
+                 });
+}
+
 void add_initial(model& scene, const std::string& text)
 {
-    const std::string prefix = "initial ";
-    source_text source("--initial", prefix + text);
-    try {
-        std::vector<token> tokens = tokenize(source);
-        scene_ast ast = parse_scene(tokens);
-        if (ast.statements.size() != 1 || ast.statements[0].keyword != "initial")
-            throw scene_error({"--initial", 1, static_cast<int>(prefix.size()) + 1},
-                              "give initial values as `theta=0.1, phi'=0`");
-        lowering lower(source, {});
-        lower.adopt_names(scene);
-        const initial_state given = lower.initial_line(ast.statements[0]);
-        initial_state state = scene.initial.value_or(initial_state{});
-        for (const auto& [name, value] : given.positions)
-            state.positions[name] = value;
-        for (const auto& [name, value] : given.velocities)
-            state.velocities[name] = value;
-        for (const auto& [name, value] : given.others)
-            state.others[name] = value;
-        scene.initial = state;
-    } catch (scene_error& error) {
-        source_location at = error.where();
-        at.column = std::max(1, at.column - static_cast<int>(prefix.size()));
-        scene_error shifted(at, error.what());
-        shifted.attach_line_text(text);
-        throw shifted;
-    }
+    lower_option(scene, "--initial", "initial", text, "give initial values as `theta=0.1, phi'=0`",
+                 [&](lowering& lower, const statement& s) {
+                     const initial_state given = lower.initial_line(s);
+                     initial_state state = scene.initial.value_or(initial_state{});
+                     for (const auto& [name, value] : given.positions)
+                         state.positions[name] = value;
+                     for (const auto& [name, value] : given.velocities)
+                         state.velocities[name] = value;
+                     for (const auto& [name, value] : given.others)
+                         state.others[name] = value;
+                     scene.initial = state;
+                 });
 }
 
 std::set<product> parse_want_list(const std::string& text)

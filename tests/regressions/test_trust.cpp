@@ -230,3 +230,15 @@ TEST_CASE("trust: numeric modes of a damped constrained scene are refused and do
     }
     CHECK(run_cli(scene).exit_code == 0); // a default run leaves them out with a note
 }
+
+// The report's mode shapes read the modes in the scene's coordinates, but with constraints
+// they are in the independent ones: the rod pendulum's report crashed (exit 139).
+TEST_CASE("trust: the report of a constrained scene with values draws no out-of-range mode shape", "[trust][report]")
+{
+    const std::string scene = std::string(LAGRANGE_SOURCE_DIR) + "/tests/scenes/rod_pendulum.lag";
+    const std::string tex = temporary_file("rod_report.tex", "");
+    lagrange_test::cli_result r = lagrange_test::run_cli("report " + scene + " -o " + tex, "", 60);
+    INFO(r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(read_file(tex).find("\\subsection*{Mode shapes}") != std::string::npos);
+}
