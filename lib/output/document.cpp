@@ -158,6 +158,16 @@ struct family_writers {
     void (*json)(nlohmann::ordered_json&, const analysis&, const document_options&);
 };
 
+/// The row of a family whose writers read only the analysis (most families' files).
+template <void (*text)(std::ostream&, const analysis&), void (*latex)(std::ostream&, const analysis&),
+          void (*json)(nlohmann::ordered_json&, const analysis&)>
+family_writers family()
+{
+    return {[](std::ostream& out, const analysis& r, const document_options&) { text(out, r); },
+            [](std::ostream& out, const analysis& r, const document_options&) { latex(out, r); },
+            [](nlohmann::ordered_json& doc, const analysis& r, const document_options&) { json(doc, r); }};
+}
+
 /// Every family, in the order the three documents show them. Adding a family is one row.
 const std::vector<family_writers>& families()
 {
@@ -165,15 +175,9 @@ const std::vector<family_writers>& families()
     static const std::vector<family_writers> table = {
         {write_lagrangian_text, write_lagrangian_latex, write_lagrangian_json},
         {write_equations_text, write_equations_latex, write_equations_json},
-        {[](std::ostream& out, const analysis& r, options) { write_constraints_text(out, r); },
-         [](std::ostream& out, const analysis& r, options) { write_constraints_latex(out, r); },
-         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_constraints_json(doc, r); }},
-        {[](std::ostream& out, const analysis& r, options) { write_oscillations_text(out, r); },
-         [](std::ostream& out, const analysis& r, options) { write_oscillations_latex(out, r); },
-         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_oscillations_json(doc, r); }},
-        {[](std::ostream& out, const analysis& r, options) { write_floquet_text(out, r); },
-         [](std::ostream& out, const analysis& r, options) { write_floquet_latex(out, r); },
-         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_floquet_json(doc, r); }},
+        family<write_constraints_text, write_constraints_latex, write_constraints_json>(),
+        family<write_oscillations_text, write_oscillations_latex, write_oscillations_json>(),
+        family<write_floquet_text, write_floquet_latex, write_floquet_json>(),
         {[](std::ostream& out, const analysis& r, options) {
              if (r.damping)
                  write_damping_text(out, *r.scene, *r.damping);
@@ -186,15 +190,9 @@ const std::vector<family_writers>& families()
              if (r.damping)
                  write_damping_json(doc, *r.scene, *r.damping);
          }},
-        {[](std::ostream& out, const analysis& r, options) { write_linear_system_text(out, r); },
-         [](std::ostream& out, const analysis& r, options) { write_linear_system_latex(out, r); },
-         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_linear_system_json(doc, r); }},
-        {[](std::ostream& out, const analysis& r, options) { write_symmetries_text(out, r); },
-         [](std::ostream& out, const analysis& r, options) { write_symmetries_latex(out, r); },
-         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_symmetries_json(doc, r); }},
-        {[](std::ostream& out, const analysis& r, options) { write_bodies_text(out, r); },
-         [](std::ostream& out, const analysis& r, options) { write_bodies_latex(out, r); },
-         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_bodies_json(doc, r); }},
+        family<write_linear_system_text, write_linear_system_latex, write_linear_system_json>(),
+        family<write_symmetries_text, write_symmetries_latex, write_symmetries_json>(),
+        family<write_bodies_text, write_bodies_latex, write_bodies_json>(),
         {[](std::ostream& out, const analysis& r, options o) {
              if (r.simulation)
                  write_simulation_text(out, *r.simulation, o.timings);
@@ -219,9 +217,7 @@ const std::vector<family_writers>& families()
              if (r.workprecision)
                  doc["workprecision"] = workprecision_json(*r.workprecision);
          }},
-        {[](std::ostream& out, const analysis& r, options) { write_virial_text(out, r); },
-         [](std::ostream& out, const analysis& r, options) { write_virial_latex(out, r); },
-         [](nlohmann::ordered_json& doc, const analysis& r, options) { write_virial_json(doc, r); }},
+        family<write_virial_text, write_virial_latex, write_virial_json>(),
         {write_verification_text, write_verification_latex, write_verification_json},
     };
     return table;
