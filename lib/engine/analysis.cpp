@@ -24,8 +24,15 @@ namespace lagrange {
 
 namespace {
 
-/// The damping matrix C at the linearization's equilibrium, for the numeric modes: the
-/// `damping` stage's where it ran; nothing without generalized forces or where C = 0.
+/// The damping matrix C at the linearization's equilibrium: the `damping` stage's where it
+/// ran, else derived here.
+GiNaC::matrix damping_at_equilibrium(const analysis& result, const simplifier& simplify)
+{
+    return result.damping ? result.damping->damping
+                          : damping_matrix(*result.scene, result.linearization->at, simplify);
+}
+
+/// C for the numeric modes: nothing without generalized forces or where C = 0.
 std::optional<GiNaC::matrix> damping_at_rest(const analysis& result, const simplifier& simplify)
 {
     if (!result.scene->has_generalized_forces())
@@ -35,8 +42,7 @@ std::optional<GiNaC::matrix> damping_at_rest(const analysis& result, const simpl
     if (result.constrained)
         throw computation_error("damped small oscillations with constraints (`constraint`) are not computed by "
                                 "this version, so neither are the numeric modes of this scene");
-    GiNaC::matrix damping = result.damping ? result.damping->damping
-                                           : damping_matrix(*result.scene, result.linearization->at, simplify);
+    GiNaC::matrix damping = damping_at_equilibrium(result, simplify);
     if (is_zero_matrix(damping))
         return std::nullopt;
     return damping;
@@ -176,8 +182,9 @@ const std::vector<product>& every_product()
     return all;
 }
 
-/// The stages in the order they run. Adding a product is one row here, one result
-/// field in `analysis`, and one writer per output family.
+/// The stages in the order they run. Adding a product is one line of core/products.inc,
+/// one row here (and its stage_id), one result field in `analysis`, and its family's
+/// writers (output/document.cpp).
 const std::vector<stage_definition>& stage_table()
 {
     static const std::vector<stage_definition> table = {
@@ -345,9 +352,7 @@ const std::vector<stage_definition>& stage_table()
         // The linearized input–output system: A, B (and at the `values` points), then H(s).
         {stage_id::state_space, "state_space", {product::state_space}, {}, {stage_id::linearization}, has_coordinates,
          [](stage_context& c) {
-             const GiNaC::matrix damping =
-                 c.result.damping ? c.result.damping->damping
-                                  : damping_matrix(c.scene, c.result.linearization->at, c.simplifier_for_scene());
+             const GiNaC::matrix damping = damping_at_equilibrium(c.result, c.simplifier_for_scene());
              c.result.state_space =
                  derive_state_space(c.scene, *c.result.linearization, damping, c.simplifier_for_scene());
              c.result.state_space_values = state_space_at_values(c.scene, *c.result.state_space);
@@ -568,7 +573,7 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
             ready = ready && (done.count(need) || !find_stage(need).applies(scene));
         if (!ready)
             continue;
-        const std::set<product> wanted_before = result.wanted;
+        const std::size_t wanted_before = result.wanted.size(); // a stage may only add
         try {
             run_stage(context, stage, limits);
             done.insert(stage.id);
@@ -596,7 +601,7 @@ analysis run_stages(const model& scene, const std::set<product>& wanted, const b
             result.notes.push_back(stage.group + " not computed: " + error.what());
             failed_groups.insert(stage.group);
         }
-        if (result.wanted != wanted_before)
+        if (result.wanted.size() != wanted_before)
             replan();
     }
     return result;
