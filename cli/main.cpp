@@ -76,6 +76,10 @@ lagrange::model load_scene(const std::string& path, const std::vector<std::strin
     return load_scene(read_scene(path, wait_seconds), values, initial);
 }
 
+/// The help of --initial, which every command that integrates takes.
+const char* const initial_help = "initial values such as \"theta=0.1, phi'=0\": they replace the scene's for those "
+                                 "coordinates";
+
 /// A plot's title: the scene's, or its file name.
 std::string plot_title(const lagrange::model& scene) { return scene.title.empty() ? scene.file : scene.title; }
 
@@ -471,7 +475,7 @@ int run(int argc, char** argv)
     app.add_option("SCENE", options.scene_path, "the scene file (`-` for standard input)");
     app.add_option("--want", options.want, "products to compute, comma-separated (default: the scene's `want`)");
     app.add_option("--values", options.values, "a parameter point such as a=1,b=2.5 (repeatable)");
-    app.add_option("--initial", options.initial, "initial values such as \"theta=0.1, phi'=0\": they replace the scene's for those coordinates");
+    app.add_option("--initial", options.initial, initial_help);
     app.add_option("--format", options.format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
     app.add_option("-o,--output", options.output, "write the output to this file");
     app.add_flag("--timings", options.timings, "show which stages ran and how long each took");
@@ -495,7 +499,7 @@ int run(int argc, char** argv)
     report->add_option("-o,--output", report_options.output, "FILE.tex (figures beside it) or FILE.pdf (needs pdflatex)");
     report->add_option("--want", report_options.want, "products to derive, comma-separated (default: the scene's `want`)");
     report->add_option("--values", report_options.values, "a parameter point such as a=1,b=2.5 (repeatable)");
-    report->add_option("--initial", report_options.initial, "initial values such as \"theta=0.1, phi'=0\": they replace the scene's for those coordinates");
+    report->add_option("--initial", report_options.initial, initial_help);
     report->footer(products_help());
 
     motion_options simulate_options, workprecision_options;
@@ -504,7 +508,7 @@ int run(int argc, char** argv)
     for (auto [sub, o] : {std::pair{simulate, &simulate_options}, std::pair{workprecision, &workprecision_options}}) {
         sub->add_option("SCENE", o->scene_path, "the scene file (`-` for standard input)")->required();
         sub->add_option("--values", o->values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
-        sub->add_option("--initial", o->initial, "initial values such as \"theta=0.1, phi'=0\": they replace the scene's for those coordinates");
+        sub->add_option("--initial", o->initial, initial_help);
         sub->add_option("--until", o->until, "end time (default: the scene's `simulate until`)")
             ->check(finite_number & CLI::PositiveNumber);
         sub->add_option("--plot", o->plot, "draw a plot with gnuplot: .svg, .png or .pdf, by the extension");
@@ -571,7 +575,7 @@ int run(int argc, char** argv)
     ensemble->add_option("--seed", ensemble_options.seed, "seed of --random (default 1)");
     ensemble->add_flag("--resume", ensemble_options.resume, "continue the CSV file of an interrupted run (-o FILE.csv)");
     ensemble->add_option("--values", ensemble_options.values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
-    ensemble->add_option("--initial", ensemble_options.initial, "initial values such as \"theta=0.1, phi'=0\": they replace the scene's for those coordinates");
+    ensemble->add_option("--initial", ensemble_options.initial, initial_help);
     ensemble->add_flag("--interpret", ensemble_options.interpret,
                        "evaluate the equations with the interpreter (default: machine code by the system's C compiler)");
 
