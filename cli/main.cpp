@@ -459,6 +459,15 @@ const CLI::Validator finite_number(
     },
     "FINITE");
 
+/// A finite number above 0; CLI11's PositiveNumber prints its range up to the largest double.
+const CLI::Validator positive_number(
+    [](std::string& text) {
+        char* end = nullptr;
+        double value = std::strtod(text.c_str(), &end);
+        return std::isfinite(value) && value > 0 ? std::string() : "must be a positive number, not `" + text + "`";
+    },
+    "POSITIVE");
+
 int run(int argc, char** argv)
 {
     // Progress is drawn on a terminal during the symbolic stages too (the budget watchdog
@@ -510,7 +519,7 @@ int run(int argc, char** argv)
         sub->add_option("--values", o->values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
         sub->add_option("--initial", o->initial, initial_help);
         sub->add_option("--until", o->until, "end time (default: the scene's `simulate until`)")
-            ->check(finite_number & CLI::PositiveNumber);
+            ->check(positive_number);
         sub->add_option("--plot", o->plot, "draw a plot with gnuplot: .svg, .png or .pdf, by the extension");
         sub->add_option("--format", o->format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
         sub->add_option("-o,--output", o->output, "write the output to this file");
@@ -538,9 +547,9 @@ int run(int argc, char** argv)
                          "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
     response->add_option("--from", response_options.from,
                          "lowest drive frequency ω (default: a tenth of the smallest |s|)")
-        ->check(finite_number & CLI::PositiveNumber);
+        ->check(positive_number);
     response->add_option("--to", response_options.to, "highest drive frequency ω (default: ten times the largest |s|)")
-        ->check(finite_number & CLI::PositiveNumber);
+        ->check(positive_number);
     response->add_option("--points", response_options.points, "number of frequencies")
         ->check(CLI::Range(std::size_t{2}, std::size_t{10000000}))
         ->capture_default_str();
@@ -560,7 +569,7 @@ int run(int argc, char** argv)
                          "velocities (q') and parameters")
         ->required();
     ensemble->add_option("--until", ensemble_options.until, "end time of every run (default: the scene's `simulate until`)")
-        ->check(finite_number & CLI::PositiveNumber);
+        ->check(positive_number);
     ensemble->add_option("--measure", ensemble_options.measure,
                          "final, flip_time, flip_time:COORDINATE, max_lyapunov or floquet_stable")
         ->capture_default_str();
