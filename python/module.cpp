@@ -30,7 +30,8 @@ namespace {
 /// What one run of the engine is asked for: the Python keyword arguments, passed on as is.
 struct run_request {
     std::vector<std::string> want;   ///< product names; empty: the scene's `want` line or all it supports
-    std::vector<std::string> values; ///< `values` points, each "a=1,b=2"
+    std::vector<std::string> values;  ///< `values` points, each "a=1,b=2"
+    std::vector<std::string> initial; ///< initial values, each "theta=0.1, phi'=0"
     std::optional<double> until;
     std::optional<std::string> method;
     std::optional<double> tolerance;
@@ -52,7 +53,9 @@ std::string run(const lagrange::model& loaded, const run_request& request, const
     if (!request.values.empty())
         scene.values.clear();
     for (const std::string& v : request.values)
-        lagrange::add_values(scene, v);
+        lagrange::add_values(scene, v, "values=");
+    for (const std::string& v : request.initial)
+        lagrange::add_initial(scene, v, "initial=");
     std::set<lagrange::product> wanted;
     for (const std::string& name : request.want) {
         std::set<lagrange::product> one = lagrange::parse_want_list(name);
@@ -115,15 +118,17 @@ PYBIND11_MODULE(_lagrange, m)
         .def(
             "document",
             [](const lagrange::model& scene, const std::string& format, const std::vector<std::string>& want,
-               const std::vector<std::string>& values, std::optional<double> until, std::optional<std::string> method,
-               std::optional<double> tolerance, bool estimate_error, bool native, std::size_t max_terms,
-               double max_seconds, bool timings) {
-                run_request request{want, values, until, method, tolerance, estimate_error, native, max_terms, max_seconds};
+               const std::vector<std::string>& values, const std::vector<std::string>& initial,
+               std::optional<double> until, std::optional<std::string> method, std::optional<double> tolerance,
+               bool estimate_error, bool native, std::size_t max_terms, double max_seconds, bool timings) {
+                run_request request{want,      values,         initial, until,     method,
+                                    tolerance, estimate_error, native,  max_terms, max_seconds};
                 py::gil_scoped_release unlocked;
                 return run(scene, request, format, timings);
             },
             py::arg("format"), py::arg("want") = std::vector<std::string>{},
-            py::arg("values") = std::vector<std::string>{}, py::arg("until") = py::none(),
+            py::arg("values") = std::vector<std::string>{}, py::arg("initial") = std::vector<std::string>{},
+            py::arg("until") = py::none(),
             py::arg("method") = py::none(), py::arg("tolerance") = py::none(), py::arg("estimate_error") = true,
             py::arg("native") = true, py::arg("max_terms") = lagrange::budget_limits{}.max_terms,
             py::arg("max_seconds") = lagrange::budget_limits{}.max_seconds, py::arg("timings") = false,

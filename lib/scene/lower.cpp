@@ -678,9 +678,9 @@ void lower_option(const model& scene, const std::string& option, const std::stri
 
 } // namespace
 
-void add_values(model& scene, const std::string& text)
+void add_values(model& scene, const std::string& text, const std::string& origin)
 {
-    lower_option(scene, "--values", "values", text, "give values as `a=1,b=2`",
+    lower_option(scene, origin, "values", text, "give values as `a=1,b=2`",
                  [&](lowering& lower, const statement& s) {
                      value_point point = lower.values_line(s);
                      lowering::check_physical(scene, point, s);
@@ -689,9 +689,9 @@ void add_values(model& scene, const std::string& text)
                  });
 }
 
-void add_initial(model& scene, const std::string& text)
+void add_initial(model& scene, const std::string& text, const std::string& origin)
 {
-    lower_option(scene, "--initial", "initial", text, "give initial values as `theta=0.1, phi'=0`",
+    lower_option(scene, origin, "initial", text, "give initial values as `theta=0.1, phi'=0`",
                  [&](lowering& lower, const statement& s) {
                      const initial_state given = lower.initial_line(s);
                      initial_state state = scene.initial.value_or(initial_state{});

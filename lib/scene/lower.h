@@ -22,14 +22,15 @@ using file_reader = std::function<std::string(const std::string& path, const sou
 /// offending line attached) on bad input.
 model load_model(const source_text& source, const file_reader& read_file = {});
 
-/// Adds a `values` point given on the command line as `a=1,b=2.5`.
-void add_values(model& scene, const std::string& text);
+/// Adds a `values` point given on the command line as `a=1,b=2.5`. An error is located in
+/// the pseudo-file `origin`: the option or argument the text came from.
+void add_values(model& scene, const std::string& text, const std::string& origin = "--values");
 
 /// Sets initial values from the command line's `--initial` ("theta=0.1, phi'=0"), as an
 /// `initial` line would: the entries given replace the scene's for those coordinates, and
 /// the others keep the scene's (0 where it names none). An error is located in
-/// the pseudo-file `--initial`.
-void add_initial(model& scene, const std::string& text);
+/// the pseudo-file `origin`.
+void add_initial(model& scene, const std::string& text, const std::string& origin = "--initial");
 
 /// Parses a `want` list given on the command line as `equations,modes`.
 std::set<product> parse_want_list(const std::string& text);

@@ -106,12 +106,15 @@ class Modes(list):
 
 class Result:
     """A product with several parts: each part is an attribute and an item (``r.T`` and
-    ``r["T"]``); ``keys()`` lists them in the engine's order and ``json`` keeps the JSON."""
+    ``r["T"]``); ``keys()`` lists them in the engine's order and ``json`` keeps the JSON.
+    A result with one main expression (``main``: the name of that part) converts to it
+    with ``sympy.sympify(result)`` and shows it first in its ``repr``."""
 
-    def __init__(self, item, parts, json=None):
+    def __init__(self, item, parts, json=None, main=None):
         self.item = item
         self._parts = dict(parts)
         self.json = json
+        self._main = main if main in self._parts else None
 
     def __getattr__(self, name):
         parts = self.__dict__.get("_parts", {})
@@ -140,9 +143,16 @@ class Result:
     def get(self, key, default=None):
         return self._parts.get(key, default)
 
+    def _sympy_(self):
+        if self._main is None:
+            raise sympy.SympifyError(f"{self.item} has no one main expression (it has {', '.join(self._parts)})")
+        return self._parts[self._main]
+
     def __repr__(self):
-        inside = ", ".join(f"{k}={v!r}" for k, v in self._parts.items())
-        return f"{type(self).__name__}({self.item}: {inside})"
+        others = ", ".join(f"{k}={v!r}" for k, v in self._parts.items() if k != self._main)
+        if self._main is None:
+            return f"{type(self).__name__}({self.item}: {others})"
+        return f"{type(self).__name__}({self._parts[self._main]}" + (f"; {others})" if others else ")")
 
     def _repr_latex_(self):
         lines = []
@@ -263,7 +273,11 @@ def complex_array(pairs):
 
 
 class Characteristic(Result):
-    """The characteristic polynomial: ``polynomial`` (SymPy) in ``variable``, rendered ``p = 0``."""
+    """The characteristic polynomial: ``polynomial`` (SymPy) in ``variable``, rendered ``p = 0``;
+    ``sympy.sympify`` gives the polynomial."""
+
+    def __init__(self, item, parts, json=None):
+        super().__init__(item, parts, json, main="polynomial")
 
     def _repr_latex_(self):
         return "$$" + latex(self._parts["polynomial"]) + " = 0$$"

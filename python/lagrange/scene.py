@@ -39,6 +39,40 @@ def _values_lines(values):
     return lines
 
 
+def _initial_lines(initial, coordinates):
+    """Initial values as the engine reads them ("theta=0.1, phi'=0"): from a dict, whose keys
+    name a coordinate (its position) or the coordinate with ``'`` or ``_dot`` (its velocity),
+    or from a string in the scene's syntax."""
+    if initial is None:
+        return []
+    if isinstance(initial, str):
+        return [initial]
+    if not isinstance(initial, dict):
+        raise TypeError("initial must be a dict {\"theta\": 0.1, \"theta'\": 0} or a string \"theta=0.1, theta'=0\"")
+    entries = []
+    for name, value in initial.items():
+        if name.endswith("_dot") and name[:-len("_dot")] in coordinates:
+            name = name[:-len("_dot")] + "'"
+        entries.append(f"{name}={_number(value)}")
+    return [", ".join(entries)] if entries else []
+
+
+def _check_settings(settings):
+    """The numeric settings of a run, checked here so that an error names the argument."""
+    until = settings.get("until")
+    if until is not None and not (isinstance(until, (int, float, numpy.integer, numpy.floating))
+                                  and not isinstance(until, bool) and 0 < until < float("inf")):
+        raise ValueError(f"until must be a positive, finite end time (got {until!r})")
+    tolerance = settings.get("tolerance")
+    if tolerance is not None and not (isinstance(tolerance, (int, float, numpy.integer, numpy.floating))
+                                      and not isinstance(tolerance, bool) and 1e-14 <= tolerance < 1):
+        raise ValueError(f"tolerance must lie in 1e-14 … 1 (got {tolerance!r})")
+    for name in ("max_terms", "max_seconds"):
+        value = settings.get(name)
+        if value is not None and not (isinstance(value, (int, float)) and not isinstance(value, bool) and value > 0):
+            raise ValueError(f"{name} must be positive (got {value!r})")
+
+
 class Scene:
     """A scene, parsed and checked. Each product method runs the engine in this process
     (only the stages the product needs) and returns SymPy expressions and numpy arrays;
@@ -88,27 +122,32 @@ class Scene:
         return f"Scene({self.title or self.file!r}, coordinates={self.coordinates}, parameters={self.parameters})"
 
     # ---- the engine --------------------------------------------------------------------
-    def document(self, format="text", want=(), values=None, timings=False, **settings):
+    def document(self, format="text", want=(), values=None, initial=None, timings=False, **settings):
         """The whole document as the command line writes it: ``format`` is "text", "latex"
         (a complete LaTeX document) or "json"; ``want`` a list of items (empty: the scene's
-        `want` line or everything it supports). ``settings``: until, method, tolerance,
-        estimate_error, native, max_terms, max_seconds (as the command-line options)."""
+        `want` line or everything it supports). ``values``: a dict ``{"m": 1}``, a string
+        "m=1,l=2" or a list of them, replacing the scene's `values` lines; ``initial``: a dict
+        ``{"theta": 0.1, "theta'": 0}`` (or ``theta_dot``) or a string "theta=0.1, theta'=0",
+        replacing the scene's `initial` entries it names. ``settings``: until, method,
+        tolerance, estimate_error, native, max_terms, max_seconds (as the command-line options)."""
         if isinstance(want, str):
             want = [want]
-        return self._model.document(format, want=list(want), values=_values_lines(values), timings=timings,
-                                    **settings)
+        _check_settings(settings)
+        return self._model.document(format, want=list(want), values=_values_lines(values),
+                                    initial=_initial_lines(initial, self.coordinates), timings=timings, **settings)
 
-    def analyze(self, *want, values=None, **settings):
+    def analyze(self, *want, values=None, initial=None, **settings):
         """The JSON document of the products `want` (every product the scene supports if
         none), as a dict with its expressions converted: SymPy for strings, numpy for
         numbers. The product methods below pick their parts out of it."""
-        return self._convert(self._json(want, values, settings))
+        return self._convert(self._json(want, values, settings, initial))
 
-    def _json(self, want, values=None, settings=None):
+    def _json(self, want, values=None, settings=None, initial=None):
         settings = dict(settings or {})
-        key = (tuple(want), tuple(_values_lines(values)), tuple(sorted(settings.items())))
+        key = (tuple(want), tuple(_values_lines(values)), tuple(_initial_lines(initial, self.coordinates)),
+               tuple(sorted(settings.items())))
         if key not in self._documents:
-            text = self.document("json", want=list(want), values=values, **settings)
+            text = self.document("json", want=list(want), values=values, initial=initial, **settings)
             self._documents[key] = json.loads(text)
         return self._documents[key]
 
@@ -121,8 +160,8 @@ class Scene:
         return {k: (v if k in ("scene", "coordinates", "parameters", "stages", "notes", "timings")
                     else c.value(v, k)) for k, v in doc.items()}
 
-    def _parts(self, product, keys, values=None, settings=None, optional=()):
-        doc = self._json((product,), values, settings)
+    def _parts(self, product, keys, values=None, settings=None, optional=(), initial=None):
+        doc = self._json((product,), values, settings, initial)
         c = self._converter(doc)
         missing = [k for k in keys if k not in doc and k not in optional]
         if missing:
@@ -142,7 +181,7 @@ class Scene:
         """L = T − V (with ``kinetic_energy`` and ``potential_energy`` when the scene has them)."""
         doc, c = self._parts("equations", ["lagrangian"])
         return Result("lagrangian", {k: c.expr(doc[k]) for k in ("lagrangian", "kinetic_energy", "potential_energy")
-                                     if k in doc}, doc)
+                                     if k in doc}, doc, main="lagrangian")
 
     def equilibrium(self):
         """The equilibrium point ``{coordinate: expr}`` and its ``stability``."""
@@ -215,17 +254,18 @@ class Scene:
             points.append(Result("numeric", parts, p))
         return ResultList(points)
 
-    def simulate(self, until=None, method=None, tolerance=None, values=None, estimate_error=True, native=True,
-                 **settings):
+    def simulate(self, until=None, method=None, tolerance=None, values=None, initial=None, estimate_error=True,
+                 native=True, **settings):
         """Integrates the equations of motion from the scene's `initial` state: ``t`` (numpy),
         ``states`` ({name: numpy array}: each coordinate, then each ``q_dot``), ``y`` (all
         states as columns, in that order), ``method``, ``steps``, ``invariants`` and the rest
         of the JSON `simulation` object. ``until``, ``method``, ``tolerance`` override the
-        scene's `simulate` line."""
+        scene's `simulate` line; ``initial`` (``{"theta": 0.1, "theta'": 0}``) the entries of
+        its `initial` line that it names; ``values`` its `values` lines."""
         settings = dict(settings, until=until, method=method, tolerance=tolerance, estimate_error=estimate_error,
                         native=native)
         settings = {k: v for k, v in settings.items() if v is not None}
-        doc, c = self._parts("simulation", ["simulation"], values, settings)
+        doc, c = self._parts("simulation", ["simulation"], values, settings, initial=initial)
         s = doc["simulation"]
         parts = {}
         for k, v in s.items():
@@ -238,10 +278,19 @@ class Scene:
         parts["y"] = numpy.column_stack(list(parts["states"].values())) if parts.get("states") else numpy.zeros((0, 0))
         return Simulation("simulation", parts, s)
 
-    def workprecision(self, values=None, **settings):
-        """Error against run time of every method over a ladder of tolerances."""
-        doc, c = self._parts("workprecision", ["workprecision"], values, settings)
+    def workprecision(self, values=None, initial=None, **settings):
+        """Error against run time of every method over a ladder of tolerances (``values``,
+        ``initial`` and ``settings`` as for :meth:`simulate`)."""
+        doc, c = self._parts("workprecision", ["workprecision"], values, settings, initial=initial)
         return Result("workprecision", c.value(doc["workprecision"]), doc["workprecision"])
+
+    def virial(self, until=None, values=None, initial=None, **settings):
+        """The time averages ``T`` and ``V`` over a simulation, and the span ``over`` they were
+        taken on (``quadrature_error`` where estimated); arguments as for :meth:`simulate`."""
+        settings = dict(settings, until=until)
+        settings = {k: v for k, v in settings.items() if v is not None}
+        doc, c = self._parts("virial", ["virial"], values, settings, initial=initial)
+        return Result("virial", c.value(doc["virial"]), doc["virial"])
 
     def inertia(self):
         """Per body: ``tensor`` (SymPy Matrix), ``principal`` moments and ``mass``."""
@@ -277,12 +326,12 @@ class Scene:
                 parts[k] = Equations([sympy.Eq(*(c.expr(side) for side in e.split("=", 1))) for e in v])
             else:
                 parts[k] = c.value(v, k)
-        return Result("hamiltonian", parts, h)
+        return Result("hamiltonian", parts, h, main="H")
 
     def reduced(self):
         """Routh's reduction: ``routhian``, ``effective_potential`` and the ``momenta`` held fixed."""
         doc, c = self._parts("reduced", ["reduced"])
-        return Result("reduced", c.value(doc["reduced"]), doc["reduced"])
+        return Result("reduced", c.value(doc["reduced"]), doc["reduced"], main="routhian")
 
     def multipliers(self):
         """Each constraint's multiplier ``{lambda_NAME: expr}``; ``constraint_forces`` with them."""

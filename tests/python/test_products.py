@@ -228,7 +228,7 @@ def test_values_that_contradict_positive_parameters_are_scene_errors(example):
     # parameters are assumed positive (sqrt(l^2) = l): l = -1 would be a different system
     with pytest.raises(lagrange.SceneError, match="assumed real and positive") as caught:
         example("double_pendulum.lag").numeric({"M": 1, "m": 0.01, "l": -1, "g": 9.81})
-    assert caught.value.file == "--values"
+    assert caught.value.file == "values="  # the argument it came from
 
 
 def test_computation_error():

@@ -1,0 +1,104 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The Python module's arguments and conversions: ``initial=`` and ``values=`` on the
+methods that run numbers (against the command line's ``--initial``), errors that name the
+argument, ``sympy.sympify`` of a result, and the ImportError another interpreter gets."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy
+import pytest
+import sympy
+
+import lagrange
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+CLI = os.environ.get("LAGRANGE_CLI", "")
+
+OSCILLATOR = """
+coordinates x
+parameters m k
+T = 1/2*m*x'^2
+V = 1/2*k*x^2
+values m = 2, k = 8
+initial x = 1
+simulate until 3
+"""
+
+
+def test_initial_from_a_dict_starts_the_simulation_there(example):
+    run = example("double_pendulum.lag").simulate(until=0.5, initial={"theta": 0.1, "phi_dot": 0.2})
+    assert run.states["theta"][0] == 0.1
+    assert run.states["phi_dot"][0] == 0.2
+    assert run.states["phi"][0] == 0.05  # kept from the scene's `initial` line
+
+
+def test_initial_with_a_prime_equals_the_command_line(example):
+    scene = example("double_pendulum.lag")
+    doc = json.loads(scene.document("json", want=["simulation"], until=0.5, initial={"theta": 0.05, "phi'": -0.1}))
+    cli = subprocess.run([CLI, "simulate", os.path.join(ROOT, "examples", "double_pendulum.lag"), "--until", "0.5",
+                          "--initial", "theta=0.05, phi'=-0.1", "--format", "json"],
+                         capture_output=True, text=True, check=True)
+    assert doc["simulation"] == json.loads(cli.stdout)["simulation"]
+
+
+def test_initial_moves_the_oscillator_by_its_closed_form():
+    scene = lagrange.Scene.from_text(OSCILLATOR)
+    run = scene.simulate(initial={"x": 0.5, "x'": 1.0}, values={"m": 1, "k": 4}, tolerance=1e-11)
+    t, w = run.t, 2.0  # ω = √(k/m)
+    assert numpy.allclose(run.states["x"], 0.5 * numpy.cos(w * t) + numpy.sin(w * t) / w, rtol=0, atol=1e-8)
+
+
+def test_virial_takes_initial_and_values():
+    """For V ∝ x², 2⟨T⟩ = 2⟨V⟩ over whole periods (n = 2): T = 2π/ω with ω = √(k/m) = 2."""
+    v = lagrange.Scene.from_text(OSCILLATOR).virial(until=numpy.pi, initial={"x": 0.3}, values={"m": 1, "k": 4})
+    assert v.T == pytest.approx(v.V, rel=1e-7)
+    assert v.T == pytest.approx(0.25 * 4 * 0.3 ** 2, rel=1e-7)  # ⟨V⟩ = ½ of E = ½·½kA²
+
+
+def test_a_bad_initial_entry_is_a_scene_error_located_in_the_argument():
+    with pytest.raises(lagrange.SceneError) as error:
+        lagrange.Scene.from_text(OSCILLATOR).simulate(initial={"y": 1})
+    assert error.value.file == "initial="
+    assert "`y` is not a coordinate" in str(error.value)
+
+
+def test_initial_of_another_type_is_a_type_error():
+    with pytest.raises(TypeError, match="initial must be a dict"):
+        lagrange.Scene.from_text(OSCILLATOR).simulate(initial=[("x", 1)])
+
+
+@pytest.mark.parametrize("settings, named", [({"until": -1}, "until"), ({"until": float("inf")}, "until"),
+                                             ({"tolerance": 2}, "tolerance"), ({"max_seconds": 0}, "max_seconds")])
+def test_a_bad_setting_names_the_argument(settings, named):
+    with pytest.raises(ValueError) as error:
+        lagrange.Scene.from_text(OSCILLATOR).simulate(**settings)
+    assert str(error.value).startswith(named + " must")
+    assert "--" not in str(error.value)
+
+
+def test_results_with_one_main_expression_convert_with_sympify(example):
+    ch = example("double_pendulum.lag").characteristic()
+    assert sympy.sympify(ch) == ch.polynomial
+    assert str(ch.polynomial) in repr(ch)
+    L = example("double_pendulum.lag").lagrangian()
+    assert sympy.sympify(L) == L.lagrangian
+    with pytest.raises(sympy.SympifyError):
+        sympy.sympify(example("double_pendulum.lag").equilibrium())
+
+
+def test_another_interpreter_is_told_which_one_the_module_was_built_for(tmp_path):
+    """A copy of this interpreter, run without site-packages (-S), stands for a pyenv or
+    virtual-environment Python that has no numpy: importing must name the interpreter the
+    module was built for and how to build for another."""
+    other = tmp_path / "python3"
+    shutil.copy(os.path.realpath(sys.executable), other)
+    package = os.path.dirname(os.path.dirname(lagrange.__file__))
+    result = subprocess.run([str(other), "-S", "-c", f"import sys; sys.path.insert(0, {package!r}); import lagrange"],
+                            capture_output=True, text=True)
+    assert result.returncode != 0
+    assert "ImportError: lagrange was built for " + lagrange._BUILT_FOR in result.stderr
+    assert "-DPython3_EXECUTABLE=" + str(other) in result.stderr
