@@ -3,6 +3,7 @@
  *  The `lagrange` command: turns arguments into library calls, prints, and maps
  *  errors to exit codes (0 success, 1 computation not possible, 2 bad input or usage). */
 #include "engine/analysis.h"
+#include "engine/readiness.h"
 #include "ensemble/settings.h"
 #include "output/document.h"
 #include "output/ensemble_output.h"
@@ -60,6 +61,8 @@ lagrange::model load_scene(const lagrange::source_text& source, const std::vecto
                            const std::vector<std::string>& initial = {})
 {
     lagrange::model scene = lagrange::load_model(source);
+    for (const lagrange::scene_warning& warning : scene.warnings)
+        std::cerr << lagrange::format_warning(warning);
     for (const std::string& v : values)
         lagrange::add_values(scene, v);
     for (const std::string& i : initial)
@@ -407,9 +410,11 @@ int ensemble_command(const ensemble_options& options)
 int check_scene(const std::string& path)
 {
     lagrange::source_text source = read_scene(path);
-    lagrange::model scene = lagrange::load_model(source);
+    lagrange::model scene = load_scene(source, {});
     std::cout << source.file() << ": ok (" << scene.coordinates.size() << " coordinates, "
               << scene.parameters.size() << " parameters)\n";
+    for (const std::string& need : lagrange::unmet_needs(scene))
+        std::cout << "  needed by " << need << '\n';
     lagrange::finish_standard_output();
     return exit_ok;
 }

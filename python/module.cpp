@@ -115,6 +115,13 @@ PYBIND11_MODULE(_lagrange, m)
         .def_property_readonly("title", [](const lagrange::model& s) { return s.title; })
         .def_property_readonly("coordinates", [](const lagrange::model& s) { return lagrange::coordinate_names(s); })
         .def_property_readonly("parameters", [](const lagrange::model& s) { return lagrange::parameter_names(s); })
+        .def_property_readonly("warnings",
+                               [](const lagrange::model& s) {
+                                   std::vector<std::string> texts;
+                                   for (const lagrange::scene_warning& w : s.warnings)
+                                       texts.push_back(lagrange::format_warning(w));
+                                   return texts;
+                               })
         .def(
             "document",
             [](const lagrange::model& scene, const std::string& format, const std::vector<std::string>& want,

@@ -193,6 +193,14 @@ const std::string& name_of(product p);
 /// workprecision, which a free body's scene also has).
 bool needs_coordinates(product p);
 
+/// A likely slip in a valid scene (a kinetic energy without velocities): printed as
+/// `FILE:LINE:COL: warning: MESSAGE` with the line and a caret, never an error.
+struct scene_warning {
+    source_location where;
+    std::string message;
+    std::string line_text; ///< the line `where` points into
+};
+
 /// Everything a scene said.
 struct model {
     std::string file;
@@ -226,6 +234,7 @@ struct model {
     std::optional<simulation_request> simulation;
     std::vector<rewrite_rule> rules; ///< from `use` lines (the embedded rules are added by the stages)
     std::set<product> wanted; ///< empty: everything the scene supports
+    std::vector<scene_warning> warnings; ///< likely slips, in the order found
 
     /// Positions, velocities and accelerations of all coordinates, in order.
     GiNaC::lst positions() const;

@@ -7,10 +7,14 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 namespace lagrange {
+
+/// The functions of expressions: `sin`, `cos`, ... `abs` (a call is NAME `(` ... `)`).
+const std::set<std::string>& function_names();
 
 struct expr_node;
 using expr_ptr = std::unique_ptr<expr_node>;

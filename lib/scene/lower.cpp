@@ -156,7 +156,36 @@ private:
             energy_line_ = s.where;
             energy_keyword_ = s.keyword;
         }
+        if (s.keyword == "T" && !kinetic_line_)
+            kinetic_line_ = s.where;
         (s.keyword == "T" ? scene_.kinetic_terms : scene_.potential_terms) += value;
+    }
+
+    /// `T = 1/2*m*x^2` (the prime forgotten) is a valid scene with no kinetic energy for x:
+    /// warn at the first `T` line when the `T` lines have no velocity at all, or, with no
+    /// points or bodies to add kinetic energy, none of some coordinate.
+    void warn_of_kinetic_energy()
+    {
+        if (!kinetic_line_ || scene_.coordinates.empty())
+            return;
+        std::vector<std::string> missing;
+        std::string listed;
+        for (const coordinate& c : scene_.coordinates)
+            if (!scene_.kinetic_terms.has(c.velocity)) {
+                listed += (missing.empty() ? "" : ", ") + quote(c.name);
+                missing.push_back(c.name);
+            }
+        const coordinate& first = scene_.coordinates.front();
+        std::string message;
+        if (missing.size() == scene_.coordinates.size())
+            message = "`T` has no velocities, so it is no kinetic energy: the velocity of " + quote(first.name) +
+                      " is written " + quote(first.name + "'");
+        else if (!missing.empty() && scene_.points.empty() && scene_.bodies.empty())
+            message = "`T` has no velocity of " + listed +
+                      ", which then has no kinetic energy (a velocity is written with a prime, as " +
+                      quote(missing.front() + "'") + ")";
+        if (!message.empty())
+            scene_.warnings.push_back({*kinetic_line_, message, source_.line(kinetic_line_->line)});
     }
 
     void lower_point(const statement& s)
@@ -546,6 +575,7 @@ private:
         }
         resolve_body_attachments();
         check_constraints(scene_);
+        warn_of_kinetic_energy();
     }
 
 public:
@@ -633,6 +663,7 @@ private:
     std::map<std::string, source_location> points_;
     bool seen_title_ = false;
     std::optional<source_location> energy_line_;
+    std::optional<source_location> kinetic_line_; ///< the first `T` line
     std::string energy_keyword_;
     std::optional<source_location> lagrangian_line_;
 };

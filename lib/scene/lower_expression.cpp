@@ -66,13 +66,6 @@ std::set<unsigned> wildcards_in(const GiNaC::ex& e)
 
 } // namespace
 
-const std::set<std::string>& function_names()
-{
-    static const std::set<std::string> names = {"sin", "cos", "tan", "exp", "log", "sqrt", "sinh",
-                                                 "cosh", "tanh", "asin", "acos", "atan", "abs"};
-    return names;
-}
-
 const std::set<std::string>& reserved_names()
 {
     static const std::set<std::string> names = {

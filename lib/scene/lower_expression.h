@@ -19,9 +19,6 @@
 
 namespace lagrange {
 
-/// The functions of expressions: `sin`, `cos`, ... `abs`.
-const std::set<std::string>& function_names();
-
 /// Names no declaration may take: the statement keywords and the words of
 /// statements, `t`, `Pi`, `pi`, `oo`, `dot`, `T`, `V`, `L`.
 const std::set<std::string>& reserved_names();

@@ -8,6 +8,13 @@
 
 namespace lagrange {
 
+const std::set<std::string>& function_names()
+{
+    static const std::set<std::string> names = {"sin", "cos", "tan", "exp", "log", "sqrt", "sinh",
+                                                 "cosh", "tanh", "asin", "acos", "atan", "abs"};
+    return names;
+}
+
 namespace {
 
 class parser {
@@ -78,6 +85,13 @@ private:
     [[noreturn]] void fail_here(const std::string& wanted) const
     {
         const token& t = current();
+        // `sin th`: a function name followed by its argument without parentheses.
+        const bool operand = t.kind == token_kind::name || t.kind == token_kind::integer ||
+                             t.kind == token_kind::decimal;
+        if (operand && pos_ > 0 && tokens_[pos_ - 1].kind == token_kind::name &&
+            function_names().count(tokens_[pos_ - 1].text))
+            throw scene_error(t.where, "a function's argument goes in parentheses: write `" +
+                                           tokens_[pos_ - 1].text + "(" + t.text + ")`");
         std::string found = t.kind == token_kind::name ? quote(t.text)
                           : (t.kind == token_kind::integer || t.kind == token_kind::decimal)
                               ? "the number " + quote(t.text)

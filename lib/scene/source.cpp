@@ -69,14 +69,17 @@ void attach_line(scene_error& error, const source_text& source)
         error.attach_line_text(source.line(error.where().line));
 }
 
-std::string format_error(const scene_error& error)
+namespace {
+
+/// `FILE:LINE:COL: KIND: MESSAGE`, then `line_text` (when there is one) with a caret.
+std::string format_diagnostic(const source_location& at, const char* kind, const std::string& message,
+                              const std::string* line_text)
 {
-    const source_location& at = error.where();
     std::ostringstream out;
-    out << at.file << ':' << at.line << ':' << at.column << ": error: " << error.what() << '\n';
-    if (!error.has_line_text())
+    out << at.file << ':' << at.line << ':' << at.column << ": " << kind << ": " << message << '\n';
+    if (!line_text)
         return out.str();
-    std::vector<std::string> cells = display_cells(error.line_text());
+    std::vector<std::string> cells = display_cells(*line_text);
     // Show at most a window of 100 code points around the column.
     constexpr int window = 100;
     int column = at.column;
@@ -97,6 +100,20 @@ std::string format_error(const scene_error& error)
         caret += ' ';
     out << shown << '\n' << caret << "^\n";
     return out.str();
+}
+
+} // namespace
+
+std::string format_error(const scene_error& error)
+{
+    return format_diagnostic(error.where(), "error", error.what(),
+                             error.has_line_text() ? &error.line_text() : nullptr);
+}
+
+std::string format_warning(const scene_warning& warning)
+{
+    return format_diagnostic(warning.where, "warning", warning.message,
+                             warning.line_text.empty() ? nullptr : &warning.line_text);
 }
 
 } // namespace lagrange

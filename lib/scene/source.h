@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/errors.h"
+#include "core/model.h"
 
 #include <string>
 #include <vector>
@@ -31,5 +32,8 @@ void attach_line(scene_error& error, const source_text& source);
 /// `FILE:LINE:COL: error: MESSAGE`, then the offending line (shortened around the
 /// column when it is long, control bytes shown as spaces) and a caret under the column.
 std::string format_error(const scene_error& error);
+
+/// `FILE:LINE:COL: warning: MESSAGE`, then the line and a caret, as format_error.
+std::string format_warning(const scene_warning& warning);
 
 } // namespace lagrange

@@ -34,7 +34,7 @@ try:
 except ImportError as _error:
     raise _import_error(_error) from _error
 
-from .errors import BudgetExceeded, ComputationError, LagrangeError, SceneError
+from .errors import BudgetExceeded, ComputationError, LagrangeError, SceneError, SceneWarning
 from .expressions import latex_name, to_expr
 from .scene import Scene
 
@@ -42,5 +42,5 @@ __version__ = _lagrange.__version__
 
 products = _lagrange.products
 
-__all__ = ["Scene", "SceneError", "ComputationError", "BudgetExceeded", "LagrangeError", "to_expr",
+__all__ = ["Scene", "SceneError", "SceneWarning", "ComputationError", "BudgetExceeded", "LagrangeError", "to_expr",
            "latex_name", "products", "__version__"]

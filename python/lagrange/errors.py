@@ -20,6 +20,12 @@ class SceneError(LagrangeError):
         super().__init__(self.formatted.rstrip("\n"))
 
 
+class SceneWarning(UserWarning):
+    """A likely slip in a valid scene (a kinetic energy without velocities), issued with
+    ``warnings.warn`` when the scene is loaded; its text is the command line's
+    ``FILE:LINE:COL: warning: MESSAGE``, the line and a caret."""
+
+
 class ComputationError(LagrangeError):
     """The computation cannot be done (no equilibrium, singular kinetic matrix, ...):
     exit code 1 at the command line. ``message`` says why."""

@@ -2,12 +2,13 @@
 """Scene: a loaded scene file, and one method per product of the engine."""
 import json
 import os
+import warnings
 
 import numpy
 import sympy
 
 from . import _lagrange
-from .errors import ComputationError
+from .errors import ComputationError, SceneWarning
 from .results import (Characteristic, Converter, Equations, EquationsOf, ExprDict, ExprList, Modes, Result, ResultList, _text, complex_array)
 
 
@@ -84,6 +85,8 @@ class Scene:
     def __init__(self, model):
         self._model = model
         self._documents = {}
+        for text in model.warnings:
+            warnings.warn(text.rstrip("\n"), SceneWarning, stacklevel=3)
 
     # ---- loading -------------------------------------------------------------------
     @classmethod

@@ -86,6 +86,26 @@ TEST_CASE("cli: check", "[cli]")
                              "      ^\n");
 }
 
+TEST_CASE("cli: check says what the numeric commands still need, and warns of a slip", "[cli]")
+{
+    // The double pendulum has values and an end time: nothing is missing.
+    CHECK(run_cli("check " + double_pendulum).out.find("needed by") == std::string::npos);
+
+    std::string bare = temporary_file("bare.lag", "parameters m k\ncoordinates x\nT = 1/2*m*x^2\nV = 1/2*k*x^2\n"
+                                                  "values m = 1\n");
+    cli_result r = run_cli("check " + bare);
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.find("needed by simulate, workprecision and the numeric modes: the `values` line at line 5 gives "
+                     "no value of `k`") != std::string::npos);
+    CHECK(r.out.find("an end time (a `simulate until T` line or --until)") != std::string::npos);
+    CHECK(r.err == bare + ":3:1: warning: `T` has no velocities, so it is no kinetic energy: the velocity of `x` "
+                          "is written `x'`\nT = 1/2*m*x^2\n^\n");
+    // The warning is given by every command that loads the scene, and changes no exit code.
+    cli_result run = run_cli("--want equations " + bare);
+    CHECK(run.exit_code == 0);
+    CHECK(run.err.find(":3:1: warning: `T` has no velocities") != std::string::npos);
+}
+
 TEST_CASE("cli: standard input", "[cli]")
 {
     cli_result r = run_cli("- --format json", "parameters m k\ncoordinates x\nT = 1/2*m*x'^2\nV = 1/2*k*x^2\n");

@@ -102,3 +102,10 @@ def test_another_interpreter_is_told_which_one_the_module_was_built_for(tmp_path
     assert result.returncode != 0
     assert "ImportError: lagrange was built for " + lagrange._BUILT_FOR in result.stderr
     assert "-DPython3_EXECUTABLE=" + str(other) in result.stderr
+
+
+def test_a_likely_slip_is_a_scene_warning():
+    with pytest.warns(lagrange.SceneWarning) as caught:
+        lagrange.Scene.from_text("parameters m k\ncoordinates x\nT = 1/2*m*x^2\nV = 1/2*k*x^2\n", name="slip.lag")
+    assert len(caught) == 1
+    assert str(caught[0].message).startswith("slip.lag:3:1: warning: `T` has no velocities")

@@ -205,3 +205,26 @@ TEST_CASE("lower: an equilibrium with a rate is a steady motion", "[lower][symme
     CHECK_FALSE(scene.steady->rates[0]);
     require_error(header + "equilibrium q = 0, q' = 1\n", 3, 20, "given twice");
 }
+
+TEST_CASE("lower: a kinetic energy without velocities is a warning at its line", "[lower][warnings]")
+{
+    // The prime forgotten: T = ½ m x² is valid, with no kinetic energy at all.
+    model forgotten = load("parameters m k\ncoordinates x\nT = 1/2*m*x^2\nV = 1/2*k*x^2\n");
+    REQUIRE(forgotten.warnings.size() == 1);
+    CHECK(forgotten.warnings[0].where.line == 3);
+    CHECK(forgotten.warnings[0].where.column == 1);
+    CHECK(forgotten.warnings[0].message.find("`T` has no velocities") != std::string::npos);
+    CHECK(forgotten.warnings[0].line_text == "T = 1/2*m*x^2");
+    CHECK(format_warning(forgotten.warnings[0]) == "test.lag:3:1: warning: " + forgotten.warnings[0].message +
+                                                       "\nT = 1/2*m*x^2\n^\n");
+
+    // One coordinate of two without a velocity, and no points or bodies to give it one.
+    model half = load("parameters m k\ncoordinates x y\nT = 1/2*m*x'^2 + m*y^2\nV = 1/2*k*x^2\n");
+    REQUIRE(half.warnings.size() == 1);
+    CHECK(half.warnings[0].message.find("no velocity of `y`") != std::string::npos);
+
+    // Every velocity present, or the kinetic energy given by points: no warning.
+    CHECK(load("parameters m k\ncoordinates x y\nT = 1/2*m*(x'^2 + y'^2)\nV = k*x^2\n").warnings.empty());
+    CHECK(load("parameters m l\ncoordinates q r\npoint P mass m at (r, q)\nT = m*r'^2\n").warnings.empty());
+    CHECK(load("parameters m k\ncoordinates x\nL = 1/2*m*x'^2 - k*x^2\n").warnings.empty());
+}

@@ -29,6 +29,15 @@ TEST_CASE("parser: error paths", "[parser]")
     require_error(header + "body B disk(l) mass m spin (0,0,1)\n", 3, 23, "expected `axis`");
 }
 
+TEST_CASE("parser: a function name followed by its argument asks for parentheses", "[parser]")
+{
+    require_error(header + "point P mass m at (l*sin q, -l*cos(q))\n", 3, 26, "write `sin(q)`");
+    require_error(header + "V = -m*g*l*cos q\n", 3, 16, "a function's argument goes in parentheses: write `cos(q)`");
+    require_error(header + "V = exp 2\n", 3, 9, "write `exp(2)`");
+    // A name that is no function keeps the general message.
+    require_error(header + "T = m q\n", 3, 7, "expected the end of the statement, found `q`");
+}
+
 TEST_CASE("parser: nesting deeper than the limit is an error, not a crash", "[parser]")
 {
     std::string deep = std::string(10000, '(') + "q" + std::string(10000, ')');
