@@ -41,7 +41,6 @@ namespace {
 constexpr int exit_ok = 0;
 constexpr int exit_failed = 1;
 constexpr int exit_bad_input = 2;
-constexpr std::size_t max_scene_bytes = 64u << 20;
 
 /// A usage error: exit code 2, message without position.
 struct usage_error : std::runtime_error {
@@ -52,7 +51,7 @@ struct usage_error : std::runtime_error {
 /// in the time it may take to give its data (the time budget).
 lagrange::source_text read_scene(const std::string& path, double wait_seconds = lagrange::budget_limits{}.max_seconds)
 {
-    std::string text = lagrange::read_bounded(path, max_scene_bytes, wait_seconds);
+    std::string text = lagrange::read_bounded(path, lagrange::max_scene_bytes, wait_seconds);
     return lagrange::source_text(path == "-" ? "<stdin>" : path, text);
 }
 

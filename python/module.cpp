@@ -11,17 +11,30 @@
 #include "scene/lower.h"
 #include "scene/source.h"
 #include "system/files.h"
+#include "system/signals.h"
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <lagrange/version.h>
 
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
 #include <mutex>
 #include <optional>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace py = pybind11;
 
@@ -41,13 +54,14 @@ struct run_request {
     double max_seconds = lagrange::budget_limits{}.max_seconds;
 };
 
-/// GiNaC is not thread-safe: one load or analysis at a time, whichever Python thread asks.
+/// GiNaC is not thread-safe: one load at a time, whichever Python thread asks. A fork
+/// (ours, or the user's multiprocessing) waits for it, so that the child's copy of the
+/// engine is whole and its mutex free (pthread_atfork in the module's init).
 std::mutex engine;
 
+/// One run of the engine (in the child process of run_in_child).
 std::string run(const lagrange::model& loaded, const run_request& request, const std::string& format, bool timings)
 {
-    lagrange::require_document_format(format); // ValueError (pybind11), before the analysis
-    std::lock_guard<std::mutex> hold(engine);
     lagrange::model scene = loaded;
     // Values given from Python replace the scene's `values` lines (the command line's add to them).
     if (!request.values.empty())
@@ -82,6 +96,212 @@ void raise(const char* name, const py::tuple& args)
     py::object type = py::module_::import("lagrange.errors").attr(name);
     py::object error = type(*args);
     PyErr_SetObject(type.ptr(), error.ptr());
+}
+
+// ---- one run in a child process --------------------------------------------------------
+// Each document is computed in a forked child, as the command line computes it: the
+// budget watchdog may end the child (as it ends the command line) when one GiNaC call
+// overruns --max-seconds, and Ctrl-C in Python ends the child within a poll interval,
+// where a step inside GiNaC could not be interrupted in this process.
+
+/// The exit code of a child that the budget watchdog ended.
+constexpr int watchdog_exit = 3;
+
+/// The command line's option names in a message, as Python's argument names.
+std::string python_names(std::string message)
+{
+    for (auto [option, argument] : {std::pair{"--max-seconds", "max_seconds"}, std::pair{"--max-terms", "max_terms"}}) {
+        for (std::size_t at = message.find(option); at != std::string::npos; at = message.find(option, at))
+            message.replace(at, std::strlen(option), argument);
+    }
+    return message;
+}
+
+/// What the child sends back: a kind ("document" or an exception class of the package)
+/// and its fields, each as an 8-byte length and the bytes (documents may hold any byte).
+void put_field(std::string& out, const std::string& field)
+{
+    std::uint64_t size = field.size();
+    out.append(reinterpret_cast<const char*>(&size), sizeof size);
+    out += field;
+}
+
+std::vector<std::string> fields_of(const std::string& in)
+{
+    std::vector<std::string> fields;
+    std::size_t at = 0;
+    while (at + sizeof(std::uint64_t) <= in.size()) {
+        std::uint64_t size = 0;
+        std::memcpy(&size, in.data() + at, sizeof size);
+        at += sizeof size;
+        if (size > in.size() - at)
+            break;
+        fields.push_back(in.substr(at, size));
+        at += size;
+    }
+    return fields;
+}
+
+/// The child's message: the document, or the library error it met, as fields.
+std::string outcome_of(const lagrange::model& loaded, const run_request& request, const std::string& format,
+                       bool timings)
+{
+    std::string out;
+    try {
+        std::string document = run(loaded, request, format, timings);
+        put_field(out, "document");
+        put_field(out, document);
+    } catch (const lagrange::scene_error& error) {
+        const lagrange::source_location& where = error.where();
+        for (const std::string& f : {std::string("SceneError"), where.file, std::to_string(where.line),
+                                     std::to_string(where.column), std::string(error.what()),
+                                     lagrange::format_error(error)})
+            put_field(out, f);
+    } catch (const lagrange::budget_exceeded& error) {
+        for (const std::string& f : {std::string("BudgetExceeded"), std::string(error.what()), error.stage()})
+            put_field(out, f);
+    } catch (const lagrange::computation_error& error) {
+        put_field(out, "ComputationError");
+        put_field(out, error.what());
+    } catch (const std::exception& error) {
+        put_field(out, "OSError"); // lagrange::file_error, and what else a run may meet
+        put_field(out, error.what());
+    }
+    return out;
+}
+
+void write_all(int fd, const std::string& bytes)
+{
+    for (std::size_t done = 0; done < bytes.size();) {
+        ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return;
+        done += static_cast<std::size_t>(n);
+    }
+}
+
+/// Ends the child: SIGTERM first (its handlers remove temporary files and end its own
+/// children, the compiler or gnuplot), SIGKILL if it is still there after a second.
+void end_child(pid_t child)
+{
+    ::kill(child, SIGTERM);
+    for (int k = 0; k < 100; ++k) {
+        if (::waitpid(child, nullptr, WNOHANG) == child)
+            return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ::kill(child, SIGKILL);
+    ::waitpid(child, nullptr, 0);
+}
+
+/// Runs the engine in a child process and returns the document; raises the package's
+/// exception for a library error, KeyboardInterrupt (or what a signal handler raises)
+/// when Python has a signal pending. Called with the GIL held.
+std::string run_in_child(const lagrange::model& loaded, const run_request& request, const std::string& format,
+                         bool timings)
+{
+    lagrange::require_document_format(format); // ValueError (pybind11), before the fork
+    int result_pipe[2];
+    int error_pipe[2];
+    if (::pipe2(result_pipe, O_CLOEXEC) != 0)
+        throw lagrange::computation_error(std::string("cannot start the engine's process: ") + std::strerror(errno));
+    if (::pipe2(error_pipe, O_CLOEXEC) != 0) {
+        ::close(result_pipe[0]);
+        ::close(result_pipe[1]);
+        throw lagrange::computation_error(std::string("cannot start the engine's process: ") + std::strerror(errno));
+    }
+    const pid_t child = ::fork();
+    if (child == 0) {
+        // The child: no Python from here on, and _exit, so that nothing of Python's runs twice.
+        ::dup2(error_pipe[1], STDERR_FILENO);
+        lagrange::install_signal_cleanup();
+        lagrange::start_budget_watchdog("", watchdog_exit, lagrange::clean_up_registered);
+        write_all(result_pipe[1], outcome_of(loaded, request, format, timings));
+        ::_exit(0);
+    }
+    ::close(result_pipe[1]);
+    ::close(error_pipe[1]);
+    if (child < 0) {
+        ::close(result_pipe[0]);
+        ::close(error_pipe[0]);
+        throw lagrange::computation_error(std::string("cannot start the engine's process: ") + std::strerror(errno));
+    }
+    std::string result, errors;
+    bool interrupted = false;
+    {
+        py::gil_scoped_release unlocked;
+        pollfd fds[2] = {{result_pipe[0], POLLIN, 0}, {error_pipe[0], POLLIN, 0}};
+        std::string* sinks[2] = {&result, &errors};
+        int open = 2;
+        char buffer[65536];
+        while (open > 0) {
+            if (::poll(fds, 2, 50) > 0) {
+                for (int k = 0; k < 2; ++k) {
+                    if (fds[k].fd < 0 || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR)))
+                        continue;
+                    ssize_t n = ::read(fds[k].fd, buffer, sizeof buffer);
+                    if (n > 0) {
+                        sinks[k]->append(buffer, static_cast<std::size_t>(n));
+                    } else if (n == 0 || errno != EINTR) {
+                        ::close(fds[k].fd);
+                        fds[k].fd = -1;
+                        --open;
+                    }
+                }
+            }
+            py::gil_scoped_acquire held;
+            if (PyErr_CheckSignals() != 0) {
+                interrupted = true;
+                break;
+            }
+        }
+        for (const pollfd& f : fds)
+            if (f.fd >= 0)
+                ::close(f.fd);
+    }
+    if (interrupted) {
+        end_child(child);
+        throw py::error_already_set(); // KeyboardInterrupt, as the signal handler raised it
+    }
+    int status = 0;
+    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    std::vector<std::string> fields = fields_of(result);
+    if (WIFEXITED(status) && WEXITSTATUS(status) == watchdog_exit) {
+        std::string message = python_names(errors);
+        while (!message.empty() && message.back() == '\n')
+            message.pop_back();
+        const std::size_t open_quote = message.find("the `");
+        const std::size_t close_quote = message.find("` stage", open_quote == std::string::npos ? 0 : open_quote);
+        std::string stage = open_quote != std::string::npos && close_quote != std::string::npos
+                                ? message.substr(open_quote + 5, close_quote - open_quote - 5)
+                                : "";
+        raise("BudgetExceeded", py::make_tuple(message, stage));
+        throw py::error_already_set();
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || fields.empty()) {
+        std::string how = WIFSIGNALED(status) ? "was ended by signal " + std::to_string(WTERMSIG(status))
+                                              : "stopped with exit code " + std::to_string(WEXITSTATUS(status));
+        throw lagrange::computation_error("the engine's process " + how + (errors.empty() ? "" : ": " + errors));
+    }
+    if (!errors.empty()) // what the engine wrote to standard error (a compiler's complaint, say)
+        py::module_::import("sys").attr("stderr").attr("write")(py::bytes(errors).attr("decode")("utf-8", "replace"));
+    const std::string& kind = fields[0];
+    if (kind == "document" && fields.size() == 2)
+        return fields[1];
+    if (kind == "SceneError" && fields.size() == 6)
+        raise("SceneError", py::make_tuple(fields[1], std::stoi(fields[2]), std::stoi(fields[3]), fields[4], fields[5]));
+    else if (kind == "BudgetExceeded" && fields.size() == 3)
+        raise("BudgetExceeded", py::make_tuple(python_names(fields[1]), fields[2]));
+    else if (kind == "ComputationError" && fields.size() == 2)
+        raise("ComputationError", py::make_tuple(fields[1]));
+    else if (kind == "OSError" && fields.size() == 2)
+        PyErr_SetString(PyExc_OSError, fields[1].c_str());
+    else
+        throw lagrange::computation_error("the engine's process sent an unreadable result");
+    throw py::error_already_set();
 }
 
 } // namespace
@@ -130,8 +350,7 @@ PYBIND11_MODULE(_lagrange, m)
                bool estimate_error, bool native, std::size_t max_terms, double max_seconds, bool timings) {
                 run_request request{want,      values,         initial, until,     method,
                                     tolerance, estimate_error, native,  max_terms, max_seconds};
-                py::gil_scoped_release unlocked;
-                return run(scene, request, format, timings);
+                return run_in_child(scene, request, format, timings);
             },
             py::arg("format"), py::arg("want") = std::vector<std::string>{},
             py::arg("values") = std::vector<std::string>{}, py::arg("initial") = std::vector<std::string>{},
@@ -144,12 +363,31 @@ PYBIND11_MODULE(_lagrange, m)
     m.def(
         "load",
         [](const std::string& file, const std::string& text) {
+            if (text.size() > lagrange::max_scene_bytes)
+                throw lagrange::scene_error({file, 1, 1}, "the scene is larger than " +
+                                                              std::to_string(lagrange::max_scene_bytes >> 20) + " MiB");
             py::gil_scoped_release unlocked;
             std::lock_guard<std::mutex> hold(engine);
             return lagrange::load_model(lagrange::source_text(file, text));
         },
         py::arg("file"), py::arg("text"),
         "Parses and checks a scene; `use` files are read relative to the folder of `file`.");
+
+    m.def(
+        "read_scene",
+        [](const std::string& path, double wait_seconds) {
+            py::gil_scoped_release unlocked;
+            return lagrange::read_bounded(path, lagrange::max_scene_bytes, wait_seconds);
+        },
+        py::arg("path"), py::arg("wait_seconds"),
+        "A scene file's text, as the command line reads it: at most 64 MiB, and a pipe or device "
+        "that gives no data for `wait_seconds` is refused (OSError).");
+
+    // A fork waits for a load in progress and leaves the child's mutex free (see `engine`).
+    static bool at_fork = [] {
+        return pthread_atfork([] { engine.lock(); }, [] { engine.unlock(); }, [] { engine.unlock(); }) == 0;
+    }();
+    (void)at_fork;
 
     m.def("products", [] {
         std::vector<std::string> names;

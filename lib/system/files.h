@@ -22,6 +22,9 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// The largest scene the front ends read (the command line, the Python module): 64 MiB.
+constexpr std::size_t max_scene_bytes = 64u << 20;
+
 /// The whole content of `path` (`-`: standard input), read in chunks and refused as soon as
 /// it passes `limit` bytes. Folders are refused. A named pipe or a device that gives no
 /// data for `wait_seconds` is refused too (standard input waits as long as it takes).

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """From the engine's expression strings (GiNaC's plain syntax, as in the JSON documents) to
 SymPy, and LaTeX names as the engine prints them."""
+import keyword
 import re
 
 import sympy
@@ -40,11 +41,18 @@ def to_expr(text, names=()):
         return sympy.sympify(text)
     declared = set(names)
     local = {}
-    for name in set(_IDENTIFIER.findall(text)):
+    found = set(_IDENTIFIER.findall(text))
+    # A scene's name may be a Python keyword (`lambda`, `is`, `None`), which Python's
+    # tokenizer under parse_expr cannot take as a name: it is parsed under a stand-in.
+    reserved = sorted(name for name in found if keyword.iskeyword(name) or keyword.issoftkeyword(name))
+    if reserved:
+        text = re.sub(r"\b(" + "|".join(reserved) + r")\b", r"_lagrange_name_\1", text)
+    for name in found:
+        key = "_lagrange_name_" + name if name in reserved else name
         if name in declared or name not in _GINAC_NAMES:
-            local[name] = symbol(name)
+            local[key] = symbol(name)
         else:
-            local[name] = _GINAC_NAMES[name]
+            local[key] = _GINAC_NAMES[name]
     # A global namespace of SymPy's number classes only: every name in the string is in `local`.
     return parse_expr(text, local_dict=local, global_dict={"Integer": sympy.Integer, "Float": sympy.Float,
                                                            "Rational": sympy.Rational, "Symbol": sympy.Symbol},

@@ -2,6 +2,7 @@
 """Scene: a loaded scene file, and one method per product of the engine."""
 import json
 import os
+import re
 import warnings
 
 import numpy
@@ -24,6 +25,21 @@ def _number(value):
     return str(value).replace("**", "^")
 
 
+def _entry(name, value, argument):
+    """One `name=value` entry of a dict argument. The name must be one name and the value
+    one expression: a separator in either would be read as more entries (``{"m": "1, g=9"}``
+    would set g)."""
+    if not isinstance(name, str) or not _NAME.fullmatch(name):
+        raise ValueError(f"{argument}: {name!r} is not a name")
+    text = _number(value)
+    if any(c in text for c in ",=;\n\r"):
+        raise ValueError(f"{argument}: the value of {name} must be one number or expression, not {text!r}")
+    return f"{name}={text}"
+
+
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*'?")
+
+
 def _values_lines(values):
     """`values` points as the engine reads them ("a=1,b=2"): from a dict, a string, or a
     list of either (several points)."""
@@ -36,7 +52,7 @@ def _values_lines(values):
         if isinstance(point, str):
             lines.append(point)
         else:
-            lines.append(",".join(f"{name}={_number(v)}" for name, v in point.items()))
+            lines.append(",".join(_entry(name, v, "values") for name, v in point.items()))
     return lines
 
 
@@ -52,9 +68,9 @@ def _initial_lines(initial, coordinates):
         raise TypeError("initial must be a dict {\"theta\": 0.1, \"theta'\": 0} or a string \"theta=0.1, theta'=0\"")
     entries = []
     for name, value in initial.items():
-        if name.endswith("_dot") and name[:-len("_dot")] in coordinates:
+        if isinstance(name, str) and name.endswith("_dot") and name[:-len("_dot")] in coordinates:
             name = name[:-len("_dot")] + "'"
-        entries.append(f"{name}={_number(value)}")
+        entries.append(_entry(name, value, "initial"))
     return [", ".join(entries)] if entries else []
 
 
@@ -70,8 +86,9 @@ def _check_settings(settings):
         raise ValueError(f"tolerance must lie in 1e-14 … 1 (got {tolerance!r})")
     for name in ("max_terms", "max_seconds"):
         value = settings.get(name)
-        if value is not None and not (isinstance(value, (int, float)) and not isinstance(value, bool) and value > 0):
-            raise ValueError(f"{name} must be positive (got {value!r})")
+        if value is not None and not (isinstance(value, (int, float, numpy.integer, numpy.floating))
+                                      and not isinstance(value, bool) and 0 < value < float("inf")):
+            raise ValueError(f"{name} must be a positive, finite number (got {value!r})")
 
 
 class Scene:
@@ -90,11 +107,13 @@ class Scene:
 
     # ---- loading -------------------------------------------------------------------
     @classmethod
-    def from_file(cls, path):
-        """Loads a scene file; `use "x.rules"` lines are read relative to its folder."""
+    def from_file(cls, path, max_seconds=30):
+        """Loads a scene file; `use "x.rules"` lines are read relative to its folder. The
+        file is read as the command line reads it: at most 64 MiB, and a pipe or device
+        that gives no data for ``max_seconds`` is refused (OSError)."""
         path = os.fspath(path)
-        with open(path, encoding="utf-8") as f:
-            text = f.read()
+        _check_settings({"max_seconds": max_seconds})
+        text = _lagrange.read_scene(path, float(max_seconds))
         return cls(_lagrange.load(path, text))
 
     @classmethod
