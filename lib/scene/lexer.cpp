@@ -114,6 +114,14 @@ private:
         return length;
     }
 
+    /// A C1 control character (U+0080 … U+009F, as CSI and OSC) at pos_: a terminal acts on
+    /// it, so it is refused as the C0 controls are.
+    bool is_c1_control() const
+    {
+        return static_cast<unsigned char>(peek()) == 0xC2 && static_cast<unsigned char>(peek(1)) >= 0x80 &&
+               static_cast<unsigned char>(peek(1)) <= 0x9F;
+    }
+
     /// Steps over one code point inside a comment or string; rejects bad bytes.
     void advance_code_point(const char* where)
     {
@@ -122,6 +130,8 @@ private:
             std::size_t length = utf8_length();
             if (length == 0)
                 fail(here(), "invalid UTF-8 byte in " + std::string(where));
+            if (is_c1_control())
+                fail(here(), "control character (U+00" + hex(static_cast<unsigned char>(peek(1))) + ") in " + where);
             pos_ += length;
             ++column_;
             return;
@@ -258,6 +268,8 @@ private:
             std::size_t length = utf8_length();
             if (length == 0)
                 fail(at, "invalid UTF-8 byte (0x" + hex(byte) + ")");
+            if (is_c1_control())
+                fail(at, "unexpected control character (U+00" + hex(static_cast<unsigned char>(peek(1))) + ")");
             fail(at, "unexpected character `" + text_.substr(pos_, length) +
                          "`: names are ASCII letters, digits and `_` (write `theta`, not `θ`)");
         }

@@ -50,7 +50,11 @@ std::vector<std::string> display_cells(const std::string& line)
         bool valid = length > 0 && i + length <= line.size();
         for (int k = 1; valid && k < length; ++k)
             valid = is_continuation_byte(static_cast<unsigned char>(line[i + k]));
-        if (valid) {
+        const bool c1_control = valid && c == 0xC2 && static_cast<unsigned char>(line[i + 1]) <= 0x9F;
+        if (c1_control) { // U+0080 … U+009F: a terminal would act on it
+            cells.emplace_back(" ");
+            i += length;
+        } else if (valid) {
             cells.push_back(line.substr(i, length));
             i += length;
         } else {

@@ -44,6 +44,10 @@ TEST_CASE("lexer: error paths", "[lexer]")
     require_error(header + "T = m\xFF\n", 3, 6, "invalid UTF-8");
     require_error(header + std::string("T = m\0", 6) + "\n", 3, 6, "control character");
     require_error(header + "# bad \xC3\x28 byte\n", 3, 7, "invalid UTF-8");
+    // C1 controls (CSI U+009B, NEL U+0085) in a title, a comment and the code: refused as C0 ones.
+    require_error("scene \"evil \xC2\x9B" "2J\"\n", 1, 13, "control character (U+009B) in a string");
+    require_error(header + "# next \xC2\x85 line\n", 3, 8, "control character (U+0085) in a comment");
+    require_error(header + "T = m\xC2\x9Bq\n", 3, 6, "unexpected control character (U+009B)");
     require_error("scene \"open\n", 1, 7, "unterminated string");
     require_error(header + "T = 2x\n", 3, 6, "a number cannot run into a name");
     require_error(header + "T = m \\ q\n", 3, 7, "continues a line only at its end");

@@ -29,3 +29,10 @@ TEST_CASE("format_error: a 1 MB line is shown as a short window", "[source]")
     CHECK(caret.back() == '\n');
     CHECK(caret.size() - 2 < shown.size());
 }
+
+TEST_CASE("format_error: a C1 control in the quoted line is shown as a space", "[source]")
+{
+    scene_error error({"s.lag", 1, 3}, "bad");
+    error.attach_line_text("a\xC2\x9B" "b");
+    CHECK(format_error(error) == "s.lag:1:3: error: bad\na b\n  ^\n");
+}
