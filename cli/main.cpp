@@ -344,7 +344,8 @@ int ensemble_command(const ensemble_options& options)
     lagrange::ensemble_run_options run;
     run.threads = options.threads;
     run.progress = ensemble_progress();
-    std::ofstream file;
+    std::ofstream file;                              // CSV: in place, for --resume
+    std::unique_ptr<lagrange::output_file> whole_file; // JSON: replaced only when complete
     std::unique_ptr<lagrange::ensemble_map> map;
     std::ostream* out = &std::cout;
     auto last_flush = std::chrono::steady_clock::now();
@@ -357,12 +358,15 @@ int ensemble_command(const ensemble_options& options)
             map = std::make_unique<lagrange::ensemble_map>(problem);
             return;
         }
-        if (to_file) {
-            // Written as the rows come (no temporary file), so that an interrupted run leaves
-            // the rows done so far for --resume.
+        if (to_file && json) {
+            whole_file = std::make_unique<lagrange::output_file>(options.output);
+            out = &whole_file->stream();
+        } else if (to_file) {
+            // CSV is written as the rows come (no temporary file), so that an interrupted run
+            // leaves the rows done so far for --resume.
             file.open(options.output, run.first > 0 ? std::ios::app | std::ios::binary : std::ios::trunc | std::ios::binary);
             if (!file)
-                throw lagrange::file_error("cannot write `" + options.output + "`");
+                throw lagrange::file_error("cannot write `" + options.output + "`: " + std::strerror(errno));
             out = &file;
         }
         if (json)
@@ -380,7 +384,11 @@ int ensemble_command(const ensemble_options& options)
         else
             lagrange::write_ensemble_csv_row(*out, problem, row);
         if (index % 64 == 0 && std::chrono::steady_clock::now() - last_flush > std::chrono::milliseconds(500)) {
-            out->flush();
+            // A full disc stops the run here, at the first flush that fails, not at the end.
+            errno = 0;
+            if (!out->flush())
+                throw lagrange::computation_error("cannot write `" + (to_file ? options.output : "-") + "`: " +
+                                                  (errno ? std::strerror(errno) : "the disc may be full"));
             last_flush = std::chrono::steady_clock::now();
         }
     };
@@ -393,10 +401,13 @@ int ensemble_command(const ensemble_options& options)
         lagrange::write_ensemble_json_end(*out, problem, summary);
     if (map)
         map->draw(options.output, plot_title(scene));
-    if (file.is_open()) {
-        file.flush();
-        if (!file)
-            throw lagrange::computation_error("writing `" + options.output + "` failed");
+    if (whole_file) {
+        whole_file->commit();
+    } else if (file.is_open()) {
+        errno = 0;
+        if (!file.flush())
+            throw lagrange::computation_error("cannot write `" + options.output + "`: " +
+                                              (errno ? std::strerror(errno) : "the disc may be full"));
         file.close();
     } else if (!png) {
         lagrange::finish_standard_output();

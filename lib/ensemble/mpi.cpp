@@ -62,9 +62,8 @@ ensemble_chunk_result decode(const std::vector<double>& message)
 /// Rank 0: its own threads compute through the scheduler; its main thread serves the others.
 void serve(const ensemble_problem& problem, ensemble_scheduler& scheduler, int ranks, std::size_t threads)
 {
-    std::vector<std::thread> pool;
-    for (std::size_t k = 0; k < threads; ++k)
-        pool.emplace_back([&] { compute_until_done(problem, scheduler); });
+    // Rank 0's main thread serves; its pool may be smaller than asked (start_threads).
+    std::vector<std::thread> pool = start_threads(threads, [&] { compute_until_done(problem, scheduler); });
     const unsigned long long signature = problem.signature();
     std::deque<int> waiting; // ranks whose request is not answered yet
     int stopped = 0;
@@ -127,9 +126,7 @@ void work(const ensemble_problem& problem, std::size_t threads)
     bool stopped = false;
     std::size_t active = 0;
     std::exception_ptr error;
-    std::vector<std::thread> pool;
-    for (std::size_t k = 0; k < threads; ++k)
-        pool.emplace_back([&] {
+    std::vector<std::thread> pool = start_threads(threads, [&] {
             ensemble_workspace workspace;
             std::unique_lock<std::mutex> lock(mutex);
             for (;;) {
@@ -151,6 +148,8 @@ void work(const ensemble_problem& problem, std::size_t threads)
                 --active;
             }
         });
+    if (pool.empty())
+        throw computation_error("no computing thread could be started on this rank (the system refused them)");
     const unsigned long long signature = problem.signature();
     bool asked = false, done = false;
     while (!done) {

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <string>
+#include <system_error>
 #include <thread>
 
 namespace lagrange {
@@ -205,6 +206,18 @@ void compute_until_done(const ensemble_problem& problem, ensemble_scheduler& sch
     }
 }
 
+std::vector<std::thread> start_threads(std::size_t count, const std::function<void()>& work)
+{
+    std::vector<std::thread> pool;
+    pool.reserve(count);
+    try {
+        for (std::size_t k = 0; k < count; ++k)
+            pool.emplace_back(work);
+    } catch (const std::system_error&) {
+    }
+    return pool;
+}
+
 ensemble_summary run_ensemble(const ensemble_problem& problem, const ensemble_run_options& options,
                               const ensemble_sink& sink)
 {
@@ -215,15 +228,14 @@ ensemble_summary run_ensemble(const ensemble_problem& problem, const ensemble_ru
     ensemble_scheduler scheduler(problem, options, sink, threads);
     if (options.first >= problem.points() && sink.begin)
         sink.begin(); // nothing left to compute (a finished run resumed)
-    std::vector<std::thread> pool;
-    for (std::size_t k = 1; k < threads; ++k)
-        pool.emplace_back([&] { compute_until_done(problem, scheduler); });
+    std::vector<std::thread> pool = start_threads(threads - 1, [&] { compute_until_done(problem, scheduler); });
     compute_until_done(problem, scheduler); // this thread is one of them
     for (std::thread& t : pool)
         t.join();
     scheduler.rethrow();
     ensemble_summary summary = scheduler.summary();
-    summary.threads = threads;
+    summary.threads = pool.size() + 1;
+    summary.threads_asked = threads;
     summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return summary;
 }

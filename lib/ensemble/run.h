@@ -28,6 +28,7 @@ struct ensemble_summary {
     double worst_error = 0;         ///< largest |measure − tight measure| over them
     std::size_t worst_error_index = none;
     std::size_t threads = 1;        ///< per process
+    std::size_t threads_asked = 1;  ///< per process: more than `threads` when the system refused some
     std::size_t processes = 1;
     double seconds = 0;
     bool root = true;               ///< this process received the rows (MPI rank 0)

@@ -8,8 +8,10 @@
 
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <map>
 #include <mutex>
+#include <thread>
 #include <vector>
 
 namespace lagrange {
@@ -71,5 +73,9 @@ private:
 /// One worker thread: takes chunks from the scheduler and completes them until none is
 /// left; an exception aborts the run (the scheduler's rethrow() gives it).
 void compute_until_done(const ensemble_problem& problem, ensemble_scheduler& scheduler);
+
+/// Starts up to `count` threads running `work`. A thread the system refuses (EAGAIN under a
+/// memory or process limit) ends the starting, not the run: the pool is what could start.
+std::vector<std::thread> start_threads(std::size_t count, const std::function<void()>& work);
 
 } // namespace lagrange

@@ -244,6 +244,8 @@ std::string ensemble_summary_text(const ensemble_problem& problem, const ensembl
     std::ostringstream out;
     out << "ensemble: " << summary.points << " points on " << summary.threads
         << (summary.threads == 1 ? " thread" : " threads");
+    if (summary.threads_asked > summary.threads)
+        out << " (of " << summary.threads_asked << " asked: the system refused to start more)";
     if (summary.processes > 1)
         out << " x " << summary.processes << " processes";
     out << " in " << short_number(summary.seconds) << " s";

@@ -11,12 +11,15 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+
+#include <unistd.h>
 
 using namespace lagrange_test;
 using Catch::Matchers::WithinAbs;
@@ -312,4 +315,53 @@ TEST_CASE("ensemble cli: JSON, PNG, resume, and bad input", "[ensemble][cli][gnu
     }
     cli_result located = run_cli("ensemble " + pendulum + " --grid \"theta=0..1:3, psi=0..1:2\"");
     CHECK(located.err.find("--grid:1:15: error: `psi`") != std::string::npos);
+}
+
+// AddressSanitizer reserves terabytes of address space, so no address-space limit can hold
+// the sanitized program: the case exists in the other builds only.
+#if defined(__SANITIZE_ADDRESS__)
+#define LAGRANGE_TEST_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define LAGRANGE_TEST_ADDRESS_SANITIZER 1
+#endif
+#endif
+#ifndef LAGRANGE_TEST_ADDRESS_SANITIZER
+TEST_CASE("ensemble cli: threads the system refuses make a smaller pool, not an abort", "[ensemble][cli]")
+{
+    // Under a 4 GB address-space limit, 1000 threads' stacks do not fit: the system refuses
+    // some, and the run goes on with the ones it started (it aborted with exit 134).
+    cli_result r = run_cli("ensemble " + pendulum + " --grid \"phi=0.1..0.2:8\" --until 1 --threads 1000", "", 60,
+                           "ulimit -v 4000000");
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.find("of 1000 asked: the system refused to start more") != std::string::npos);
+    CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 9); // the header and the 8 points
+}
+#endif
+
+TEST_CASE("ensemble cli: a full disc stops the run at once; JSON is replaced only whole", "[ensemble][cli]")
+{
+    // /dev/full fails every write with ENOSPC, as a full disc does.
+    const std::string probe = temporary_file("probe.txt", "");
+    const std::string full = probe.substr(0, probe.rfind('/')) + "/full.csv";
+    REQUIRE(::symlink("/dev/full", full.c_str()) == 0);
+    const std::string many = "ensemble " + pendulum + " --grid \"phi=0.1..0.2:100000\" --until 20 --threads 2";
+    cli_result r = run_cli(many + " -o " + full, "", 60);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err == "lagrange: error: cannot write `" + full + "`: the disc may be full\n");
+    CHECK(r.seconds < 10); // all the points would take minutes
+
+    // Killed, a JSON output leaves the file it would replace as it was.
+    const std::string json = temporary_file("ensemble.json", "{\"old\": true}\n");
+    cli_result stopped = run_cli(many + " -o " + json, "", 1);
+    CHECK(stopped.exit_code == 128 + 9);
+    std::ifstream in(json);
+    std::stringstream kept;
+    kept << in.rdbuf();
+    CHECK(kept.str() == "{\"old\": true}\n");
+
+    // An output that cannot be opened says why.
+    cli_result missing = run_cli("ensemble " + pendulum + " --grid \"phi=0.1..0.2:2\" --until 1 -o /nonexistent/x.csv");
+    CHECK(missing.exit_code == 2);
+    CHECK(missing.err == "lagrange: error: cannot write `/nonexistent/x.csv`: No such file or directory\n");
 }

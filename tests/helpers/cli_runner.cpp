@@ -64,7 +64,7 @@ std::string temporary_file(const std::string& name, const std::string& content)
     return path;
 }
 
-cli_result run_cli(const std::string& args, const std::string& input, int limit_seconds)
+cli_result run_cli(const std::string& args, const std::string& input, int limit_seconds, const std::string& shell_setup)
 {
     static int counter = 0;
     std::string stem = temporary_folder() + "/run" + std::to_string(++counter);
@@ -72,8 +72,9 @@ cli_result run_cli(const std::string& args, const std::string& input, int limit_
     // Sanitizer builds run several times slower: scripts/sanitize.sh sets LAGRANGE_TEST_TIME_SCALE.
     if (const char* scale = std::getenv("LAGRANGE_TEST_TIME_SCALE"))
         limit_seconds *= std::max(1, std::atoi(scale));
-    std::string command = "timeout -s KILL " + std::to_string(limit_seconds) + " " + LAGRANGE_BINARY + " " + args +
-                          " <" + in + " >" + stem + ".out 2>" + stem + ".err";
+    std::string command = (shell_setup.empty() ? "" : shell_setup + "; ") + "timeout -s KILL " +
+                          std::to_string(limit_seconds) + " " + LAGRANGE_BINARY + " " + args + " <" + in + " >" +
+                          stem + ".out 2>" + stem + ".err";
     auto start = std::chrono::steady_clock::now();
     int status = std::system(command.c_str());
     std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;

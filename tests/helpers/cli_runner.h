@@ -17,8 +17,10 @@ struct cli_result {
 };
 
 /// Runs `lagrange ARGS` (ARGS is passed through the shell) with `input` on standard
-/// input, stopped after `limit_seconds`.
-cli_result run_cli(const std::string& args, const std::string& input = "", int limit_seconds = 10);
+/// input, stopped after `limit_seconds`; `shell_setup` (a command such as `ulimit -v N`)
+/// runs before it in the same shell.
+cli_result run_cli(const std::string& args, const std::string& input = "", int limit_seconds = 10,
+                   const std::string& shell_setup = "");
 
 /// Writes `content` to a fresh file in the test's temporary folder and returns its path.
 std::string temporary_file(const std::string& name, const std::string& content);
