@@ -83,7 +83,7 @@ struct point_rhs {
         evaluate(native_rhs, *rhs_program, work->outputs.data());
         std::copy(x + n, x + 2 * n, dxdt);
         if (!solve_mass_matrix(work->outputs.data(), n, work->factor.data(), dxdt + n, tangents > 0))
-            throw computation_error(singular_mass_matrix_message(t));
+            throw computation_error(singular_mass_matrix_message(t, x, 2 * n));
         if (tangents == 0)
             return;
         // δq̈ = M⁻¹ (∂f/∂q δq + ∂f/∂q̇ δq̇ − Σ_k (∂M/∂q_k δq_k) q̈), M's factor kept from the solve.

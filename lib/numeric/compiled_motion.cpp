@@ -127,7 +127,7 @@ void compiled_motion::solve(double t, const double* x, double* acceleration, boo
     else
         rhs_program_.run(symbols, scratch_, outputs_.data());
     if (!solve_mass_matrix(outputs_.data(), n_, factor_.data(), acceleration, keep_factor))
-        throw computation_error(singular_mass_matrix_message(t));
+        throw computation_error(singular_mass_matrix_message(t, x, 2 * n_));
 }
 
 void compiled_motion::rhs(double t, const double* x, double* dxdt) const

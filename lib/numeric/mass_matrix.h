@@ -77,7 +77,8 @@ inline bool solve_mass_matrix(const double* mass_and_force, std::size_t n, doubl
     return true;
 }
 
-/// The message for a mass matrix that is not positive definite at time t.
-std::string singular_mass_matrix_message(double t);
+/// The message for a mass matrix that cannot be solved at time t in the state x (size
+/// entries): not positive definite, or, when t or the state is no longer finite, an overflow.
+std::string singular_mass_matrix_message(double t, const double* x, std::size_t size);
 
 } // namespace lagrange

@@ -318,7 +318,7 @@ public:
             program_(symbols, outputs_.data());
             std::copy(x + n, x + 2 * n, dxdt);
             if (!solve_mass_matrix(outputs_.data(), n, factor_.data(), dxdt + n)) [[unlikely]]
-                singular(t);
+                singular(t, x, 2 * n);
         }
     }
 
@@ -329,9 +329,9 @@ private:
         count_ = 0;
         run_.check_limits(t);
     }
-    [[noreturn, gnu::noinline]] static void singular(double t)
+    [[noreturn, gnu::noinline]] static void singular(double t, const double* x, std::size_t size)
     {
-        throw computation_error(singular_mass_matrix_message(t));
+        throw computation_error(singular_mass_matrix_message(t, x, size));
     }
     static constexpr std::size_t fixed = Coordinates > 0 ? static_cast<std::size_t>(Coordinates) : 0;
     std::size_t coordinates() const { return Coordinates > 0 ? fixed : n_; }
