@@ -246,11 +246,11 @@ struct response_options {
 
 /// `lagrange response SCENE --input u --output q`: the frequency response H(iω) of the
 /// linearized system, as text, CSV or JSON, and its Bode diagram.
-int response_command(const response_options& options)
+int response_command(const response_options& options, const lagrange::budget_limits& budget)
 {
     require_plot_format(options.plot);
-    lagrange::model scene = load_scene(options.scene_path, options.values);
-    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::state_space});
+    lagrange::model scene = load_scene(options.scene_path, options.values, {}, budget.max_seconds);
+    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::state_space}, budget);
     lagrange::response_settings settings;
     settings.from = options.from;
     settings.to = options.to;
@@ -315,7 +315,7 @@ std::function<void(std::size_t, std::size_t)> ensemble_progress()
 
 /// `lagrange ensemble SCENE --grid "..." --until T`: the measure at every point of the grid,
 /// as CSV (standard output or -o FILE.csv), JSON (-o FILE.json) or a PNG map (-o FILE.png).
-int ensemble_command(const ensemble_options& options)
+int ensemble_command(const ensemble_options& options, const lagrange::budget_limits& budget)
 {
     auto ends_with = [&](const std::string& suffix) {
         const std::string& p = options.output;
@@ -327,7 +327,7 @@ int ensemble_command(const ensemble_options& options)
         throw usage_error("`ensemble -o` takes a file ending in .csv, .json or .png, not `" + options.output + "`");
     if (options.resume && (!to_file || png || json))
         throw usage_error("--resume continues a CSV file: give it with -o FILE.csv");
-    lagrange::model scene = load_scene(options.scene_path, options.values, options.initial);
+    lagrange::model scene = load_scene(options.scene_path, options.values, options.initial, budget.max_seconds);
     std::vector<lagrange::ensemble_axis> axes = lagrange::parse_ensemble_grid(options.grid, scene, options.random > 0);
     lagrange::ensemble_measure measure = lagrange::parse_ensemble_measure(options.measure, scene);
     lagrange::ensemble_settings settings;
@@ -337,7 +337,7 @@ int ensemble_command(const ensemble_options& options)
     } catch (const lagrange::ensemble_request_error& error) {
         throw usage_error(error.what());
     }
-    lagrange::analysis result = lagrange::analyze(scene, lagrange::ensemble_products(measure));
+    lagrange::analysis result = lagrange::analyze(scene, lagrange::ensemble_products(measure), budget);
     lagrange::ensemble_problem problem(scene, *result.equations, axes, measure, settings,
                                        result.time ? &*result.time : nullptr);
 
@@ -431,7 +431,7 @@ int check_scene(const std::string& path)
 
 /// `lagrange report SCENE -o FILE.tex|FILE.pdf`: the derivation as a LaTeX
 /// document; its figures are written beside FILE.tex, or compiled into FILE.pdf.
-int report_scene(const run_options& options)
+int report_scene(const run_options& options, const lagrange::budget_limits& budget)
 {
     const std::string& path = options.output;
     auto ends_with = [&](const std::string& suffix) {
@@ -440,9 +440,9 @@ int report_scene(const run_options& options)
     bool pdf = ends_with(".pdf");
     if (!path.empty() && path != "-" && !pdf && !ends_with(".tex"))
         throw usage_error("`report -o` takes a file ending in .tex or .pdf, not `" + path + "`");
-    lagrange::source_text source = read_scene(options.scene_path);
+    lagrange::source_text source = read_scene(options.scene_path, budget.max_seconds);
     lagrange::model scene = load_scene(source, options.values, options.initial);
-    lagrange::analysis result = analyze_wanted(scene, options.want, lagrange::budget_limits{});
+    lagrange::analysis result = analyze_wanted(scene, options.want, budget);
     lagrange::report_options report;
     // Figures go beside the .tex file, named after it (letters, digits and `-` only).
     std::size_t slash = path.rfind('/');
@@ -505,13 +505,19 @@ int run(int argc, char** argv)
     app.add_flag("--timings", options.timings, "show which stages ran and how long each took");
     app.add_option("--sweep", options.sweeps,
                    "numeric modes over a grid, streamed: name=from..to:count[:log] (repeatable)");
-    app.add_option("--max-terms", options.budget.max_terms,
-                   "size budget: most terms in any expression of a symbolic stage")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40))
-        ->capture_default_str();
-    app.add_option("--max-seconds", options.budget.max_seconds, "time budget of each symbolic stage, in seconds")
-        ->check(finite_number & CLI::Range(1e-3, 1e7))
-        ->capture_default_str();
+    // Every command honours the budgets: the options exist on each, bound to one budget.
+    auto add_budget_options = [&](CLI::App* command) {
+        command
+            ->add_option("--max-terms", options.budget.max_terms,
+                         "size budget: most terms in any expression of a symbolic stage")
+            ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40))
+            ->capture_default_str();
+        command
+            ->add_option("--max-seconds", options.budget.max_seconds, "time budget of each symbolic stage, in seconds")
+            ->check(finite_number & CLI::Range(1e-3, 1e7))
+            ->capture_default_str();
+    };
+    add_budget_options(&app);
 
     std::string check_path;
     CLI::App* check = app.add_subcommand("check", "parse and validate a scene only");
@@ -603,6 +609,9 @@ int run(int argc, char** argv)
     ensemble->add_flag("--interpret", ensemble_options.interpret,
                        "evaluate the equations with the interpreter (default: machine code by the system's C compiler)");
 
+    for (CLI::App* command : {report, simulate, workprecision, response, ensemble})
+        add_budget_options(command);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -613,15 +622,15 @@ int run(int argc, char** argv)
     if (check->parsed())
         return check_scene(check_path);
     if (report->parsed())
-        return report_scene(report_options);
+        return report_scene(report_options, options.budget);
     if (simulate->parsed())
         return motion_command(simulate_options, lagrange::product::simulation, options.budget);
     if (workprecision->parsed())
         return motion_command(workprecision_options, lagrange::product::workprecision, options.budget);
     if (response->parsed())
-        return response_command(response_options);
+        return response_command(response_options, options.budget);
     if (ensemble->parsed())
-        return ensemble_command(ensemble_options);
+        return ensemble_command(ensemble_options, options.budget);
     if (options.scene_path.empty()) {
         std::cerr << app.help();
         return exit_bad_input;

@@ -3,6 +3,7 @@
  *  The command line's small things a user notices: --help lists the products, --plot
  *  draws a panel per coordinate, unwritable outputs fail alike, and progress shows on a
  *  terminal and never in piped output. */
+#include "helpers/chain_scene.h"
 #include "helpers/cli_runner.h"
 
 #include "core/model.h"
@@ -17,6 +18,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fstream>
+#include <iterator>
 #include <string>
 
 using namespace lagrange_test;
@@ -267,4 +270,30 @@ TEST_CASE("cli: --initial sets the initial values as an initial line does, error
     cli_result not_values = run_cli("simulate " + scene + " --until 0.5 --initial \"theta=0.1 simulate until 3\"");
     CHECK(not_values.exit_code == 2);
     CHECK(not_values.err.rfind("--initial:1:", 0) == 0);
+}
+
+TEST_CASE("cli: every command takes and honours --max-terms and --max-seconds", "[cli][budget]")
+{
+    // The 10-link chain's characteristic polynomial takes far more than a second.
+    // Past the budget, a stage stops at its next check (a note in the output, exit 0 when
+    // other products remain, as in a report) or, inside one GiNaC call, by the watchdog
+    // (exit 1): which comes first depends on where the time runs out. Either way the run
+    // ends near the budget and says why.
+    const std::string chain = temporary_file("chain10.lag", chain_scene(10));
+    const std::string tex = temporary_file("chain.tex", "");
+    for (const bool report : {true, false}) {
+        const std::string command = report ? "report " + chain + " -o " + tex : chain + " --want characteristic";
+        cli_result r = run_cli(command + " --max-terms 1000000000 --max-seconds 1", "", 30);
+        CHECK(r.seconds < 8);
+        std::ifstream written(tex);
+        std::string said = r.out + r.err + (report ? std::string(std::istreambuf_iterator<char>(written), {}) : "");
+        CHECK((r.exit_code == 0 || r.exit_code == 1));
+        CHECK(said.find("exceeded its time budget of 1 s") != std::string::npos);
+    }
+    const std::string oscillator = std::string(LAGRANGE_SOURCE_DIR) + "/examples/damped_driven_oscillator.lag";
+    for (const std::string& command : {"simulate " + oscillator + " --until 1",
+                                       "workprecision " + oscillator + " --until 1",
+                                       "response " + oscillator + " --input u --output x",
+                                       "ensemble " + oscillator + " --grid \"x=0..1:2\" --until 1"})
+        CHECK(run_cli(command + " --max-terms 100000 --max-seconds 20", "", 60).exit_code == 0);
 }
