@@ -283,6 +283,7 @@ struct ensemble_options {
     std::uint64_t seed = 1;
     bool resume = false;
     bool interpret = false;
+    double mpi_timeout = lagrange::ensemble_run_options{}.silence_seconds;
     std::vector<std::string> values;
     std::vector<std::string> initial; ///< --initial, applied in order
 };
@@ -343,6 +344,7 @@ int ensemble_command(const ensemble_options& options, const lagrange::budget_lim
 
     lagrange::ensemble_run_options run;
     run.threads = options.threads;
+    run.silence_seconds = options.mpi_timeout;
     run.progress = ensemble_progress();
     std::ofstream file;                              // CSV: in place, for --resume
     std::unique_ptr<lagrange::output_file> whole_file; // JSON: replaced only when complete
@@ -604,6 +606,11 @@ int run(int argc, char** argv)
         ->check(CLI::Range(std::size_t{1}, std::size_t{1000000000000}));
     ensemble->add_option("--seed", ensemble_options.seed, "seed of --random (default 1)");
     ensemble->add_flag("--resume", ensemble_options.resume, "continue the CSV file of an interrupted run (-o FILE.csv)");
+    ensemble
+        ->add_option("--mpi-timeout", ensemble_options.mpi_timeout,
+                     "under MPI: seconds a process may send nothing before the run ends, naming it")
+        ->check(finite_number & CLI::Range(1.0, 1e6))
+        ->capture_default_str();
     ensemble->add_option("--values", ensemble_options.values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
     ensemble->add_option("--initial", ensemble_options.initial, initial_help);
     ensemble->add_flag("--interpret", ensemble_options.interpret,

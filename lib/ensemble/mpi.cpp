@@ -9,6 +9,7 @@
 #include "ensemble/run.h"
 
 #include "ensemble/scheduler.h"
+#include "numeric/values.h"
 
 #include <mpi.h>
 
@@ -25,9 +26,24 @@ namespace {
 constexpr int tag_request = 1; ///< worker → 0: the worker's signature; wants one chunk
 constexpr int tag_chunk = 2;   ///< 0 → worker: {first, count}; count 0: no more
 constexpr int tag_result = 3;  ///< worker → 0: header then rows (doubles)
+constexpr int tag_alive = 4;   ///< worker → 0, each second: still there (no data)
 constexpr std::size_t header_size = 9;
 
 void pause() { std::this_thread::sleep_for(std::chrono::microseconds(200)); }
+
+using clock_type = std::chrono::steady_clock;
+
+double seconds_since(clock_type::time_point then)
+{
+    return std::chrono::duration<double>(clock_type::now() - then).count();
+}
+
+/// The error for a process silent for longer than `limit` seconds (--mpi-timeout).
+computation_error silent_rank(int rank, double limit)
+{
+    return computation_error("MPI rank " + std::to_string(rank) + " has sent nothing for more than " +
+                             message_number(limit) + " s (stopped, or its node froze): the run is ended");
+}
 
 double index_number(std::size_t index) { return index == ensemble_summary::none ? -1.0 : static_cast<double>(index); }
 std::size_t number_index(double x) { return x < 0 ? ensemble_summary::none : static_cast<std::size_t>(x); }
@@ -60,7 +76,8 @@ ensemble_chunk_result decode(const std::vector<double>& message)
 }
 
 /// Rank 0: its own threads compute through the scheduler; its main thread serves the others.
-void serve(const ensemble_problem& problem, ensemble_scheduler& scheduler, int ranks, std::size_t threads)
+void serve(const ensemble_problem& problem, ensemble_scheduler& scheduler, int ranks, std::size_t threads,
+           double silence_seconds)
 {
     // Rank 0's main thread serves; its pool may be smaller than asked (start_threads).
     std::vector<std::thread> pool = start_threads(threads, [&] { compute_until_done(problem, scheduler); });
@@ -68,12 +85,19 @@ void serve(const ensemble_problem& problem, ensemble_scheduler& scheduler, int r
     std::deque<int> waiting; // ranks whose request is not answered yet
     int stopped = 0;
     std::vector<double> message;
+    std::vector<clock_type::time_point> heard(static_cast<std::size_t>(ranks), clock_type::now());
+    std::vector<bool> released(static_cast<std::size_t>(ranks), false); // told "no more"
     while (!(scheduler.finished() && stopped == ranks - 1)) {
         bool progressed = false;
         int flag = 0;
         MPI_Status status;
         MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
-        if (flag && status.MPI_TAG == tag_request) {
+        if (flag)
+            heard[static_cast<std::size_t>(status.MPI_SOURCE)] = clock_type::now();
+        if (flag && status.MPI_TAG == tag_alive) {
+            MPI_Recv(nullptr, 0, MPI_BYTE, status.MPI_SOURCE, tag_alive, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            progressed = true;
+        } else if (flag && status.MPI_TAG == tag_request) {
             unsigned long long theirs = 0;
             MPI_Recv(&theirs, 1, MPI_UNSIGNED_LONG_LONG, status.MPI_SOURCE, tag_request, MPI_COMM_WORLD,
                      MPI_STATUS_IGNORE);
@@ -104,10 +128,20 @@ void serve(const ensemble_problem& problem, ensemble_scheduler& scheduler, int r
                 reply[1] = chunk.count;
             } else {
                 ++stopped;
+                released[static_cast<std::size_t>(waiting.front())] = true;
             }
             MPI_Send(reply, 2, MPI_UNSIGNED_LONG_LONG, waiting.front(), tag_chunk, MPI_COMM_WORLD);
             waiting.pop_front();
             progressed = true;
+        }
+        for (int rank = 1; rank < ranks; ++rank) {
+            const double silent = seconds_since(heard[static_cast<std::size_t>(rank)]);
+            if (!released[static_cast<std::size_t>(rank)] && silent > silence_seconds) {
+                scheduler.abort(std::make_exception_ptr(silent_rank(rank, silence_seconds)));
+                for (std::thread& t : pool)
+                    t.join();
+                throw silent_rank(rank, silence_seconds);
+            }
         }
         if (!progressed)
             pause();
@@ -117,7 +151,7 @@ void serve(const ensemble_problem& problem, ensemble_scheduler& scheduler, int r
 }
 
 /// Ranks 1 …: ask rank 0 for chunks, compute them with `threads` threads, send the rows back.
-void work(const ensemble_problem& problem, std::size_t threads)
+void work(const ensemble_problem& problem, std::size_t threads, double silence_seconds)
 {
     std::mutex mutex;
     std::condition_variable changed;
@@ -152,8 +186,19 @@ void work(const ensemble_problem& problem, std::size_t threads)
         throw computation_error("no computing thread could be started on this rank (the system refused them)");
     const unsigned long long signature = problem.signature();
     bool asked = false, done = false;
+    clock_type::time_point said = clock_type::now();  // the last message to rank 0
+    clock_type::time_point heard = clock_type::now(); // the last reply from rank 0
     while (!done) {
         bool progressed = false;
+        if (seconds_since(said) > 1) {
+            MPI_Send(nullptr, 0, MPI_BYTE, 0, tag_alive, MPI_COMM_WORLD);
+            said = clock_type::now();
+        }
+        if (asked && seconds_since(heard) > silence_seconds) {
+            std::lock_guard<std::mutex> lock(mutex);
+            error = std::make_exception_ptr(silent_rank(0, silence_seconds));
+            break; // the pool is stopped below, and the error rethrown
+        }
         std::deque<ensemble_chunk_result> sending;
         {
             std::lock_guard<std::mutex> lock(mutex);
@@ -163,6 +208,7 @@ void work(const ensemble_problem& problem, std::size_t threads)
             if (!stopped && !asked && queue.size() < threads) {
                 MPI_Send(&signature, 1, MPI_UNSIGNED_LONG_LONG, 0, tag_request, MPI_COMM_WORLD);
                 asked = true;
+                said = heard = clock_type::now();
             }
         }
         if (asked) {
@@ -171,6 +217,7 @@ void work(const ensemble_problem& problem, std::size_t threads)
             if (flag) {
                 unsigned long long reply[2];
                 MPI_Recv(reply, 2, MPI_UNSIGNED_LONG_LONG, 0, tag_chunk, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+                heard = clock_type::now();
                 std::lock_guard<std::mutex> lock(mutex);
                 if (reply[1] == 0)
                     stopped = true;
@@ -184,6 +231,7 @@ void work(const ensemble_problem& problem, std::size_t threads)
         for (const ensemble_chunk_result& r : sending) {
             std::vector<double> message = encode(r);
             MPI_Send(message.data(), static_cast<int>(message.size()), MPI_DOUBLE, 0, tag_result, MPI_COMM_WORLD);
+            said = clock_type::now();
             progressed = true;
         }
         {
@@ -223,11 +271,11 @@ ensemble_summary run_ensemble_distributed(const ensemble_problem& problem, const
                                          threads * static_cast<std::size_t>(ranks));
             if (options.first >= problem.points() && sink.begin)
                 sink.begin();
-            serve(problem, scheduler, ranks, threads);
+            serve(problem, scheduler, ranks, threads, options.silence_seconds);
             scheduler.rethrow();
             summary = scheduler.summary();
         } else {
-            work(problem, threads);
+            work(problem, threads, options.silence_seconds);
             summary.root = false;
         }
     } catch (const std::exception& e) {

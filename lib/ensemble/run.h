@@ -45,6 +45,9 @@ struct ensemble_sink {
 struct ensemble_run_options {
     std::size_t threads = 0;       ///< per process; 0: the cores divided among the processes on this machine
     std::size_t first = 0;         ///< start at this point (--resume)
+    /// Under MPI: a process that sends nothing for this long (stopped, or on a frozen node)
+    /// ends the run with a message that names it; every process sends a sign of life each second.
+    double silence_seconds = 60;
     /// Called on the root now and then with the points written so far (of `first`…) and the total.
     std::function<void(std::size_t done, std::size_t total)> progress;
 };
