@@ -6,6 +6,7 @@
 #include "engine/readiness.h"
 #include "ensemble/settings.h"
 #include "output/document.h"
+#include "output/format.h"
 #include "output/ensemble_output.h"
 #include "output/report.h"
 #include "output/response_output.h"
@@ -622,7 +623,12 @@ int run(int argc, char** argv)
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
-        int code = app.exit(error);
+        // CLI11 quotes the offending argument: printed through printable(), so that a control
+        // sequence typed into an option does not reach the terminal.
+        std::ostringstream out, err;
+        int code = app.exit(error, out, err);
+        std::cout << lagrange::printable(out.str());
+        std::cerr << lagrange::printable(err.str());
         return code == 0 ? exit_ok : exit_bad_input;
     }
 
@@ -660,19 +666,19 @@ int main(int argc, char** argv)
         std::cerr << lagrange::format_error(error);
         return exit_bad_input;
     } catch (const usage_error& error) {
-        std::cerr << "lagrange: error: " << error.what() << '\n';
+        std::cerr << "lagrange: error: " << lagrange::printable(error.what()) << '\n';
         return exit_bad_input;
     } catch (const lagrange::file_error& error) {
-        std::cerr << "lagrange: error: " << error.what() << '\n';
+        std::cerr << "lagrange: error: " << lagrange::printable(error.what()) << '\n';
         return exit_bad_input;
     } catch (const lagrange::computation_error& error) {
-        std::cerr << "lagrange: error: " << error.what() << '\n';
+        std::cerr << "lagrange: error: " << lagrange::printable(error.what()) << '\n';
         return exit_failed;
     } catch (const std::bad_alloc&) {
         std::cerr << "lagrange: error: out of memory\n";
         return exit_failed;
     } catch (const std::exception& error) {
-        std::cerr << "lagrange: error: the computation failed (" << error.what() << ")\n";
+        std::cerr << "lagrange: error: the computation failed (" << lagrange::printable(error.what()) << ")\n";
         return exit_failed;
     }
 }

@@ -16,4 +16,23 @@ std::string complex_number(std::complex<double> z, const std::function<std::stri
     return real + (z.imag() < 0 ? " - " : " + ") + number(std::abs(z.imag())) + unit;
 }
 
+std::string printable(const std::string& text)
+{
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        const unsigned char next = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0;
+        if (c == 0xC2 && next >= 0x80 && next <= 0x9F) { // a C1 control, two bytes in UTF-8
+            out += '?';
+            ++i;
+        } else if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7F) {
+            out += '?';
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    return out;
+}
+
 } // namespace lagrange

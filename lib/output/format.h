@@ -16,4 +16,9 @@ namespace lagrange {
 std::string complex_number(std::complex<double> z, const std::function<std::string(double)>& number,
                            const std::string& unit);
 
+/// `text` safe to print on a terminal: C0 control characters other than newline and tab,
+/// DEL and C1 ones (U+0080 … U+009F: CSI, OSC), on which a terminal acts, each become `?`.
+/// For messages that quote what the user typed (an option's value, a file's name).
+std::string printable(const std::string& text);
+
 } // namespace lagrange
