@@ -482,7 +482,8 @@ const CLI::Validator positive_number(
     [](std::string& text) {
         char* end = nullptr;
         double value = std::strtod(text.c_str(), &end);
-        return std::isfinite(value) && value > 0 ? std::string() : "must be a positive number, not `" + text + "`";
+        return std::isfinite(value) && value > 0 ? std::string()
+                                                  : "must be a positive, finite number, not `" + text + "`";
     },
     "POSITIVE");
 

@@ -339,7 +339,7 @@ TEST_CASE("ensemble cli: threads the system refuses make a smaller pool, not an 
 }
 #endif
 
-TEST_CASE("ensemble cli: a full disc stops the run at once; JSON is replaced only whole", "[ensemble][cli]")
+TEST_CASE("ensemble cli: a full disc stops the run at once, and JSON is replaced only whole", "[ensemble][cli]")
 {
     // /dev/full fails every write with ENOSPC, as a full disc does.
     const std::string probe = temporary_file("probe.txt", "");
