@@ -6,12 +6,14 @@
 #include "engine/readiness.h"
 #include "ensemble/settings.h"
 #include "output/document.h"
+#include "output/export_code.h"
 #include "output/format.h"
 #include "output/ensemble_output.h"
 #include "output/report.h"
 #include "output/response_output.h"
 #include "output/simulation_output.h"
 #include "output/sweep_output.h"
+#include "numeric/exported_system.h"
 #include "numeric/values.h"
 #include "scene/lower.h"
 #include "system/files.h"
@@ -420,6 +422,37 @@ int ensemble_command(const ensemble_options& options, const lagrange::budget_lim
     return exit_ok;
 }
 
+struct export_options {
+    std::string scene_path;
+    std::string target;
+    std::string folder = ".";
+    std::string name;
+    std::vector<std::string> values;
+};
+
+/// `lagrange export SCENE --to c|python|octave [-o DIR] [--name NAME]`: the equations of
+/// motion as source code, written into DIR with nothing half-written.
+int export_command(const export_options& options, const lagrange::budget_limits& budget)
+{
+    const std::string name = options.name.empty() ? lagrange::default_export_name(options.scene_path) : options.name;
+    if (!lagrange::valid_export_name(name))
+        throw usage_error("--name " + options.name + ": the exported functions' name must be an identifier (letters, "
+                          "digits and `_`, not starting with a digit) and no keyword of C, Python or Octave");
+    lagrange::model scene = load_scene(options.scene_path, options.values, {}, budget.max_seconds);
+    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::equations}, budget);
+    const lagrange::exported_system system = lagrange::export_system(scene, *result.equations);
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const lagrange::exported_file& file :
+         lagrange::export_code(scene, system, *lagrange::export_target_named(options.target), name,
+                               LAGRANGE_VERSION))
+        files.emplace_back(file.name, file.text);
+    lagrange::write_files(options.folder, files);
+    for (const auto& file : files)
+        std::cout << options.folder << (options.folder.back() == '/' ? "" : "/") << file.first << '\n';
+    lagrange::finish_standard_output();
+    return exit_ok;
+}
+
 int check_scene(const std::string& path)
 {
     lagrange::source_text source = read_scene(path);
@@ -585,6 +618,20 @@ int run(int argc, char** argv)
     response->add_option("--plot", response_options.plot,
                          "draw the Bode diagram with gnuplot: .svg, .png or .pdf, by the extension");
 
+    export_options export_options;
+    CLI::App* exporter =
+        app.add_subcommand("export", "the equations of motion as C, Python or MATLAB/Octave code (docs/export.md)");
+    exporter->add_option("SCENE", export_options.scene_path, "the scene file (`-` for standard input)")->required();
+    exporter->add_option("--to", export_options.target, "c, python or octave")
+        ->required()
+        ->check(CLI::IsMember({"c", "python", "octave"}));
+    exporter->add_option("-o,--output", export_options.folder, "the folder to write into (made if missing)")
+        ->capture_default_str();
+    exporter->add_option("--name", export_options.name, "the name of the functions and files (default: the scene "
+                                                        "file's stem)");
+    exporter->add_option("--values", export_options.values,
+                         "a parameter point such as a=1,b=2.5: the defaults of the parameters (later ones win)");
+
     ensemble_options ensemble_options;
     CLI::App* ensemble = app.add_subcommand(
         "ensemble", "many runs at once over a grid of initial values and parameters, on all cores (and MPI)");
@@ -618,7 +665,7 @@ int run(int argc, char** argv)
     ensemble->add_flag("--interpret", ensemble_options.interpret,
                        "evaluate the equations with the interpreter (default: machine code by the system's C compiler)");
 
-    for (CLI::App* command : {report, simulate, workprecision, response, ensemble})
+    for (CLI::App* command : {report, simulate, workprecision, response, ensemble, exporter})
         add_budget_options(command);
 
     try {
@@ -645,6 +692,8 @@ int run(int argc, char** argv)
         return response_command(response_options, options.budget);
     if (ensemble->parsed())
         return ensemble_command(ensemble_options, options.budget);
+    if (exporter->parsed())
+        return export_command(export_options, options.budget);
     if (options.scene_path.empty()) {
         std::cerr << app.help();
         return exit_bad_input;

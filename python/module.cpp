@@ -7,7 +7,9 @@
 #include "core/errors.h"
 #include "core/model.h"
 #include "engine/analysis.h"
+#include "numeric/exported_system.h"
 #include "output/document.h"
+#include "output/export_code.h"
 #include "scene/lower.h"
 #include "scene/source.h"
 #include "system/files.h"
@@ -22,6 +24,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -142,13 +145,12 @@ std::vector<std::string> fields_of(const std::string& in)
     return fields;
 }
 
-/// The child's message: the document, or the library error it met, as fields.
-std::string outcome_of(const lagrange::model& loaded, const run_request& request, const std::string& format,
-                       bool timings)
+/// The child's message: what `work` returned, or the library error it met, as fields.
+std::string outcome_of(const std::function<std::string()>& work)
 {
     std::string out;
     try {
-        std::string document = run(loaded, request, format, timings);
+        std::string document = work();
         put_field(out, "document");
         put_field(out, document);
     } catch (const lagrange::scene_error& error) {
@@ -196,13 +198,11 @@ void end_child(pid_t child)
     ::waitpid(child, nullptr, 0);
 }
 
-/// Runs the engine in a child process and returns the document; raises the package's
-/// exception for a library error, KeyboardInterrupt (or what a signal handler raises)
-/// when Python has a signal pending. Called with the GIL held.
-std::string run_in_child(const lagrange::model& loaded, const run_request& request, const std::string& format,
-                         bool timings)
+/// Runs `work` (the engine) in a child process and returns what it returned; raises the
+/// package's exception for a library error, KeyboardInterrupt (or what a signal handler
+/// raises) when Python has a signal pending. Called with the GIL held.
+std::string run_in_child(const std::function<std::string()>& work)
 {
-    lagrange::require_document_format(format); // ValueError (pybind11), before the fork
     int result_pipe[2];
     int error_pipe[2];
     if (::pipe2(result_pipe, O_CLOEXEC) != 0)
@@ -218,7 +218,7 @@ std::string run_in_child(const lagrange::model& loaded, const run_request& reque
         ::dup2(error_pipe[1], STDERR_FILENO);
         lagrange::install_signal_cleanup();
         lagrange::start_budget_watchdog("", watchdog_exit, lagrange::clean_up_registered);
-        write_all(result_pipe[1], outcome_of(loaded, request, format, timings));
+        write_all(result_pipe[1], outcome_of(work));
         ::_exit(0);
     }
     ::close(result_pipe[1]);
@@ -335,6 +335,37 @@ PYBIND11_MODULE(_lagrange, m)
         .def_property_readonly("title", [](const lagrange::model& s) { return s.title; })
         .def_property_readonly("coordinates", [](const lagrange::model& s) { return lagrange::coordinate_names(s); })
         .def_property_readonly("parameters", [](const lagrange::model& s) { return lagrange::parameter_names(s); })
+        .def(
+            "export_code",
+            [](const lagrange::model& scene, const std::string& target, const std::string& folder,
+               const std::string& name, const std::vector<std::string>& values) {
+                const std::optional<lagrange::export_target> chosen = lagrange::export_target_named(target);
+                if (!chosen)
+                    throw py::value_error("target must be \"c\", \"python\" or \"octave\", not \"" + target + "\"");
+                if (!lagrange::valid_export_name(name))
+                    throw py::value_error("name must be an identifier that is no keyword of C, Python or Octave, "
+                                          "not \"" + name + "\"");
+                return run_in_child([&] {
+                    lagrange::model copy = scene;
+                    if (!values.empty())
+                        copy.values.clear();
+                    for (const std::string& v : values)
+                        lagrange::add_values(copy, v, "values=");
+                    lagrange::analysis result = lagrange::analyze(copy, {lagrange::product::equations});
+                    std::vector<std::pair<std::string, std::string>> files;
+                    std::string written;
+                    for (const lagrange::exported_file& file :
+                         lagrange::export_code(copy, lagrange::export_system(copy, *result.equations), *chosen, name,
+                                               LAGRANGE_VERSION_STRING)) {
+                        files.emplace_back(file.name, file.text);
+                        written += file.name + "\n";
+                    }
+                    lagrange::write_files(folder, files);
+                    return written;
+                });
+            },
+            py::arg("target"), py::arg("folder"), py::arg("name"), py::arg("values") = std::vector<std::string>{},
+            "Writes the equations of motion as C, Python or Octave code into `folder`; returns the file names.")
         .def_property_readonly("warnings",
                                [](const lagrange::model& s) {
                                    std::vector<std::string> texts;
@@ -350,7 +381,8 @@ PYBIND11_MODULE(_lagrange, m)
                bool estimate_error, bool native, std::size_t max_terms, double max_seconds, bool timings) {
                 run_request request{want,      values,         initial, until,     method,
                                     tolerance, estimate_error, native,  max_terms, max_seconds};
-                return run_in_child(scene, request, format, timings);
+                lagrange::require_document_format(format); // ValueError (pybind11), before the fork
+                return run_in_child([&] { return run(scene, request, format, timings); });
             },
             py::arg("format"), py::arg("want") = std::vector<std::string>{},
             py::arg("values") = std::vector<std::string>{}, py::arg("initial") = std::vector<std::string>{},
@@ -388,6 +420,9 @@ PYBIND11_MODULE(_lagrange, m)
         return pthread_atfork([] { engine.lock(); }, [] { engine.unlock(); }, [] { engine.unlock(); }) == 0;
     }();
     (void)at_fork;
+
+    m.def("default_export_name", &lagrange::default_export_name, py::arg("scene_file"),
+          "The default name of exported code: the scene file's stem made an identifier.");
 
     m.def("products", [] {
         std::vector<std::string> names;

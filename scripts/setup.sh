@@ -3,6 +3,7 @@
 # Installs what is missing (Debian packages, as root), then configures and builds
 # lagrange in Release mode in ./build. Used by example.sh and test.sh.
 #   LAGRANGE_WITH_LATEX=1  also installs pdflatex (the tests compile LaTeX output)
+#   LAGRANGE_WITH_EXPORT_TOOLS=1  also installs SciPy and Octave (the tests run exported code)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,6 +23,11 @@ packages+=(help2man groff-base)
 packages+=(libopenmpi-dev openmpi-bin)
 if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then
   packages+=(texlive-latex-base)
+fi
+# The tests of `lagrange export` run the exported code: Python with SciPy's solve_ivp, and
+# Octave's ode45 (octave-cli).
+if [ "${LAGRANGE_WITH_EXPORT_TOOLS:-0}" = 1 ]; then
+  packages+=(python3-scipy octave)
 fi
 # fuzz/run.sh: clang and its libFuzzer/sanitizer runtimes; bench/run.sh: GNU time (peak memory).
 if [ "${LAGRANGE_WITH_FUZZ:-0}" = 1 ]; then

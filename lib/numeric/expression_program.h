@@ -63,6 +63,10 @@ public:
     expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols);
 
     std::size_t output_count() const { return outputs_.size(); }
+    /// The instructions, in order (slot k is instruction k), and the slot of each output:
+    /// for writers of the program in another language (output/export_code.h).
+    const std::vector<instruction>& code() const { return code_; }
+    const std::vector<int>& output_slots() const { return outputs_; }
     std::size_t instruction_count() const { return code_.size(); }
     /// Only + − × ÷, integer powers and square roots: double-double evaluation keeps
     /// its ~32 digits and the bound scales with the unit roundoff.

@@ -217,4 +217,60 @@ void finish_standard_output()
                                 (errno ? std::string(": ") + std::strerror(errno) : std::string()));
 }
 
+void write_files(const std::string& folder, const std::vector<std::pair<std::string, std::string>>& files)
+{
+    struct stat info {};
+    const bool exists = ::stat(folder.c_str(), &info) == 0;
+    if (exists && !S_ISDIR(info.st_mode))
+        throw file_error("cannot write into " + quoted(folder) + ": it is not a folder");
+    // The folders above a missing one are made first (as mkdir -p); the last is made whole below.
+    for (std::size_t slash = folder.find('/', 1); !exists && slash != std::string::npos;
+         slash = folder.find('/', slash + 1)) {
+        const std::string above = folder.substr(0, slash);
+        if (::mkdir(above.c_str(), 0777) != 0 && errno != EEXIST)
+            throw file_error("cannot write into " + quoted(folder) + ": " + std::strerror(errno));
+    }
+    // The temporary folder: inside `folder` when it exists, beside it when it does not.
+    std::string base = folder;
+    while (base.size() > 1 && base.back() == '/')
+        base.pop_back();
+    std::string pattern = exists ? base + "/.lagrange-XXXXXX" : base + ".lagrange-XXXXXX";
+    std::vector<char> name(pattern.begin(), pattern.end());
+    name.push_back('\0');
+    if (!::mkdtemp(name.data()))
+        throw file_error("cannot write into " + quoted(folder) + ": " + std::strerror(errno));
+    const std::string temporary(name.data());
+    removed_on_signal guard(temporary, true);
+    auto remove_temporary = [&] {
+        for (const auto& file : files)
+            ::unlink((temporary + "/" + file.first).c_str());
+        ::rmdir(temporary.c_str());
+    };
+    try {
+        for (const auto& [file, text] : files) {
+            std::ofstream out(temporary + "/" + file, std::ios::binary);
+            out << text;
+            out.flush();
+            if (!out)
+                throw file_error("cannot write into " + quoted(folder) + ": " +
+                                 (errno ? std::strerror(errno) : "the disc may be full"));
+        }
+        if (!exists) {
+            const mode_t mask = ::umask(0);
+            ::umask(mask);
+            ::chmod(temporary.c_str(), 0777 & ~mask);
+            if (::rename(temporary.c_str(), folder.c_str()) != 0)
+                throw file_error("cannot create " + quoted(folder) + ": " + std::strerror(errno));
+            return;
+        }
+        for (const auto& file : files)
+            if (::rename((temporary + "/" + file.first).c_str(), (base + "/" + file.first).c_str()) != 0)
+                throw file_error("cannot write " + quoted(base + "/" + file.first) + ": " + std::strerror(errno));
+        ::rmdir(temporary.c_str());
+    } catch (...) {
+        remove_temporary();
+        throw;
+    }
+}
+
 } // namespace lagrange

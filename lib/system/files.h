@@ -12,6 +12,8 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace lagrange {
 
@@ -62,6 +64,13 @@ private:
 
 /// Writes `bytes` to `path` through an output_file.
 void write_output(const std::string& path, const std::string& bytes);
+
+/// Writes the files (name, content) into `folder`, nothing half-written: all are written
+/// into a private temporary folder first. A folder that does not exist is created by renaming
+/// the temporary one (all or nothing; the folders above it are made as by mkdir -p); in one that exists, each file replaces its namesake by
+/// a rename once every file is written. A folder that cannot be made or written throws
+/// file_error naming it and why.
+void write_files(const std::string& folder, const std::vector<std::pair<std::string, std::string>>& files);
 
 /// Makes sure file descriptors 0, 1 and 2 are open, so that no file this process opens
 /// becomes its standard output; a standard output that was closed is remembered, and

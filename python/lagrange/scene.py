@@ -410,6 +410,17 @@ class Scene:
             points.append(Result("floquet", parts, p))
         return ResultList(points)
 
+    def export(self, target, folder=".", name=None, values=None):
+        """Writes the equations of motion as code into ``folder`` (made if missing), as
+        ``lagrange export`` does: ``target`` is "c", "python" or "octave"; ``name`` defaults to
+        the scene file's stem; ``values`` give the parameters' defaults. Returns the paths
+        written. See docs/export.md."""
+        if name is None:
+            name = _lagrange.default_export_name(self.file)
+        folder = os.fspath(folder)
+        files = self._model.export_code(target, folder, name, values=_values_lines(values))
+        return [os.path.join(folder, f) for f in files.splitlines()]
+
     def verification(self, *want):
         """How each symbolic result of the products `want` (all the scene supports if none)
         was checked numerically: ``{item: "how"}``."""

@@ -26,6 +26,11 @@ bool tool_available(const std::string& tool)
         throw std::invalid_argument("unknown tool `" + tool + "`");
     if (tool == "root")
         return geteuid() == 0;
+    if (tool == "octave")
+        return lagrange::program_available("octave-cli");
+    if (tool == "scipy") // Debian's python3-scipy, for the interpreter the Python tests use
+        return access("/usr/bin/python3", X_OK) == 0 &&
+               std::system("/usr/bin/python3 -c 'import scipy.integrate' >/dev/null 2>&1") == 0;
     const std::string program = tool == "cc" ? configured_compiler() : tool;
     if (program.find('/') != std::string::npos)
         return access(program.c_str(), X_OK) == 0;

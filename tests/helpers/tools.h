@@ -13,11 +13,12 @@
 namespace lagrange_test {
 
 /// The tools a test can require, by tag name.
-inline constexpr const char* known_tools[] = {"cc", "gnuplot", "pdflatex", "root"};
+inline constexpr const char* known_tools[] = {"cc", "gnuplot", "pdflatex", "root", "octave", "scipy"};
 
 /// Whether `tool` is installed: for "cc" the compiler the engine uses ($LAGRANGE_CC, else
-/// `cc`), for "root" whether the tests run as root (owners and device nodes), for the
-/// others the program of that name on $PATH. Throws std::invalid_argument
+/// `cc`), for "root" whether the tests run as root (owners and device nodes), for "octave"
+/// octave-cli, for "scipy" whether /usr/bin/python3 imports scipy.integrate, for the others
+/// the program of that name on $PATH. Throws std::invalid_argument
 /// for a name that is not in known_tools.
 bool tool_available(const std::string& tool);
 

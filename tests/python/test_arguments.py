@@ -109,3 +109,22 @@ def test_a_likely_slip_is_a_scene_warning():
         lagrange.Scene.from_text("parameters m k\ncoordinates x\nT = 1/2*m*x^2\nV = 1/2*k*x^2\n", name="slip.lag")
     assert len(caught) == 1
     assert str(caught[0].message).startswith("slip.lag:3:1: warning: `T` has no velocities")
+
+
+def test_export_writes_the_python_module_and_refuses_a_bad_target(example, tmp_path):
+    """The exported module's right-hand side equals the engine's trajectory's first step: here
+    its acceleration at rest against M q'' = F solved by hand (numpy) from the same module."""
+    import importlib.util
+    import numpy
+    paths = example("double_pendulum.lag").export("python", tmp_path / "out")
+    assert [os.path.basename(p) for p in paths] == ["double_pendulum.py"]
+    spec = importlib.util.spec_from_file_location("double_pendulum", paths[0])
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    x = numpy.array([0.1, -0.2, 0.3, 0.0])
+    qdd = numpy.linalg.solve(module.mass_matrix(0.0, x), module.forcing(0.0, x))
+    assert numpy.allclose(module.rhs(0.0, x), numpy.concatenate([x[2:], qdd]), rtol=1e-14, atol=0)
+    assert module.PARAMETERS == ["M", "m", "l", "g"]
+    with pytest.raises(ValueError, match="target must be"):
+        example("double_pendulum.lag").export("fortran", tmp_path / "bad")
+    assert not (tmp_path / "bad").exists()

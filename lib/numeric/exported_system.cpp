@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file exported_system.cpp
+ *  The programs behind exported code (see exported_system.h). */
+#include "numeric/exported_system.h"
+
+#include "algebra/calculus.h"
+#include "core/errors.h"
+#include "numeric/values.h"
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace lagrange {
+
+exported_system export_system(const model& scene, const equations_of_motion& equations)
+{
+    if (equations.constraints)
+        throw computation_error("`export` does not cover constraints in this version: their multipliers make "
+                                "a differential-algebraic system (eliminate them with `want eliminated`, or "
+                                "write the scene in independent coordinates)");
+    exported_system out;
+    const std::size_t n = scene.coordinates.size();
+    if (n == 0)
+        throw computation_error("the scene has no coordinates to export");
+    out.coordinates = n;
+    std::vector<GiNaC::ex> symbols;
+    for (const coordinate& c : scene.coordinates) {
+        symbols.push_back(c.position);
+        out.state_names.push_back(c.name);
+    }
+    for (const coordinate& c : scene.coordinates) {
+        symbols.push_back(c.velocity);
+        out.state_names.push_back(c.name + "_dot");
+    }
+    symbols.push_back(scene.time);
+    for (const parameter& p : scene.parameters) {
+        symbols.push_back(p.symbol);
+        out.parameter_names.push_back(p.name);
+    }
+    for (const input_signal& u : scene.inputs) {
+        symbols.push_back(u.symbol);
+        out.input_names.push_back(u.name);
+    }
+
+    std::vector<GiNaC::ex> mass(n * n), derivatives;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            mass[i * n + j] = equations.mass(static_cast<unsigned>(std::min(i, j)), static_cast<unsigned>(std::max(i, j)));
+    for (const coordinate& c : scene.coordinates)
+        for (const GiNaC::ex& m : mass)
+            derivatives.push_back(differentiate(m, c.position));
+    for (const GiNaC::ex& f : equations.forcing)
+        for (const coordinate& c : scene.coordinates)
+            derivatives.push_back(differentiate(f, c.position));
+    for (const GiNaC::ex& f : equations.forcing)
+        for (const coordinate& c : scene.coordinates)
+            derivatives.push_back(differentiate(f, c.velocity));
+    for (const GiNaC::ex& f : equations.forcing)
+        for (const input_signal& u : scene.inputs)
+            derivatives.push_back(differentiate(f, u.symbol));
+    try {
+        out.mass = expression_program(mass, symbols);
+        std::vector<GiNaC::ex> both = mass;
+        both.insert(both.end(), equations.forcing.begin(), equations.forcing.end());
+        out.mass_and_forcing = expression_program(both, symbols);
+        out.forcing = expression_program(equations.forcing, symbols);
+        out.energy = expression_program({equations.energy}, symbols);
+        out.derivatives = expression_program(derivatives, symbols);
+    } catch (const std::invalid_argument& error) {
+        throw computation_error(std::string("the equations of motion cannot be exported: ") + error.what());
+    }
+
+    // Defaults: the first `values` line, where it gives a number (an expression in other
+    // parameters is evaluated with theirs).
+    out.defaults.assign(scene.parameters.size(), std::numeric_limits<double>::quiet_NaN());
+    if (!scene.values.empty()) {
+        GiNaC::exmap given = value_map(scene, scene.values.front());
+        for (std::size_t k = 0; k < scene.parameters.size(); ++k) {
+            const GiNaC::ex& symbol = scene.parameters[k].symbol;
+            auto found = given.find(symbol);
+            if (found == given.end())
+                continue;
+            GiNaC::ex value = GiNaC::evalf(found->second.subs(given).subs(given));
+            if (GiNaC::is_a<GiNaC::numeric>(value) && GiNaC::ex_to<GiNaC::numeric>(value).is_real())
+                out.defaults[k] = GiNaC::ex_to<GiNaC::numeric>(value).to_double();
+        }
+    }
+    return out;
+}
+
+} // namespace lagrange

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file exported_system.h
+ *  The equations of motion as the functions that exported code evaluates (`lagrange
+ *  export`): M(t, q, q̇, u, p) and F(t, q, q̇, u, p) of M q̈ = F, the energy function, and
+ *  the derivatives that make the Jacobians of ẋ = f(t, x, u, p), x = (q, q̇), each compiled
+ *  once into straight-line programs with their common subexpressions shared. Parameters and
+ *  inputs stay symbols: the exported functions take them as arguments. */
+#pragma once
+
+#include "core/model.h"
+#include "mechanics/equations_of_motion.h"
+#include "numeric/expression_program.h"
+
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+struct exported_system {
+    std::size_t coordinates = 0; ///< n; the state has 2n entries
+    std::vector<std::string> state_names;     ///< q₁ … qₙ, then their velocities `q_dot` [units of q, q/time]
+    std::vector<std::string> parameter_names; ///< in the scene's order
+    std::vector<std::string> input_names;     ///< in the scene's order
+    /// Each program reads the symbols (q₁ … qₙ, q̇₁ … q̇ₙ, t, p₁ … p_P, u₁ … u_m) in that order.
+    expression_program mass;        ///< M, row-major n × n [the kinetic energy's unit / (q/time)²]
+    expression_program mass_and_forcing; ///< M then F in one program (their common parts once): the right-hand side's
+    expression_program forcing;     ///< F (n): ∂L/∂q − (dM/dt) q̇ − ∂p/∂t + Q
+    expression_program energy;      ///< h = Σ q̇ ∂L/∂q̇ − L (1) [energy]
+    /// ∂M/∂q_k for each k (n³, k slowest), ∂F/∂q (n², row i = F_i), ∂F/∂q̇ (n²), ∂F/∂u (n·m)
+    expression_program derivatives;
+    std::vector<double> defaults; ///< each parameter's value in the scene's first `values` line, NaN where none
+};
+
+/// The exported system of `scene`. Throws computation_error for what the export does not
+/// cover: constraints (their multipliers make a DAE), and expressions that cannot be compiled.
+exported_system export_system(const model& scene, const equations_of_motion& equations);
+
+} // namespace lagrange
