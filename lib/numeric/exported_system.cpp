@@ -3,6 +3,7 @@
  *  The programs behind exported code (see exported_system.h). */
 #include "numeric/exported_system.h"
 
+#include "numeric/compiled_motion.h"
 #include "algebra/calculus.h"
 #include "core/errors.h"
 #include "numeric/values.h"
@@ -43,19 +44,12 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
         out.input_names.push_back(u.name);
     }
 
-    std::vector<GiNaC::ex> mass(n * n), derivatives;
+    std::vector<GiNaC::ex> mass(n * n);
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j)
             mass[i * n + j] = equations.mass(static_cast<unsigned>(std::min(i, j)), static_cast<unsigned>(std::max(i, j)));
-    for (const coordinate& c : scene.coordinates)
-        for (const GiNaC::ex& m : mass)
-            derivatives.push_back(differentiate(m, c.position));
-    for (const GiNaC::ex& f : equations.forcing)
-        for (const coordinate& c : scene.coordinates)
-            derivatives.push_back(differentiate(f, c.position));
-    for (const GiNaC::ex& f : equations.forcing)
-        for (const coordinate& c : scene.coordinates)
-            derivatives.push_back(differentiate(f, c.velocity));
+    // The simulation's Jacobian parts, with the parameters left symbols, then ∂F/∂u.
+    std::vector<GiNaC::ex> derivatives = motion_jacobian(scene, {mass, equations.forcing});
     for (const GiNaC::ex& f : equations.forcing)
         for (const input_signal& u : scene.inputs)
             derivatives.push_back(differentiate(f, u.symbol));

@@ -86,6 +86,26 @@ naming name_symbols(const exported_system& system, dialect d)
     return out;
 }
 
+/// Where exported function arguments hold program symbol k: the array (`x`, `p` or `u`; `t`
+/// for time) and the 0-based index in it.
+struct argument_place {
+    char array;
+    int index;
+};
+
+argument_place place_of(int k, const exported_system& system)
+{
+    const int n = static_cast<int>(system.coordinates);
+    const int parameters = static_cast<int>(system.parameter_names.size());
+    if (k < 2 * n)
+        return {'x', k};
+    if (k == 2 * n)
+        return {'t', 0};
+    if (k <= 2 * n + parameters)
+        return {'p', k - 2 * n - 1};
+    return {'u', k - 2 * n - 1 - parameters};
+}
+
 /// One program as straight-line code: `lines` gets an assignment per instruction that is
 /// neither a symbol nor a constant (those are written where they are used); returns the text
 /// of each output. `used` gets the index of every symbol the program reads.
@@ -183,32 +203,18 @@ std::string c_body(const expression_program& program, const naming& names, const
     std::ostringstream lines;
     std::set<int> used;
     std::vector<std::string> outputs = write_program(program, dialect::c, names, "    ", lines, used);
-    const int n = static_cast<int>(system.coordinates);
-    const int parameters = static_cast<int>(system.parameter_names.size());
     std::ostringstream body;
-    bool reads_x = false, reads_p = false, reads_u = false;
+    std::set<char> read;
     for (int k : used) {
-        if (k < 2 * n) {
-            body << "    const double " << names.symbols[static_cast<std::size_t>(k)] << " = x[" << k << "];\n";
-            reads_x = true;
-        } else if (k > 2 * n && k <= 2 * n + parameters) {
-            body << "    const double " << names.symbols[static_cast<std::size_t>(k)] << " = p[" << k - 2 * n - 1
-                 << "];\n";
-            reads_p = true;
-        } else if (k > 2 * n + parameters) {
-            body << "    const double " << names.symbols[static_cast<std::size_t>(k)] << " = u["
-                 << k - 2 * n - 1 - parameters << "];\n";
-            reads_u = true;
-        }
+        const argument_place at = place_of(k, system);
+        read.insert(at.array);
+        if (at.array != 't')
+            body << "    const double " << names.symbols[static_cast<std::size_t>(k)] << " = " << at.array << "["
+                 << at.index << "];\n";
     }
-    if (!used.count(2 * n))
-        body << "    (void)t;\n";
-    if (!reads_x)
-        body << "    (void)x;\n";
-    if (!reads_p)
-        body << "    (void)p;\n";
-    if (!reads_u)
-        body << "    (void)u;\n";
+    for (char array : {'t', 'x', 'p', 'u'})
+        if (!read.count(array))
+            body << "    (void)" << array << ";\n";
     body << lines.str();
     for (std::size_t k = 0; k < outputs.size(); ++k)
         body << "    " << out << "[" << k << "] = " << outputs[k] << ";\n";
@@ -336,19 +342,14 @@ std::string python_function(const std::string& function, const std::string& doc,
     std::ostringstream lines;
     std::set<int> used;
     std::vector<std::string> outputs = write_program(program, dialect::python, names, "    ", lines, used);
-    const int n = static_cast<int>(system.coordinates);
-    const int parameters = static_cast<int>(system.parameter_names.size());
     std::ostringstream out;
     out << "def " << function << "(t, x, p=None, u=None):\n    \"\"\"" << doc << "\"\"\"\n"
         << "    t, x, p, u, shape = _arguments(t, x, p, u)\n";
     for (int k : used) {
-        const std::string& alias = names.symbols[static_cast<std::size_t>(k)];
-        if (k < 2 * n)
-            out << "    " << alias << " = x[..., " << k << "]\n";
-        else if (k > 2 * n && k <= 2 * n + parameters)
-            out << "    " << alias << " = p[..., " << k - 2 * n - 1 << "]\n";
-        else if (k > 2 * n + parameters)
-            out << "    " << alias << " = u[..., " << k - 2 * n - 1 - parameters << "]\n";
+        const argument_place at = place_of(k, system);
+        if (at.array != 't')
+            out << "    " << names.symbols[static_cast<std::size_t>(k)] << " = " << at.array << "[..., " << at.index
+                << "]\n";
     }
     out << lines.str() << "    return " << result << "(shape, ";
     for (std::size_t k = 0; k < outputs.size(); ++k)
@@ -442,21 +443,16 @@ std::string octave_function(const std::string& name, const std::string& function
     std::ostringstream lines;
     std::set<int> used;
     std::vector<std::string> outputs = write_program(program, dialect::octave, names, "  ", lines, used);
-    const int n = static_cast<int>(system.coordinates);
-    const int parameters = static_cast<int>(system.parameter_names.size());
     std::ostringstream out;
     out << "function " << result << " = " << name << "_" << function << "(t, x, p, u)\n"
         << "  % " << doc << "\n" << header
         << "  if nargin < 3 || isempty(p)\n    p = " << name << "_defaults();\n  end\n"
         << "  if nargin < 4\n    u = zeros(" << system.input_names.size() << ", 1);\n  end\n";
     for (int k : used) {
-        const std::string& alias = names.symbols[static_cast<std::size_t>(k)];
-        if (k < 2 * n)
-            out << "  " << alias << " = x(" << k + 1 << ");\n";
-        else if (k > 2 * n && k <= 2 * n + parameters)
-            out << "  " << alias << " = p(" << k - 2 * n << ");\n";
-        else if (k > 2 * n + parameters)
-            out << "  " << alias << " = u(" << k - 2 * n - parameters << ");\n";
+        const argument_place at = place_of(k, system);
+        if (at.array != 't')
+            out << "  " << names.symbols[static_cast<std::size_t>(k)] << " = " << at.array << "(" << at.index + 1
+                << ");\n";
     }
     out << lines.str() << "  " << result << " = [";
     for (std::size_t r = 0; r < rows; ++r) {
