@@ -22,6 +22,8 @@ namespace lagrange {
 struct state_space_point {
     std::vector<std::pair<std::string, double>> values; ///< the parameters given on the line
     Eigen::MatrixXd a, b;
+    /// The eigenvalues of A (Eigen's real Schur form), ascending by imaginary part, then real part.
+    std::vector<std::complex<double>> eigenvalues;
 };
 
 /// A and B at every `values` point that gives a value to each parameter they use (a point
