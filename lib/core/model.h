@@ -149,6 +149,7 @@ struct operating_point_request {
     std::vector<GiNaC::ex> inputs;                    ///< per input
     std::vector<source_location> position_where, velocity_where; ///< each entry's value (or the statement)
     source_location where;
+    std::map<int, std::string> line_texts; ///< the statement's lines, to quote in a later error
 };
 
 /// `independent q2, q4, q5'`: the independent coordinates (names without `'`) and speeds
@@ -157,6 +158,7 @@ struct independent_request {
     std::vector<std::size_t> coordinates;
     std::vector<std::size_t> speeds;
     source_location where;
+    std::string line_text; ///< the statement's line, to quote in a later error
 };
 
 /// `ratio rho = m/M`: results are also written with `numerator` replaced by rho·denominator.

@@ -97,6 +97,24 @@ matrix columns_of(const matrix& m, const std::vector<std::size_t>& columns)
     return result;
 }
 
+/// Bad input at the `independent` line, with its text.
+scene_error at_independent_line(const model& scene, const std::string& message)
+{
+    scene_error error(scene.independent->where, message);
+    error.attach_line_text(scene.independent->line_text);
+    return error;
+}
+
+/// Bad input in the `linearize about` line, with the text of the line at `where`.
+scene_error at_operating_point(const model& scene, const source_location& where, const std::string& message)
+{
+    scene_error error(where, message);
+    auto line = scene.operating_point->line_texts.find(where.line);
+    if (line != scene.operating_point->line_texts.end())
+        error.attach_line_text(line->second);
+    return error;
+}
+
 std::string names(const model& scene, const std::vector<std::size_t>& indices, const char* suffix)
 {
     std::string out;
@@ -135,9 +153,8 @@ std::vector<std::size_t> dependent_set(const model& scene, const matrix& jacobia
                                     "so no set of independent " + what + "s exists there");
         return chosen;
     }
-    const source_location& where = scene.independent->where;
     if (requested.size() != n - m)
-        throw scene_error(where, "the constraints leave " + std::to_string(n - m) + " independent " + what + "s, and " +
+        throw at_independent_line(scene, "the constraints leave " + std::to_string(n - m) + " independent " + what + "s, and " +
                                      std::to_string(requested.size()) + " are named (" +
                                      names(scene, requested, suffix) + ")");
     std::vector<std::size_t> dependent = complement(n, requested);
@@ -145,7 +162,7 @@ std::vector<std::size_t> dependent_set(const model& scene, const matrix& jacobia
     for (std::size_t k = 0; k < dependent.size(); ++k)
         block.col(static_cast<Eigen::Index>(k)) = values.col(static_cast<Eigen::Index>(dependent[k]));
     if (!invertible(block))
-        throw scene_error(where, "the independent " + std::string(what) + "s " + names(scene, requested, suffix) +
+        throw at_independent_line(scene, "the independent " + std::string(what) + "s " + names(scene, requested, suffix) +
                                      " do not span the constraints: the dependent ones, " +
                                      names(scene, dependent, suffix) +
                                      ", cannot be solved from the constraints at the operating point (their "
@@ -231,7 +248,7 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
                                     " there, not 0";
         if (!scene.operating_point)
             throw computation_error(message);
-        throw scene_error(where, message);
+        throw at_operating_point(scene, where, message);
     }
     for (std::size_t k = 0; k < m; ++k)
         if (scene.constraints[k].function.has(scene.time))
@@ -290,7 +307,7 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
         const std::size_t j = dependent_speeds[d];
         const ex value = simplified(solved_speeds(d, 0), simplify);
         if (velocity[j] && !is_zero_at(simplified(*velocity[j] - value, simplify), sample))
-            throw scene_error(located(j, true), "the operating point violates the velocity constraints: with the "
+            throw at_operating_point(scene, located(j, true), "the operating point violates the velocity constraints: with the "
                                                 "independent speeds given, `" + scene.coordinates[j].name +
                                                 "'` must be " + message_text(value) + ", not " +
                                                 message_text(*velocity[j]));

@@ -156,7 +156,9 @@ private:
                                   "`" + a.target.name + (a.velocity ? "'" : "") + "` is given twice");
             target = value;
             (a.velocity ? point.velocity_where : point.position_where)[i] = a.value->where;
+            point.line_texts[a.value->where.line] = source_.line(a.value->where.line);
         }
+        point.line_texts[s.where.line] = source_.line(s.where.line);
         scene_.operating_point = std::move(point);
     }
 
@@ -167,6 +169,7 @@ private:
             throw scene_error(s.where, "the independent coordinates are given twice");
         independent_request request;
         request.where = s.where;
+        request.line_text = source_.line(s.where.line);
         for (const assignment& a : s.assignments) {
             const std::size_t i = coordinate_named(a.target).index;
             std::vector<std::size_t>& list = a.velocity ? request.speeds : request.coordinates;
