@@ -4,9 +4,12 @@
 #include "mechanics/operating_point.h"
 
 #include "algebra/calculus.h"
+#include "algebra/exact_matrix.h"
+#include "algebra/factor.h"
 #include "algebra/sign.h"
 #include "algebra/sorted_terms.h"
 #include "core/errors.h"
+#include "core/names.h"
 #include "mechanics/constraints.h"
 
 #include <Eigen/Dense>
@@ -462,6 +465,20 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
         for (unsigned j = 0; j < free_coordinates; ++j)
             c0(i, j) = simplified(c0(i, j), simplify);
     result.configuration = c0;
+
+    // det(sI − A), cleared of denominators.
+    result.s = GiNaC::realsymbol(unused_name(scene, "s"));
+    {
+        matrix pencil(states, states);
+        for (unsigned i = 0; i < states; ++i)
+            for (unsigned j = 0; j < states; ++j)
+                pencil(i, j) = (i == j ? ex(result.s) : ex(0)) - result.a(i, j);
+        const ex fraction = fraction_free_determinant(pencil).normal().numer_denom();
+        ex polynomial = fraction.op(0);
+        if (std::optional<int> sign = sign_of(fraction.op(1)); sign && *sign < 0)
+            polynomial = -polynomial;
+        result.characteristic = factor_if_quick(polynomial);
+    }
 
     // What kind of point it is.
     bool resting = true, steady = true;

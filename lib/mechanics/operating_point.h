@@ -42,6 +42,10 @@ struct operating_linearization {
     };
     kind point_kind = kind::equilibrium;
     std::vector<std::size_t> moving;      ///< steady: the coordinates whose velocity is not 0
+    /// det(sI − A) with its denominators cleared, leading coefficient positive, factored: the
+    /// eigenvalues of A are its roots in `s` (named "s" unless the scene uses that name).
+    GiNaC::ex characteristic;
+    GiNaC::realsymbol s;
     /// steady: whether the moving coordinates enter no equation (M, f, Q, the constraints),
     /// so that A and B hold all along the motion, not at this instant only.
     bool moving_cyclic = false;

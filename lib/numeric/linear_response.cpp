@@ -93,6 +93,13 @@ std::vector<state_space_point> state_space_at_values(const model& scene, const s
                       [](const complex& x, const complex& y) {
                           return x.imag() != y.imag() ? x.imag() < y.imag() : x.real() < y.real();
                       });
+            double largest = 0, growth = -HUGE_VAL;
+            for (const complex& z : result.back().eigenvalues) {
+                largest = std::max(largest, std::abs(z));
+                growth = std::max(growth, z.real());
+            }
+            const double tolerance = 1e-9 * (1 + largest);
+            result.back().stability = growth > tolerance ? "unstable" : growth < -tolerance ? "stable" : "marginal";
         }
     }
     return result;

@@ -228,6 +228,9 @@ void write_linear_system_text(std::ostream& out, const analysis& result)
         out << "  x = (" << joined(state_names(result, how)) << "),  u = (" << joined(input_names(scene, how))
             << ")\n";
         matrix_text(out, "A", ss.a, "  ");
+        if (result.operating)
+            out << "  det(" << print_name(result.operating->s.get_name(), how) << "I − A) ∝ "
+                << print(result.operating->characteristic, how, term_order{{{result.operating->s}}}) << "\n";
         if (ss.b.cols())
             matrix_text(out, "B", ss.b, "  ");
         else
@@ -238,6 +241,13 @@ void write_linear_system_text(std::ostream& out, const analysis& result)
             if (p.b.cols())
                 numbers_text(out, "B", p.b, "    ");
             out << "    eigenvalues of A: " << eigenvalues_text(p.eigenvalues) << "\n";
+            if (!p.stability.empty())
+                out << "    " << p.stability
+                    << (p.stability == "stable"     ? ": every eigenvalue has Re s < 0"
+                        : p.stability == "unstable" ? ": an eigenvalue has Re s > 0, a mode grows"
+                                                    : ": the largest Re s is 0 (zero or imaginary eigenvalues), no "
+                                                      "mode grows exponentially")
+                    << "\n";
         }
     }
     if (result.transfer && shows(result, product::transfer)) {
@@ -322,12 +332,18 @@ void write_linear_system_json(nlohmann::ordered_json& doc, const analysis& resul
             nlohmann::ordered_json eigenvalues = nlohmann::ordered_json::array();
             for (const std::complex<double>& z : p.eigenvalues)
                 eigenvalues.push_back({z.real(), z.imag()});
-            points.push_back(
-                {{"values", values}, {"A", numbers(p.a)}, {"B", numbers(p.b)}, {"eigenvalues", eigenvalues}});
+            points.push_back({{"values", values},
+                              {"A", numbers(p.a)},
+                              {"B", numbers(p.b)},
+                              {"eigenvalues", eigenvalues},
+                              {"stability", p.stability}});
         }
         entry["numeric"] = points;
-        if (result.operating)
+        if (result.operating) {
             entry["operating_point"] = operating_point_json(scene, *result.operating);
+            entry["characteristic"] = {{"variable", result.operating->s.get_name()},
+                                       {"polynomial", print(result.operating->characteristic, how)}};
+        }
         doc["state_space"] = entry;
     }
     if (result.transfer && shows(result, product::transfer)) {

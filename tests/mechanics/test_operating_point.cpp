@@ -146,10 +146,20 @@ TEST_CASE("operating point: the rolling disc upright, against SymPy's test_rolli
             pencil(i, j) = (i == j ? GiNaC::ex(s) : GiNaC::ex(0)) - a(i, j);
     const GiNaC::ex determinant = pencil.determinant();
     CHECK(same(determinant, pow(s, 6) * (s * s + GiNaC::numeric(12, 5) * w * w - 4 * g / (5 * r))));
+    const GiNaC::ex s_of = result.operating->s;
+    CHECK(same(result.operating->characteristic,
+               pow(s_of, 6) * (5 * r * s_of * s_of + 12 * r * w * w - 4 * g)));
     REQUIRE(result.state_space_values.size() == 1);
     const auto& eigenvalues = result.state_space_values[0].eigenvalues; // at m = r = g = w = 1
     REQUIRE(eigenvalues.size() == 8);
     CHECK_THAT(eigenvalues.back().imag(), Catch::WithinRel(std::sqrt(8.0 / 5.0), 1e-12));
+    CHECK(result.state_space_values[0].stability == "marginal");
+    // Below the critical rate, w² = 1/4 < g/(3r) = 1/3: the lean grows at s = √((4 − 3)/5).
+    model slow = load(scene_file("rolling_disc.lag") + "values m = 1, r = 1, g = 1, w = 1/2\n");
+    analysis slower = analyze(slow, {product::state_space});
+    REQUIRE(slower.state_space_values.size() == 2);
+    CHECK(slower.state_space_values[1].stability == "unstable");
+    CHECK_THAT(slower.state_space_values[1].eigenvalues.back().real(), Catch::WithinRel(std::sqrt(0.2), 1e-12));
 }
 
 TEST_CASE("operating point: the independent coordinate chosen by the pivots", "[operating_point]")
