@@ -54,6 +54,22 @@ std::pair<ex, ex> primitive_ratio(const ex& numerator, const ex& denominator, co
     return {collected(top_parts.op(0), s), collected((bottom * top_parts.op(1)).expand(), s)};
 }
 
+/// H(s) = minor/determinant of one input and coordinate, made primitive (0 where the minor is).
+transfer_function transfer_entry(std::size_t input, unsigned coordinate, const ex& minor, const ex& determinant,
+                                 const GiNaC::symbol& s)
+{
+    transfer_function h;
+    h.input = input;
+    h.coordinate = coordinate;
+    if (minor.is_zero()) {
+        h.numerator = 0;
+        h.denominator = 1;
+    } else {
+        std::tie(h.numerator, h.denominator) = primitive_ratio(minor, determinant, s);
+    }
+    return h;
+}
+
 } // namespace
 
 GiNaC::matrix input_matrix(const model& scene, const std::vector<ex>& at, const simplifier& simplify)
@@ -142,17 +158,8 @@ transfer_result transfer_functions(const model& scene, const linearization_resul
             GiNaC::matrix replaced = pencil;
             for (unsigned i = 0; i < n; ++i)
                 replaced(i, coordinate) = system.input_matrix(i, static_cast<unsigned>(input));
-            const ex minor = fraction_free_determinant(replaced).normal();
-            transfer_function h;
-            h.input = input;
-            h.coordinate = coordinate;
-            if (minor.is_zero()) {
-                h.numerator = 0;
-                h.denominator = 1;
-            } else {
-                std::tie(h.numerator, h.denominator) = primitive_ratio(minor, determinant, s);
-            }
-            result.entries.push_back(h);
+            result.entries.push_back(
+                transfer_entry(input, coordinate, fraction_free_determinant(replaced).normal(), determinant, s));
         }
     return result;
 }
@@ -197,17 +204,7 @@ transfer_result operating_transfer(const model& scene, const operating_lineariza
             ex minor = 0;
             for (unsigned i = 0; i < free_coordinates; ++i)
                 minor += point.configuration(coordinate, i) * minors[i];
-            minor = minor.normal();
-            transfer_function h;
-            h.input = input;
-            h.coordinate = coordinate;
-            if (minor.is_zero()) {
-                h.numerator = 0;
-                h.denominator = 1;
-            } else {
-                std::tie(h.numerator, h.denominator) = primitive_ratio(minor, determinant, s);
-            }
-            result.entries.push_back(h);
+            result.entries.push_back(transfer_entry(input, coordinate, minor.normal(), determinant, s));
         }
     }
     return result;

@@ -202,3 +202,21 @@ TEST_CASE("operating point: errors at the statement", "[operating_point]")
     REQUIRE(count);
     CHECK_THAT(count->what(), Catch::Contains("leave 1 independent coordinate"));
 }
+
+TEST_CASE("operating point: transfer functions of the driven Cartesian pendulum", "[operating_point][transfer]")
+{
+    // A force u along q2 on the hanging bob: in the angle θ, m L² θ'' = −m g L θ + u L, and
+    // δq2 = L δθ, δq1 = 0, so H(u → q2) = L/(m L s² + m g) and H(u → q1) = 0.
+    model scene = load("parameters m L g\ncoordinates q1 q2\ninput u\npoint P mass m at (q1, q2)\n"
+                       "force on P (m*g, u)\nconstraint rod: q1^2 + q2^2 = L^2\nlinearize about q1 = L, q2 = 0\n"
+                       "want state_space, transfer\n");
+    analysis result = analyze(scene, {product::state_space, product::transfer});
+    const GiNaC::ex m = symbol_of(scene, "m"), g = symbol_of(scene, "g"), L = symbol_of(scene, "L");
+    REQUIRE(result.transfer);
+    REQUIRE(result.transfer->entries.size() == 2);
+    const GiNaC::ex s = result.transfer->s;
+    CHECK(result.transfer->entries[0].coordinate == 0);
+    CHECK(same(result.transfer->entries[0].function(), 0));
+    CHECK(same(result.transfer->entries[1].function(), L / (m * L * s * s + m * g)));
+    check_matrix(result.state_space->b, {{0}, {1 / m}});
+}
