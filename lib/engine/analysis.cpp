@@ -125,7 +125,12 @@ bool any_scene(const model&) { return true; }
 /// `equilibrium` line names a steady rate (the `steady` stage studies that motion).
 bool has_constraints(const model& scene) { return !scene.coordinates.empty() && !scene.constraints.empty(); }
 bool has_static_point(const model& scene) { return !scene.coordinates.empty() && !scene.steady; }
-bool has_steady(const model& scene) { return !scene.coordinates.empty() && scene.steady; }
+/// A steady motion on Routh's reduced system; with constraints it is an operating point of
+/// `state_space` instead.
+bool has_steady(const model& scene)
+{
+    return !scene.coordinates.empty() && scene.steady && scene.constraints.empty();
+}
 bool has_time(const model& scene) { return !scene.coordinates.empty() && mentions_time(scene); }
 /// The equilibrium's state space, where no operating point takes its place.
 bool has_equilibrium_state_space(const model& scene)

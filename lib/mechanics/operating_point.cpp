@@ -112,6 +112,8 @@ scene_error at_independent_line(const model& scene, const std::string& message)
 scene_error at_operating_point(const model& scene, const source_location& where, const std::string& message)
 {
     scene_error error(where, message);
+    if (!scene.operating_point)
+        return error;
     auto line = scene.operating_point->line_texts.find(where.line);
     if (line != scene.operating_point->line_texts.end())
         error.attach_line_text(line->second);
@@ -197,9 +199,18 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
 {
     const std::size_t n = scene.coordinates.size(), p = scene.inputs.size();
     const std::size_t m = scene.constraints.size();
-    if (!scene.operating_point && !scene.equilibrium)
+    if (!scene.operating_point && !scene.equilibrium && !scene.steady)
         throw computation_error("`state_space` of a scene with constraints needs an operating point: give it with "
                                 "`linearize about q1 = …, q1' = …` or an `equilibrium` line");
+    // Without `linearize about`: the `equilibrium` line at rest, or its steady motion (the
+    // coordinates given a rate move at it, those given no value stay free).
+    auto given_position = [&](std::size_t i) -> std::optional<ex> {
+        if (scene.operating_point)
+            return scene.operating_point->positions[i];
+        if (scene.steady)
+            return scene.steady->positions[i];
+        return (*scene.equilibrium)[i];
+    };
     operating_linearization result;
     // The point as given: positions (free where not named), velocities, inputs.
     std::vector<std::optional<ex>> velocity(n);
@@ -208,13 +219,14 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
     GiNaC::exmap at;
     for (std::size_t i = 0; i < n; ++i) {
         const coordinate& c = scene.coordinates[i];
-        std::optional<ex> value = scene.operating_point ? scene.operating_point->positions[i]
-                                                        : std::optional<ex>((*scene.equilibrium)[i]);
+        const std::optional<ex> value = given_position(i);
         result.position[i] = value ? *value : ex(c.position);
         if (value)
             at[c.position] = *value;
         if (scene.operating_point)
             velocity[i] = scene.operating_point->velocities[i];
+        else if (scene.steady)
+            velocity[i] = scene.steady->rates[i];
     }
     if (scene.operating_point)
         for (std::size_t k = 0; k < p && k < scene.operating_point->inputs.size(); ++k)

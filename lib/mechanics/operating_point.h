@@ -56,7 +56,7 @@ struct operating_linearization {
 bool linearizes_about_operating_point(const model& scene);
 
 /// A, B and the residual at the scene's `linearize about` point (else its `equilibrium`
-/// line, at rest). Throws scene_error, at the statement, when the point violates a
+/// line: at rest, or the steady motion it names). Throws scene_error, at the statement, when the point violates a
 /// constraint (with the residual) or the `independent` line does not span the constraints;
 /// computation_error when there is no point, the equations depend on t, or M with the
 /// constraints is singular there.

@@ -220,3 +220,25 @@ TEST_CASE("operating point: transfer functions of the driven Cartesian pendulum"
     CHECK(same(result.transfer->entries[1].function(), L / (m * L * s * s + m * g)));
     check_matrix(result.state_space->b, {{0}, {1 / m}});
 }
+
+TEST_CASE("operating point: a steady motion of a constrained scene is its `equilibrium` line", "[operating_point]")
+{
+    // The disc's upright rolling named as a steady motion: the spin angle and the contact
+    // point are left free, and A is that of the `linearize about` line.
+    std::string text = scene_file("rolling_disc.lag");
+    const std::size_t line = text.find("linearize about");
+    text = text.substr(0, line) + "equilibrium q1 = 0, q2 = 0, q3' = w\n" + text.substr(text.find('\n', line) + 1);
+    model scene = load(text);
+    analysis steady = analyze(scene, {product::state_space});
+    analysis about = analyze(load(scene_file("rolling_disc.lag")), {product::state_space});
+    const GiNaC::ex g = symbol_of(scene, "g"), r = symbol_of(scene, "r"), w = symbol_of(scene, "w");
+    REQUIRE(steady.state_space->a.rows() == 8);
+    CHECK(same(steady.state_space->a(6, 1), 4 * g / (5 * r)));
+    CHECK(same(steady.state_space->a(6, 5), GiNaC::numeric(6, 5) * w));
+    CHECK(same(steady.state_space->a(5, 6), -2 * w));
+    REQUIRE(steady.state_space_values.size() == 1);
+    REQUIRE(about.state_space_values.size() == 1);
+    CHECK(steady.state_space_values[0].a == about.state_space_values[0].a);
+    CHECK(steady.operating->point_kind == operating_linearization::kind::steady);
+    CHECK(steady.state_space_values[0].stability == "marginal");
+}
