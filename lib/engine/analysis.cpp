@@ -10,6 +10,7 @@
 #include "numeric/constrained_motion.h"
 #include "numeric/free_body_motion.h"
 #include "numeric/point_modes.h"
+#include "numeric/steady_stability.h"
 #include "verify/check_operating_point.h"
 
 #include <algorithm>
@@ -425,6 +426,7 @@ const std::vector<stage_definition>& stage_table()
                         product::reduced}, {stage_id::reduced}, has_steady,
          [](stage_context& c) {
              c.result.steady = steady_motion(c.scene, *c.result.lagrangian, *c.result.reduced, c.simplifier_for_scene());
+             c.result.steady->at_values = steady_stability_at_values(c.scene, *c.result.steady);
          }, "", "", refuses_constraints("a steady motion")},
         {stage_id::simulation, "simulation", {product::simulation}, {}, {stage_id::equations}, any_scene,
          [](stage_context& c) {

@@ -242,3 +242,19 @@ TEST_CASE("operating point: a steady motion of a constrained scene is its `equil
     CHECK(steady.operating->point_kind == operating_linearization::kind::steady);
     CHECK(steady.state_space_values[0].stability == "marginal");
 }
+
+TEST_CASE("steady motion: the conical pendulum's stability at its values", "[operating_point][steady]")
+{
+    // About θ = th0, φ' = Ω the reduced system oscillates at ω² = (3 cos² th0 + 1) Ω²: stable,
+    // s = ±iω at the values.
+    model scene = load(scene_file("../../examples/conical_pendulum.lag"));
+    analysis result = analyze(scene, {product::reduced});
+    REQUIRE(result.steady);
+    REQUIRE(result.steady->at_values.size() == 1);
+    const auto& point = result.steady->at_values[0];
+    CHECK(point.verdict == stability::stable);
+    REQUIRE(point.eigenvalues.size() == 2);
+    const double omega = std::sqrt(3 * std::cos(0.6) * std::cos(0.6) + 1) * 3.4477;
+    CHECK_THAT(point.eigenvalues[1].imag(), Catch::WithinRel(omega, 1e-12));
+    CHECK_THAT(point.eigenvalues[1].real(), Catch::WithinAbs(0, 1e-12));
+}
