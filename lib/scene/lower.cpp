@@ -116,7 +116,9 @@ private:
         } else if (k == "linearize") {
             lower_operating_point(s);
         } else if (k == "independent") {
-            lower_independent(s);
+            if (scene_.independent)
+                throw scene_error(s.where, "the independent coordinates are given twice");
+            scene_.independent = lower_independent(s, scene_, source_.line(s.where.line));
         }
     }
 
@@ -160,25 +162,6 @@ private:
         }
         point.line_texts[s.where.line] = source_.line(s.where.line);
         scene_.operating_point = std::move(point);
-    }
-
-    /// `independent q2, q4'`: coordinates without `'`, speeds with it.
-    void lower_independent(const statement& s)
-    {
-        if (scene_.independent)
-            throw scene_error(s.where, "the independent coordinates are given twice");
-        independent_request request;
-        request.where = s.where;
-        request.line_text = source_.line(s.where.line);
-        for (const assignment& a : s.assignments) {
-            const std::size_t i = coordinate_named(a.target).index;
-            std::vector<std::size_t>& list = a.velocity ? request.speeds : request.coordinates;
-            if (std::find(list.begin(), list.end(), i) != list.end())
-                throw scene_error(a.target.where,
-                                  "`" + a.target.name + (a.velocity ? "'" : "") + "` is given twice");
-            list.push_back(i);
-        }
-        scene_.independent = std::move(request);
     }
 
     void declare_parameter(const name_ref& n)
