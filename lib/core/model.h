@@ -140,6 +140,27 @@ struct steady_motion_request {
     source_location where;
 };
 
+/// `linearize about q1 = e1, q1' = w1, u = u0`: the operating point of `state_space`. A
+/// coordinate not named stays free (A and B are functions of it); a velocity not named is 0,
+/// or, for a dependent speed, solved from the velocity constraints; an input not named is 0.
+struct operating_point_request {
+    std::vector<std::optional<GiNaC::ex>> positions;  ///< per coordinate
+    std::vector<std::optional<GiNaC::ex>> velocities; ///< per coordinate
+    std::vector<GiNaC::ex> inputs;                    ///< per input
+    std::vector<source_location> position_where, velocity_where; ///< each entry's value (or the statement)
+    source_location where;
+    std::map<int, std::string> line_texts; ///< the statement's lines, to quote in a later error
+};
+
+/// `independent q2, q4, q5'`: the independent coordinates (names without `'`) and speeds
+/// (names with `'`) of a constrained linearization; an empty list is chosen by the engine.
+struct independent_request {
+    std::vector<std::size_t> coordinates;
+    std::vector<std::size_t> speeds;
+    source_location where;
+    std::string line_text; ///< the statement's line, to quote in a later error
+};
+
 /// `ratio rho = m/M`: results are also written with `numerator` replaced by rho·denominator.
 struct ratio_request {
     std::string name;
@@ -227,6 +248,8 @@ struct model {
 
     std::optional<std::vector<GiNaC::ex>> equilibrium; ///< one value per coordinate
     std::optional<steady_motion_request> steady; ///< an `equilibrium` line that names a rate
+    std::optional<operating_point_request> operating_point; ///< a `linearize about` line
+    std::optional<independent_request> independent;         ///< an `independent` line
     std::optional<ratio_request> ratio;
     std::optional<limit_request> limit;
     std::vector<value_point> values;

@@ -10,6 +10,8 @@
 #include "numeric/constrained_motion.h"
 #include "numeric/free_body_motion.h"
 #include "numeric/point_modes.h"
+#include "numeric/steady_stability.h"
+#include "verify/check_operating_point.h"
 
 #include <algorithm>
 #include <chrono>
@@ -68,7 +70,7 @@ struct stage_context {
 /// The stages, in the order they run (the rows of stage_table(), in the same order).
 enum class stage_id {
     inertia, euler, lagrangian, equations, multipliers, elimination, top, time, equilibrium, linearization,
-    characteristic, modes, asymptotic, damping, numeric, state_space, transfer, floquet, conserved,
+    characteristic, modes, asymptotic, damping, numeric, state_space, operating_point, transfer, floquet, conserved,
     hamiltonian, reduced, steady, simulation, workprecision, virial, verification
 };
 
@@ -124,8 +126,26 @@ bool any_scene(const model&) { return true; }
 /// `equilibrium` line names a steady rate (the `steady` stage studies that motion).
 bool has_constraints(const model& scene) { return !scene.coordinates.empty() && !scene.constraints.empty(); }
 bool has_static_point(const model& scene) { return !scene.coordinates.empty() && !scene.steady; }
-bool has_steady(const model& scene) { return !scene.coordinates.empty() && scene.steady; }
+/// A steady motion on Routh's reduced system; with constraints it is an operating point of
+/// `state_space` instead.
+bool has_steady(const model& scene)
+{
+    return !scene.coordinates.empty() && scene.steady && scene.constraints.empty();
+}
 bool has_time(const model& scene) { return !scene.coordinates.empty() && mentions_time(scene); }
+/// The equilibrium's state space, where no operating point takes its place.
+bool has_equilibrium_state_space(const model& scene)
+{
+    return has_coordinates(scene) && !linearizes_about_operating_point(scene);
+}
+/// Whether A or B is a function of a coordinate left free by `linearize about`.
+bool has_free_coordinate(const model& scene, const state_space_result& system)
+{
+    for (const coordinate& q : scene.coordinates)
+        if (GiNaC::lst{system.a, system.b}.has(q.position))
+            return true;
+    return false;
+}
 /// Modes of a constrained scene are in its independent coordinates: their displacements and
 /// normal coordinates name them (the modes stage numbers them from the first coordinate).
 void name_independent_coordinates(const model& scene, const std::vector<std::size_t>& independent, modes_result& modes)
@@ -350,16 +370,30 @@ const std::vector<stage_definition>& stage_table()
          },
          "small oscillations", "small oscillations", handles_constraints, false},
         // The linearized input–output system: A, B (and at the `values` points), then H(s).
-        {stage_id::state_space, "state_space", {product::state_space}, {}, {stage_id::linearization}, has_coordinates,
+        {stage_id::state_space, "state_space", {product::state_space}, {}, {stage_id::linearization},
+         has_equilibrium_state_space,
          [](stage_context& c) {
              const GiNaC::matrix damping = damping_at_equilibrium(c.result, c.simplifier_for_scene());
              c.result.state_space =
-                 derive_state_space(c.scene, *c.result.linearization, damping, c.simplifier_for_scene());
+                 derive_state_space(c.scene, *c.result.linearization, damping, c.simplifier_for_scene(),
+                                    !c.wants(product::transfer));
              c.result.state_space_values = state_space_at_values(c.scene, *c.result.state_space);
          }, "linear system", "linear system", refuses_constraints("`state_space`")},
-        {stage_id::transfer, "transfer", {product::transfer}, {}, {stage_id::state_space}, has_coordinates,
+        // With constraints or a `linearize about` line: A and B in the independent states.
+        {stage_id::operating_point, "operating_point", {product::state_space}, {}, {stage_id::equations},
+         linearizes_about_operating_point,
          [](stage_context& c) {
-             c.result.transfer = transfer_functions(c.scene, *c.result.linearization, *c.result.state_space);
+             c.result.operating = linearize_about(c.scene, *c.result.equations, c.simplifier_for_scene());
+             c.result.state_space = operating_state_space(c.scene, *c.result.operating);
+             if (!has_free_coordinate(c.scene, *c.result.state_space))
+                 c.result.state_space_values = state_space_at_values(c.scene, *c.result.state_space);
+         }, "linear system", "linear system"},
+        {stage_id::transfer, "transfer", {product::transfer}, {}, {stage_id::state_space, stage_id::operating_point},
+         has_coordinates,
+         [](stage_context& c) {
+             c.result.transfer = c.result.operating
+                                     ? operating_transfer(c.scene, *c.result.operating, *c.result.state_space)
+                                     : transfer_functions(c.scene, *c.result.linearization, *c.result.state_space);
          }, "linear system", "linear system"},
         {stage_id::floquet, "floquet", {product::floquet}, {}, {stage_id::time}, has_coordinates,
          [](stage_context& c) {
@@ -392,6 +426,7 @@ const std::vector<stage_definition>& stage_table()
                         product::reduced}, {stage_id::reduced}, has_steady,
          [](stage_context& c) {
              c.result.steady = steady_motion(c.scene, *c.result.lagrangian, *c.result.reduced, c.simplifier_for_scene());
+             c.result.steady->at_values = steady_stability_at_values(c.scene, *c.result.steady);
          }, "", "", refuses_constraints("a steady motion")},
         {stage_id::simulation, "simulation", {product::simulation}, {}, {stage_id::equations}, any_scene,
          [](stage_context& c) {
@@ -428,6 +463,9 @@ const std::vector<stage_definition>& stage_table()
          [](const model& scene) { return !scene.coordinates.empty() || !scene.bodies.empty(); },
          [](stage_context& c) {
              c.result.verification = verify_results(c.scene, verification_input_of(c.result), c.result.wanted);
+             if (c.result.operating && c.result.equations)
+                 c.result.verification->entries.push_back(
+                     verify_operating_point(c.scene, *c.result.equations, *c.result.operating));
          }, "", ""},
     };
     return table;
@@ -449,7 +487,8 @@ verification_input verification_input_of(const analysis& r)
     input.hamiltonian = r.hamiltonian ? &*r.hamiltonian : nullptr;
     input.reduced = r.reduced && r.wanted.count(product::reduced) ? &*r.reduced : nullptr;
     input.steady = r.steady ? &*r.steady : nullptr;
-    input.state_space = r.state_space ? &*r.state_space : nullptr;
+    // A and B about an operating point are checked by the verification stage itself.
+    input.state_space = r.state_space && !r.operating ? &*r.state_space : nullptr;
     input.transfer = r.transfer ? &*r.transfer : nullptr;
     input.multipliers = r.multipliers ? &*r.multipliers : nullptr;
     input.constrained = r.constrained ? &*r.constrained : nullptr;

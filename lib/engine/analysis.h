@@ -15,6 +15,7 @@
 #include "mechanics/gyroscopic.h"
 #include "mechanics/linearization.h"
 #include "mechanics/modes.h"
+#include "mechanics/operating_point.h"
 #include "mechanics/state_space.h"
 #include "bodies/euler.h"
 #include "bodies/inertia.h"
@@ -80,6 +81,9 @@ struct analysis {
     std::optional<elimination_result> elimination;
     /// Small oscillations with constraints: `linearization` is then in the independent coordinates.
     std::optional<constrained_linearization> constrained;
+    /// `state_space` about an operating point (constraints, or a `linearize about` line): then
+    /// `state_space` holds its A and B in the independent states.
+    std::optional<operating_linearization> operating;
 };
 
 /// What verify_results reads of an analysis: a pointer to each result it computed.

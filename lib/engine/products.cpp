@@ -21,6 +21,13 @@ bool with_time_and_values(const model& scene) { return with_values(scene) && men
 bool with_generalized_forces(const model& scene) { return with_coordinates(scene) && scene.has_generalized_forces(); }
 bool with_inputs(const model& scene) { return with_coordinates(scene) && !scene.inputs.empty(); }
 bool with_constraints(const model& scene) { return with_coordinates(scene) && !scene.constraints.empty(); }
+/// An input, a `linearize about` line that names the operating point, or a steady motion
+/// with constraints (the operating point of its state space).
+bool with_inputs_or_operating_point(const model& scene)
+{
+    return with_inputs(scene) ||
+           (with_coordinates(scene) && (scene.operating_point || (scene.steady && !scene.constraints.empty())));
+}
 bool with_simulate_line(const model& scene) { return with_coordinates(scene) && scene.simulation; }
 bool with_bodies(const model& scene) { return !scene.bodies.empty(); }
 bool with_free_body(const model& scene)

@@ -54,6 +54,22 @@ std::pair<ex, ex> primitive_ratio(const ex& numerator, const ex& denominator, co
     return {collected(top_parts.op(0), s), collected((bottom * top_parts.op(1)).expand(), s)};
 }
 
+/// H(s) = minor/determinant of one input and coordinate, made primitive (0 where the minor is).
+transfer_function transfer_entry(std::size_t input, unsigned coordinate, const ex& minor, const ex& determinant,
+                                 const GiNaC::symbol& s)
+{
+    transfer_function h;
+    h.input = input;
+    h.coordinate = coordinate;
+    if (minor.is_zero()) {
+        h.numerator = 0;
+        h.denominator = 1;
+    } else {
+        std::tie(h.numerator, h.denominator) = primitive_ratio(minor, determinant, s);
+    }
+    return h;
+}
+
 } // namespace
 
 GiNaC::matrix input_matrix(const model& scene, const std::vector<ex>& at, const simplifier& simplify)
@@ -142,18 +158,55 @@ transfer_result transfer_functions(const model& scene, const linearization_resul
             GiNaC::matrix replaced = pencil;
             for (unsigned i = 0; i < n; ++i)
                 replaced(i, coordinate) = system.input_matrix(i, static_cast<unsigned>(input));
-            const ex minor = fraction_free_determinant(replaced).normal();
-            transfer_function h;
-            h.input = input;
-            h.coordinate = coordinate;
-            if (minor.is_zero()) {
-                h.numerator = 0;
-                h.denominator = 1;
-            } else {
-                std::tie(h.numerator, h.denominator) = primitive_ratio(minor, determinant, s);
-            }
-            result.entries.push_back(h);
+            result.entries.push_back(
+                transfer_entry(input, coordinate, fraction_free_determinant(replaced).normal(), determinant, s));
         }
+    return result;
+}
+
+state_space_result operating_state_space(const model& scene, const operating_linearization& point)
+{
+    state_space_result result;
+    result.state = point.state;
+    for (const input_signal& u : scene.inputs)
+        result.inputs.push_back(u.symbol);
+    result.a = point.a;
+    result.b = point.b;
+    return result;
+}
+
+transfer_result operating_transfer(const model& scene, const operating_linearization& point,
+                                   const state_space_result& system)
+{
+    if (scene.inputs.empty())
+        throw computation_error("`transfer` needs an input: declare one with `input u` and let it act through a "
+                                "force (`force q = u`, `force on P (u, 0)`)");
+    const unsigned size = system.a.rows();
+    transfer_result result{GiNaC::possymbol(unused_name(scene, "s")), {}};
+    const GiNaC::symbol& s = result.s;
+    GiNaC::matrix pencil(size, size); // sI − A
+    for (unsigned i = 0; i < size; ++i)
+        for (unsigned j = 0; j < size; ++j)
+            pencil(i, j) = (i == j ? ex(s) : ex(0)) - system.a(i, j);
+    const ex determinant = fraction_free_determinant(pencil).normal();
+    if (determinant.is_zero())
+        throw computation_error("det(sI − A) vanishes for every s: no transfer function");
+    const unsigned free_coordinates = static_cast<unsigned>(point.coordinates.size());
+    for (std::size_t input = 0; input < scene.inputs.size(); ++input) {
+        std::vector<ex> minors; // X_i(s)·det(sI − A)/U(s) of each independent coordinate
+        for (unsigned i = 0; i < free_coordinates; ++i) {
+            GiNaC::matrix replaced = pencil;
+            for (unsigned r = 0; r < size; ++r)
+                replaced(r, i) = system.b(r, static_cast<unsigned>(input));
+            minors.push_back(fraction_free_determinant(replaced).normal());
+        }
+        for (unsigned coordinate = 0; coordinate < scene.coordinates.size(); ++coordinate) {
+            ex minor = 0;
+            for (unsigned i = 0; i < free_coordinates; ++i)
+                minor += point.configuration(coordinate, i) * minors[i];
+            result.entries.push_back(transfer_entry(input, coordinate, minor.normal(), determinant, s));
+        }
+    }
     return result;
 }
 

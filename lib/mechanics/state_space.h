@@ -8,6 +8,7 @@
 #include "algebra/simplify.h"
 #include "core/model.h"
 #include "mechanics/linearization.h"
+#include "mechanics/operating_point.h"
 
 #include <ginac/ginac.h>
 
@@ -57,6 +58,15 @@ struct transfer_result {
 /// denominator made primitive in s (its coefficients' common factor moved into the
 /// numerator, its leading coefficient positive).
 transfer_result transfer_functions(const model& scene, const linearization_result& linear,
+                                   const state_space_result& system);
+
+/// The state-space form of a linearization about an operating point: its state, A and B
+/// (no C or B_q: the transfer functions come from A and B).
+state_space_result operating_state_space(const model& scene, const operating_linearization& point);
+
+/// H(s) of each input to each coordinate from (sI − A) X = B U by Cramer's rule, a dependent
+/// coordinate through δq = C₀ δq_I.
+transfer_result operating_transfer(const model& scene, const operating_linearization& point,
                                    const state_space_result& system);
 
 } // namespace lagrange

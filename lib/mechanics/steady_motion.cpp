@@ -7,6 +7,7 @@
 
 #include "algebra/budget.h"
 #include "algebra/calculus.h"
+#include "algebra/exact_matrix.h"
 #include "algebra/expression.h"
 #include "algebra/sorted_terms.h"
 #include "algebra/sign.h"
@@ -59,6 +60,40 @@ ex exact_decimals(const ex& e)
     }
     map_each recurse([](const ex& x) { return exact_decimals(x); });
     return e.nops() == 0 ? e : e.map(recurse);
+}
+
+/// The verdict of steady_motion_result from the signs of the reduced V's leading minors.
+void judge_stability(steady_motion_result& result)
+{
+    const std::vector<ex> minors = leading_minors(result.linear.potential);
+    bool positive = true;
+    for (const ex& minor : minors) {
+        const std::optional<int> sign = sign_of(minor);
+        positive = positive && sign && *sign > 0;
+    }
+    if (positive) {
+        result.verdict = stability::stable;
+        result.stability_reason = result.linear.has_gyroscopic()
+                                      ? "the reduced V is positive definite (Kelvin–Tait: G does not change it)"
+                                      : "the reduced V is positive definite (Routh)";
+        return;
+    }
+    const std::optional<int> determinant = minors.empty() ? std::nullopt : sign_of(minors.back());
+    if (determinant && *determinant < 0) {
+        result.verdict = stability::unstable;
+        result.stability_reason = "det of the reduced V is negative: an odd number of negative stiffnesses, which no "
+                                  "gyroscopic term stabilizes (Kelvin–Tait–Chetaev)";
+        return;
+    }
+    if (!result.linear.has_gyroscopic() && result.modes.closed_form)
+        for (const ex& f : result.modes.frequencies)
+            if (std::optional<int> sign = sign_of(f); sign && *sign < 0) {
+                result.verdict = stability::unstable;
+                result.stability_reason = "an ω² is negative";
+                return;
+            }
+    result.verdict = stability::unknown;
+    result.stability_reason = "the signs of the reduced V are not decided for every value of the parameters";
 }
 
 } // namespace
@@ -250,6 +285,7 @@ steady_motion_result steady_motion(const model& scene, const lagrangian_result& 
                        : symbolic_modes(reduced_scene, result.linear, result.characteristic, false);
     for (GiNaC::ex& f : result.modes.frequencies)
         f = apply(f);
+    judge_stability(result);
     return result;
 }
 

@@ -8,6 +8,7 @@
 
 #include "algebra/simplify.h"
 #include "core/model.h"
+#include "mechanics/equilibrium.h"
 #include "mechanics/lagrangian.h"
 #include "mechanics/linearization.h"
 #include "mechanics/modes.h"
@@ -15,8 +16,11 @@
 
 #include <ginac/ginac.h>
 
+#include <complex>
 #include <cstddef>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace lagrange {
@@ -39,6 +43,21 @@ struct steady_motion_result {
     modes_result modes;                    ///< the frequencies of small oscillations about it
     /// The symbols that stood for the rates left out (named as the velocities, `phi_dot`).
     std::vector<GiNaC::realsymbol> unknown_rates;
+    /// Its stability on the reduced system, where the signs decide it for every value of the
+    /// parameters: stable when the reduced V is positive definite (Routh; with G too, by
+    /// Kelvin–Tait); unstable when det V < 0 (an odd number of negative stiffnesses, which no
+    /// gyroscopic term stabilizes: Kelvin–Tait–Chetaev) or, without G, when an ω² is negative;
+    /// otherwise unknown, and `stability_reason` says on what it depends.
+    stability verdict = stability::unknown;
+    std::string stability_reason;
+    /// At each `values` point (numeric/steady_stability.h): the eigenvalues s of
+    /// T q̈ − G q̇ + V q = 0 and the verdict there.
+    struct at_point {
+        std::vector<std::pair<std::string, double>> values;
+        std::vector<std::complex<double>> eigenvalues;
+        stability verdict = stability::unknown;
+    };
+    std::vector<at_point> at_values;
 };
 
 /// The scene's steady motion (`equilibrium theta = th0, phi' = Omega`). Throws

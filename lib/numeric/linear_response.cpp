@@ -82,7 +82,25 @@ std::vector<state_space_point> state_space_at_values(const model& scene, const s
                 throw;
             continue;
         }
-        result.push_back({given_values(scene, point), at[0], at[1]});
+        result.push_back({given_values(scene, point), at[0], at[1], {}});
+        if (at[0].rows() > 0) {
+            Eigen::EigenSolver<Eigen::MatrixXd> eigen(at[0], false);
+            if (eigen.info() != Eigen::Success)
+                throw computation_error("the eigenvalues of A did not converge at a `values` point");
+            for (Eigen::Index k = 0; k < eigen.eigenvalues().size(); ++k)
+                result.back().eigenvalues.push_back(eigen.eigenvalues()(k));
+            std::sort(result.back().eigenvalues.begin(), result.back().eigenvalues.end(),
+                      [](const complex& x, const complex& y) {
+                          return x.imag() != y.imag() ? x.imag() < y.imag() : x.real() < y.real();
+                      });
+            double largest = 0, growth = -HUGE_VAL;
+            for (const complex& z : result.back().eigenvalues) {
+                largest = std::max(largest, std::abs(z));
+                growth = std::max(growth, z.real());
+            }
+            const double tolerance = 1e-9 * (1 + largest);
+            result.back().stability = growth > tolerance ? "unstable" : growth < -tolerance ? "stable" : "marginal";
+        }
     }
     return result;
 }

@@ -22,6 +22,12 @@ namespace lagrange {
 struct state_space_point {
     std::vector<std::pair<std::string, double>> values; ///< the parameters given on the line
     Eigen::MatrixXd a, b;
+    /// The eigenvalues of A (Eigen's real Schur form), ascending by imaginary part, then real part.
+    std::vector<std::complex<double>> eigenvalues;
+    /// From the eigenvalues, to 1e-9 of the largest: "stable" (every Re s < 0), "marginal"
+    /// (the largest Re s is 0: zero or imaginary eigenvalues, no mode grows exponentially) or
+    /// "unstable" (some Re s > 0).
+    std::string stability;
 };
 
 /// A and B at every `values` point that gives a value to each parameter they use (a point

@@ -7,6 +7,7 @@
 #include "output/print.h"
 
 #include <charconv>
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,111 @@ std::string polynomial_part(const GiNaC::ex& e, const GiNaC::symbol& s, syntax h
     return printed;
 }
 
+/// Eigenvalues as "a ± bi" pairs and reals, in the order given.
+std::string eigenvalues_text(const std::vector<std::complex<double>>& values)
+{
+    std::string out;
+    for (const std::complex<double>& z : values) {
+        if (z.imag() < 0)
+            continue; // printed with its conjugate
+        std::string one = round_trip(z.real() == 0 ? 0.0 : z.real());
+        if (z.imag() > 0)
+            one += " ± " + round_trip(z.imag()) + "i";
+        out += (out.empty() ? "" : ", ") + one;
+    }
+    return out;
+}
+
+/// The operating point in words: where, which states are independent, the residual
+/// F(x₀, u₀) and what it means.
+void operating_point_text(std::ostream& out, const model& scene, const operating_linearization& point)
+{
+    const syntax how = syntax::text;
+    std::string where;
+    for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
+        where += (where.empty() ? "" : ", ") + print(scene.coordinates[i].position, how) + " = " +
+                 print(point.position[i], how);
+    for (std::size_t i = 0; i < scene.coordinates.size(); ++i)
+        where += ", " + print(scene.coordinates[i].velocity, how) + " = " + print(point.velocity[i], how);
+    for (std::size_t k = 0; k < scene.inputs.size(); ++k)
+        where += ", " + print_name(scene.inputs[k].name, how) + " = " + print(point.inputs[k], how);
+    out << "  at " << where << "\n";
+    if (!scene.constraints.empty()) {
+        std::vector<std::string> coordinates, speeds;
+        for (std::size_t i : point.coordinates)
+            coordinates.push_back(print(scene.coordinates[i].position, how));
+        for (std::size_t i : point.speeds)
+            speeds.push_back(print(scene.coordinates[i].velocity, how));
+        out << "  independent coordinates " << joined(coordinates) << ", speeds " << joined(speeds)
+            << (point.chosen ? " (chosen: the dependent ones are the best-conditioned pivots of the constraint "
+                               "Jacobians there)"
+                             : " (the `independent` line)")
+            << "\n";
+    }
+    std::vector<std::string> residual;
+    for (const GiNaC::ex& e : point.residual)
+        residual.push_back(print(e, how));
+    out << "  residual F(x₀, u₀) = (" << joined(residual) << ")\n";
+    using kind = operating_linearization::kind;
+    if (point.point_kind == kind::equilibrium) {
+        out << "  F(x₀, u₀) = 0: the point is an equilibrium\n";
+        return;
+    }
+    if (point.point_kind == kind::steady) {
+        std::vector<std::string> moving;
+        for (std::size_t i : point.moving)
+            moving.push_back(print(scene.coordinates[i].position, how));
+        out << "  not an equilibrium: a steady motion (every acceleration is 0; " << joined(moving)
+            << " move at constant rates). "
+            << (point.moving_cyclic ? "They enter no equation, so A and B hold all along the motion: δx = x − x₀(t) "
+                                      "with x₀(t) = x₀ + F t obeys δẋ = A δx + B δu\n"
+                                    : "They enter the equations, so A and B hold at this instant of the motion "
+                                      "only\n");
+        return;
+    }
+    out << "  not an equilibrium nor a steady motion: the state leaves x₀ at the rate F(x₀, u₀), and "
+           "ẋ ≈ F(x₀, u₀) + A δx + B δu near x₀ only, for short times\n";
+}
+
+nlohmann::ordered_json operating_point_json(const model& scene, const operating_linearization& point)
+{
+    const syntax how = syntax::plain;
+    nlohmann::ordered_json entry, position = nlohmann::ordered_json::object(),
+                                  velocity = nlohmann::ordered_json::object(),
+                                  inputs = nlohmann::ordered_json::object();
+    for (std::size_t i = 0; i < scene.coordinates.size(); ++i) {
+        position[scene.coordinates[i].name] = print(point.position[i], how);
+        velocity[scene.coordinates[i].name] = print(point.velocity[i], how);
+    }
+    for (std::size_t k = 0; k < scene.inputs.size(); ++k)
+        inputs[scene.inputs[k].name] = print(point.inputs[k], how);
+    entry["position"] = position;
+    entry["velocity"] = velocity;
+    entry["inputs"] = inputs;
+    std::vector<std::string> coordinates, speeds, residual, moving;
+    for (std::size_t i : point.coordinates)
+        coordinates.push_back(scene.coordinates[i].name);
+    for (std::size_t i : point.speeds)
+        speeds.push_back(scene.coordinates[i].name);
+    for (const GiNaC::ex& e : point.residual)
+        residual.push_back(print(e, how));
+    for (std::size_t i : point.moving)
+        moving.push_back(scene.coordinates[i].name);
+    entry["independent_coordinates"] = coordinates;
+    entry["independent_speeds"] = speeds;
+    entry["chosen"] = point.chosen;
+    entry["residual"] = residual;
+    using kind = operating_linearization::kind;
+    entry["kind"] = point.point_kind == kind::equilibrium ? "equilibrium"
+                    : point.point_kind == kind::steady    ? "steady_motion"
+                                                          : "not_an_equilibrium";
+    if (point.point_kind == kind::steady) {
+        entry["moving"] = moving;
+        entry["holds_along_motion"] = point.moving_cyclic;
+    }
+    return entry;
+}
+
 } // namespace
 
 std::string transfer_text(const transfer_function& h, const GiNaC::symbol& s, syntax how)
@@ -114,15 +220,34 @@ void write_linear_system_text(std::ostream& out, const analysis& result)
     const syntax how = syntax::text;
     if (result.state_space && shows(result, product::state_space)) {
         const state_space_result& ss = *result.state_space;
-        out << "\nState space (ẋ = A x + B u at the equilibrium)\n";
+        if (result.operating) {
+            out << "\nState space (linearized about the operating point: ẋ ≈ F(x₀, u₀) + A δx + B δu)\n";
+            operating_point_text(out, scene, *result.operating);
+        } else
+            out << "\nState space (ẋ = A x + B u at the equilibrium)\n";
         out << "  x = (" << joined(state_names(result, how)) << "),  u = (" << joined(input_names(scene, how))
             << ")\n";
         matrix_text(out, "A", ss.a, "  ");
-        matrix_text(out, "B", ss.b, "  ");
+        if (result.operating)
+            out << "  det(" << print_name(result.operating->s.get_name(), how) << "I − A) ∝ "
+                << print(result.operating->characteristic, how, term_order{{{result.operating->s}}}) << "\n";
+        if (ss.b.cols())
+            matrix_text(out, "B", ss.b, "  ");
+        else
+            out << "  B: no columns (the scene has no inputs)\n";
         for (const state_space_point& p : result.state_space_values) {
             out << "  at " << values_text(p.values, how) << "\n";
             numbers_text(out, "A", p.a, "    ");
-            numbers_text(out, "B", p.b, "    ");
+            if (p.b.cols())
+                numbers_text(out, "B", p.b, "    ");
+            out << "    eigenvalues of A: " << eigenvalues_text(p.eigenvalues) << "\n";
+            if (!p.stability.empty())
+                out << "    " << p.stability
+                    << (p.stability == "stable"     ? ": every eigenvalue has Re s < 0"
+                        : p.stability == "unstable" ? ": an eigenvalue has Re s > 0, a mode grows"
+                                                    : ": the largest Re s is 0 (zero or imaginary eigenvalues), no "
+                                                      "mode grows exponentially")
+                    << "\n";
         }
     }
     if (result.transfer && shows(result, product::transfer)) {
@@ -142,7 +267,10 @@ void write_linear_system_latex(std::ostream& out, const analysis& result)
     const syntax how = syntax::latex;
     if (result.state_space && shows(result, product::state_space)) {
         const state_space_result& ss = *result.state_space;
-        out << "\\subsection*{State space}\n$\\dot{x} = A x + B u$ at the equilibrium, with $x = ("
+        out << "\\subsection*{State space}\n$\\dot{x} = A x + B u$ "
+            << (result.operating ? "linearized about the operating point (see the text output for its residual)"
+                                 : "at the equilibrium")
+            << ", with $x = ("
             << joined(state_names(result, how)) << ")$ and $u = (" << joined(input_names(scene, how)) << ")$:\n"
             << "\\begin{align*}\nA &= " << latex_matrix(ss.a) << ",\\\\\nB &= " << latex_matrix(ss.b)
             << "\n\\end{align*}\n";
@@ -201,9 +329,21 @@ void write_linear_system_json(nlohmann::ordered_json& doc, const analysis& resul
             nlohmann::ordered_json values = nlohmann::ordered_json::object();
             for (const auto& [name, value] : p.values)
                 values[name] = value;
-            points.push_back({{"values", values}, {"A", numbers(p.a)}, {"B", numbers(p.b)}});
+            nlohmann::ordered_json eigenvalues = nlohmann::ordered_json::array();
+            for (const std::complex<double>& z : p.eigenvalues)
+                eigenvalues.push_back({z.real(), z.imag()});
+            points.push_back({{"values", values},
+                              {"A", numbers(p.a)},
+                              {"B", numbers(p.b)},
+                              {"eigenvalues", eigenvalues},
+                              {"stability", p.stability}});
         }
         entry["numeric"] = points;
+        if (result.operating) {
+            entry["operating_point"] = operating_point_json(scene, *result.operating);
+            entry["characteristic"] = {{"variable", result.operating->s.get_name()},
+                                       {"polynomial", print(result.operating->characteristic, how)}};
+        }
         doc["state_space"] = entry;
     }
     if (result.transfer && shows(result, product::transfer)) {

@@ -643,9 +643,13 @@ const std::vector<report_section>& report_sections()
          write_damping_section},
         {"linear system",
          [](const analysis& r) {
-             return (r.state_space && wants(r, product::state_space)) || (r.transfer && wants(r, product::transfer));
+             return !r.operating &&
+                    ((r.state_space && wants(r, product::state_space)) || (r.transfer && wants(r, product::transfer)));
          },
          write_linear_system_section},
+        {"linearization with constraints",
+         [](const analysis& r) { return r.operating && r.state_space && wants(r, product::state_space); },
+         write_operating_point_section},
         {"floquet", [](const analysis& r) { return r.floquet.has_value(); }, write_floquet_section},
         {"symmetries",
          [](const analysis& r) {

@@ -37,6 +37,8 @@ void write_floquet_section(report_writer& w);
 void write_damping_section(report_writer& w);
 /// The linearized input–output system (damping_report.cpp): A, B and the transfer functions.
 void write_linear_system_section(report_writer& w);
+/// A and B about an operating point, with constraints (operating_point_report.cpp).
+void write_operating_point_section(report_writer& w);
 /// Symmetries (symmetries_report.cpp): the conserved quantities, the Hamiltonian, Routh's
 /// reduction and the steady motion.
 void write_symmetries_section(report_writer& w);

@@ -5,6 +5,7 @@
 #include "output/symmetries_output.h"
 
 #include "output/latex_blocks.h"
+#include "core/number_text.h"
 #include "output/print.h"
 
 #include <string>
@@ -137,6 +138,17 @@ void write_symmetries_text(std::ostream& out, const analysis& result)
             out << "  reduced G = " << matrix_text(m.linear.gyroscopic, s) << '\n';
         for (const ex& f : m.modes.frequencies)
             out << "  " << frequency_lhs(m, s) << " = " << print(f, s) << '\n';
+        out << "  stability: " << to_string(m.verdict) << " (" << m.stability_reason << ")\n";
+        for (const steady_motion_result::at_point& p : m.at_values) {
+            out << "  at";
+            for (const auto& [name, value] : p.values)
+                out << ' ' << print_name(name, s) << " = " << round_trip(value);
+            out << ": " << to_string(p.verdict) << ", s =";
+            for (std::size_t k = 0; k < p.eigenvalues.size(); ++k)
+                out << (k ? ", " : " ") << round_trip(p.eigenvalues[k].real()) << (p.eigenvalues[k].imag() < 0 ? " - " : " + ")
+                    << round_trip(std::abs(p.eigenvalues[k].imag())) << "i";
+            out << '\n';
+        }
         if (!m.modes.closed_form)
             out << "  frequencies: no closed form\n";
     }
@@ -292,6 +304,17 @@ void write_symmetries_json(nlohmann::ordered_json& doc, const analysis& result)
             steady["G"] = rows(m.linear.gyroscopic);
         steady["frequencies"] = frequencies;
         steady["frequency_variable"] = m.modes.gyroscopic ? "omega" : "omega^2";
+        steady["stability"] = to_string(m.verdict);
+        nlohmann::ordered_json points = nlohmann::ordered_json::array();
+        for (const steady_motion_result::at_point& p : m.at_values) {
+            nlohmann::ordered_json values = nlohmann::ordered_json::object(), eigenvalues = nlohmann::ordered_json::array();
+            for (const auto& [name, value] : p.values)
+                values[name] = value;
+            for (const std::complex<double>& z : p.eigenvalues)
+                eigenvalues.push_back({z.real(), z.imag()});
+            points.push_back({{"values", values}, {"eigenvalues", eigenvalues}, {"stability", to_string(p.verdict)}});
+        }
+        steady["numeric"] = points;
         doc["steady_motion"] = steady;
     }
 }

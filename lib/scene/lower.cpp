@@ -15,6 +15,7 @@
 #include "scene/parser.h"
 #include "system/files.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -112,7 +113,55 @@ private:
                 declare_input(n);
         } else if (k == "constraint") {
             lower_constraint(s);
+        } else if (k == "linearize") {
+            lower_operating_point(s);
+        } else if (k == "independent") {
+            if (scene_.independent)
+                throw scene_error(s.where, "the independent coordinates are given twice");
+            scene_.independent = lower_independent(s, scene_, source_.line(s.where.line));
         }
+    }
+
+    /// `linearize about q = e, q' = w, u = u0`: values in the parameters.
+    void lower_operating_point(const statement& s)
+    {
+        if (scene_.operating_point)
+            throw scene_error(s.where, "the operating point is given twice");
+        operating_point_request point;
+        point.where = s.where;
+        point.positions.resize(coordinates_.size());
+        point.velocities.resize(coordinates_.size());
+        point.position_where.assign(coordinates_.size(), s.where);
+        point.velocity_where.assign(coordinates_.size(), s.where);
+        point.inputs.assign(scene_.inputs.size(), 0);
+        std::vector<bool> input_given(scene_.inputs.size(), false);
+        for (const assignment& a : s.assignments) {
+            const GiNaC::ex value =
+                lower(*a.value, expr_context{"an operating point's value", false, false, true, false});
+            auto found = names_.find(a.target.name);
+            if (found != names_.end() && found->second.name_kind == name_entry::kind::input && !a.velocity) {
+                std::size_t k = 0;
+                while (scene_.inputs[k].name != a.target.name)
+                    ++k;
+                if (input_given[k])
+                    throw scene_error(a.target.where, quote(a.target.name) + " is given twice");
+                input_given[k] = true;
+                point.inputs[k] = value;
+                continue;
+            }
+            if (found == names_.end() || found->second.name_kind != name_entry::kind::coordinate)
+                throw scene_error(a.target.where, quote(a.target.name) + " is not a coordinate or an input");
+            const std::size_t i = found->second.index;
+            std::optional<GiNaC::ex>& target = a.velocity ? point.velocities[i] : point.positions[i];
+            if (target)
+                throw scene_error(a.target.where,
+                                  "`" + a.target.name + (a.velocity ? "'" : "") + "` is given twice");
+            target = value;
+            (a.velocity ? point.velocity_where : point.position_where)[i] = a.value->where;
+            point.line_texts[a.value->where.line] = source_.line(a.value->where.line);
+        }
+        point.line_texts[s.where.line] = source_.line(s.where.line);
+        scene_.operating_point = std::move(point);
     }
 
     void declare_parameter(const name_ref& n)

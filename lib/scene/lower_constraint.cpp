@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <random>
@@ -267,6 +268,26 @@ void check_constraints(const model& scene)
                                        (*holds ? "is redundant: it follows from " + others
                                                : "is inconsistent with " + others + ": no motion satisfies both"));
     }
+}
+
+independent_request lower_independent(const statement& s, const model& scene, const std::string& line_text)
+{
+    independent_request request;
+    request.where = s.where;
+    request.line_text = line_text;
+    for (const assignment& a : s.assignments) {
+        const std::string& name = a.target.name;
+        auto found = std::find_if(scene.coordinates.begin(), scene.coordinates.end(),
+                                  [&](const coordinate& c) { return c.name == name; });
+        if (found == scene.coordinates.end())
+            throw scene_error(a.target.where, "`" + name + "` is not a coordinate");
+        const std::size_t i = static_cast<std::size_t>(found - scene.coordinates.begin());
+        std::vector<std::size_t>& list = a.velocity ? request.speeds : request.coordinates;
+        if (std::find(list.begin(), list.end(), i) != list.end())
+            throw scene_error(a.target.where, "`" + name + (a.velocity ? "'" : "") + "` is given twice");
+        list.push_back(i);
+    }
+    return request;
 }
 
 } // namespace lagrange

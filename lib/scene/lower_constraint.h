@@ -10,6 +10,7 @@
 
 #include <ginac/ginac.h>
 
+#include <string>
 #include <vector>
 
 namespace lagrange {
@@ -24,5 +25,9 @@ constraint classify_constraint(const name_ref& name, const GiNaC::ex& f, const s
 /// it (at every one of a few random points): redundant when it follows from them,
 /// inconsistent when it contradicts them; and at the one that leaves no degree of freedom.
 void check_constraints(const model& scene);
+
+/// `independent q2, q4'`: the coordinates named without `'` and the speeds named with it, by
+/// index; `line_text` is the statement's line, kept for errors found later.
+independent_request lower_independent(const statement& s, const model& scene, const std::string& line_text);
 
 } // namespace lagrange

@@ -130,7 +130,7 @@ private:
     // statement := scene | parameters | coordinates | let | energy | point | gravity
     //            | spring | body | omega | torque | equilibrium | ratio | limit
     //            | values | initial | simulate | use | want
-    //            | dissipation | damper | force | input | constraint
+    //            | dissipation | damper | force | input | constraint | linearize | independent
     statement parse_statement()
     {
         const token& first = current();
@@ -166,6 +166,8 @@ private:
         else if (k == "force") parse_force(s);
         else if (k == "input") parse_name_list(s, k);
         else if (k == "constraint") parse_constraint(s);
+        else if (k == "linearize") parse_linearize(s);
+        else if (k == "independent") parse_independent(s);
         else
             throw scene_error(first.where, "unknown statement " + quote(k));
         return s;
@@ -410,6 +412,24 @@ private:
             a.velocity = accept(token_kind::prime);
             expect(token_kind::equals, "`=`");
             a.value = parse_expr();
+            s.assignments.push_back(std::move(a));
+        } while (accept(token_kind::comma));
+    }
+
+    // linearize := 'linearize' 'about' assignments
+    void parse_linearize(statement& s)
+    {
+        expect_keyword("about");
+        parse_assignments(s);
+    }
+
+    // independent := 'independent' NAME [ '\'' ] { ',' NAME [ '\'' ] }
+    void parse_independent(statement& s)
+    {
+        do {
+            assignment a;
+            a.target = expect_name("a coordinate");
+            a.velocity = accept(token_kind::prime);
             s.assignments.push_back(std::move(a));
         } while (accept(token_kind::comma));
     }

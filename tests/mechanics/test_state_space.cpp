@@ -263,10 +263,13 @@ TEST_CASE("state space: A and B at the values against central differences of the
     CHECK(at.a(2, 2) != 0); // the damper acts
 }
 
-TEST_CASE("state space: a scene without inputs is an error", "[state_space]")
+TEST_CASE("state space: a scene without inputs has A and no B, transfer needs an input", "[state_space]")
 {
     model scene = load("parameters m k\ncoordinates x\nT = 1/2*m*x'^2\nV = 1/2*k*x^2\n");
-    CHECK_THROWS_WITH(analyze(scene, {product::state_space}), Catch::Contains("need an input"));
+    analysis result = analyze(scene, {product::state_space});
+    CHECK(same(result.state_space->a(1, 0), -symbol_of(scene, "k") / symbol_of(scene, "m")));
+    CHECK(result.state_space->b.cols() == 0);
+    CHECK_THROWS_WITH(analyze(scene, {product::transfer}), Catch::Contains("need an input"));
 }
 
 TEST_CASE("transfer: the damped driven oscillator gives 1/(m s² + b s + k)", "[transfer]")

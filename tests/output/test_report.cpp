@@ -674,3 +674,14 @@ TEST_CASE("report: the damped double pendulum's table gives each eigenvalue its 
     }
     CHECK(rows == 4);
 }
+
+TEST_CASE("report: linearization with constraints gives A and the residual", "[report]")
+{
+    cli_result r = run_cli("report " + std::string(LAGRANGE_SOURCE_DIR) + "/tests/scenes/rolling_disc.lag -o -");
+    REQUIRE(r.exit_code == 0);
+    CHECK(contains(r.out, "\\section{Linearization with constraints}"));
+    CHECK(contains(r.out, "\\frac{4 g}{5 r}"));
+    CHECK(contains(r.out, "F(x_0, u_0) &= (0,\\ 0,\\ w,\\ r w,\\ 0,\\ 0,\\ 0,\\ 0)"));
+    CHECK(contains(r.out, "a steady motion, not an equilibrium"));
+    CHECK(!contains(r.out, "Linearized at the equilibrium"));
+}
