@@ -42,3 +42,19 @@ TEST_CASE("trust: a Yukawa orbit's exact linearization is not refused by its ver
     REQUIRE(j.contains("V"));
     CHECK(j.contains("frequencies"));
 }
+
+TEST_CASE("trust: the default budget gives the 7-link chain's characteristic polynomial", "[trust][budget]")
+{
+    std::string values = "values g = 9.81", equilibrium = "equilibrium ";
+    for (int k = 1; k <= 7; ++k) {
+        const std::string i = std::to_string(k);
+        values += ", m" + i + " = " + std::to_string(1 + k) + ", l" + i + " = 1";
+        equilibrium += (k > 1 ? ", q" : "q") + i + " = 0";
+    }
+    const std::string scene = temporary_file("chain7.lag", chain_scene(7) + equilibrium + "\n" + values + "\n");
+    cli_result r = run_cli(scene + " --want characteristic --format json", "", 60);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    CHECK(j.at("characteristic").at("polynomial").get<std::string>().find("omega^14") != std::string::npos);
+}
