@@ -109,14 +109,10 @@ struct stage_definition {
     bool numeric_fallback = false;
 };
 
-/// The equilibrium a simulation linearizes about to choose its method: the one found,
-/// else the scene's `equilibrium` line.
-std::optional<std::vector<GiNaC::ex>> equilibrium_of(const stage_context& c)
-{
-    if (c.result.equilibria)
-        return c.result.equilibria->points.at(c.result.equilibria->chosen).position;
-    return c.scene.equilibrium;
-}
+/// The equilibrium a simulation linearizes about to choose its method: the scene's
+/// `equilibrium` line, never one found by the `equilibrium` stage, so that asking for
+/// other products does not change the simulation (a heavy top's found θ = 0 is singular).
+std::optional<std::vector<GiNaC::ex>> equilibrium_of(const stage_context& c) { return c.scene.equilibrium; }
 
 bool has_coordinates(const model& scene) { return !scene.coordinates.empty(); }
 bool any_scene(const model&) { return true; }

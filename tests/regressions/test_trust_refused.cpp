@@ -58,3 +58,13 @@ TEST_CASE("trust: the default budget gives the 7-link chain's characteristic pol
     nlohmann::json j = nlohmann::json::parse(r.out);
     CHECK(j.at("characteristic").at("polynomial").get<std::string>().find("omega^14") != std::string::npos);
 }
+
+TEST_CASE("trust: asking for the equilibrium beside the simulation does not change it", "[trust][simulation]")
+{
+    const std::string top = std::string(LAGRANGE_SOURCE_DIR) + "/examples/heavy_top.lag";
+    nlohmann::json alone = verified("simulate " + top);
+    nlohmann::json beside = verified(top + " --want equilibrium,simulation");
+    REQUIRE(beside.contains("equilibria"));
+    CHECK(beside.at("simulation").at("states") == alone.at("simulation").at("states"));
+    CHECK(beside.at("simulation").at("method") == alone.at("simulation").at("method"));
+}
