@@ -111,14 +111,10 @@ struct stage_definition {
     bool numeric_fallback = false;
 };
 
-/// The equilibrium a simulation linearizes about to choose its method: the one found,
-/// else the scene's `equilibrium` line.
-std::optional<std::vector<GiNaC::ex>> equilibrium_of(const stage_context& c)
-{
-    if (c.result.equilibria)
-        return c.result.equilibria->points.at(c.result.equilibria->chosen).position;
-    return c.scene.equilibrium;
-}
+/// The equilibrium a simulation linearizes about to choose its method: the scene's
+/// `equilibrium` line, never one found by the `equilibrium` stage, so that asking for
+/// other products does not change the simulation (a heavy top's found θ = 0 is singular).
+std::optional<std::vector<GiNaC::ex>> equilibrium_of(const stage_context& c) { return c.scene.equilibrium; }
 
 bool has_coordinates(const model& scene) { return !scene.coordinates.empty(); }
 bool any_scene(const model&) { return true; }
@@ -330,10 +326,17 @@ const std::vector<stage_definition>& stage_table()
                  want_numeric(c);
                  c.result.notes.push_back("the frequencies have no closed form; they are given numerically at the "
                                           "`values` points");
+             } else if (!c.result.modes->closed_form) {
+                 // computed but not printable: every format says why, not only the text
+                 c.result.notes.push_back(
+                     std::string("the frequencies have no closed form (a factor of the characteristic polynomial "
+                                 "has no roots in closed form)") +
+                     (c.wants(product::numeric) ? "; the numeric modes give them"
+                                                : "; give `values` to have them numerically"));
              }
              if (c.result.modes->vectors_left_out) {
-                 std::string note = "modes and normal coordinates not computed in closed form: an ω² is a root of "
-                                    "an irreducible cubic in the parameters, and each entry would be pages long";
+                 std::string note = "modes and normal coordinates not computed in closed form for " +
+                                    c.result.modes->vectors_left_out_why;
                  if (c.wants(product::numeric))
                      note += "; the numeric modes give them";
                  else if (!c.scene.values.empty() && c.result.linearization) {
@@ -351,7 +354,7 @@ const std::vector<stage_definition>& stage_table()
                                          "velocities (gyroscopic terms)");
              if (c.result.modes->vectors_left_out)
                  throw computation_error("`asymptotic` needs the mode vectors, which are not computed in closed "
-                                         "form for the roots of an irreducible cubic in the parameters");
+                                         "form for " + c.result.modes->vectors_left_out_why);
              c.result.asymptotic = asymptotic_limit(c.scene, *c.result.modes);
          },
          "small oscillations", "symbolic modes", refuses_constraints("`asymptotic`"), true, true},

@@ -239,8 +239,18 @@ std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
         for (ex factor : factors) {
             if (is_a<GiNaC::power>(factor))
                 factor = factor.op(0);
-            if (factor.degree(q) == 1)
+            if (factor.degree(q) == 1) {
                 add_root(tidy(-factor.coeff(q, 0) / factor.coeff(q, 1)));
+            } else if (factor.degree(q) == 2) {
+                // a quadratic factor: its two roots, when they are known to be real
+                const ex a2 = factor.coeff(q, 2), a1 = factor.coeff(q, 1), a0 = factor.coeff(q, 0);
+                const ex discriminant = (a1 * a1 - 4 * a2 * a0).expand();
+                const std::optional<int> sign = sign_of(discriminant);
+                if (!sign || *sign < 0)
+                    continue;
+                for (int branch : {-1, 1})
+                    add_root(tidy((-a1 + branch * GiNaC::sqrt(discriminant)) / (2 * a2)));
+            }
         }
         return roots;
     }
@@ -367,6 +377,69 @@ std::optional<std::vector<ex>> point_with_angles(const model& scene, const std::
     return point;
 }
 
+/// The points with the angle coordinates at `fixed` where ∂V/∂q = 0 is a polynomial system
+/// in two other coordinates x, y (Hénon–Heiles' x + 2xy = 0, y + x² − y² = 0): the roots y
+/// of the resultant in x of two equations, then x from the first equation that y leaves
+/// (x = 0 when none does). Each point found is checked against every equation.
+std::vector<std::vector<ex>> polynomial_points(const model& scene, const std::vector<ex>& gradient,
+                                               const GiNaC::exmap& fixed, const std::vector<std::size_t>& others)
+{
+    if (others.size() != 2)
+        return {};
+    const GiNaC::symbol& x = scene.coordinates[others[0]].position;
+    const GiNaC::symbol& y = scene.coordinates[others[1]].position;
+    std::vector<ex> equations;
+    for (const ex& g : gradient) {
+        ex reduced = g.subs(fixed).expand();
+        if (!reduced.info(GiNaC::info_flags::polynomial))
+            reduced = reduced.normal().numer().expand();
+        if (reduced.is_zero())
+            continue;
+        if (!reduced.info(GiNaC::info_flags::polynomial) || inside_function(reduced, x) || inside_function(reduced, y))
+            return {};
+        equations.push_back(reduced);
+    }
+    if (equations.size() < 2)
+        return {};
+    ex eliminated;
+    try {
+        eliminated = GiNaC::resultant(equations[0], equations[1], x).expand();
+    } catch (const budget_exceeded&) {
+        throw;
+    } catch (const std::exception&) {
+        return {};
+    }
+    if (eliminated.is_zero() || eliminated.has(x))
+        return {};
+    std::vector<ex> base(scene.coordinates.size(), 0);
+    for (const auto& [coordinate, value] : fixed)
+        for (std::size_t i = 0; i < base.size(); ++i)
+            if (ex(scene.coordinates[i].position).is_equal(coordinate))
+                base[i] = value;
+    std::vector<std::vector<ex>> points;
+    for (const ex& y0 : solve_one(eliminated, y)) {
+        std::vector<ex> xs{0};
+        for (const ex& e : equations) {
+            const ex in_x = e.subs(y == y0).expand();
+            if (!vanishes(in_x)) {
+                xs = solve_one(in_x, x);
+                break;
+            }
+        }
+        for (const ex& x0 : xs) {
+            std::vector<ex> point = base;
+            point[others[0]] = x0;
+            point[others[1]] = y0;
+            bool solves = true;
+            for (const ex& g : gradient)
+                solves = solves && vanishes(evaluate_at(g, scene, point));
+            if (solves)
+                points.push_back(point);
+        }
+    }
+    return points;
+}
+
 /// A stable equilibrium found without listing the 2^N combinations of N angles:
 /// when each ∂V/∂q_i depends on q_i alone (a chain in absolute angles), each
 /// coordinate at a root where ∂²V/∂q_i² > 0; otherwise every angle at 0, if that is
@@ -440,6 +513,9 @@ std::vector<std::vector<ex>> solve_several(const model& scene, const std::vector
             fixed[scene.coordinates[angles[a]].position] = (choice >> a & 1) ? ex(GiNaC::Pi) : ex(0);
         if (std::optional<std::vector<ex>> point = point_with_angles(scene, gradient, fixed, others))
             points.push_back(*point);
+        else
+            for (std::vector<ex>& point : polynomial_points(scene, gradient, fixed, others))
+                points.push_back(std::move(point));
     }
     return points;
 }

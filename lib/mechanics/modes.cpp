@@ -239,6 +239,7 @@ std::optional<ex> clean_normal_coordinate(const std::vector<ex>& displacements, 
 struct closed_modes {
     bool closed_form = false;
     bool vectors_left_out = false;
+    std::string vectors_left_out_why;
     std::vector<ex> frequencies;
     std::vector<std::vector<ex>> modes;
     std::vector<ex> normal_coordinates;
@@ -256,13 +257,19 @@ closed_modes solve_modes(const std::vector<ex>& displacements, const GiNaC::matr
     // minutes: they are left to the numeric modes.
     const bool unwieldy =
         std::any_of(roots->begin(), roots->end(), [](const closed_root& root) { return root.unwieldy; });
-    if (!vectors || unwieldy) {
-        result.closed_form = true;
-        result.vectors_left_out = vectors;
+    // The frequencies alone: they stand whether or not the mode vectors are found.
+    auto frequencies_alone = [&](const std::string& why) {
+        closed_modes alone;
+        alone.closed_form = true;
+        alone.vectors_left_out = vectors;
+        alone.vectors_left_out_why = vectors ? why : "";
         for (const closed_root& root : *roots)
-            result.frequencies.push_back(root.root.restore(root.value));
-        return result;
-    }
+            alone.frequencies.push_back(root.root.restore(root.value));
+        return alone;
+    };
+    if (!vectors || unwieldy)
+        return frequencies_alone("the roots of an irreducible cubic in the parameters, whose entries would be "
+                                 "pages long");
     std::size_t n = kinetic.rows();
     std::vector<std::vector<ex>> modes;
     std::vector<surd> surds;
@@ -285,7 +292,8 @@ closed_modes solve_modes(const std::vector<ex>& displacements, const GiNaC::matr
             // a repeated root: the (k − first)th vector of a T-orthogonal basis of the null space
             std::vector<std::vector<ex>> basis = null_space(pencil);
             if (k - first >= basis.size())
-                return result;
+                return frequencies_alone("a repeated ω², whose modes (a basis of the null space of V − ω²T) "
+                                         "are not found in closed form");
             std::vector<ex> v = basis[k - first];
             for (std::size_t earlier = first; earlier < k; ++earlier) {
                 const std::vector<ex>& u = modes[earlier];
@@ -358,6 +366,7 @@ modes_result symbolic_modes(const model& scene, const linearization_result& line
     closed_modes plain = solve_modes(result.displacements, linear.kinetic, linear.potential, coefficients, w, vectors);
     result.closed_form = plain.closed_form;
     result.vectors_left_out = plain.vectors_left_out;
+    result.vectors_left_out_why = plain.vectors_left_out_why;
     result.frequencies = plain.frequencies;
     result.modes = plain.modes;
     result.normal_coordinates = plain.normal_coordinates;

@@ -9,6 +9,7 @@
 
 #include <ginac/ginac.h>
 
+#include <string>
 #include <vector>
 
 namespace lagrange {
@@ -22,6 +23,9 @@ struct modes_result {
     /// root of an irreducible cubic whose trigonometric form depends on the parameters,
     /// which makes each entry pages long (the numeric modes give them at values).
     bool vectors_left_out = false;
+    /// For which roots they were left out, for the notes: "the roots of an irreducible cubic
+    /// in the parameters, …" or "a repeated ω², whose modes … are not found in closed form".
+    std::string vectors_left_out_why;
     std::vector<GiNaC::ex> frequencies;       ///< ω², ascending where the order is known
     std::vector<std::vector<GiNaC::ex>> modes;///< one mode vector per frequency
     std::vector<GiNaC::ex> normal_coordinates;///< ζ_k = (Aᵀ T (q − q₀))_k with Aᵀ T A = I

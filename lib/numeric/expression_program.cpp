@@ -208,6 +208,9 @@ private:
                 return unary(code::exponential, argument);
             if (is_ex_the_function(e, GiNaC::log))
                 return unary(code::logarithm, argument);
+            if (is_ex_the_function(e, GiNaC::tan)) // tan u = sin u / cos u
+                return binary(code::mul, unary(code::sine, argument),
+                              unary(code::recip, unary(code::cosine, argument)));
         }
         throw std::invalid_argument("cannot evaluate " + to_text(e) + " numerically");
     }

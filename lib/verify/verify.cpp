@@ -30,7 +30,10 @@ using namespace verification_points;
 
 double value_of(double_double x) { return x.hi + x.lo; }
 
-/// The finite-difference step: a power of two, so that the points stay exact.
+/// The finite-difference step: a power of two, so that the points stay exact. Every
+/// reference is also taken at twice the step: for fourth-order differences the error at
+/// `step` is about 1/15 of the change between the two (Richardson), so that change, taken
+/// whole, bounds the truncation error the comparison allows for.
 constexpr double step = 0x1p-12;
 
 /// The symbols of a state, in the order the programs read them.
@@ -93,21 +96,38 @@ constexpr double first_weights[4] = {1, -8, 8, -1}; // / 12h
 constexpr double second_offsets[5] = {-2, -1, 0, 1, 2};
 constexpr double second_weights[5] = {-1, 16, -30, 16, -1}; // / 12h²
 
-/// d/dx of f(x) at 0 by fourth-order differences.
-template <class F> double_double first_derivative(F&& f)
+/// d/dx of f(x) at 0 by fourth-order differences with step h.
+template <class F> double_double first_derivative(F&& f, double h = step)
 {
     double_double values[4];
     for (int k = 0; k < 4; ++k)
-        values[k] = f(offsets[k] * step);
-    return stencil(first_weights, values, 4, 12 * step);
+        values[k] = f(offsets[k] * h);
+    return stencil(first_weights, values, 4, 12 * h);
 }
 
-template <class F> double_double second_derivative(F&& f)
+template <class F> double_double second_derivative(F&& f, double h = step)
 {
     double_double values[5];
     for (int k = 0; k < 5; ++k)
-        values[k] = f(second_offsets[k] * step);
-    return stencil(second_weights, values, 5, 12 * step * step);
+        values[k] = f(second_offsets[k] * h);
+    return stencil(second_weights, values, 5, 12 * h * h);
+}
+
+/// A derivative at `step` and its truncation error estimated against twice the step.
+struct estimate {
+    double value = 0, error = 0;
+};
+
+template <class F> estimate estimated_first_derivative(F&& f)
+{
+    const double fine = value_of(first_derivative(f)), coarse = value_of(first_derivative(f, 2 * step));
+    return {fine, std::abs(fine - coarse)};
+}
+
+template <class F> estimate estimated_second_derivative(F&& f)
+{
+    const double fine = value_of(second_derivative(f)), coarse = value_of(second_derivative(f, 2 * step));
+    return {fine, std::abs(fine - coarse)};
 }
 
 std::string state_text(const model& scene, const std::vector<double>& state, bool accelerations)
@@ -162,13 +182,27 @@ std::vector<ex> force_terms(const model& scene)
     return terms;
 }
 
+/// The terms of the sums among `parts` (a part that is no sum counts as one term).
+std::vector<ex> top_level_terms(const std::vector<ex>& parts)
+{
+    std::vector<ex> terms;
+    for (const ex& part : parts) {
+        if (GiNaC::is_a<GiNaC::add>(part))
+            for (const ex& term : part)
+                terms.push_back(term);
+        else
+            terms.push_back(part);
+    }
+    return terms;
+}
+
 /// What the checks share: the layout, the compiled reference L, the parameter points.
 struct checker {
     const model& scene;
     state_layout layout;
     std::optional<probe> lagrangian;
     std::optional<probe> forces; ///< force_terms, when the scene has generalized forces
-    std::optional<probe> energies; ///< T, V and the `L` lines as built, for the size of L's terms
+    std::optional<probe> energies; ///< the terms of T, V and the `L` lines as built, for the size of L's terms
     std::string why_not; ///< why L could not be compiled
     std::vector<parameter_point> points;
     sampler random;
@@ -177,8 +211,8 @@ struct checker {
     {
         try {
             lagrangian.emplace(std::vector<ex>{built_lagrangian(s, l)}, layout);
-            energies.emplace(std::vector<ex>{l.kinetic_built, l.potential_built,
-                                             s.lagrangian_terms ? *s.lagrangian_terms : ex(0)},
+            energies.emplace(top_level_terms({l.kinetic_built, l.potential_built,
+                                              s.lagrangian_terms ? *s.lagrangian_terms : ex(0)}),
                              layout);
             if (s.has_generalized_forces())
                 forces.emplace(force_terms(s), layout);
@@ -188,7 +222,8 @@ struct checker {
         }
     }
     double_double l_at(const std::vector<double>& state) const { return (*lagrangian)(state)[0]; }
-    /// |T| + |V| + |L lines| at a state: the size of L's terms, of which L may be a small difference.
+    /// Σ |term| over the terms of T, V and the `L` lines at a state: the size of L's terms, of
+    /// which L (or V alone, at an equilibrium where its terms balance) may be a small difference.
     double energy_size(const std::vector<double>& state) const
     {
         double size = 0;
@@ -276,7 +311,7 @@ struct euler_lagrange_values {
     double lagrangian = 0;
 };
 
-euler_lagrange_values euler_lagrange(const checker& c, const std::vector<double>& state)
+euler_lagrange_values euler_lagrange(const checker& c, const std::vector<double>& state, double h = step)
 {
     const std::size_t n = c.layout.n;
     euler_lagrange_values result;
@@ -292,18 +327,22 @@ euler_lagrange_values euler_lagrange(const checker& c, const std::vector<double>
     };
     for (std::size_t i = 0; i < n; ++i) {
         auto momentum_at = [&](const std::vector<double>& s) {
-            return first_derivative([&](double h) {
-                std::vector<double> moved = s;
-                moved[n + i] += h;
-                return c.l_at(moved);
-            });
+            return first_derivative(
+                [&](double dx) {
+                    std::vector<double> moved = s;
+                    moved[n + i] += dx;
+                    return c.l_at(moved);
+                },
+                h);
         };
-        double_double rate = first_derivative([&](double tau) { return momentum_at(along_path(tau)); });
-        double_double force = first_derivative([&](double h) {
-            std::vector<double> moved = state;
-            moved[i] += h;
-            return c.l_at(moved);
-        });
+        double_double rate = first_derivative([&](double tau) { return momentum_at(along_path(tau)); }, h);
+        double_double force = first_derivative(
+            [&](double dx) {
+                std::vector<double> moved = state;
+                moved[i] += dx;
+                return c.l_at(moved);
+            },
+            h);
         result.residual.push_back(value_of(dd::sub(rate, force)));
         result.scale.push_back(std::abs(value_of(rate)) + std::abs(value_of(force)));
         result.momenta.push_back(value_of(momentum_at(state)));
@@ -343,6 +382,7 @@ verification_entry check_equations(checker& c, const equations_of_motion& equati
     for (const parameter_point& p : c.points) {
         std::vector<double> state = c.random_state(p);
         euler_lagrange_values reference = euler_lagrange(c, state);
+        const euler_lagrange_values coarse = euler_lagrange(c, state, 2 * step);
         // The equations are d/dt ∂L/∂q̇ − ∂L/∂q − Q = 0.
         const std::vector<double> forces = generalized_force_reference(c, state);
         for (std::size_t i = 0; i < n; ++i) {
@@ -365,7 +405,9 @@ verification_entry check_equations(checker& c, const equations_of_motion& equati
         for (std::size_t form = 0; form < forms; ++form)
             for (std::size_t i = 0; i < n; ++i) {
                 double value = value_of(here[form * n + i]);
-                double scale = reference.scale[i] + 1e-6 * largest + rounding_allowance(c.energy_size(state)) + 1e-300;
+                const double truncation = std::abs(reference.residual[i] - coarse.residual[i]) / tolerance;
+                double scale = reference.scale[i] + 1e-6 * largest + rounding_allowance(c.energy_size(state)) +
+                               truncation + 1e-300;
                 if (!close(value, reference.residual[i], scale))
                     fail("the equations of motion",
                          std::string(forms == 2 && form == 0 ? "the equation" : "M q'' − f in the row") + " of " +
@@ -375,7 +417,8 @@ verification_entry check_equations(checker& c, const equations_of_motion& equati
         double energy = -reference.lagrangian, energy_scale = std::abs(reference.lagrangian);
         for (std::size_t i = 0; i < n; ++i) {
             energy += state[n + i] * reference.momenta[i];
-            energy_scale += std::abs(state[n + i] * reference.momenta[i]);
+            energy_scale += std::abs(state[n + i] * reference.momenta[i]) +
+                            std::abs(state[n + i] * (reference.momenta[i] - coarse.momenta[i])) / tolerance;
         }
         double energy_here = value_of(here.back());
         if (!close(energy_here, energy, energy_scale + 1e-300))
@@ -458,9 +501,10 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
             for (std::size_t i = 0; i < n; ++i) {
                 Eigen::VectorXd e = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
                 e[static_cast<Eigen::Index>(i)] = 1;
-                double slope = value_of(first_derivative([&](double h) { return potential_along(e, h); }));
-                if (!close(slope, 0, potential->cwiseAbs().sum() + noise * step + 1e-300))
-                    fail("the equilibrium", "∂U/∂" + c.scene.coordinates[i].name, where, slope, 0);
+                const estimate slope = estimated_first_derivative([&](double h) { return potential_along(e, h); });
+                if (!close(slope.value, 0,
+                           potential->cwiseAbs().sum() + noise * step + slope.error / tolerance + 1e-300))
+                    fail("the equilibrium", "∂U/∂" + c.scene.coordinates[i].name, where, slope.value, 0);
             }
         }
         std::optional<Eigen::MatrixXd> gyroscopic;
@@ -477,11 +521,13 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
                 }
                 return c.l_at(s);
             };
+            double truncation = 0;
             auto mixed = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
-                double both = value_of(second_derivative([&](double t) { return along(u, v, t, t); }));
-                double positions = value_of(second_derivative([&](double t) { return along(u, v, t, 0); }));
-                double velocities = value_of(second_derivative([&](double t) { return along(u, v, 0, t); }));
-                return (both - positions - velocities) / 2;
+                const estimate both = estimated_second_derivative([&](double t) { return along(u, v, t, t); });
+                const estimate positions = estimated_second_derivative([&](double t) { return along(u, v, t, 0); });
+                const estimate velocities = estimated_second_derivative([&](double t) { return along(u, v, 0, t); });
+                truncation += (both.error + positions.error + velocities.error) / 2;
+                return (both.value - positions.value - velocities.value) / 2;
             };
             Eigen::VectorXd u(static_cast<Eigen::Index>(n)), v(static_cast<Eigen::Index>(n));
             for (std::size_t i = 0; i < n; ++i) {
@@ -489,20 +535,22 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
                 v[static_cast<Eigen::Index>(i)] = c.random.uniform(-1, 1);
             }
             const double reference = mixed(u, v) - mixed(v, u), form = u.dot(*gyroscopic * v);
-            if (!close(form, reference, (size + gyroscopic->cwiseAbs().sum()) * u.norm() * v.norm() + 3 * noise))
+            if (!close(form, reference,
+                       (size + gyroscopic->cwiseAbs().sum()) * u.norm() * v.norm() + 3 * noise + truncation / tolerance))
                 fail("the linearization", "uᵀGv along random u, v", where, form, reference);
         }
         for (int direction = 0; direction < 2; ++direction) {
             Eigen::VectorXd v(static_cast<Eigen::Index>(n));
             for (std::size_t i = 0; i < n; ++i)
                 v[static_cast<Eigen::Index>(i)] = c.random.uniform(-1, 1);
-            double t_form = value_of(second_derivative([&](double eps) { return kinetic_along(v, eps); }));
-            double v_form = value_of(second_derivative([&](double eps) { return potential_along(v, eps); }));
+            const estimate t_form = estimated_second_derivative([&](double eps) { return kinetic_along(v, eps); });
+            const estimate v_form = estimated_second_derivative([&](double eps) { return potential_along(v, eps); });
             const double scale = size * v.squaredNorm() + noise;
-            if (!close(quadratic_form(*kinetic, v), t_form, scale))
-                fail("the linearization", "vᵀTv along a random v", where, quadratic_form(*kinetic, v), t_form);
-            if (!close(quadratic_form(*potential, v), v_form, scale))
-                fail("the linearization", "vᵀVv along a random v", where, quadratic_form(*potential, v), v_form);
+            if (!close(quadratic_form(*kinetic, v), t_form.value, scale + t_form.error / tolerance))
+                fail("the linearization", "vᵀTv along a random v", where, quadratic_form(*kinetic, v), t_form.value);
+            if (!close(quadratic_form(*potential, v), v_form.value, scale + v_form.error / tolerance))
+                fail("the linearization", "vᵀVv along a random v", where, quadratic_form(*potential, v),
+                     v_form.value);
         }
         if (++used == points_wanted)
             break;
