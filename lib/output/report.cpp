@@ -626,9 +626,14 @@ const std::vector<report_section>& report_sections()
          write_mode_figures},
         {"asymptotic", [](const analysis& r) { return r.asymptotic.has_value(); }, write_asymptotic},
         {"numeric",
-         [](const analysis& r) { return r.numeric.has_value() && !r.linearization->has_gyroscopic(); }, write_numeric},
+         [](const analysis& r) {
+             return r.numeric.has_value() && !r.linearization->has_gyroscopic() && !r.linearization->circulatory();
+         },
+         write_numeric},
         {"gyroscopic numeric",
-         [](const analysis& r) { return r.numeric.has_value() && r.linearization->has_gyroscopic(); },
+         [](const analysis& r) {
+             return r.numeric.has_value() && (r.linearization->has_gyroscopic() || r.linearization->circulatory());
+         },
          write_gyroscopic_numeric},
         {"damping",
          [](const analysis& r) {
