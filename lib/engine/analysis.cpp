@@ -68,7 +68,7 @@ struct stage_context {
 /// The stages, in the order they run (the rows of stage_table(), in the same order).
 enum class stage_id {
     inertia, euler, lagrangian, equations, multipliers, elimination, top, time, equilibrium, linearization,
-    characteristic, modes, asymptotic, damping, numeric, state_space, transfer, floquet, conserved,
+    characteristic, modes, asymptotic, damping, numeric, critical, state_space, transfer, floquet, conserved,
     hamiltonian, reduced, steady, simulation, workprecision, virial, verification
 };
 
@@ -374,6 +374,11 @@ const std::vector<stage_definition>& stage_table()
              c.result.numeric = numeric_normal_modes(c.scene, *c.result.linearization, damping ? &*damping : nullptr);
          },
          "small oscillations", "small oscillations", handles_constraints, false},
+        {stage_id::critical, "critical", {product::critical}, {}, {stage_id::linearization}, has_static_point,
+         [](stage_context& c) {
+             const std::optional<GiNaC::matrix> damping = damping_at_rest(c.result, c.simplifier_for_scene());
+             c.result.critical = critical_parameters(c.scene, *c.result.linearization, damping ? &*damping : nullptr);
+         }, "critical parameters", "", handles_constraints, false},
         // The linearized input–output system: A, B (and at the `values` points), then H(s).
         {stage_id::state_space, "state_space", {product::state_space}, {}, {stage_id::linearization}, has_coordinates,
          [](stage_context& c) {

@@ -20,6 +20,7 @@ bool with_values(const model& scene) { return with_coordinates(scene) && !scene.
 bool with_time_and_values(const model& scene) { return with_values(scene) && mentions_time(scene); }
 bool with_generalized_forces(const model& scene) { return with_coordinates(scene) && scene.has_generalized_forces(); }
 bool with_inputs(const model& scene) { return with_coordinates(scene) && !scene.inputs.empty(); }
+bool with_critical(const model& scene) { return with_static_point(scene) && scene.critical; }
 bool with_constraints(const model& scene) { return with_coordinates(scene) && !scene.constraints.empty(); }
 bool with_simulate_line(const model& scene) { return with_coordinates(scene) && scene.simulation; }
 bool with_bodies(const model& scene) { return !scene.bodies.empty(); }

@@ -652,6 +652,7 @@ const std::vector<report_section>& report_sections()
          },
          write_linear_system_section},
         {"floquet", [](const analysis& r) { return r.floquet.has_value(); }, write_floquet_section},
+        {"critical", [](const analysis& r) { return r.critical.has_value(); }, write_critical_section},
         {"symmetries",
          [](const analysis& r) {
              return r.conserved.has_value() || r.hamiltonian.has_value() || r.steady.has_value() ||

@@ -130,7 +130,7 @@ private:
     // statement := scene | parameters | coordinates | let | energy | point | gravity
     //            | spring | body | omega | torque | equilibrium | ratio | limit
     //            | values | initial | simulate | use | want
-    //            | dissipation | damper | force | input | constraint
+    //            | dissipation | damper | force | input | constraint | critical
     statement parse_statement()
     {
         const token& first = current();
@@ -166,6 +166,7 @@ private:
         else if (k == "force") parse_force(s);
         else if (k == "input") parse_name_list(s, k);
         else if (k == "constraint") parse_constraint(s);
+        else if (k == "critical") parse_critical(s);
         else
             throw scene_error(first.where, "unknown statement " + quote(k));
         return s;
@@ -434,6 +435,16 @@ private:
             return;
         }
         fail_here("`0` or `oo`");
+    }
+
+    // critical := 'critical' NAME 'from' expr 'to' expr
+    void parse_critical(statement& s)
+    {
+        s.names.push_back(expect_name("the parameter that runs over the range"));
+        expect_keyword("from");
+        s.value = parse_expr();
+        expect_keyword("to");
+        s.right = parse_expr();
     }
 
     // simulate := 'simulate' 'until' expr { 'step' expr | 'method' NAME | 'tolerance' expr }
