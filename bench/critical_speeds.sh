@@ -54,7 +54,7 @@ def run():
             a, b = parts[i, k], parts[i + 1, k]
             if abs(a) > 1e-12 and abs(b) > 1e-12 and (a > 0) != (b > 0):
                 root = brentq(kth_real, grid[i], grid[i + 1], args=(k,), xtol=1e-15)
-                if not found or abs(found[-1] - root) > 1e-9:
+                if all(abs(f - root) > 1e-9 for f in found):
                     found.append(root)
     return sorted(found)
 
