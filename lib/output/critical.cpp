@@ -95,14 +95,16 @@ void critical_latex(std::ostream& out, const critical_result& r)
         out << "\n$\\operatorname{Re} s = 0$ at $" << name << " = " << latex_number(c.value, 13) << "$: "
             << crossing_kind(c) << " (" << c.unstable_before << " $\\to$ " << c.unstable_after
             << " eigenvalues with $\\operatorname{Re} s > 0$).\n";
-    out << "\n\\begin{tabular}{ll}\n$" << name << "$ & eigenvalues $s$\\\\\n\\hline\n";
+    // four complex eigenvalues a row are wider than the page: the table is scaled to it
+    out << "\n\\noindent\\resizebox{\\linewidth}{!}{%\n\\begin{tabular}{ll}\n$" << name
+        << "$ & eigenvalues $s$\\\\\n\\hline\n";
     for_each_row(r, [&](std::size_t i) {
         out << "$" << latex_number(r.grid[i]) << "$ & $";
         for (std::size_t k = 0; k < r.locus[i].size(); ++k)
             out << (k == 0 ? "" : ",\\ ") << complex_text(r.locus[i][k]);
         out << "$\\\\\n";
     });
-    out << "\\end{tabular}\n";
+    out << "\\end{tabular}}\n";
 }
 
 } // namespace
