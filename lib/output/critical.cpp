@@ -6,6 +6,7 @@
 #include "core/number_text.h"
 #include "output/print.h"
 #include "output/report_sections.h"
+#include "system/gnuplot.h"
 
 #include <sstream>
 
@@ -173,7 +174,7 @@ void write_critical_section(report_writer& w)
     critical_latex(body, r);
     w.latex(body.str());
     w.figure("critical", critical_plot_script(r), 16.5, 8,
-             "Root locus: the real (solid) and imaginary (dashed, |Im s|) parts of the eigenvalues against $" +
+             "Root locus: the real (black) and imaginary (grey rings, |Im s|) parts of the eigenvalues against $" +
                  report_writer::name(r.parameter) + "$; dotted lines mark the crossings.");
 }
 
@@ -187,17 +188,18 @@ std::string critical_plot_script(const critical_result& r)
         script += "\n";
     }
     script += "EOD\n";
-    script += "set xlabel '" + r.parameter + "'\nset ylabel 'Re s (solid), Im s (dashed)'\nset key off\n";
+    script += "set xlabel " + gnuplot_string(r.parameter) + "\nset ylabel 'Re s (dots), |Im s| (rings)'\nset key off\n";
     script += "set xrange [" + shortest(r.from) + ":" + shortest(r.to) + "]\nset xzeroaxis\n";
     for (const critical_crossing& c : r.crossings)
         script += "set arrow from " + shortest(c.value) + ", graph 0 to " + shortest(c.value) +
                   ", graph 1 nohead dashtype 3 lc rgb 'gray40'\n";
     const std::size_t count = r.locus.empty() ? 0 : r.locus.front().size();
+    // points, not lines: the k-th column is not one branch where eigenvalues change order
     script += "plot ";
     for (std::size_t k = 0; k < count; ++k)
         script += std::string(k == 0 ? "" : ", ") + "$locus using 1:" + std::to_string(2 + 2 * k) +
-                  " with lines lw 2 lc rgb 'black', $locus using 1:(abs($" + std::to_string(3 + 2 * k) +
-                  ")) with lines dashtype 2 lc rgb 'gray30'";
+                  " with points pt 7 ps 0.3 lc rgb 'black', $locus using 1:(abs($" + std::to_string(3 + 2 * k) +
+                  ")) with points pt 6 ps 0.3 lc rgb 'gray50'";
     script += "\n";
     return script;
 }

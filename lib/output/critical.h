@@ -21,8 +21,8 @@ void write_critical_latex(std::ostream& out, const analysis& result);
 /// {"columns": [...], "rows": [[...]]}, "locus": {"columns", "rows"}}.
 void write_critical_json(nlohmann::ordered_json& doc, const analysis& result);
 
-/// The gnuplot commands (after the terminal) that draw the root locus: Re s (solid) and
-/// Im s (dashed) of every eigenvalue against the parameter, the crossings marked.
+/// The gnuplot commands (after the terminal) that draw the root locus: Re s (black dots)
+/// and |Im s| (grey rings) of every eigenvalue against the parameter, the crossings marked.
 std::string critical_plot_script(const critical_result& critical);
 
 } // namespace lagrange
