@@ -174,6 +174,14 @@ struct limit_request {
     bool to_infinity = false;
 };
 
+/// `critical v from 0 to 10`: where a real part of an eigenvalue crosses zero as the
+/// parameter runs over [from, to], the other parameters at the first `values` point.
+struct critical_request {
+    std::size_t parameter = 0; ///< index into model::parameters
+    double from = 0, to = 0;   ///< 0 ≤ from < to, finite
+    source_location where;
+};
+
 /// One `values` line: exact or floating values of parameters, in the order written.
 struct value_point {
     std::vector<std::pair<std::string, GiNaC::ex>> values;
@@ -252,6 +260,7 @@ struct model {
     std::optional<independent_request> independent;         ///< an `independent` line
     std::optional<ratio_request> ratio;
     std::optional<limit_request> limit;
+    std::optional<critical_request> critical; ///< a `critical` line
     std::vector<value_point> values;
     std::optional<initial_state> initial;
     std::optional<simulation_request> simulation;

@@ -70,8 +70,8 @@ struct stage_context {
 /// The stages, in the order they run (the rows of stage_table(), in the same order).
 enum class stage_id {
     inertia, euler, lagrangian, equations, multipliers, elimination, top, time, equilibrium, linearization,
-    characteristic, modes, asymptotic, damping, numeric, state_space, operating_point, transfer, floquet, conserved,
-    hamiltonian, reduced, steady, simulation, workprecision, virial, verification
+    characteristic, modes, asymptotic, damping, numeric, critical, state_space, operating_point, transfer, floquet,
+    conserved, hamiltonian, reduced, steady, simulation, workprecision, virial, verification
 };
 
 /// What a stage does with a scene's constraints: handles them, or refuses them with
@@ -290,12 +290,23 @@ const std::vector<stage_definition>& stage_table()
                  c.result.linearization = c.result.constrained->linear;
                  return;
              }
-             const equilibrium_point& point = c.result.equilibria->points.at(c.result.equilibria->chosen);
+             equilibrium_point& point = c.result.equilibria->points.at(c.result.equilibria->chosen);
              c.result.linearization =
                  linearize(c.scene, *c.result.lagrangian, point.position, c.simplifier_for_scene());
+             if (c.result.linearization->has_force_stiffness()) {
+                 // V alone no longer decides: the numeric eigenvalues do, at each point
+                 point.kind = stability::unknown;
+                 c.result.notes.push_back(std::string("V includes the stiffness −∂Q/∂q of the applied forces at "
+                                                      "the equilibrium") +
+                                          (c.result.linearization->circulatory()
+                                               ? ", which is not symmetric (circulatory forces)" : "") +
+                                          "; the stability is that of the eigenvalues (`numeric`)");
+             }
          }, "small oscillations", "small oscillations"},
         {stage_id::characteristic, "characteristic", {product::characteristic}, {}, {stage_id::linearization}, has_static_point,
          [](stage_context& c) {
+             if (c.by_default && c.result.linearization->circulatory() && c.result.linearization->has_gyroscopic())
+                 return; // not a real polynomial in ω; the modes stage says so
              c.result.characteristic = characteristic_polynomial(c.scene, *c.result.linearization);
              if (!c.result.characteristic->factored)
                  c.result.notes.push_back("the characteristic polynomial's coefficients are not factored: factoring "
@@ -305,6 +316,17 @@ const std::vector<stage_definition>& stage_table()
         {stage_id::modes, "modes", {product::frequencies, product::modes, product::normal_coordinates}, {}, {stage_id::characteristic},
          has_static_point,
          [](stage_context& c) {
+             if (c.result.linearization->circulatory()) {
+                 const std::string why = "the stiffness of the applied forces is not symmetric (circulatory), so "
+                                         "there are no real ω², mode shapes or normal coordinates; the eigenvalues "
+                                         "s are given by `numeric` (and `damping`)";
+                 if (!c.by_default)
+                     throw computation_error("`frequencies`, `modes` and `normal_coordinates` are not defined: " + why);
+                 c.result.notes.push_back("frequencies and modes not computed: " + why);
+                 if (!c.scene.values.empty())
+                     want_numeric(c);
+                 return;
+             }
              if (c.result.linearization->has_gyroscopic() &&
                  (c.wants(product::modes) || c.wants(product::normal_coordinates))) {
                  const std::string why = "with a gyroscopic matrix G the modes are complex (see `numeric`) and there "
@@ -349,6 +371,9 @@ const std::vector<stage_definition>& stage_table()
          }, "small oscillations", "symbolic modes", handles_constraints, true, true},
         {stage_id::asymptotic, "asymptotic", {product::asymptotic}, {}, {stage_id::modes}, has_static_point,
          [](stage_context& c) {
+             if (!c.result.modes)
+                 throw computation_error("`asymptotic` needs the modes, which are not defined for a non-symmetric "
+                                         "stiffness (circulatory forces)");
              if (c.result.modes->gyroscopic)
                  throw computation_error("`asymptotic` is not computed for a Lagrangian with a part linear in the "
                                          "velocities (gyroscopic terms)");
@@ -372,6 +397,11 @@ const std::vector<stage_definition>& stage_table()
              c.result.numeric = numeric_normal_modes(c.scene, *c.result.linearization, damping ? &*damping : nullptr);
          },
          "small oscillations", "small oscillations", handles_constraints, false},
+        {stage_id::critical, "critical", {product::critical}, {}, {stage_id::linearization}, has_static_point,
+         [](stage_context& c) {
+             const std::optional<GiNaC::matrix> damping = damping_at_rest(c.result, c.simplifier_for_scene());
+             c.result.critical = critical_parameters(c.scene, *c.result.linearization, damping ? &*damping : nullptr);
+         }, "critical parameters", "", handles_constraints, false},
         // The linearized input–output system: A, B (and at the `values` points), then H(s).
         {stage_id::state_space, "state_space", {product::state_space}, {}, {stage_id::linearization},
          has_equilibrium_state_space,

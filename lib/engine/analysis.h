@@ -23,6 +23,7 @@
 #include "mechanics/steady_motion.h"
 #include "mechanics/symmetries.h"
 #include "numeric/compiled_modes.h"
+#include "numeric/critical.h"
 #include "numeric/floquet.h"
 #include "numeric/linear_response.h"
 #include "numeric/point_modes.h"
@@ -58,6 +59,7 @@ struct analysis {
     std::optional<modes_result> modes;
     std::optional<asymptotic_result> asymptotic;
     std::optional<std::vector<numeric_modes>> numeric;
+    std::optional<critical_result> critical; ///< crossings of the imaginary axis over the `critical` range
     std::optional<std::vector<inertia_result>> inertia; ///< one per body, in scene order
     std::optional<std::vector<euler_result>> euler;     ///< one per free body (with `omega`)
     std::optional<std::vector<top_result>> tops;        ///< bodies turned by three coordinates (heavy tops)

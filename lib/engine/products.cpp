@@ -20,6 +20,7 @@ bool with_values(const model& scene) { return with_coordinates(scene) && !scene.
 bool with_time_and_values(const model& scene) { return with_values(scene) && mentions_time(scene); }
 bool with_generalized_forces(const model& scene) { return with_coordinates(scene) && scene.has_generalized_forces(); }
 bool with_inputs(const model& scene) { return with_coordinates(scene) && !scene.inputs.empty(); }
+bool with_critical(const model& scene) { return with_static_point(scene) && scene.critical; }
 bool with_constraints(const model& scene) { return with_coordinates(scene) && !scene.constraints.empty(); }
 /// An input, a `linearize about` line that names the operating point, or a steady motion
 /// with constraints (the operating point of its state space).

@@ -23,12 +23,19 @@ using GiNaC::ex;
 
 /// The coefficients of the primitive polynomial det(pencil) in `s`, lowest degree first:
 /// every factor common to all coefficients removed and the leading one positive.
-std::vector<ex> primitive_determinant(const GiNaC::matrix& pencil, const GiNaC::symbol& s)
+std::vector<ex> primitive_determinant(GiNaC::matrix pencil, const GiNaC::symbol& s)
 {
+    // gcd and divide take polynomials over the rationals: decimals (the bicycle's
+    // benchmark matrices) and functions of the parameters become symbols here and are put
+    // back at the end
+    GiNaC::exmap atoms;
+    for (unsigned i = 0; i < pencil.rows(); ++i)
+        for (unsigned j = 0; j < pencil.cols(); ++j)
+            pencil(i, j) = pencil(i, j).to_rational(atoms);
     ex det = fraction_free_determinant(pencil).normal();
     ex fraction = det.numer_denom();
     ex numerator = fraction.op(0).expand();
-    std::optional<int> denominator_sign = sign_of(fraction.op(1));
+    std::optional<int> denominator_sign = sign_of(fraction.op(1).subs(atoms));
     std::vector<ex> coefficients;
     for (int k = 0; k <= numerator.degree(s); ++k)
         coefficients.push_back(numerator.coeff(s, k).expand());
@@ -36,17 +43,20 @@ std::vector<ex> primitive_determinant(const GiNaC::matrix& pencil, const GiNaC::
     for (const ex& c : coefficients)
         if (!c.is_zero())
             content = content.is_zero() ? c : GiNaC::gcd(content, c);
-    if (content.is_zero())
+    if (content.is_zero()) {
+        for (ex& c : coefficients)
+            c = c.subs(atoms);
         return coefficients;
-    int flip = (denominator_sign && *denominator_sign < 0) ? -1 : 1;
-    std::optional<int> leading = sign_of(coefficients.back() / content);
+    }
+    int flip = (denominator_sign.value_or(1) < 0) ? -1 : 1;
+    std::optional<int> leading = sign_of((coefficients.back() / content).subs(atoms));
     if (leading && *leading < 0)
         flip = -flip;
     for (ex& c : coefficients) {
         ex quotient;
         if (!GiNaC::divide(c, content, quotient))
             quotient = (c / content).normal();
-        c = factor_if_quick(flip * quotient);
+        c = factor_if_quick(flip * quotient).subs(atoms);
     }
     return coefficients;
 }
@@ -93,7 +103,8 @@ damped_factor solve_factor(const ex& factor, const GiNaC::symbol& s)
 /// degree above 2.
 std::optional<std::vector<damped_factor>> closed_forms(const ex& polynomial, const GiNaC::symbol& s)
 {
-    ex factored = factor_if_quick(polynomial);
+    GiNaC::exmap atoms; // decimals: factor() takes rational coefficients (primitive_determinant)
+    ex factored = factor_if_quick(polynomial.to_rational(atoms)).subs(atoms);
     std::vector<std::pair<ex, int>> parts;
     auto add = [&](const ex& e) {
         if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::posint))

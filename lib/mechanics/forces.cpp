@@ -4,6 +4,10 @@
 #include "mechanics/forces.h"
 
 #include "algebra/calculus.h"
+#include "algebra/sign.h"
+#include "algebra/sorted_terms.h"
+#include "core/errors.h"
+#include "mechanics/equilibrium.h"
 
 namespace lagrange {
 
@@ -21,6 +25,16 @@ GiNaC::ex canonical_ratio(const GiNaC::ex& e, const simplifier& simplify)
 }
 
 } // namespace
+
+GiNaC::exmap at_rest(const model& scene)
+{
+    GiNaC::exmap rest;
+    for (const coordinate& c : scene.coordinates)
+        rest[c.velocity] = 0;
+    for (const input_signal& u : scene.inputs)
+        rest[u.symbol] = 0;
+    return rest;
+}
 
 GiNaC::ex damper_rayleigh(const model& scene, const damper& d, const simplifier& simplify)
 {
@@ -41,16 +55,46 @@ void require_forces_vanish_at_rest(const model& scene, const simplifier& simplif
     if (scene.forces.empty() && scene.point_forces.empty())
         return;
     generalized_forces q = derive_generalized_forces(scene, simplify);
-    GiNaC::exmap rest;
-    for (const coordinate& c : scene.coordinates)
-        rest[c.velocity] = 0;
-    for (const input_signal& u : scene.inputs)
-        rest[u.symbol] = 0;
+    const GiNaC::exmap rest = at_rest(scene);
+    // A named static equilibrium: force_stiffness checks the forces there.
+    if (scene.equilibrium && !scene.steady && scene.constraints.empty())
+        return;
     for (std::size_t j = 0; j < scene.coordinates.size(); ++j)
         if (!canonical_ratio(q.applied[j].subs(rest), simplify).is_zero())
             throw computation_error("the applied force on `" + scene.coordinates[j].name +
                                     "` does not vanish at rest (with the inputs at 0), so an equilibrium of V "
-                                    "is not one of the motion: small oscillations are not computed");
+                                    "is not one of the motion: small oscillations are not computed" +
+                                    std::string(scene.constraints.empty() && !scene.steady
+                                                    ? " (name a point where it vanishes with an `equilibrium` line)"
+                                                    : ""));
+}
+
+GiNaC::matrix force_stiffness(const model& scene, const std::vector<GiNaC::ex>& at, const simplifier& simplify)
+{
+    const unsigned n = static_cast<unsigned>(scene.coordinates.size());
+    GiNaC::matrix stiffness(n, n);
+    if (scene.forces.empty() && scene.point_forces.empty())
+        return stiffness; // dissipation alone has no stiffness at rest
+    const generalized_forces q = derive_generalized_forces(scene, simplify);
+    const GiNaC::exmap rest = at_rest(scene);
+    for (unsigned i = 0; i < n; ++i) {
+        const GiNaC::ex at_rest = q.total[i].subs(rest);
+        const GiNaC::ex residual = tidy(evaluate_at(at_rest, scene, at));
+        if (!vanishes(residual))
+            throw computation_error("the applied force on `" + scene.coordinates[i].name + "` is " +
+                                    message_text(residual) +
+                                    " at the equilibrium (at rest, inputs 0), not 0: the point is not an "
+                                    "equilibrium of the motion, so small oscillations about it are not computed");
+        for (unsigned j = 0; j < n; ++j) {
+            const GiNaC::ex entry =
+                tidy(evaluate_at(-differentiate(at_rest, scene.coordinates[j].position), scene, at));
+            if (entry.has(scene.time))
+                throw computation_error("the stiffness of the force on `" + scene.coordinates[i].name +
+                                        "` at the equilibrium changes with time: no small oscillations");
+            stiffness(i, j) = entry;
+        }
+    }
+    return stiffness;
 }
 
 generalized_forces derive_generalized_forces(const model& scene, const simplifier& simplify)

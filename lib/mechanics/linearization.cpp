@@ -14,6 +14,7 @@
 #include "algebra/sign.h"
 #include "core/errors.h"
 #include "mechanics/equilibrium.h"
+#include "mechanics/forces.h"
 #include "mechanics/gyroscopic.h"
 
 #include <functional>
@@ -155,6 +156,26 @@ bool linearization_result::has_gyroscopic() const
     return false;
 }
 
+bool linearization_result::has_force_stiffness() const
+{
+    for (unsigned i = 0; i < force_stiffness.rows(); ++i)
+        for (unsigned j = 0; j < force_stiffness.cols(); ++j)
+            if (!vanishes(force_stiffness(i, j)))
+                return true;
+    return false;
+}
+
+bool linearization_result::circulatory() const
+{
+    if (!has_force_stiffness())
+        return false;
+    for (unsigned i = 0; i < potential.rows(); ++i)
+        for (unsigned j = i + 1; j < potential.cols(); ++j)
+            if (!vanishes(potential(i, j) - potential(j, i)))
+                return true;
+    return false;
+}
+
 std::vector<ex> characteristic_coefficients(const GiNaC::matrix& kinetic, const GiNaC::matrix& potential,
                                             const GiNaC::symbol& w, bool* factored)
 {
@@ -220,6 +241,11 @@ linearization_result linearize(const model& scene, const lagrangian_result& lagr
     result.potential = potential_hessian(scene, simplify.canonical(lagrangian.potential), at);
     if (!lagrangian.gyroscopic.is_zero())
         result.gyroscopic = gyroscopic_matrix(scene, simplify.canonical(lagrangian.gyroscopic), at);
+    result.force_stiffness = force_stiffness(scene, at, simplify);
+    if (result.has_force_stiffness())
+        for (unsigned i = 0; i < n; ++i)
+            for (unsigned j = 0; j < n; ++j)
+                result.potential(i, j) = tidy(result.potential(i, j) + result.force_stiffness(i, j));
     for (std::size_t i = 0; i < n; ++i)
         if (vanishes(result.kinetic(i, i)))
             throw computation_error("coordinate `" + scene.coordinates[i].name +
@@ -237,6 +263,10 @@ linearization_result linearize(const model& scene, const lagrangian_result& lagr
 
 characteristic_result characteristic_polynomial(const model& scene, const linearization_result& linear)
 {
+    if (linear.circulatory() && linear.has_gyroscopic())
+        throw computation_error("with circulatory forces (a non-symmetric stiffness) and a gyroscopic matrix G, "
+                                "det(V − ω²T + iωG) is not a real polynomial in ω: the eigenvalues s are given "
+                                "by `numeric`");
     characteristic_result result{GiNaC::possymbol(unused_name(scene, "omega")), 0};
     GiNaC::possymbol w("W");
     std::vector<ex> coefficients =

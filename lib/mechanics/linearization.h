@@ -18,16 +18,28 @@ namespace lagrange {
 struct linearization_result {
     std::vector<GiNaC::ex> at;  ///< the equilibrium
     GiNaC::matrix kinetic;      ///< T_ij = ∂²T/∂q̇i∂q̇j at the equilibrium
-    GiNaC::matrix potential;    ///< V_ij = ∂²U/∂qi∂qj at the equilibrium (U = −L0, lagrangian.h)
+    /// V_ij = ∂²U/∂qi∂qj at the equilibrium (U = −L0, lagrangian.h), plus the stiffness
+    /// K_f = −∂Q/∂q of position-dependent applied forces there (`force_stiffness`): the K of
+    /// T q̈ + (C − G) q̇ + K q = 0. Not symmetric when those forces are circulatory.
+    GiNaC::matrix potential;
     /// G_ij = ∂aⱼ/∂qi − ∂aᵢ/∂qj at the equilibrium, with L1 = Σ aᵢ(q) q̇ᵢ: antisymmetric; the
     /// linearized equations are T q̈ − G q̇ + V q = 0. All zero when L has no part linear in
     /// the velocities.
     GiNaC::matrix gyroscopic;
     bool has_gyroscopic() const; ///< whether some entry of G is not identically 0
+    /// K_f = −∂Q/∂q at the equilibrium, at rest, inputs 0 (mechanics/forces.h), already in
+    /// `potential`; empty (0 × 0) or zero when no applied force depends on the position.
+    GiNaC::matrix force_stiffness = GiNaC::matrix(0, 0);
+    bool has_force_stiffness() const; ///< whether some entry of K_f is not identically 0
+    /// Whether `potential` is not symmetric (circulatory forces): there are then no real
+    /// mode shapes nor normal coordinates, and the eigenvalues s of det(s²T + s(C − G) + K)
+    /// are found numerically (numeric/quadratic_modes.h).
+    bool circulatory() const;
 };
 
-/// T and V at `at`. Throws computation_error if T is not positive definite
-/// (naming a coordinate with no kinetic energy where that is the cause).
+/// T and V (with the applied forces' stiffness) at `at`. Throws computation_error if T
+/// is not positive definite (naming a coordinate with no kinetic energy where that is the
+/// cause), or an applied force does not vanish at `at` (forces.h, force_stiffness).
 linearization_result linearize(const model& scene, const lagrangian_result& lagrangian,
                                const std::vector<GiNaC::ex>& at, const simplifier& simplify);
 

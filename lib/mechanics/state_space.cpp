@@ -80,11 +80,7 @@ GiNaC::matrix input_matrix(const model& scene, const std::vector<ex>& at, const 
     if (m == 0)
         return result;
     const generalized_forces forces = derive_generalized_forces(scene, simplify);
-    GiNaC::exmap rest;
-    for (const input_signal& u : scene.inputs)
-        rest[u.symbol] = 0;
-    for (const coordinate& c : scene.coordinates)
-        rest[c.velocity] = 0;
+    const GiNaC::exmap rest = at_rest(scene);
     for (unsigned i = 0; i < n; ++i)
         for (unsigned j = 0; j < m; ++j) {
             const ex rate = differentiate(forces.total[i], scene.inputs[j].symbol).subs(rest);

@@ -39,7 +39,8 @@ computation_error located(const std::string& message, const std::string& where)
 } // namespace
 
 point_modes::point_modes(const model& scene, const linearization_result& linear, const GiNaC::matrix* damping)
-    : scene_(&scene), linear_(&linear), size_(linear.kinetic.rows()), gyroscopic_(linear.has_gyroscopic()),
+    : scene_(&scene), linear_(&linear), size_(linear.kinetic.rows()),
+      gyroscopic_(linear.has_gyroscopic() || linear.circulatory()),
       damped_(damping && !is_zero(*damping)), damping_(damped_ ? *damping : GiNaC::matrix(size_, size_))
 {
     std::vector<GiNaC::ex> symbols;

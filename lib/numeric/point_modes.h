@@ -19,7 +19,8 @@ namespace lagrange {
 
 /// T, V (and G, C where not zero) compiled once, evaluated at many points.
 /// - G = 0: compiled_modes (real modes, ω with an error bound that meets the tolerance);
-/// - G ≠ 0: the quadratic eigenproblem (s²T − sG + V)x = 0 (numeric/gyroscopic_modes.h);
+/// - G ≠ 0, or V not symmetric (circulatory forces): the quadratic eigenproblem
+///   (s²T − sG + V)x = 0 (numeric/gyroscopic_modes.h);
 /// - C ≠ 0: besides, the damped eigenvalues of (s²T + s(C − G) + V)x = 0
 ///   (numeric/damped_modes.h), which decide `stability`.
 /// Not thread-safe (it keeps its workspace); copy it per thread.
@@ -31,7 +32,7 @@ public:
 
     std::size_t size() const { return size_; }               ///< number of coordinates
     bool uses(std::size_t k) const { return used_[k]; }      ///< whether parameter k needs a value
-    bool gyroscopic() const { return gyroscopic_; }
+    bool gyroscopic() const { return gyroscopic_; } ///< G ≠ 0 or a circulatory V: complex modes
     bool damped() const { return damped_; }
 
     /// The modes at `values` (every parameter in model::parameters order; those not used may

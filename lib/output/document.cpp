@@ -16,6 +16,7 @@
 #include "output/print.h"
 #include "output/simulation_output.h"
 #include "output/virial_output.h"
+#include "output/critical.h"
 
 #include <nlohmann/json.hpp>
 
@@ -218,6 +219,7 @@ const std::vector<family_writers>& families()
                  doc["workprecision"] = workprecision_json(*r.workprecision);
          }},
         family<write_virial_text, write_virial_latex, write_virial_json>(),
+        family<write_critical_text, write_critical_latex, write_critical_json>(),
         {write_verification_text, write_verification_latex, write_verification_json},
     };
     return table;

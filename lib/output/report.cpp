@@ -626,9 +626,14 @@ const std::vector<report_section>& report_sections()
          write_mode_figures},
         {"asymptotic", [](const analysis& r) { return r.asymptotic.has_value(); }, write_asymptotic},
         {"numeric",
-         [](const analysis& r) { return r.numeric.has_value() && !r.linearization->has_gyroscopic(); }, write_numeric},
+         [](const analysis& r) {
+             return r.numeric.has_value() && !r.linearization->has_gyroscopic() && !r.linearization->circulatory();
+         },
+         write_numeric},
         {"gyroscopic numeric",
-         [](const analysis& r) { return r.numeric.has_value() && r.linearization->has_gyroscopic(); },
+         [](const analysis& r) {
+             return r.numeric.has_value() && (r.linearization->has_gyroscopic() || r.linearization->circulatory());
+         },
          write_gyroscopic_numeric},
         {"damping",
          [](const analysis& r) {
@@ -651,6 +656,7 @@ const std::vector<report_section>& report_sections()
          [](const analysis& r) { return r.operating && r.state_space && wants(r, product::state_space); },
          write_operating_point_section},
         {"floquet", [](const analysis& r) { return r.floquet.has_value(); }, write_floquet_section},
+        {"critical", [](const analysis& r) { return r.critical.has_value(); }, write_critical_section},
         {"symmetries",
          [](const analysis& r) {
              return r.conserved.has_value() || r.hamiltonian.has_value() || r.steady.has_value() ||

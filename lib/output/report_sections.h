@@ -46,6 +46,10 @@ void write_symmetries_section(report_writer& w);
 /// integrability, the multipliers and the constraint forces.
 void write_constraints_section(report_writer& w);
 
+/// Critical parameters (critical.cpp): the crossings of the imaginary axis over the
+/// `critical` range, the table of eigenvalues and the root locus.
+void write_critical_section(report_writer& w);
+
 /// The parameter values of a numeric point as LaTeX, "m = 1,\ k = 4" (the numeric sections'
 /// subsection titles).
 std::string values_latex(const numeric_modes& point);

@@ -105,7 +105,7 @@ struct statement {
     std::optional<name_ref> method;  ///< simulate
     std::optional<body_statement> body;
     bool on_point = false;           ///< `force on P (...)` rather than `force q = ...`
-    expr_ptr right;                  ///< constraint: the right-hand side (`value` is the left)
+    expr_ptr right;                  ///< constraint: the right-hand side (`value` is the left); critical: `to`
 };
 
 struct scene_ast {

@@ -16,6 +16,7 @@
 #include "system/files.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -119,6 +120,8 @@ private:
             if (scene_.independent)
                 throw scene_error(s.where, "the independent coordinates are given twice");
             scene_.independent = lower_independent(s, scene_, source_.line(s.where.line));
+        } else if (k == "critical") {
+            lower_critical(s);
         }
     }
 
@@ -463,6 +466,36 @@ private:
         if (!value.info(GiNaC::info_flags::real) && GiNaC::is_a<GiNaC::numeric>(value.evalf()))
             throw scene_error(node.where, "an input's value must be real");
         return value;
+    }
+
+    void lower_critical(const statement& s)
+    {
+        if (scene_.critical)
+            throw scene_error(s.where, "a critical range is given twice");
+        const name_ref& n = s.names[0];
+        auto found = names_.find(n.name);
+        if (found == names_.end() || found->second.name_kind != name_entry::kind::parameter)
+            throw scene_error(n.where, quote(n.name) + " is not a parameter: `critical` runs a parameter over a "
+                                                       "range, as `critical v from 0 to 10`");
+        critical_request request;
+        for (std::size_t k = 0; k < scene_.parameters.size(); ++k)
+            if (scene_.parameters[k].name == n.name)
+                request.parameter = k;
+        request.where = s.where;
+        const auto bound = [&](const expr_node& e) {
+            const GiNaC::ex value = constant_value(e, "a range's end").evalf();
+            const double number = GiNaC::ex_to<GiNaC::numeric>(value).to_double();
+            // 0 is the edge of a parameter's domain: the linearization is evaluated there as numbers
+            if (!(number >= 0) || !std::isfinite(number))
+                throw scene_error(e.where, "a range's end must be a finite number ≥ 0, as the parameter " +
+                                               quote(n.name) + " is assumed positive");
+            return number;
+        };
+        request.from = bound(*s.value);
+        request.to = bound(*s.right);
+        if (!(request.from < request.to))
+            throw scene_error(s.right->where, "the range's end must be above its start");
+        scene_.critical = request;
     }
 
     value_point lower_values(const statement& s)

@@ -131,6 +131,7 @@ private:
     //            | spring | body | omega | torque | equilibrium | ratio | limit
     //            | values | initial | simulate | use | want
     //            | dissipation | damper | force | input | constraint | linearize | independent
+    //            | critical
     statement parse_statement()
     {
         const token& first = current();
@@ -168,6 +169,7 @@ private:
         else if (k == "constraint") parse_constraint(s);
         else if (k == "linearize") parse_linearize(s);
         else if (k == "independent") parse_independent(s);
+        else if (k == "critical") parse_critical(s);
         else
             throw scene_error(first.where, "unknown statement " + quote(k));
         return s;
@@ -454,6 +456,16 @@ private:
             return;
         }
         fail_here("`0` or `oo`");
+    }
+
+    // critical := 'critical' NAME 'from' expr 'to' expr
+    void parse_critical(statement& s)
+    {
+        s.names.push_back(expect_name("the parameter that runs over the range"));
+        expect_keyword("from");
+        s.value = parse_expr();
+        expect_keyword("to");
+        s.right = parse_expr();
     }
 
     // simulate := 'simulate' 'until' expr { 'step' expr | 'method' NAME | 'tolerance' expr }

@@ -472,7 +472,9 @@ void check_linearization(checker& c, const linearization_result& linear, bool ch
     for (const parameter_point& p : c.points) {
         std::optional<std::vector<double>> q = equilibrium_at(linear.at, p);
         std::optional<Eigen::MatrixXd> kinetic = matrix_at(linear.kinetic, p.map);
-        std::optional<Eigen::MatrixXd> potential = matrix_at(linear.potential, p.map);
+        // V less the applied forces' stiffness (linearization.h): the Hessian of U alone
+        std::optional<Eigen::MatrixXd> potential = matrix_at(
+            linear.has_force_stiffness() ? linear.potential.sub(linear.force_stiffness) : linear.potential, p.map);
         if (!q || !kinetic || !potential)
             continue;
         const std::vector<double> rest = resting_state(c, *q, p);

@@ -3,9 +3,12 @@
  *  Dissipation, dampers, applied forces and inputs: the front end's statements and
  *  errors, and the generalized forces in the equations of motion, against SymPy's
  *  multi_mass_spring_damper results, Newton's vector form of a damper, and virtual work
- *  by hand. */
+ *  by hand; the stiffness of position-dependent forces in the linearization (a circulatory
+ *  follower force) against central differences of the nonlinear right-hand side and the
+ *  eigenvalues of m s² + b s + k ± ic by the quadratic formula. */
 #include "engine/analysis.h"
 #include "mechanics/equations_of_motion.h"
+#include "numeric/compiled_motion.h"
 #include "verify/verify.h"
 #include "mechanics/forces.h"
 #include "mechanics/lagrangian.h"
@@ -299,4 +302,91 @@ force on A (F0*sin(t), 0)
     input.equations = &wrong;
     CHECK_THROWS_WITH(verify_results(scene, input, {product::equations}),
                       Catch::Contains("verification failed: the equations of motion"));
+}
+
+namespace {
+
+/// A follower force −c sin y on x and c sin x cos y on y: its stiffness at the origin,
+/// [[0, c], [−c, 0]], is circulatory; b damps, u drives x.
+const char* follower = R"(parameters m k c b
+coordinates x y
+input u
+T = 1/2*m*(x'^2 + y'^2)
+V = 1/2*k*(x^2 + y^2)
+force x = -c*sin(y) - b*x'*cos(y) + u
+force y = c*sin(x)*cos(y) - b*y'
+equilibrium x = 0, y = 0
+values m = 1.5, k = 2, c = 0.7, b = 0.3, u = 0
+)";
+
+} // namespace
+
+TEST_CASE("forces: a circulatory force's stiffness in A against central differences of the equations",
+          "[forces][state_space]")
+{
+    const model scene = load(follower);
+    const analysis a = analyze(scene, {product::state_space, product::equations});
+    REQUIRE(a.linearization);
+    CHECK(a.linearization->circulatory());
+    REQUIRE(a.state_space_values.size() == 1);
+    const state_space_point& at = a.state_space_values.front();
+    std::map<std::string, GiNaC::ex> values;
+    for (const auto& [name, value] : scene.values.front().values)
+        values[name] = value;
+    values["u"] = 0;
+    compiled_motion motion(scene, *a.equations, values);
+    const auto rhs = [&](std::vector<double> x) {
+        x.resize(motion.dimension(), 0.0);
+        std::vector<double> out(motion.dimension());
+        motion.rhs(0, x.data(), out.data());
+        return out;
+    };
+    const double h = 1e-6;
+    for (std::size_t j = 0; j < 4; ++j) {
+        std::vector<double> plus(4, 0.0), minus(4, 0.0);
+        plus[j] = h;
+        minus[j] = -h;
+        const std::vector<double> up = rhs(plus), down = rhs(minus);
+        for (std::size_t i = 0; i < 4; ++i) {
+            INFO("A(" << i << ", " << j << ")");
+            CHECK_THAT(at.a(i, j), Catch::WithinAbs((up[i] - down[i]) / (2 * h), 1e-8));
+        }
+    }
+    // K = k I + [[0, c], [−c, 0]]: ẍ = −(k x + c y)/m there
+    CHECK_THAT(at.a(2, 1), Catch::WithinRel(-0.7 / 1.5, 1e-12));
+    CHECK_THAT(at.a(3, 0), Catch::WithinRel(0.7 / 1.5, 1e-12));
+}
+
+TEST_CASE("forces: a circulatory force's eigenvalues are the roots of m s² + b s + k ± ic", "[forces][numeric]")
+{
+    const model scene = load(follower);
+    const analysis a = analyze(scene, {product::numeric});
+    REQUIRE(a.numeric);
+    const std::vector<std::complex<double>>& computed = a.numeric->front().eigenvalues;
+    REQUIRE(computed.size() == 4);
+    const double m = 1.5, k = 2, c = 0.7, b = 0.3;
+    for (double sign : {1.0, -1.0})
+        for (double root : {1.0, -1.0}) {
+            const std::complex<double> stiffness(k, sign * c);
+            const std::complex<double> s = (-b + root * std::sqrt(b * b - 4 * m * stiffness)) / (2 * m);
+            double nearest = 1e300;
+            for (const std::complex<double>& e : computed)
+                nearest = std::min(nearest, std::abs(e - s));
+            INFO("s = " << s);
+            CHECK(nearest <= 1e-12 * std::abs(s));
+        }
+    // circulatory: no real ω² nor mode shapes, and V alone does not decide the stability
+    CHECK_THROWS_WITH(analyze(scene, {product::modes}), Catch::Contains("not defined"));
+}
+
+TEST_CASE("forces: a force that does not vanish at the equilibrium is refused", "[forces][errors]")
+{
+    std::string text = follower;
+    text.replace(text.find("force y = "), std::string("force y = ").size(), "force y = c + ");
+    CHECK_THROWS_WITH(analyze(load(text), {product::numeric}),
+                      Catch::Contains("at the equilibrium (at rest, inputs 0), not 0"));
+    // without an `equilibrium` line the equilibria of V are not those of the motion
+    std::string unnamed = follower;
+    unnamed.replace(unnamed.find("equilibrium x = 0, y = 0\n"), std::string("equilibrium x = 0, y = 0\n").size(), "");
+    CHECK_THROWS_WITH(analyze(load(unnamed), {product::numeric}), Catch::Contains("`equilibrium` line"));
 }

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file test_critical.cpp
+ *  Critical parameters: the reduced Whipple bicycle (examples/bicycle_reduced.lag) against
+ *  the benchmark of Meijaard, Papadopoulos, Ruina and Schwab, Proc. R. Soc. A 463 (2007)
+ *  1955–1982: the lean/steer eigenvalues at v = 0, 1, …, 10 m/s of its Table 2 (as
+ *  transcribed in D. L. Peterson's whipple test, and for v = 0, 4, 5, 10 in the
+ *  `pathfinder` package's test_whipple.py) and the weave and capsize speeds of its §5;
+ *  a range with no crossing; a damped oscillator whose stiffness k − a changes sign at
+ *  a = k. */
+#include "engine/analysis.h"
+#include "numeric/critical.h"
+#include "helpers/cli_runner.h"
+#include "helpers/scene_helpers.h"
+
+#include <catch2/catch.hpp>
+
+#include <complex>
+#include <map>
+#include <vector>
+
+using namespace lagrange;
+using lagrange_test::load;
+
+namespace {
+
+using complex = std::complex<double>;
+
+/// Table 2 of Meijaard et al. (2007): at each speed, the weave pair (one of the conjugates
+/// listed), the capsize and the castor eigenvalues; at v = 0 the four real ones.
+const std::map<int, std::vector<complex>>& table_2()
+{
+    static const std::map<int, std::vector<complex>> table = {
+        {0, {3.13164324790656, -3.13164324790656, 5.53094371765393, -5.53094371765393}},
+        {1, {{3.52696170990070, 0.80774027519930}, -3.13423125066578, -7.11008014637442}},
+        {2, {{2.68234517512745, 1.68066296590675}, -3.07158645641514, -8.67387984831735}},
+        {3, {{1.70675605663975, 2.31582447384325}, -2.63366137253667, -10.35101467245920}},
+        {4, {{0.41325331521125, 3.07910818603206}, -1.42944427361326, -12.15861426576447}},
+        {5, {{-0.77534188219585, 4.46486771378823}, -0.32286642900409, -14.07838969279822}},
+        {6, {{-1.52644486584142, 5.87673060598709}, -0.00406690076970, -16.08537123098030}},
+        {7, {{-2.13875644258362, 7.19525913329805}, 0.10268170574766, -18.15788466125262}},
+        {8, {{-2.69348683581097, 8.46037971396931}, 0.14327879765713, -20.27940894394569}},
+        {9, {{-3.21675402252485, 9.69377351531791}, 0.15790184030917, -22.43788559040858}},
+        {10, {{-3.72016840437287, 10.90681139476287}, 0.16105338653172, -24.62459635017404}},
+    };
+    return table;
+}
+
+model bicycle()
+{
+    return load_model(source_text("bicycle_reduced.lag",
+                                  lagrange_test::read_file(std::string(LAGRANGE_SOURCE_DIR) +
+                                                           "/examples/bicycle_reduced.lag")));
+}
+
+/// The computed eigenvalue nearest `reference`, relative to |reference|.
+double relative_distance(const std::vector<complex>& computed, complex reference)
+{
+    double best = 1e300;
+    for (const complex& s : computed)
+        best = std::min(best, std::abs(s - reference) / std::abs(reference));
+    return best;
+}
+
+} // namespace
+
+TEST_CASE("critical: the reduced bicycle's eigenvalues match Meijaard's Table 2", "[critical]")
+{
+    const model scene = bicycle();
+    const analysis result = analyze(scene, {product::critical});
+    REQUIRE(result.critical);
+    const critical_result& r = *result.critical;
+    REQUIRE(r.parameter == "v");
+    // the table's rows are v = 0, 1, …, 10 exactly
+    std::size_t rows = 0;
+    for (std::size_t i = 0; i < r.grid.size(); i += r.table_every, ++rows) {
+        const int v = static_cast<int>(rows);
+        INFO("v = " << v);
+        REQUIRE(r.grid[i] == static_cast<double>(v));
+        REQUIRE(r.locus[i].size() == 4);
+        for (const complex& reference : table_2().at(v)) {
+            INFO("reference " << reference);
+            CHECK(relative_distance(r.locus[i], reference) <= 1e-10);
+            CHECK(relative_distance(r.locus[i], std::conj(reference)) <= 1e-10);
+        }
+    }
+    CHECK(rows == 11);
+}
+
+TEST_CASE("critical: the reduced bicycle's weave and capsize speeds to 1e-10", "[critical]")
+{
+    const model scene = bicycle();
+    const analysis result = analyze(scene, {product::critical});
+    REQUIRE(result.critical);
+    const std::vector<critical_crossing>& crossings = result.critical->crossings;
+    REQUIRE(crossings.size() == 2);
+    // Meijaard et al. (2007), §5: v_w = 4.292382536341, v_c = 6.024262015388 (m/s)
+    CHECK(std::abs(crossings[0].value - 4.292382536341) <= 1e-10);
+    CHECK(std::abs(crossings[1].value - 6.024262015388) <= 1e-10);
+    CHECK(crossings[0].tolerance <= 1e-12);
+    CHECK(crossings[1].tolerance <= 1e-12);
+    // the weave pair crosses at ±iω (the paper's 3.43503384866144 rad/s), capsize through 0
+    CHECK(std::abs(crossings[0].eigenvalue.imag() - 3.43503384866144) <= 1e-9);
+    CHECK(std::abs(crossings[1].eigenvalue) <= 1e-9);
+    CHECK(crossings[0].unstable_before == 2);
+    CHECK(crossings[0].unstable_after == 0);
+    CHECK(crossings[1].unstable_before == 0);
+    CHECK(crossings[1].unstable_after == 1);
+}
+
+TEST_CASE("critical: a range with no crossing has none", "[critical]")
+{
+    std::string text = lagrange_test::read_file(std::string(LAGRANGE_SOURCE_DIR) + "/examples/bicycle_reduced.lag");
+    const std::string line = "critical v from 0 to 10";
+    text.replace(text.find(line), line.size(), "critical v from 7 to 10");
+    const analysis result = analyze(load(text), {product::critical});
+    REQUIRE(result.critical);
+    CHECK(result.critical->crossings.empty());
+}
+
+TEST_CASE("critical: a damped stiffness through zero crosses where it vanishes", "[critical]")
+{
+    // m x'' + b x' + (k − a) x = 0 with a force a·x − b·x': one real s through 0 at a = k
+    const model scene = load(R"(parameters m k a b
+coordinates x
+T = 1/2*m*x'^2
+V = 1/2*k*x^2
+force x = a*x - b*x'
+equilibrium x = 0
+values m = 2, k = 3, b = 0.5
+critical a from 1 to 5
+)");
+    const analysis result = analyze(scene, {product::critical});
+    REQUIRE(result.critical);
+    REQUIRE(result.critical->crossings.size() == 1);
+    CHECK(std::abs(result.critical->crossings[0].value - 3) <= 1e-10);
+    CHECK(result.critical->crossings[0].unstable_before == 0);
+    CHECK(result.critical->crossings[0].unstable_after == 1);
+}
+
+TEST_CASE("critical: errors", "[critical]")
+{
+    lagrange_test::require_error("parameters m k\ncoordinates x\nT = 1/2*m*x'^2\ncritical w from 0 to 1\n", 4, 10,
+                                 "is not a parameter");
+    lagrange_test::require_error("parameters m k\ncoordinates x\nT = 1/2*m*x'^2\ncritical k from 2 to 1\n", 4, 22,
+                                 "above its start");
+    lagrange_test::require_error("parameters m k\ncoordinates x\nT = 1/2*m*x'^2\ncritical k from -1 to 1\n", 4, 17,
+                                 "≥ 0");
+    // no `values` for the other parameter
+    const model scene = load("parameters m k\ncoordinates x\nT = 1/2*m*x'^2\nV = 1/2*k*x^2\nequilibrium x = 0\n"
+                             "critical k from 1 to 2\n");
+    REQUIRE_THROWS_WITH(analyze(scene, {product::critical}), Catch::Contains("needs a value of parameter `m`"));
+}
