@@ -13,6 +13,7 @@
 #include "scene/lower_constraint.h"
 #include "scene/lower_expression.h"
 #include "scene/parser.h"
+#include "scene/slips.h"
 #include "system/files.h"
 
 #include <algorithm>
@@ -213,32 +214,6 @@ private:
         (s.keyword == "T" ? scene_.kinetic_terms : scene_.potential_terms) += value;
     }
 
-    /// `T = 1/2*m*x^2` (the prime forgotten) is a valid scene with no kinetic energy for x:
-    /// warn at the first `T` line when the `T` lines have no velocity at all, or, with no
-    /// points or bodies to add kinetic energy, none of some coordinate.
-    void warn_of_kinetic_energy()
-    {
-        if (!kinetic_line_ || scene_.coordinates.empty())
-            return;
-        std::vector<std::string> missing;
-        std::string listed;
-        for (const coordinate& c : scene_.coordinates)
-            if (!scene_.kinetic_terms.has(c.velocity)) {
-                listed += (missing.empty() ? "" : ", ") + quote(c.name);
-                missing.push_back(c.name);
-            }
-        const coordinate& first = scene_.coordinates.front();
-        std::string message;
-        if (missing.size() == scene_.coordinates.size())
-            message = "`T` has no velocities, so it is no kinetic energy: the velocity of " + quote(first.name) +
-                      " is written " + quote(first.name + "'");
-        else if (!missing.empty() && scene_.points.empty() && scene_.bodies.empty())
-            message = "`T` has no velocity of " + listed +
-                      ", which then has no kinetic energy (a velocity is written with a prime, as " +
-                      quote(missing.front() + "'") + ")";
-        if (!message.empty())
-            scene_.warnings.push_back({*kinetic_line_, message, source_.line(kinetic_line_->line)});
-    }
 
     void lower_point(const statement& s)
     {
@@ -657,7 +632,9 @@ private:
         }
         resolve_body_attachments();
         check_constraints(scene_);
-        warn_of_kinetic_energy();
+        if (kinetic_line_)
+            if (std::optional<scene_warning> slip = kinetic_energy_slip(scene_, *kinetic_line_))
+                scene_.warnings.push_back({slip->where, slip->message, source_.line(kinetic_line_->line)});
     }
 
 public:
@@ -816,32 +793,6 @@ void add_initial(model& scene, const std::string& text, const std::string& origi
                          state.others[name] = value;
                      scene.initial = state;
                  });
-}
-
-std::set<product> parse_want_list(const std::string& text)
-{
-    std::set<product> wanted;
-    std::stringstream items(text);
-    std::string item;
-    int column = 1;
-    while (std::getline(items, item, ',')) {
-        std::size_t first = item.find_first_not_of(' ');
-        std::size_t last = item.find_last_not_of(' ');
-        std::string name = first == std::string::npos ? "" : item.substr(first, last - first + 1);
-        std::optional<product> p = product_from_name(name);
-        if (!p) {
-            std::string all;
-            for (const auto& [unused, n] : product_names())
-                all += (all.empty() ? "" : ", ") + n;
-            scene_error error({"--want", 1, column + static_cast<int>(first == std::string::npos ? 0 : first)},
-                              "unknown product " + quote(name) + "; the products are: " + all);
-            error.attach_line_text(text);
-            throw error;
-        }
-        wanted.insert(*p);
-        column += static_cast<int>(item.size()) + 1;
-    }
-    return wanted;
 }
 
 } // namespace lagrange
