@@ -183,14 +183,19 @@ void write_linear_system_section(report_writer& w)
             .text(". Its poles are the roots of the damped characteristic polynomial that the input reaches; a pole "
                   "with a positive real part is an instability.");
         w.latex("\n");
-        std::vector<report_writer::row> rows;
-        for (const transfer_function& h : tr.entries)
-            rows.push_back({"H_{" + report_writer::name(scene.inputs[h.input].name) + " \\to " +
-                                report_writer::name(scene.coordinates[h.coordinate].name) + "}(" + s + ")",
-                            {transfer_text(h, tr.s, syntax::latex)},
-                            ""});
-        w.display_rows(rows);
+        write_transfer_rows(w, scene, tr, s);
     }
+}
+
+void write_transfer_rows(report_writer& w, const model& scene, const transfer_result& transfer, const std::string& s)
+{
+    std::vector<report_writer::row> rows;
+    for (const transfer_function& h : transfer.entries)
+        rows.push_back({"H_{" + report_writer::name(scene.inputs[h.input].name) + " \\to " +
+                            report_writer::name(scene.coordinates[h.coordinate].name) + "}(" + s + ")",
+                        {transfer_text(h, transfer.s, syntax::latex)},
+                        ""});
+    w.display_rows(rows);
 }
 
 } // namespace lagrange

@@ -98,13 +98,7 @@ void write_operating_point_section(report_writer& w)
             .latex("$C_0$")
             .text(":");
         w.latex("\n");
-        std::vector<report_writer::row> rows;
-        for (const transfer_function& h : tr.entries)
-            rows.push_back({"H_{" + report_writer::name(scene.inputs[h.input].name) + " \\to " +
-                                report_writer::name(scene.coordinates[h.coordinate].name) + "}(" + s + ")",
-                            {transfer_text(h, tr.s, syntax::latex)},
-                            ""});
-        w.display_rows(rows);
+        write_transfer_rows(w, scene, tr, s);
     }
 }
 

@@ -37,6 +37,9 @@ void write_floquet_section(report_writer& w);
 void write_damping_section(report_writer& w);
 /// The linearized input–output system (damping_report.cpp): A, B and the transfer functions.
 void write_linear_system_section(report_writer& w);
+/// Each transfer function H_{u→q}(s) of `transfer` as a displayed row (the damping and the
+/// operating point sections both list them).
+void write_transfer_rows(report_writer& w, const model& scene, const transfer_result& transfer, const std::string& s);
 /// A and B about an operating point, with constraints (operating_point_report.cpp).
 void write_operating_point_section(report_writer& w);
 /// Symmetries (symmetries_report.cpp): the conserved quantities, the Hamiltonian, Routh's
