@@ -64,14 +64,19 @@ std::string temporary_file(const std::string& name, const std::string& content)
     return path;
 }
 
+double time_scale()
+{
+    const char* scale = std::getenv("LAGRANGE_TEST_TIME_SCALE");
+    return scale ? std::max(1, std::atoi(scale)) : 1;
+}
+
 cli_result run_cli(const std::string& args, const std::string& input, int limit_seconds, const std::string& shell_setup)
 {
     static int counter = 0;
     std::string stem = temporary_folder() + "/run" + std::to_string(++counter);
     std::string in = temporary_file("run" + std::to_string(counter) + ".in", input);
     // Sanitizer builds run several times slower: scripts/sanitize.sh sets LAGRANGE_TEST_TIME_SCALE.
-    if (const char* scale = std::getenv("LAGRANGE_TEST_TIME_SCALE"))
-        limit_seconds *= std::max(1, std::atoi(scale));
+    limit_seconds *= static_cast<int>(time_scale());
     std::string command = (shell_setup.empty() ? "" : shell_setup + "; ") + "timeout -s KILL " +
                           std::to_string(limit_seconds) + " " + LAGRANGE_BINARY + " " + args + " <" + in + " >" +
                           stem + ".out 2>" + stem + ".err";

@@ -22,6 +22,10 @@ struct cli_result {
 cli_result run_cli(const std::string& args, const std::string& input = "", int limit_seconds = 10,
                    const std::string& shell_setup = "");
 
+/// How many times slower this build runs than a plain Release one: LAGRANGE_TEST_TIME_SCALE
+/// (scripts/sanitize.sh sets it), 1 when unset. Bounds on a run's time are multiplied by it.
+double time_scale();
+
 /// Writes `content` to a fresh file in the test's temporary folder and returns its path.
 std::string temporary_file(const std::string& name, const std::string& content);
 
