@@ -6,6 +6,7 @@
  *  heavy top, the damped driven oscillator (an input) and a 10-link chain. And bad input. */
 #include "helpers/chain_scene.h"
 #include "helpers/cli_runner.h"
+#include "helpers/tools.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -199,8 +200,9 @@ TEST_CASE("export: the C code compiles warning-free and reproduces simulate", "[
             << replace_all(replace_all(c_harness, "NAME", name), "INPUT",
                            c.c_input.empty() ? "" : "u[0] = " + c.c_input + ";");
         // The harness's own size of loops is fine at -O2; the exported file is held to -Werror.
-        run_shell("cd " + folder + " && cc -std=c99 -Wall -Wextra -pedantic -Werror -O2 -c " + name +
-                  ".c 2>&1 && cc -std=c99 -O2 -o harness harness.c " + name + ".o -lm 2>&1");
+        const std::string cc = configured_compiler(); // LAGRANGE_CC, as the engine's own code
+        run_shell("cd " + folder + " && " + cc + " -std=c99 -Wall -Wextra -pedantic -Werror -O2 -c " + name +
+                  ".c 2>&1 && " + cc + " -std=c99 -O2 -o harness harness.c " + name + ".o -lm 2>&1");
         const int steps = static_cast<int>(std::ceil(c.until / 2e-4));
         check_against(expected, read_numbers(run_shell(folder + "/harness " + std::to_string(c.until) + " " +
                                                        std::to_string(steps) + " " + numbers(expected.start, " "))));
