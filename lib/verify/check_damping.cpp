@@ -379,7 +379,8 @@ std::vector<verification_entry> verify_linear_system(const model& scene, const l
         a_reference.block(size, 0, size, size) = -inverse_mass * *stiffness;
         a_reference.block(size, size, size, size) = inverse_mass * (*gyroscopic - *damping);
         Eigen::MatrixXd b_reference = Eigen::MatrixXd::Zero(2 * size, forcing->cols());
-        b_reference.block(size, 0, size, forcing->cols()) = inverse_mass * *forcing;
+        if (forcing->cols() > 0) // no inputs: B has no columns (and no data to take a block of)
+            b_reference.block(size, 0, size, forcing->cols()) = inverse_mass * *forcing;
         const std::string where = point_text(scene, parameters);
         compare_matrices("the state space", "A", *a, a_reference, where);
         compare_matrices("the state space", "B", *b, b_reference, where);
