@@ -138,6 +138,15 @@ bool vanishes(const ex& e)
     return expanded.is_zero() || expanded.normal().is_zero();
 }
 
+bool is_zero_matrix(const GiNaC::matrix& m)
+{
+    for (unsigned i = 0; i < m.rows(); ++i)
+        for (unsigned j = 0; j < m.cols(); ++j)
+            if (!vanishes(m(i, j)))
+                return false;
+    return true;
+}
+
 ex tidy(const ex& e)
 {
     try {

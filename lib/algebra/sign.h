@@ -15,6 +15,9 @@ namespace lagrange {
 /// True if e is zero as a rational function of its symbols and atoms.
 bool vanishes(const GiNaC::ex& e);
 
+/// Whether every entry of `m` vanishes.
+bool is_zero_matrix(const GiNaC::matrix& m);
+
 /// e with numerator and denominator each factored; e itself if GiNaC fails
 /// (budget_exceeded passes through).
 GiNaC::ex tidy(const GiNaC::ex& e);

@@ -3,6 +3,7 @@
  *  The stage planner. */
 #include "engine/analysis.h"
 
+#include "algebra/sign.h"
 #include "engine/products.h"
 #include "scene/lower.h"
 

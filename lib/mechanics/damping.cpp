@@ -145,15 +145,6 @@ std::optional<std::vector<damped_factor>> closed_forms(const ex& polynomial, con
 
 } // namespace
 
-bool is_zero_matrix(const GiNaC::matrix& m)
-{
-    for (unsigned i = 0; i < m.rows(); ++i)
-        for (unsigned j = 0; j < m.cols(); ++j)
-            if (!vanishes(m(i, j)))
-                return false;
-    return true;
-}
-
 GiNaC::matrix damping_matrix(const model& scene, const std::vector<ex>& at, const simplifier& simplify)
 {
     const unsigned n = static_cast<unsigned>(scene.coordinates.size());

@@ -55,7 +55,4 @@ damping_result damped_oscillations(const model& scene, const linearization_resul
 /// C alone: −∂Q/∂q̇ at (q = at, q̇ = 0, inputs 0).
 GiNaC::matrix damping_matrix(const model& scene, const std::vector<GiNaC::ex>& at, const simplifier& simplify);
 
-/// Whether every entry of `m` vanishes identically.
-bool is_zero_matrix(const GiNaC::matrix& m);
-
 } // namespace lagrange

@@ -147,23 +147,9 @@ ex pencil_determinant(const GiNaC::matrix& pencil)
 
 } // namespace
 
-bool linearization_result::has_gyroscopic() const
-{
-    for (unsigned i = 0; i < gyroscopic.rows(); ++i)
-        for (unsigned j = 0; j < gyroscopic.cols(); ++j)
-            if (!vanishes(gyroscopic(i, j)))
-                return true;
-    return false;
-}
+bool linearization_result::has_gyroscopic() const { return !is_zero_matrix(gyroscopic); }
 
-bool linearization_result::has_force_stiffness() const
-{
-    for (unsigned i = 0; i < force_stiffness.rows(); ++i)
-        for (unsigned j = 0; j < force_stiffness.cols(); ++j)
-            if (!vanishes(force_stiffness(i, j)))
-                return true;
-    return false;
-}
+bool linearization_result::has_force_stiffness() const { return !is_zero_matrix(force_stiffness); }
 
 bool linearization_result::circulatory() const
 {

@@ -2,6 +2,7 @@
 /** @file damping_output.cpp
  *  Printers of the damped small oscillations. */
 #include "output/damping_output.h"
+#include "algebra/sign.h"
 #include "output/format.h"
 
 #include "output/latex_blocks.h"

@@ -435,6 +435,13 @@ std::vector<exported_file> export_python(const model& scene, const exported_syst
 
 // ---- Octave / MATLAB ---------------------------------------------------------------------
 
+/// The arguments an Octave function may be called without: p from NAME_defaults(), u zero.
+std::string octave_defaults(const std::string& name, std::size_t inputs)
+{
+    return "  if nargin < 3 || isempty(p)\n    p = " + name + "_defaults();\n  end\n  if nargin < 4\n    u = zeros(" +
+           std::to_string(inputs) + ", 1);\n  end\n";
+}
+
 std::string octave_function(const std::string& name, const std::string& function, const std::string& doc,
                             const expression_program& program, const naming& names, const exported_system& system,
                             const std::string& result, std::size_t rows, std::size_t columns,
@@ -446,8 +453,7 @@ std::string octave_function(const std::string& name, const std::string& function
     std::ostringstream out;
     out << "function " << result << " = " << name << "_" << function << "(t, x, p, u)\n"
         << "  % " << doc << "\n" << header
-        << "  if nargin < 3 || isempty(p)\n    p = " << name << "_defaults();\n  end\n"
-        << "  if nargin < 4\n    u = zeros(" << system.input_names.size() << ", 1);\n  end\n";
+        << octave_defaults(name, system.input_names.size());
     for (int k : used) {
         const argument_place at = place_of(k, system);
         if (at.array != 't')
@@ -492,16 +498,14 @@ std::vector<exported_file> export_octave(const model& scene, const exported_syst
     rhs << "function dxdt = " << name << "_rhs(t, x, p, u)\n"
         << "  % dx/dt = f(t, x, u, p) as a column; for ode45 and ode15s: ode45(@(t, x) " << name
         << "_rhs(t, x, p), tspan, x0).\n" << header
-        << "  if nargin < 3 || isempty(p)\n    p = " << name << "_defaults();\n  end\n"
-        << "  if nargin < 4\n    u = zeros(" << inputs << ", 1);\n  end\n"
+        << octave_defaults(name, inputs)
         << "  M = " << name << "_mass_matrix(t, x, p, u);\n  F = " << name << "_forcing(t, x, p, u);\n"
         << "  dxdt = [x(" << n + 1 << ":" << 2 * n << "); M \\ F];\nend\n";
     files.push_back({name + "_rhs.m", rhs.str()});
     std::ostringstream jac;
     jac << "function [dfdx, dfdu] = " << name << "_jacobian(t, x, p, u)\n"
         << "  % df/dx (NX x NX) and df/du (NX x NU): d(q'')/dy = M \\ (dF/dy - (dM/dy) q'').\n" << header
-        << "  if nargin < 3 || isempty(p)\n    p = " << name << "_defaults();\n  end\n"
-        << "  if nargin < 4\n    u = zeros(" << inputs << ", 1);\n  end\n"
+        << octave_defaults(name, inputs)
         << "  n = " << n << ";\n  m = " << inputs << ";\n"
         << "  M = " << name << "_mass_matrix(t, x, p, u);\n  F = " << name << "_forcing(t, x, p, u);\n"
         << "  d = " << name << "_derivatives(t, x, p, u);\n  qdd = M \\ F;\n"
