@@ -6,7 +6,7 @@
  *  sweep m/M = 1e-16 … 1e16 against a 60-digit reference, and the time per point.
  *  Usage: numeric_modes [points] [runs] */
 #include "numeric/compiled_modes.h"
-#include "numeric/double_double.h"
+#include "program/double_double.h"
 
 #include <cln/cln.h>
 

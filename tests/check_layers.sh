@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Fails on an include that points up the layers (docs/architecture.md):
-#   core ← algebra, system ← scene (front end) | bodies ← mechanics ← numeric ← verify, ensemble
+#   core ← algebra, system ← program, scene (front end) | bodies ← mechanics ← numeric ← verify, ensemble
 #   ← engine ← output ← cli
 # A folder may include its own headers and those of the folders listed for it below;
 # the umbrella header lib/lagrange.h, those of every installed folder.
@@ -12,16 +12,17 @@ declare -A below=(
     [core]=""
     [algebra]="core"
     [system]="core"
+    [program]="core algebra system"
     [scene]="core algebra system"
     [bodies]="core algebra"
     [mechanics]="core algebra bodies"
-    [numeric]="core algebra bodies mechanics system"
-    [verify]="core algebra bodies mechanics numeric system"
-    [ensemble]="core algebra bodies mechanics numeric system"
-    [engine]="core algebra bodies mechanics numeric verify ensemble system scene"
-    [output]="core algebra bodies mechanics numeric verify ensemble system scene engine"
-    [cli]="core algebra bodies mechanics numeric verify ensemble system scene engine output"
-    [lagrange.h]="core algebra bodies mechanics numeric verify ensemble scene engine output"
+    [numeric]="core algebra bodies mechanics system program"
+    [verify]="core algebra bodies mechanics numeric system program"
+    [ensemble]="core algebra bodies mechanics numeric system program"
+    [engine]="core algebra bodies mechanics numeric verify ensemble system scene program"
+    [output]="core algebra bodies mechanics numeric verify ensemble system scene engine program"
+    [cli]="core algebra bodies mechanics numeric verify ensemble system scene engine output program"
+    [lagrange.h]="core algebra bodies mechanics numeric verify ensemble scene engine output program"
 )
 bad=0
 while IFS= read -r file; do

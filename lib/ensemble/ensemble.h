@@ -11,8 +11,8 @@
 
 #include "mechanics/equations_of_motion.h"
 #include "mechanics/time_dependence.h"
-#include "numeric/expression_program.h"
-#include "numeric/native_code.h"
+#include "program/expression_program.h"
+#include "program/native_code.h"
 #include "core/model.h"
 
 #include <cstddef>

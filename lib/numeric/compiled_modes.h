@@ -8,7 +8,7 @@
 #pragma once
 
 #include "mechanics/linearization.h"
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 #include "core/model.h"
 
 #include <Eigen/Dense>

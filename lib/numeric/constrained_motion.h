@@ -9,7 +9,7 @@
 #pragma once
 
 #include "mechanics/equations_of_motion.h"
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 #include "numeric/ode.h"
 #include "numeric/simulation.h"
 #include "core/model.h"

@@ -5,7 +5,7 @@
 #include "numeric/damped_modes.h"
 
 #include "core/errors.h"
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 #include "numeric/quadratic_modes.h"
 
 #include <algorithm>

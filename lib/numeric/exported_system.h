@@ -9,7 +9,7 @@
 
 #include "core/model.h"
 #include "mechanics/equations_of_motion.h"
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 
 #include <string>
 #include <vector>

@@ -6,7 +6,7 @@
 
 #include "algebra/budget.h"
 #include "numeric/compiled_modes.h"
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 #include "numeric/ode.h"
 #include "numeric/values.h"
 

@@ -9,8 +9,8 @@
 #pragma once
 
 #include "bodies/euler.h"
-#include "numeric/expression_program.h"
-#include "numeric/native_code.h"
+#include "program/expression_program.h"
+#include "program/native_code.h"
 #include "numeric/ode.h"
 #include "core/model.h"
 

@@ -8,7 +8,7 @@
 #include "numeric/ode.h"
 
 #include "numeric/dop853.h"
-#include "numeric/double_double.h"
+#include "program/double_double.h"
 #include "numeric/mass_matrix.h"
 #include "numeric/values.h"
 
@@ -434,7 +434,7 @@ LAGRANGE_FMA_TARGET void run_dop853_fma(const std::vector<double>& x0, const int
 }
 #endif
 
-/// DOP853, in its FMA version where the CPU has FMA (fma_kernels(), numeric/double_double.h).
+/// DOP853, in its FMA version where the CPU has FMA (fma_kernels(), program/double_double.h).
 void run_dop853(const std::vector<double>& x0, const integration_options& options, run_state& run,
                 trajectory& result)
 {

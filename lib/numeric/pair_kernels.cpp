@@ -5,7 +5,7 @@
  *  twice, portable and for CPUs with FMA; both give the same bits. */
 #include "numeric/pair_kernels.h"
 
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 
 #include <cmath>
 #include <cstddef>

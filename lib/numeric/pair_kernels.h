@@ -7,7 +7,7 @@
  *  ω², ω and ω's error that every route of compiled_modes takes. */
 #pragma once
 
-#include "numeric/double_double.h"
+#include "program/double_double.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "numeric/compiled_modes.h"
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 
 #include <functional>
 #include <optional>

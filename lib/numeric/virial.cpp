@@ -5,7 +5,7 @@
 
 #include "core/errors.h"
 #include "numeric/compiled_motion.h"
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 #include "numeric/values.h"
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 #include "verify/check_operating_point.h"
 
 #include "core/errors.h"
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 #include "verify/points.h"
 
 #include <Eigen/Dense>

@@ -3,8 +3,8 @@
  *  Numeric checks of the symmetries against the Lagrangian as built. */
 #include "verify/check_symmetries.h"
 
-#include "numeric/double_double.h"
-#include "numeric/expression_program.h"
+#include "program/double_double.h"
+#include "program/expression_program.h"
 #include "numeric/values.h"
 
 #include <cmath>

@@ -6,8 +6,8 @@
 #include "verify/check_constraints.h"
 #include "verify/points.h"
 
-#include "numeric/double_double.h"
-#include "numeric/expression_program.h"
+#include "program/double_double.h"
+#include "program/expression_program.h"
 #include "verify/check_symmetries.h"
 #include "numeric/values.h"
 

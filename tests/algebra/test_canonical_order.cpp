@@ -8,7 +8,7 @@
  *  the compiled programs and the order of factors must not. */
 #include "algebra/canonical_order.h"
 #include "algebra/sorted_terms.h"
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 #include "numeric/values.h"
 
 #include <catch2/catch.hpp>

@@ -6,7 +6,7 @@
 
 #include "engine/analysis.h"
 #include "mechanics/symmetries.h"
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>

@@ -3,7 +3,7 @@
  *  Numeric normal modes: the double pendulum over 32 decades of mass ratio against
  *  a 50-digit CLN reference, a stiff spring chain, zero and unstable modes, errors. */
 #include "numeric/compiled_modes.h"
-#include "numeric/double_double.h"
+#include "program/double_double.h"
 #include "numeric/point_modes.h"
 #include "scene/lower.h"
 

@@ -5,7 +5,7 @@
  *  closed-form frequencies, the automatic choice on a stiff scene, energy drift,
  *  exact normal-mode errors, extreme mass ratios, and the messages. */
 #include "engine/analysis.h"
-#include "numeric/double_double.h"
+#include "program/double_double.h"
 #include "numeric/free_body_motion.h"
 #include "numeric/simulation.h"
 #include "helpers/ode_helpers.h"

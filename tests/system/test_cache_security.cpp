@@ -5,8 +5,8 @@
  *  loaded; an entry is bound to its key; an entry that does not load or lacks the programs
  *  is replaced; a folder above the cache that others may write turns the cache off; stale
  *  temporary files are swept. */
-#include "numeric/expression_program.h"
-#include "numeric/native_code.h"
+#include "program/expression_program.h"
+#include "program/native_code.h"
 #include "system/cache.h"
 #include "system/external.h"
 #include "helpers/tools.h"

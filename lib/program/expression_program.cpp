@@ -6,7 +6,7 @@
  *  arbitrary-precision numbers, and the JIT libraries that compile expressions need a
  *  compiler or LLVM at run time; a program here is a few dozen instructions run in a
  *  switch loop. */
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 
 #include "algebra/canonical_order.h"
 

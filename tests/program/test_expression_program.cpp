@@ -3,9 +3,9 @@
  *  The compiled programs' arithmetic against 60-digit references: each double-double
  *  operation within its published error bound, the a priori bounds of subtraction-free
  *  programs bounding the actual error, and the checks that say where they do not apply. */
-#include "numeric/double_double.h"
-#include "numeric/expression_program.h"
-#include "numeric/native_code.h"
+#include "program/double_double.h"
+#include "program/expression_program.h"
+#include "program/native_code.h"
 #include "system/external.h"
 #include "helpers/tools.h"
 

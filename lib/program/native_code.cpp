@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file native_code.cpp
  *  Run-time compilation of expression programs (C source, cc through run_program, dlopen). */
-#include "numeric/native_code.h"
+#include "program/native_code.h"
 
 #include "core/errors.h"
 #include "system/cache.h"

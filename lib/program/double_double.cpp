@@ -2,7 +2,7 @@
 /** @file double_double.cpp
  *  The run-time choice of the FMA kernels: the CPU is asked once, tests and benchmarks
  *  may force either version. */
-#include "numeric/double_double.h"
+#include "program/double_double.h"
 
 #include <atomic>
 

@@ -5,7 +5,7 @@
  *  many times in double, in double with a running error bound, or in double-double. */
 #pragma once
 
-#include "numeric/double_double.h"
+#include "program/double_double.h"
 
 #include <ginac/ginac.h>
 

@@ -3,8 +3,8 @@
  *  The file cache (system/cache.h) and the native code kept in it: a second compile of the
  *  same programs finds the library instead of running the compiler; unsafe folders, changed
  *  keys and LAGRANGE_CACHE=0 are misses; the least recently used entries go. */
-#include "numeric/expression_program.h"
-#include "numeric/native_code.h"
+#include "program/expression_program.h"
+#include "program/native_code.h"
 #include "system/cache.h"
 #include "system/external.h"
 #include "helpers/tools.h"

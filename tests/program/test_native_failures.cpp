@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_native_failures.cpp
- *  Why native code was not compiled, told apart (numeric/native_code.h): no compiler (named,
+ *  Why native code was not compiled, told apart (program/native_code.h): no compiler (named,
  *  LAGRANGE_CC included), a compile error with the compiler's first lines, a load error with
  *  dlerror's text, a missing, full or unsafe TMPDIR; and the interpreter runs on. Every test
  *  restores the environment it changes. */
 #include "helpers/cli_runner.h"
-#include "numeric/expression_program.h"
-#include "numeric/native_code.h"
+#include "program/expression_program.h"
+#include "program/native_code.h"
 #include "system/external.h"
 #include "helpers/tools.h"
 

@@ -9,7 +9,7 @@
  *  libsleef-dev), when it is installed; libm's otherwise. */
 #pragma once
 
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 
 #include <memory>
 #include <string>

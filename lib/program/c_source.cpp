@@ -3,7 +3,7 @@
  *  An expression program as C source (expression_program::c_source), for native_code:
  *  straight-line code with exact constants, its sines and cosines optionally four at a
  *  time through SLEEF. */
-#include "numeric/expression_program.h"
+#include "program/expression_program.h"
 
 #include "core/number_text.h"
 
