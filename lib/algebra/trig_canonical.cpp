@@ -11,6 +11,7 @@
 #include "algebra/harmonic.h"
 
 #include <deque>
+#include <functional>
 #include <map>
 #include <algorithm>
 #include <optional>
@@ -695,6 +696,42 @@ bool trig_equal(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::lst& angles
 {
     const ex difference = trig_canonical(a - b, angles);
     return difference.is_zero() || difference.normal().is_zero();
+}
+
+std::optional<GiNaC::ex> trigonometric_polynomial(const GiNaC::ex& e, const GiNaC::ex& q, const GiNaC::ex& s,
+                                                  const GiNaC::ex& c)
+{
+    bool representable = true;
+    std::function<ex(const ex&)> convert = [&](const ex& x) -> ex {
+        if (!representable || !x.has(q))
+            return x;
+        if (x.is_equal(q)) {
+            representable = false;
+            return x;
+        }
+        if (is_sin_or_cos(x)) {
+            const ex argument = x.op(0).expand();
+            const ex k = argument.coeff(q, 1);
+            const ex rest = (argument - k * q).expand();
+            if (argument.degree(q) != 1 || rest.has(q) || !k.info(GiNaC::info_flags::integer)) {
+                representable = false;
+                return x;
+            }
+            const long multiple = GiNaC::ex_to<GiNaC::numeric>(k).to_long();
+            const ex power = GiNaC::pow(c + GiNaC::I * s, multiple < 0 ? -multiple : multiple).expand();
+            const ex cos_n = power.real_part().expand();
+            const ex sin_n = ((multiple < 0 ? -1 : 1) * power.imag_part()).expand();
+            if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(x))
+                return sin_n * GiNaC::cos(rest) + cos_n * GiNaC::sin(rest);
+            return cos_n * GiNaC::cos(rest) - sin_n * GiNaC::sin(rest);
+        }
+        map_each recurse(convert);
+        return x.map(recurse);
+    };
+    const ex p = convert(e);
+    if (!representable || p.has(q))
+        return std::nullopt;
+    return p.expand();
 }
 
 } // namespace lagrange

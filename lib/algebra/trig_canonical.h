@@ -6,6 +6,8 @@
 
 #include <ginac/ginac.h>
 
+#include <optional>
+
 namespace lagrange {
 
 /// Canonical form of `e` as a trigonometric polynomial in `angles`: every sin/cos
@@ -30,5 +32,11 @@ GiNaC::ex trig_canonical_general(const GiNaC::ex& e, const GiNaC::lst& angles);
 
 /// True if a and b are equal as trigonometric polynomials in `angles`.
 bool trig_equal(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::lst& angles);
+
+/// `e` as a polynomial in s = sin q and c = cos q (expanded), if every occurrence of q is
+/// in a sine or cosine of an integer multiple of q plus terms free of q:
+/// sin(nq + b) = sin nq cos b + cos nq sin b, with cos nq + i sin nq = (c + i s)ⁿ.
+std::optional<GiNaC::ex> trigonometric_polynomial(const GiNaC::ex& e, const GiNaC::ex& q, const GiNaC::ex& s,
+                                                  const GiNaC::ex& c);
 
 } // namespace lagrange

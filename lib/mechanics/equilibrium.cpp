@@ -5,6 +5,7 @@
  *  linear system for the rest), and the stability of each from its Hessian. */
 #include "mechanics/equilibrium.h"
 
+#include "mechanics/equilibrium_candidates.h"
 #include "mechanics/gyroscopic.h"
 
 #include "algebra/budget.h"
@@ -208,236 +209,15 @@ ex expand_multiple_angles(const ex& e, const model& scene)
     return is_cos ? real : imaginary;
 }
 
-/// The real roots of ∂V/∂q = 0 in one coordinate, where they can be found in closed form.
-std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
+/// The test of a candidate equilibrium: every component of ∂V/∂q vanishes there.
+point_check gradient_vanishes(const model& scene, const std::vector<ex>& gradient)
 {
-    std::vector<ex> roots;
-    ex g = gradient.expand();
-    if (g.is_zero())
-        return {ex(0)};
-    if (!g.info(GiNaC::info_flags::polynomial)) {
-        // a rational function: its zeros are among those of its numerator (checked by the caller)
-        ex numerator = g.normal().numer().expand();
-        if (numerator.info(GiNaC::info_flags::polynomial) || inside_function(numerator, q))
-            g = numerator;
-    }
-    bool trigonometric = false;
-    for (GiNaC::const_preorder_iterator i = g.preorder_begin(); i != g.preorder_end(); ++i)
-        if (is_a<GiNaC::function>(*i) && i->has(q))
-            trigonometric = true;
-    auto add_root = [&](const ex& value) {
-        for (const ex& known : roots)
-            if (vanishes(known - value))
-                return;
-        roots.push_back(value);
+    return [&scene, &gradient](const std::vector<ex>& point) {
+        for (const ex& g : gradient)
+            if (!vanishes(evaluate_at(g, scene, point)))
+                return false;
+        return true;
     };
-    if (!trigonometric) {
-        if (!g.info(GiNaC::info_flags::polynomial))
-            return {};
-        ex factored = factor_if_quick(g);
-        exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
-        for (ex factor : factors) {
-            if (is_a<GiNaC::power>(factor))
-                factor = factor.op(0);
-            if (factor.degree(q) == 1) {
-                add_root(tidy(-factor.coeff(q, 0) / factor.coeff(q, 1)));
-            } else if (factor.degree(q) == 2) {
-                // a quadratic factor: its two roots, when they are known to be real
-                const ex a2 = factor.coeff(q, 2), a1 = factor.coeff(q, 1), a0 = factor.coeff(q, 0);
-                const ex discriminant = (a1 * a1 - 4 * a2 * a0).expand();
-                const std::optional<int> sign = sign_of(discriminant);
-                if (!sign || *sign < 0)
-                    continue;
-                for (int branch : {-1, 1})
-                    add_root(tidy((-a1 + branch * GiNaC::sqrt(discriminant)) / (2 * a2)));
-            }
-        }
-        return roots;
-    }
-    // Write the gradient as a polynomial in s = sin q, c = cos q, then as A(c) + s B(c).
-    GiNaC::realsymbol s("s"), c("c");
-    bool representable = true;
-    std::function<ex(const ex&)> to_polynomial = [&](const ex& e) -> ex {
-        if (is_a<GiNaC::function>(e) && e.has(q)) {
-            std::string name = ex_to<GiNaC::function>(e).get_name();
-            ex argument = e.op(0).expand();
-            ex k = argument.coeff(q, 1);
-            ex rest = (argument - k * q).expand();
-            if ((name != "sin" && name != "cos") || rest.has(q) || !k.info(GiNaC::info_flags::integer)) {
-                representable = false;
-                return e;
-            }
-            long n = ex_to<GiNaC::numeric>(k).to_long();
-            ex multiple = GiNaC::pow(c + GiNaC::I * s, n < 0 ? -n : n).expand();
-            ex cos_n = multiple.real_part().expand();
-            ex sin_n = ((n < 0 ? -1 : 1) * multiple.imag_part()).expand();
-            // sin(nq + b) = sin nq cos b + cos nq sin b, cos(nq + b) = cos nq cos b − sin nq sin b
-            if (name == "sin")
-                return sin_n * GiNaC::cos(rest) + cos_n * GiNaC::sin(rest);
-            return cos_n * GiNaC::cos(rest) - sin_n * GiNaC::sin(rest);
-        }
-        if (e.nops() == 0)
-            return e;
-        map_each recurse(to_polynomial);
-        return e.map(recurse);
-    };
-    ex p = to_polynomial(g).expand();
-    if (!representable || p.has(q))
-        return {};
-    ex a = 0, b = 0;
-    for (int k = 0; k <= p.degree(s); ++k) {
-        ex part = p.coeff(s, k) * GiNaC::pow(1 - c * c, k / 2);
-        (k % 2 == 0 ? a : b) += part;
-    }
-    a = a.expand();
-    b = b.expand();
-    auto roots_in_cos = [&](const ex& polynomial) {
-        ex factored = factor_if_quick(polynomial);
-        exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
-        for (ex factor : factors) {
-            if (is_a<GiNaC::power>(factor))
-                factor = factor.op(0);
-            if (factor.degree(c) != 1)
-                continue;
-            ex value = tidy(-factor.coeff(c, 0) / factor.coeff(c, 1));
-            if (vanishes(value - 1))
-                add_root(0);
-            else if (vanishes(value + 1))
-                add_root(GiNaC::Pi);
-            else if (is_a<GiNaC::numeric>(value) && GiNaC::abs(ex_to<GiNaC::numeric>(value)) > 1)
-                continue;
-            else
-                add_root(GiNaC::acos(value));
-        }
-    };
-    if (a.is_zero()) {
-        add_root(0);
-        add_root(GiNaC::Pi);
-        if (!b.is_zero())
-            roots_in_cos(b);
-    } else if (b.is_zero()) {
-        roots_in_cos(a);
-    } else {
-        for (const ex& candidate : {ex(0), ex(GiNaC::Pi)})
-            if (vanishes(gradient.subs(q == candidate)))
-                add_root(candidate);
-    }
-    return roots;
-}
-
-/// The point with the angle coordinates at `fixed` (0 or π) and the others solved
-/// from the linear system that remains (free directions set to 0), if ∂V/∂q = 0 there.
-std::optional<std::vector<ex>> point_with_angles(const model& scene, const std::vector<ex>& gradient,
-                                                 const GiNaC::exmap& fixed, const std::vector<std::size_t>& others)
-{
-    std::size_t n = scene.coordinates.size();
-    GiNaC::lst equations, unknowns;
-    for (std::size_t i : others)
-        unknowns.append(scene.coordinates[i].position);
-    bool linear = true;
-    for (const ex& g : gradient) {
-        ex reduced = g.subs(fixed).expand();
-        if (reduced.is_zero())
-            continue;
-        if (!reduced.info(GiNaC::info_flags::polynomial))
-            reduced = reduced.normal().numer().expand(); // zeros of a rational function: of its numerator
-        for (const ex& u : unknowns)
-            linear = linear && reduced.degree(u) <= 1 && !inside_function(reduced, u);
-        equations.append(reduced == 0);
-    }
-    std::vector<ex> point(n, 0);
-    for (const auto& [coordinate, value] : fixed)
-        for (std::size_t i = 0; i < n; ++i)
-            if (ex(scene.coordinates[i].position).is_equal(coordinate))
-                point[i] = value;
-    if (equations.nops() > 0) {
-        if (unknowns.nops() == 0 || !linear)
-            return std::nullopt;
-        ex solution;
-        try {
-            solution = GiNaC::lsolve(equations, unknowns);
-        } catch (const budget_exceeded&) {
-            throw; // out of budget: the stage stops, no fallback
-        } catch (const std::exception&) {
-            return std::nullopt;
-        }
-        if (solution.nops() == 0)
-            return std::nullopt;
-        GiNaC::exmap free_to_zero;
-        for (const ex& u : unknowns)
-            free_to_zero[u] = 0;
-        for (const ex& equation : solution)
-            for (std::size_t i : others)
-                if (equation.lhs().is_equal(scene.coordinates[i].position))
-                    point[i] = tidy(equation.rhs().subs(free_to_zero));
-    }
-    for (const ex& g : gradient)
-        if (!vanishes(evaluate_at(g, scene, point)))
-            return std::nullopt;
-    return point;
-}
-
-/// The points with the angle coordinates at `fixed` where ∂V/∂q = 0 is a polynomial system
-/// in two other coordinates x, y (Hénon–Heiles' x + 2xy = 0, y + x² − y² = 0): the roots y
-/// of the resultant in x of two equations, then x from the first equation that y leaves
-/// (x = 0 when none does). Each point found is checked against every equation.
-std::vector<std::vector<ex>> polynomial_points(const model& scene, const std::vector<ex>& gradient,
-                                               const GiNaC::exmap& fixed, const std::vector<std::size_t>& others)
-{
-    if (others.size() != 2)
-        return {};
-    const GiNaC::symbol& x = scene.coordinates[others[0]].position;
-    const GiNaC::symbol& y = scene.coordinates[others[1]].position;
-    std::vector<ex> equations;
-    for (const ex& g : gradient) {
-        ex reduced = g.subs(fixed).expand();
-        if (!reduced.info(GiNaC::info_flags::polynomial))
-            reduced = reduced.normal().numer().expand();
-        if (reduced.is_zero())
-            continue;
-        if (!reduced.info(GiNaC::info_flags::polynomial) || inside_function(reduced, x) || inside_function(reduced, y))
-            return {};
-        equations.push_back(reduced);
-    }
-    if (equations.size() < 2)
-        return {};
-    ex eliminated;
-    try {
-        eliminated = GiNaC::resultant(equations[0], equations[1], x).expand();
-    } catch (const budget_exceeded&) {
-        throw;
-    } catch (const std::exception&) {
-        return {};
-    }
-    if (eliminated.is_zero() || eliminated.has(x))
-        return {};
-    std::vector<ex> base(scene.coordinates.size(), 0);
-    for (const auto& [coordinate, value] : fixed)
-        for (std::size_t i = 0; i < base.size(); ++i)
-            if (ex(scene.coordinates[i].position).is_equal(coordinate))
-                base[i] = value;
-    std::vector<std::vector<ex>> points;
-    for (const ex& y0 : solve_one(eliminated, y)) {
-        std::vector<ex> xs{0};
-        for (const ex& e : equations) {
-            const ex in_x = e.subs(y == y0).expand();
-            if (!vanishes(in_x)) {
-                xs = solve_one(in_x, x);
-                break;
-            }
-        }
-        for (const ex& x0 : xs) {
-            std::vector<ex> point = base;
-            point[others[0]] = x0;
-            point[others[1]] = y0;
-            bool solves = true;
-            for (const ex& g : gradient)
-                solves = solves && vanishes(evaluate_at(g, scene, point));
-            if (solves)
-                points.push_back(point);
-        }
-    }
-    return points;
 }
 
 /// A stable equilibrium found without listing the 2^N combinations of N angles:
@@ -469,19 +249,15 @@ std::optional<std::vector<ex>> stable_without_listing(const model& scene, const 
                 }
             }
         }
-        if (found) {
-            for (const ex& g : gradient)
-                if (!vanishes(evaluate_at(g, scene, point)))
-                    return std::nullopt;
+        if (found && gradient_vanishes(scene, gradient)(point))
             return point;
-        }
         return std::nullopt;
     }
     GiNaC::exmap at_zero;
     for (std::size_t i = 0; i < n; ++i)
         if (std::find(others.begin(), others.end(), i) == others.end())
             at_zero[scene.coordinates[i].position] = 0;
-    std::optional<std::vector<ex>> hanging = point_with_angles(scene, gradient, at_zero, others);
+    std::optional<std::vector<ex>> hanging = point_with_angles(scene, gradient, at_zero, others, gradient_vanishes(scene, gradient));
     if (hanging && kind_at(*hanging) == stability::stable)
         return hanging;
     return std::nullopt;
@@ -493,31 +269,13 @@ std::optional<std::vector<ex>> stable_without_listing(const model& scene, const 
 std::vector<std::vector<ex>> solve_several(const model& scene, const std::vector<ex>& gradient,
                                            const std::function<stability(const std::vector<ex>&)>& kind_at)
 {
-    std::size_t n = scene.coordinates.size();
-    std::vector<std::size_t> angles, others;
-    for (std::size_t i = 0; i < n; ++i) {
-        bool angle = false;
-        for (const ex& g : gradient)
-            angle = angle || inside_function(g, scene.coordinates[i].position);
-        (angle ? angles : others).push_back(i);
-    }
-    if (angles.size() > max_listed_angles)
-        if (std::optional<std::vector<ex>> stable = stable_without_listing(scene, gradient, others, kind_at))
+    const angle_split split = split_angles(scene, gradient);
+    if (split.angles.size() > max_listed_angles)
+        if (std::optional<std::vector<ex>> stable = stable_without_listing(scene, gradient, split.others, kind_at))
             return {*stable};
-    if (angles.size() > max_enumerated_angles)
+    if (split.angles.size() > max_enumerated_angles)
         return {};
-    std::vector<std::vector<ex>> points;
-    for (unsigned long choice = 0; choice < (1UL << angles.size()); ++choice) {
-        GiNaC::exmap fixed;
-        for (std::size_t a = 0; a < angles.size(); ++a)
-            fixed[scene.coordinates[angles[a]].position] = (choice >> a & 1) ? ex(GiNaC::Pi) : ex(0);
-        if (std::optional<std::vector<ex>> point = point_with_angles(scene, gradient, fixed, others))
-            points.push_back(*point);
-        else
-            for (std::vector<ex>& point : polynomial_points(scene, gradient, fixed, others))
-                points.push_back(std::move(point));
-    }
-    return points;
+    return points_at_angle_choices(scene, gradient, split, gradient_vanishes(scene, gradient));
 }
 
 /// Stability from the Hessian H of V: the roots of det(λ − H) are real, and by
@@ -602,11 +360,7 @@ stability classify_at_values(const model& scene, const GiNaC::matrix& hessian, c
     std::size_t n = hessian.rows();
     std::optional<stability> agreed;
     for (const value_point& point : scene.values) {
-        GiNaC::exmap at;
-        for (const auto& [name, value] : point.values)
-            for (const parameter& p : scene.parameters)
-                if (p.name == name)
-                    at[p.symbol] = value;
+        const GiNaC::exmap at = value_map(scene, point);
         for (const ex& coordinate : position) {
             ex number;
             try {

@@ -10,8 +10,10 @@
 #include "algebra/expression.h"
 #include "algebra/sorted_terms.h"
 #include "algebra/sign.h"
+#include "algebra/trig_canonical.h"
 #include "core/errors.h"
 #include "mechanics/equilibrium.h"
+#include "mechanics/equilibrium_candidates.h"
 
 #include <functional>
 #include <map>
@@ -140,103 +142,16 @@ bool solves_all(const model& scene, const std::vector<ex>& coefficients, const s
     return true;
 }
 
-/// Candidate points: each angle coordinate (one inside a sine or cosine) at 0 or π, the
-/// others from the linear system left (free directions at 0). Only those that solve
-/// every coefficient equation are kept.
+/// Candidate points (equilibrium_candidates.h) that solve every coefficient equation.
 std::vector<std::vector<ex>> find_points(const model& scene, const std::vector<ex>& coefficients,
                                          const simplifier& simplify)
 {
-    const std::size_t n = scene.coordinates.size();
-    std::vector<std::size_t> angles, others;
-    for (std::size_t i = 0; i < n; ++i) {
-        bool angle = false;
-        for (const ex& c : coefficients)
-            angle = angle || inside_trigonometric(c, scene.coordinates[i].position);
-        (angle ? angles : others).push_back(i);
-    }
-    if (angles.size() > max_tried_angles)
+    const angle_split split = split_angles(scene, coefficients);
+    if (split.angles.size() > max_tried_angles)
         return {};
-    std::vector<std::vector<ex>> points;
-    for (unsigned long choice = 0; choice < (1UL << angles.size()); ++choice) {
-        budget_check();
-        std::vector<ex> point(n, 0);
-        GiNaC::exmap fixed;
-        for (std::size_t a = 0; a < angles.size(); ++a) {
-            point[angles[a]] = (choice >> a & 1) ? ex(GiNaC::Pi) : ex(0);
-            fixed[scene.coordinates[angles[a]].position] = point[angles[a]];
-        }
-        GiNaC::lst equations, unknowns;
-        for (std::size_t i : others)
-            unknowns.append(scene.coordinates[i].position);
-        bool linear = true;
-        for (const ex& c : coefficients) {
-            const ex reduced = c.subs(fixed).normal().numer().expand();
-            if (reduced.is_zero())
-                continue;
-            for (const ex& u : unknowns)
-                linear = linear && reduced.degree(u) <= 1 && !inside_trigonometric(reduced, u);
-            equations.append(reduced == 0);
-        }
-        if (equations.nops() > 0 && unknowns.nops() > 0) {
-            if (!linear)
-                continue;
-            ex solution;
-            try {
-                solution = GiNaC::lsolve(equations, unknowns);
-            } catch (const budget_exceeded&) {
-                throw;
-            } catch (const std::exception&) {
-                continue;
-            }
-            GiNaC::exmap free_to_zero;
-            for (const ex& u : unknowns)
-                free_to_zero[u] = 0;
-            for (const ex& equation : solution)
-                for (std::size_t i : others)
-                    if (equation.lhs().is_equal(scene.coordinates[i].position))
-                        point[i] = tidy(equation.rhs().subs(free_to_zero));
-        }
-        if (solves_all(scene, coefficients, point, simplify))
-            points.push_back(point);
-    }
-    return points;
-}
-
-/// `e` as a polynomial in s = sin q and c = cos q, if every occurrence of q is in a sine
-/// or cosine of an integer multiple of q plus terms free of q.
-std::optional<ex> trigonometric_polynomial(const ex& e, const ex& q, const ex& s, const ex& c)
-{
-    bool representable = true;
-    std::function<ex(const ex&)> convert = [&](const ex& x) -> ex {
-        if (!representable || !x.has(q))
-            return x;
-        if (x.is_equal(q)) {
-            representable = false;
-            return x;
-        }
-        if (is_sin_or_cos(x)) {
-            const ex argument = x.op(0).expand();
-            const ex k = argument.coeff(q, 1);
-            const ex rest = (argument - k * q).expand();
-            if (argument.degree(q) != 1 || rest.has(q) || !k.info(GiNaC::info_flags::integer)) {
-                representable = false;
-                return x;
-            }
-            const long multiple = GiNaC::ex_to<GiNaC::numeric>(k).to_long();
-            const ex power = GiNaC::pow(c + GiNaC::I * s, multiple < 0 ? -multiple : multiple).expand();
-            const ex cos_n = power.real_part().expand();
-            const ex sin_n = ((multiple < 0 ? -1 : 1) * power.imag_part()).expand();
-            if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(x))
-                return sin_n * GiNaC::cos(rest) + cos_n * GiNaC::sin(rest);
-            return cos_n * GiNaC::cos(rest) - sin_n * GiNaC::sin(rest);
-        }
-        map_each recurse(convert);
-        return x.map(recurse);
-    };
-    const ex p = convert(e);
-    if (!representable || p.has(q))
-        return std::nullopt;
-    return p.expand();
+    return points_at_angle_choices(scene, coefficients, split, [&](const std::vector<ex>& point) {
+        return solves_all(scene, coefficients, point, simplify);
+    });
 }
 
 /// True if it is proven that the equations `coefficients` (each depending on the one
