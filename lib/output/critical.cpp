@@ -3,6 +3,8 @@
  *  Critical parameters as text, LaTeX and JSON, and the root locus for gnuplot. */
 #include "output/critical.h"
 
+#include "output/format.h"
+
 #include "core/number_text.h"
 #include "output/print.h"
 #include "output/report_sections.h"
@@ -21,12 +23,7 @@ std::string crossing_text(double x) { return significant(x, 13); }
 std::string entry_text(double x) { return significant(std::abs(x) < 1e-300 ? 0.0 : x, 12); }
 
 /// s as "a + bi", "a - bi" or "a".
-std::string complex_text(std::complex<double> s)
-{
-    if (s.imag() == 0)
-        return entry_text(s.real());
-    return entry_text(s.real()) + (s.imag() < 0 ? " - " : " + ") + entry_text(std::abs(s.imag())) + "i";
-}
+std::string complex_text(std::complex<double> s) { return complex_number(s, entry_text, "i"); }
 
 /// What kind of crossing: a complex pair through ±iω, or a real eigenvalue through 0.
 std::string crossing_kind(const critical_crossing& c)
@@ -124,9 +121,7 @@ void write_critical_json(nlohmann::ordered_json& doc, const analysis& result)
     nlohmann::ordered_json entry;
     entry["parameter"] = r.parameter;
     entry["range"] = {r.from, r.to};
-    nlohmann::ordered_json values = nlohmann::ordered_json::object();
-    for (const auto& [name, value] : r.values)
-        values[name] = value;
+    nlohmann::ordered_json values = values_json(r.values);
     entry["values"] = values;
     nlohmann::ordered_json crossings = nlohmann::ordered_json::array();
     for (const critical_crossing& c : r.crossings)

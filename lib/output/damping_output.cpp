@@ -219,10 +219,7 @@ void write_damped_eigenvalues_text(std::ostream& out, const numeric_modes& n)
     out << "    damped eigenvalues s (q ∝ e^{st}, first-order system): " << n.stability << '\n';
     for (std::size_t k : printed_eigenvalues(n)) {
         const std::complex<double> z = n.eigenvalues[k];
-        out << "    s = " << round_trip(z.real());
-        if (z.imag() != 0)
-            out << " ± " << round_trip(z.imag()) << "i";
-        out << "  (error ≤ " << round_trip(n.eigenvalue_error[k]) << ")  ζ = " << ratio_text(n.damping_ratio[k])
+        out << "    s = " << conjugate_pair(z, round_trip, " ± ", "i") << "  (error ≤ " << round_trip(n.eigenvalue_error[k]) << ")  ζ = " << ratio_text(n.damping_ratio[k])
             << '\n';
         if (has_damped_modes(n))
             out << "      mode " << damped_mode_text(n, k) << '\n';
@@ -242,9 +239,7 @@ void write_damped_eigenvalues_latex(std::ostream& out, const numeric_modes& n)
     const std::vector<std::size_t> chosen = printed_eigenvalues(n);
     for (std::size_t j = 0; j < chosen.size(); ++j) {
         const std::complex<double> z = n.eigenvalues[chosen[j]];
-        out << "s &= " << print(GiNaC::numeric(z.real() == 0 ? 0.0 : z.real()), s);
-        if (z.imag() != 0)
-            out << " \\pm " << print(GiNaC::numeric(z.imag()), s) << "\\,i";
+        out << "s &= " << conjugate_pair(z, [s](double v) { return print(GiNaC::numeric(v), s); }, " \\pm ", "\\,i");
         // The error and ζ on a line of their own: 17-digit parts leave no room beside s.
         out << "\\\\\n&\\qquad \\text{(error } \\le " << print(GiNaC::numeric(n.eigenvalue_error[chosen[j]]), s)
             << "\\text{)},\\quad \\zeta = ";

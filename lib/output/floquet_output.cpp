@@ -108,9 +108,7 @@ void write_floquet_json(nlohmann::ordered_json& doc, const analysis& result)
         nlohmann::ordered_json point = nlohmann::ordered_json::object();
         for (std::size_t i = 0; i < scene.coordinates.size() && i < f.point.size(); ++i)
             point[scene.coordinates[i].name] = print(f.point[i], syntax::plain);
-        nlohmann::ordered_json values = nlohmann::ordered_json::object();
-        for (const auto& [name, value] : f.values)
-            values[name] = value;
+        nlohmann::ordered_json values = values_json(f.values);
         nlohmann::ordered_json multipliers = nlohmann::ordered_json::array();
         for (const std::complex<double>& mu : f.multipliers)
             multipliers.push_back({mu.real(), mu.imag()});

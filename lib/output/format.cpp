@@ -16,6 +16,23 @@ std::string complex_number(std::complex<double> z, const std::function<std::stri
     return real + (z.imag() < 0 ? " - " : " + ") + number(std::abs(z.imag())) + unit;
 }
 
+std::string conjugate_pair(std::complex<double> z, const std::function<std::string(double)>& number,
+                           const std::string& plus_minus, const std::string& unit)
+{
+    const std::string real = number(z.real() == 0 ? 0.0 : z.real());
+    if (z.imag() == 0)
+        return real;
+    return real + plus_minus + number(std::abs(z.imag())) + unit;
+}
+
+nlohmann::ordered_json values_json(const std::vector<std::pair<std::string, double>>& values)
+{
+    nlohmann::ordered_json object = nlohmann::ordered_json::object();
+    for (const auto& [name, value] : values)
+        object[name] = value;
+    return object;
+}
+
 std::string printable(const std::string& text)
 {
     std::string out;

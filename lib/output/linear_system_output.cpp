@@ -3,6 +3,7 @@
  *  Printers of the state-space form and the transfer functions. */
 #include "output/linear_system_output.h"
 
+#include "output/format.h"
 #include "output/latex_blocks.h"
 #include "output/print.h"
 
@@ -99,10 +100,7 @@ std::string eigenvalues_text(const std::vector<std::complex<double>>& values)
     for (const std::complex<double>& z : values) {
         if (z.imag() < 0)
             continue; // printed with its conjugate
-        std::string one = round_trip(z.real() == 0 ? 0.0 : z.real());
-        if (z.imag() > 0)
-            one += " ± " + round_trip(z.imag()) + "i";
-        out += (out.empty() ? "" : ", ") + one;
+        out += (out.empty() ? "" : ", ") + conjugate_pair(z, round_trip, " ± ", "i");
     }
     return out;
 }
@@ -326,9 +324,7 @@ void write_linear_system_json(nlohmann::ordered_json& doc, const analysis& resul
         entry["B"] = symbolic(ss.b);
         nlohmann::ordered_json points = nlohmann::ordered_json::array();
         for (const state_space_point& p : result.state_space_values) {
-            nlohmann::ordered_json values = nlohmann::ordered_json::object();
-            for (const auto& [name, value] : p.values)
-                values[name] = value;
+            nlohmann::ordered_json values = values_json(p.values);
             nlohmann::ordered_json eigenvalues = nlohmann::ordered_json::array();
             for (const std::complex<double>& z : p.eigenvalues)
                 eigenvalues.push_back({z.real(), z.imag()});

@@ -411,9 +411,7 @@ void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result
     if (result.numeric) {
         nlohmann::ordered_json points = nlohmann::ordered_json::array();
         for (const numeric_modes& n : *result.numeric) {
-            nlohmann::ordered_json values = nlohmann::ordered_json::object();
-            for (const auto& [name, value] : n.values)
-                values[name] = value;
+            nlohmann::ordered_json values = values_json(n.values);
             nlohmann::ordered_json modes = nlohmann::ordered_json::array();
             for (Eigen::Index k = 0; k < n.modes.cols(); ++k) {
                 nlohmann::ordered_json column = nlohmann::ordered_json::array();

@@ -71,13 +71,8 @@ std::optional<std::string> pendulum_script(const analysis& result, const numeric
         if (p.position.size() < 2 || p.position.size() > 3 ||
             (p.position.size() == 3 && !p.position[2].is_zero()))
             return std::nullopt;
-    GiNaC::exmap parameters;
     // All the values of the point (the numeric modes list only those T and V use).
-    if (!scene.values.empty())
-        for (const auto& [name, value] : scene.values.front().values)
-            for (const parameter& p : scene.parameters)
-                if (p.name == name)
-                    parameters[p.symbol] = value;
+    GiNaC::exmap parameters = scene.values.empty() ? GiNaC::exmap{} : value_map(scene, scene.values.front());
     for (const auto& [name, value] : numbers.values)
         for (const parameter& p : scene.parameters)
             if (p.name == name)

@@ -2,6 +2,7 @@
 /** @file response_output.cpp
  *  Writers of the frequency response. */
 #include "output/response_output.h"
+#include "output/format.h"
 
 #include "core/number_text.h"
 
@@ -59,9 +60,7 @@ void write_response_json(std::ostream& out, const frequency_response& r)
     nlohmann::ordered_json doc;
     doc["input"] = r.input;
     doc["output"] = r.output;
-    nlohmann::ordered_json values = nlohmann::ordered_json::object();
-    for (const auto& [name, value] : r.values)
-        values[name] = value;
+    nlohmann::ordered_json values = values_json(r.values);
     doc["values"] = values;
     if (std::isnan(r.peak_omega))
         doc["peak"] = nullptr;

@@ -4,6 +4,8 @@
  *  steady motion. */
 #include "output/symmetries_output.h"
 
+#include "output/format.h"
+
 #include "output/latex_blocks.h"
 #include "core/number_text.h"
 #include "output/print.h"
@@ -145,8 +147,7 @@ void write_symmetries_text(std::ostream& out, const analysis& result)
                 out << ' ' << print_name(name, s) << " = " << round_trip(value);
             out << ": " << to_string(p.verdict) << ", s =";
             for (std::size_t k = 0; k < p.eigenvalues.size(); ++k)
-                out << (k ? ", " : " ") << round_trip(p.eigenvalues[k].real()) << (p.eigenvalues[k].imag() < 0 ? " - " : " + ")
-                    << round_trip(std::abs(p.eigenvalues[k].imag())) << "i";
+                out << (k ? ", " : " ") << complex_number(p.eigenvalues[k], round_trip, "i");
             out << '\n';
         }
         if (!m.modes.closed_form)
@@ -307,9 +308,7 @@ void write_symmetries_json(nlohmann::ordered_json& doc, const analysis& result)
         steady["stability"] = to_string(m.verdict);
         nlohmann::ordered_json points = nlohmann::ordered_json::array();
         for (const steady_motion_result::at_point& p : m.at_values) {
-            nlohmann::ordered_json values = nlohmann::ordered_json::object(), eigenvalues = nlohmann::ordered_json::array();
-            for (const auto& [name, value] : p.values)
-                values[name] = value;
+            nlohmann::ordered_json values = values_json(p.values), eigenvalues = nlohmann::ordered_json::array();
             for (const std::complex<double>& z : p.eigenvalues)
                 eigenvalues.push_back({z.real(), z.imag()});
             points.push_back({{"values", values}, {"eigenvalues", eigenvalues}, {"stability", to_string(p.verdict)}});

@@ -656,11 +656,7 @@ public:
     /// negative, with the caret at the value of a parameter the quantity depends on.
     static void check_physical(const model& scene, const value_point& point, const statement& s)
     {
-        GiNaC::exmap at;
-        for (const auto& [name, value] : point.values)
-            for (const parameter& p : scene.parameters)
-                if (p.name == name)
-                    at[p.symbol] = value;
+        const GiNaC::exmap at = value_map(scene, point);
         auto check = [&](const GiNaC::ex& quantity, const std::string& what) {
             if (GiNaC::is_a<GiNaC::numeric>(quantity))
                 return; // a constant: the statement itself was checked
