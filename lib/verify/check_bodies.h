@@ -40,6 +40,12 @@ struct numeric_body {
 /// dimension is not a positive number there, or the mass or density is not real.
 std::optional<numeric_body> numeric_inertia(const rigid_body& body, const GiNaC::exmap& at);
 
+/// The entries of `list` at `at` as doubles; nothing when one is not a real number.
+std::optional<std::vector<double>> numbers_at(const std::vector<GiNaC::ex>& list, const GiNaC::exmap& at);
+
+/// M (|a|² 1 − a aᵀ): the parallel-axis term of a mass M at offset a.
+Eigen::Matrix3d parallel_axis(double mass, const Eigen::Vector3d& a);
+
 /// Checks every inertia result and every Euler result given (null: not computed) at
 /// seeded parameter points (each `values` line's, then random ones in [1/2, 2]): the
 /// entries `inertia` and `euler`. Throws computation_error "verification failed: the
