@@ -11,7 +11,7 @@
 #include "output/ensemble_output.h"
 #include "output/report.h"
 #include "output/response_output.h"
-#include "output/simulation_output.h"
+#include "output/simulation.h"
 #include "output/sweep_output.h"
 #include "numeric/exported_system.h"
 #include "numeric/values.h"

@@ -20,7 +20,7 @@
 #include "engine/analysis.h"
 #include "output/document.h"
 #include "output/sweep_output.h"
-#include "output/simulation_output.h"
+#include "output/simulation.h"
 #include "scene/lower.h"
 #include "system/files.h"
 

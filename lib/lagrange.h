@@ -18,7 +18,7 @@
 #include "output/document.h"
 #include "output/print.h"
 #include "output/report.h"
-#include "output/simulation_output.h"
+#include "output/simulation.h"
 #include "output/sweep_output.h"
 #include "output/ensemble_output.h"
 #include "scene/lower.h"

@@ -7,15 +7,15 @@
 
 #include "output/latex_blocks.h"
 #include "output/bodies_output.h"
-#include "output/floquet_output.h"
-#include "output/constraints_output.h"
-#include "output/damping_output.h"
-#include "output/linear_system_output.h"
-#include "output/oscillations_output.h"
-#include "output/symmetries_output.h"
+#include "output/floquet.h"
+#include "output/constraints.h"
+#include "output/damping.h"
+#include "output/linear_system.h"
+#include "output/oscillations.h"
+#include "output/symmetries.h"
 #include "output/print.h"
-#include "output/simulation_output.h"
-#include "output/virial_output.h"
+#include "output/simulation.h"
+#include "output/virial.h"
 #include "output/critical.h"
 
 #include <nlohmann/json.hpp>

@@ -3,7 +3,7 @@
  *  Ensemble rows as CSV, JSON and a gnuplot map (see ensemble_output.h). */
 #include "output/ensemble_output.h"
 
-#include "output/simulation_output.h"
+#include "output/simulation.h"
 #include "system/gnuplot.h"
 #include "system/external.h"
 #include "system/files.h"

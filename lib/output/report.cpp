@@ -6,7 +6,7 @@
  *  done here is for presentation (picking the coefficients of q̈ out of an
  *  equation, evaluating positions to draw them). */
 #include "output/report.h"
-#include "output/damping_output.h"
+#include "output/damping.h"
 
 #include "mechanics/lagrangian.h"
 #include "core/number_text.h"

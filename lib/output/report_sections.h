@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file report_sections.h
- *  Section writers of the report that live in their own files. Each is listed
- *  in report_sections() (report.cpp); the rigid-body and simulation sections
- *  are declared here the same way. */
+ *  Section writers of the report that live in their family's file (output/<family>.cpp,
+ *  beside its text, LaTeX and JSON writers). Each is listed in report_sections()
+ *  (report.cpp). Internal to output/. */
 #pragma once
 
 #include "output/report.h"
@@ -11,7 +11,7 @@
 
 namespace lagrange {
 
-/// The figure of the mode shapes, with a sentence on which mode is in phase.
+/// The figure of the mode shapes, with a sentence on which mode is in phase (mode_figures.cpp).
 void write_mode_figures(report_writer& w);
 
 /// The rigid-body sections (bodies_report.cpp): each inertia component as the
@@ -19,33 +19,33 @@ void write_mode_figures(report_writer& w);
 /// equations, the torque-free solution, conserved quantities, stability, polhode.
 void write_body_sections(report_writer& w);
 
-/// The motion in time (simulation_report.cpp): the simulation with the coordinates
+/// The motion in time (simulation.cpp): the simulation with the coordinates
 /// against time (the beats, measured against 2π/(ω₊ − ω₋)), the work-precision diagram.
 void write_motion_sections(report_writer& w);
 
-/// The gyroscopic sections (gyroscopic_report.cpp): G with the Kelvin–Tait–Chetaev
+/// The gyroscopic sections (oscillations.cpp): G with the Kelvin–Tait–Chetaev
 /// verdict, and the numeric values from the quadratic eigenproblem with complex modes.
 void write_gyroscopic_matrix(report_writer& w);
 void write_gyroscopic_numeric(report_writer& w);
 
-/// An L that depends on t (floquet_report.cpp): the Floquet multipliers about the points
+/// An L that depends on t (floquet.cpp): the Floquet multipliers about the points
 /// that solve the equations at every t.
 void write_floquet_section(report_writer& w);
 
-/// Damped small oscillations (damping_report.cpp): C, det(K + sC + s²M) with its roots and
+/// Damped small oscillations (damping.cpp): C, det(K + sC + s²M) with its roots and
 /// regimes, proportional damping, and the damped eigenvalues at the `values` points.
 void write_damping_section(report_writer& w);
-/// The linearized input–output system (damping_report.cpp): A, B and the transfer functions.
+/// The linearized input–output system (linear_system.cpp): A, B and the transfer functions.
 void write_linear_system_section(report_writer& w);
 /// Each transfer function H_{u→q}(s) of `transfer` as a displayed row (the damping and the
 /// operating point sections both list them).
 void write_transfer_rows(report_writer& w, const model& scene, const transfer_result& transfer, const std::string& s);
-/// A and B about an operating point, with constraints (operating_point_report.cpp).
+/// A and B about an operating point, with constraints (linear_system.cpp).
 void write_operating_point_section(report_writer& w);
-/// Symmetries (symmetries_report.cpp): the conserved quantities, the Hamiltonian, Routh's
+/// Symmetries (symmetries.cpp): the conserved quantities, the Hamiltonian, Routh's
 /// reduction and the steady motion.
 void write_symmetries_section(report_writer& w);
-/// Scenes with constraints (constraints_report.cpp): the constraints with their kind and
+/// Scenes with constraints (constraints.cpp): the constraints with their kind and
 /// integrability, the multipliers and the constraint forces.
 void write_constraints_section(report_writer& w);
 

@@ -7,7 +7,7 @@
 #include "core/number_text.h"
 
 #include "output/print.h"
-#include "output/simulation_output.h"
+#include "output/simulation.h"
 #include "system/gnuplot.h"
 
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file virial_output.cpp
- *  The time averages of T and V as text, LaTeX and JSON (see virial_output.h). */
-#include "output/virial_output.h"
+/** @file virial.cpp
+ *  The time averages of T and V as text, LaTeX and JSON (see virial.h). */
+#include "output/virial.h"
 
 #include "core/number_text.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file simulation_output.h
+/** @file simulation.h
  *  The `simulation` and `workprecision` sections of the text, LaTeX and JSON
  *  documents, the trajectory as CSV, and plots drawn by gnuplot (SVG, PNG or PDF). */
 #pragma once

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file damping_output.h
+/** @file damping.h
  *  The damped small oscillations in text, LaTeX and JSON: the damping matrix C, the
  *  characteristic polynomial det(K + sC + s²M), its roots with their regimes, and
  *  proportional damping with the modal damping ratios. */

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file floquet_output.h
+/** @file floquet.h
  *  The `floquet` product (spec §5) in text, LaTeX and JSON: per point that solves the
  *  equations at every t and per `values` point, the period, the multipliers and whether
  *  they all lie on or inside the unit circle. Printers only; nothing is computed here. */

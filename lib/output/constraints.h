@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file constraints_output.h
+/** @file constraints.h
  *  Constraints in text, LaTeX and JSON: each constraint with its kind and integrability
  *  (shown with the equations of motion), the multipliers λ and the forces the constraints
  *  exert on the points. */

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file virial_output.h
+/** @file virial.h
  *  The virial product (numeric/virial.h) as text, LaTeX and JSON. */
 #pragma once
 

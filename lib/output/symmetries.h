@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file symmetries_output.h
+/** @file symmetries.h
  *  The symmetries in text, LaTeX and JSON: the conserved quantities, the Hamiltonian
  *  with Hamilton's equations, Routh's reduction and the steady motion. */
 #pragma once

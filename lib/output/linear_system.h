@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file linear_system_output.h
+/** @file linear_system.h
  *  The linearized input–output system in text, LaTeX and JSON: the state-space matrices A
  *  and B (symbolic and at the `values` points) and the transfer functions H(s). */
 #pragma once

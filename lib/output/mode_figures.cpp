@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file oscillations_report.cpp
+/** @file mode_figures.cpp
  *  The report's figure of the mode shapes: point masses in a plane drawn at
  *  equilibrium and displaced along each mode, or bar charts of the mode vectors.
  *  Positions are evaluated numerically here only to draw them. */

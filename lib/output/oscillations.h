@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file oscillations_output.h
+/** @file oscillations.h
  *  The small-oscillations family in text, LaTeX and JSON: equilibria, the linearization,
  *  the characteristic polynomial, the modes and normal coordinates, the asymptotic limit
- *  and the numeric modes (its report sections are in report.cpp and oscillations_report.cpp). */
+ *  and the numeric modes (its report sections are in report.cpp, the gyroscopic ones in oscillations.cpp and the figure in mode_figures.cpp). */
 #pragma once
 
 #include "engine/analysis.h"
