@@ -510,26 +510,15 @@ const std::vector<stage_definition>& stage_table()
 verification_input verification_input_of(const analysis& r)
 {
     verification_input input;
-    input.lagrangian = r.lagrangian ? &*r.lagrangian : nullptr;
-    input.equations = r.equations ? &*r.equations : nullptr;
-    input.equilibria = r.equilibria ? &*r.equilibria : nullptr;
-    input.linearization = r.linearization ? &*r.linearization : nullptr;
-    input.characteristic = r.characteristic ? &*r.characteristic : nullptr;
-    input.modes = r.modes ? &*r.modes : nullptr;
-    input.damping = r.damping ? &*r.damping : nullptr;
-    input.conserved = r.conserved ? &*r.conserved : nullptr;
-    input.hamiltonian = r.hamiltonian ? &*r.hamiltonian : nullptr;
-    input.reduced = r.reduced && r.wanted.count(product::reduced) ? &*r.reduced : nullptr;
-    input.steady = r.steady ? &*r.steady : nullptr;
-    // A and B about an operating point are checked by the verification stage itself.
-    input.state_space = r.state_space && !r.operating ? &*r.state_space : nullptr;
-    input.transfer = r.transfer ? &*r.transfer : nullptr;
-    input.multipliers = r.multipliers ? &*r.multipliers : nullptr;
-    input.constrained = r.constrained ? &*r.constrained : nullptr;
-    input.asymptotic = r.asymptotic ? &*r.asymptotic : nullptr;
-    input.floquet = r.floquet ? &*r.floquet : nullptr;
-    input.inertia = r.inertia ? &*r.inertia : nullptr;
-    input.euler = r.euler ? &*r.euler : nullptr;
+#define LAGRANGE_POINT_AT(type, name) input.name = r.name ? &*r.name : nullptr;
+    LAGRANGE_VERIFIED_RESULTS(LAGRANGE_POINT_AT)
+#undef LAGRANGE_POINT_AT
+    // Routh's reduction is checked where it is shown; A and B about an operating point are
+    // checked by the verification stage itself.
+    if (!r.wanted.count(product::reduced))
+        input.reduced = nullptr;
+    if (r.operating)
+        input.state_space = nullptr;
     return input;
 }
 

@@ -58,27 +58,36 @@ struct verification_result {
     std::vector<verification_entry> entries; ///< in product order
 };
 
+/// The results the checks read, one line each: the type and the name, which is also the
+/// name of the field of `analysis` (engine/analysis.h) that verification_input_of copies.
+/// `transfer` is checked only with `state_space`; with `constrained`, `linearization` is
+/// the reduced one; `inertia` goes with `euler` (check_bodies.h).
+#define LAGRANGE_VERIFIED_RESULTS(X)                                                                      \
+    X(lagrangian_result, lagrangian)                                                                      \
+    X(equations_of_motion, equations)                                                                     \
+    X(equilibria_result, equilibria)                                                                      \
+    X(linearization_result, linearization)                                                                \
+    X(characteristic_result, characteristic)                                                              \
+    X(modes_result, modes)                                                                                \
+    X(damping_result, damping)                                                                            \
+    X(conserved_result, conserved)                                                                        \
+    X(hamiltonian_result, hamiltonian)                                                                    \
+    X(reduced_result, reduced)                                                                            \
+    X(steady_motion_result, steady)                                                                       \
+    X(state_space_result, state_space)                                                                    \
+    X(transfer_result, transfer)                                                                          \
+    X(multipliers_result, multipliers)                                                                    \
+    X(constrained_linearization, constrained)                                                             \
+    X(asymptotic_result, asymptotic)                                                                      \
+    X(std::vector<floquet_point>, floquet)                                                                \
+    X(std::vector<inertia_result>, inertia)                                                               \
+    X(std::vector<euler_result>, euler)
+
 /// What the checks read; a null pointer is a product that was not computed.
 struct verification_input {
-    const lagrangian_result* lagrangian = nullptr;
-    const equations_of_motion* equations = nullptr;
-    const equilibria_result* equilibria = nullptr;
-    const linearization_result* linearization = nullptr;
-    const characteristic_result* characteristic = nullptr;
-    const modes_result* modes = nullptr;
-    const damping_result* damping = nullptr;
-    const conserved_result* conserved = nullptr;
-    const hamiltonian_result* hamiltonian = nullptr;
-    const reduced_result* reduced = nullptr;
-    const steady_motion_result* steady = nullptr;
-    const state_space_result* state_space = nullptr;
-    const transfer_result* transfer = nullptr; ///< checked only with state_space
-    const multipliers_result* multipliers = nullptr;
-    const constrained_linearization* constrained = nullptr; ///< then `linearization` is the reduced one
-    const asymptotic_result* asymptotic = nullptr;
-    const std::vector<floquet_point>* floquet = nullptr;
-    const std::vector<inertia_result>* inertia = nullptr; ///< with `euler`: check_bodies.h
-    const std::vector<euler_result>* euler = nullptr;
+#define LAGRANGE_VERIFIED_FIELD(type, name) const type* name = nullptr;
+    LAGRANGE_VERIFIED_RESULTS(LAGRANGE_VERIFIED_FIELD)
+#undef LAGRANGE_VERIFIED_FIELD
 };
 
 /// Checks every result given (`shown`: the products printed, which name the entries of
