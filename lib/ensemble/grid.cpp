@@ -4,6 +4,7 @@
 #include "ensemble/ensemble.h"
 
 #include "core/assumptions.h"
+#include "numeric/sweep.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -142,24 +143,9 @@ ensemble_axis parse_axis(const std::string& text, std::size_t begin, std::size_t
 
 } // namespace
 
-double ensemble_axis::at(std::size_t k) const
-{
-    if (count <= 1 || k == 0)
-        return from;
-    if (k + 1 == count)
-        return to;
-    double t = static_cast<double>(k) / static_cast<double>(count - 1);
-    if (logarithmic) // base 10, as --sweep: powers of ten come out exact
-        return std::pow(10.0, std::log10(from) + t * (std::log10(to) - std::log10(from)));
-    return from + t * (to - from);
-}
+double ensemble_axis::at(std::size_t k) const { return grid_value(from, to, count, logarithmic, k); }
 
-double ensemble_axis::sample(double u) const
-{
-    if (logarithmic)
-        return std::pow(10.0, std::log10(from) + u * (std::log10(to) - std::log10(from)));
-    return from + u * (to - from);
-}
+double ensemble_axis::sample(double u) const { return between(from, to, u, logarithmic); }
 
 std::vector<ensemble_axis> parse_ensemble_grid(const std::string& text, const model& scene, bool random)
 {

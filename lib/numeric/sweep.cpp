@@ -48,17 +48,23 @@ std::string point_text(const model& scene, const std::vector<double>& values)
 
 } // namespace
 
-double sweep_axis::at(std::size_t k) const
+double between(double from, double to, double t, bool logarithmic)
+{
+    if (logarithmic)
+        return std::pow(10.0, std::log10(from) + t * (std::log10(to) - std::log10(from)));
+    return from + t * (to - from);
+}
+
+double grid_value(double from, double to, std::size_t count, bool logarithmic, std::size_t k)
 {
     if (count <= 1 || k == 0)
         return from;
     if (k + 1 == count)
         return to;
-    double t = static_cast<double>(k) / static_cast<double>(count - 1);
-    if (logarithmic) // in base 10, so that the grid's powers of ten come out exact (1e-3, not 0.0010000000000000002)
-        return std::pow(10.0, std::log10(from) + t * (std::log10(to) - std::log10(from)));
-    return from + t * (to - from);
+    return between(from, to, static_cast<double>(k) / static_cast<double>(count - 1), logarithmic);
 }
+
+double sweep_axis::at(std::size_t k) const { return grid_value(from, to, count, logarithmic, k); }
 
 sweep_axis parse_sweep_axis(const std::string& text, const model& scene)
 {

@@ -17,6 +17,15 @@ namespace lagrange {
 
 /// One swept parameter: `count` values from `from` to `to`, evenly spaced, or
 /// geometrically (`:log`; then both ends must be positive).
+/// The point a fraction t ∈ [0, 1] of the way from `from` to `to`: evenly spaced, or
+/// logarithmic in base 10 (so that a grid's powers of ten come out exact, 1e-3 and not
+/// 0.0010000000000000002).
+double between(double from, double to, double t, bool logarithmic);
+
+/// The k-th of `count` values from `from` to `to` (k = 0 and k = count − 1 are the ends
+/// exactly): the grid of --sweep and of an ensemble's --grid.
+double grid_value(double from, double to, std::size_t count, bool logarithmic, std::size_t k);
+
 struct sweep_axis {
     std::string name;
     std::size_t parameter = 0; ///< index into model::parameters
