@@ -80,6 +80,14 @@ GiNaC::exmap value_map(const model& scene, const value_point& point)
     return map;
 }
 
+const rigid_body* body_named(const model& scene, const std::string& name)
+{
+    for (const rigid_body& b : scene.bodies)
+        if (b.name == name)
+            return &b;
+    return nullptr;
+}
+
 std::string unused_name(const model& scene, std::string base)
 {
     auto taken = [&](const std::string& name) {

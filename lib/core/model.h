@@ -280,6 +280,9 @@ struct model {
 /// The values of a `values` line as a substitution.
 GiNaC::exmap value_map(const model& scene, const value_point& point);
 
+/// The body of that name, or null when the scene has none.
+const rigid_body* body_named(const model& scene, const std::string& name);
+
 /// The names of the coordinates and of the parameters, in the scene's order.
 std::vector<std::string> coordinate_names(const model& scene);
 std::vector<std::string> parameter_names(const model& scene);

@@ -36,11 +36,11 @@ std::vector<std::string> printed(const std::vector<GiNaC::ex>& v, syntax s, cons
     return out;
 }
 
-const rigid_body& body_named(const model& scene, const std::string& name)
+/// The body an inertia result is of (every result names a body of its scene).
+const rigid_body& body_of(const model& scene, const std::string& name)
 {
-    for (const rigid_body& b : scene.bodies)
-        if (b.name == name)
-            return b;
+    if (const rigid_body* b = body_named(scene, name))
+        return *b;
     throw std::invalid_argument("unknown body `" + name + "`");
 }
 
@@ -153,7 +153,7 @@ void write_bodies_text(std::ostream& out, const analysis& result)
     if (result.inertia) {
         out << "\nInertia (about the centre of mass, body axes)\n";
         for (const inertia_result& in : *result.inertia) {
-            const rigid_body& b = body_named(scene, in.body);
+            const rigid_body& b = body_of(scene, in.body);
             out << "  body " << in.body << ": " << description(b, syntax::text) << "\n";
             out << "    mass M = " << print(in.mass, syntax::text) << '\n';
             if (!in.integrals.empty()) {
@@ -331,7 +331,7 @@ void write_bodies_latex(std::ostream& out, const analysis& result)
     if (result.inertia) {
         out << "\\subsection*{Inertia}\n";
         for (const inertia_result& in : *result.inertia) {
-            const rigid_body& b = body_named(scene, in.body);
+            const rigid_body& b = body_of(scene, in.body);
             out << "Body $" << print_name(in.body, syntax::latex) << "$: " << description(b, syntax::latex)
                 << ", mass $M = " << print(in.mass, syntax::latex) << "$.\n";
             if (!in.integrals.empty()) {

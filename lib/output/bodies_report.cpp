@@ -26,14 +26,6 @@ namespace {
 
 const char* const axis_names[] = {"x", "y", "z"};
 
-const rigid_body* body_named(const model& scene, const std::string& name)
-{
-    for (const rigid_body& b : scene.bodies)
-        if (b.name == name)
-            return &b;
-    return nullptr;
-}
-
 std::string body_title(const std::string& name) { return "$" + report_writer::name(name) + "$"; }
 
 /// How the body was given, as the scene wrote it.

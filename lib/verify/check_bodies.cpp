@@ -491,14 +491,6 @@ void check_euler(const model& scene, const rigid_body& body, const inertia_resul
     }
 }
 
-const rigid_body* body_named(const model& scene, const std::string& name)
-{
-    for (const rigid_body& b : scene.bodies)
-        if (b.name == name)
-            return &b;
-    return nullptr;
-}
-
 } // namespace
 
 std::vector<verification_entry> verify_bodies(const model& scene, const std::vector<inertia_result>* inertia,
