@@ -13,7 +13,6 @@
 #include "output/response_output.h"
 #include "output/simulation.h"
 #include "output/sweep_output.h"
-#include "numeric/exported_system.h"
 #include "numeric/values.h"
 #include "scene/lower.h"
 #include "system/files.h"
@@ -439,12 +438,9 @@ int export_command(const export_options& options, const lagrange::budget_limits&
         throw usage_error("--name " + options.name + ": the exported functions' name must be an identifier (letters, "
                           "digits and `_`, not starting with a digit) and no keyword of C, Python or Octave");
     lagrange::model scene = load_scene(options.scene_path, options.values, {}, budget.max_seconds);
-    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::equations}, budget);
-    const lagrange::exported_system system = lagrange::export_system(scene, *result.equations);
     std::vector<std::pair<std::string, std::string>> files;
     for (const lagrange::exported_file& file :
-         lagrange::export_code(scene, system, *lagrange::export_target_named(options.target), name,
-                               LAGRANGE_VERSION))
+         lagrange::export_scene(scene, *lagrange::export_target_named(options.target), name, LAGRANGE_VERSION, budget))
         files.emplace_back(file.name, file.text);
     lagrange::write_files(options.folder, files);
     for (const auto& file : files)

@@ -7,7 +7,6 @@
 #include "core/errors.h"
 #include "core/model.h"
 #include "engine/analysis.h"
-#include "numeric/exported_system.h"
 #include "output/document.h"
 #include "output/export_code.h"
 #include "scene/lower.h"
@@ -351,12 +350,10 @@ PYBIND11_MODULE(_lagrange, m)
                         copy.values.clear();
                     for (const std::string& v : values)
                         lagrange::add_values(copy, v, "values=");
-                    lagrange::analysis result = lagrange::analyze(copy, {lagrange::product::equations});
                     std::vector<std::pair<std::string, std::string>> files;
                     std::string written;
                     for (const lagrange::exported_file& file :
-                         lagrange::export_code(copy, lagrange::export_system(copy, *result.equations), *chosen, name,
-                                               LAGRANGE_VERSION_STRING)) {
+                         lagrange::export_scene(copy, *chosen, name, LAGRANGE_VERSION_STRING)) {
                         files.emplace_back(file.name, file.text);
                         written += file.name + "\n";
                     }

@@ -698,6 +698,16 @@ analysis analyze(const model& scene, const std::set<product>& wanted, const simu
     return analyze(scene, wanted, budget_limits{}, simulation);
 }
 
+analysis analyze_for_export(const model& scene, const budget_limits& limits)
+{
+    if (scene.constraints.empty() && !scene.steady)
+        try {
+            return analyze(scene, {product::equations, product::linearization}, limits);
+        } catch (const computation_error&) { // budget_exceeded too: then without the linearization
+        }
+    return analyze(scene, {product::equations}, limits);
+}
+
 point_modes numeric_modes_path(const analysis& result)
 {
     if (!result.scene || !result.linearization)

@@ -112,6 +112,10 @@ analysis analyze(const model& scene, const std::set<product>& wanted = {}, const
 /// The same, with the default budgets.
 analysis analyze(const model& scene, const std::set<product>& wanted, const simulation_settings& simulation);
 
+/// What `export` needs: the equations of motion, and the linearization at the scene's
+/// equilibrium where one can be found (a scene without one is exported without it).
+analysis analyze_for_export(const model& scene, const budget_limits& limits = {});
+
 /// The numeric modes' path for `result` (which holds a linearization): its T, V, G and, when
 /// the scene has dissipation, the damping matrix C at the same equilibrium: what the
 /// `numeric` stage evaluates at the `values` points and `--sweep` at the points of its grid.

@@ -14,7 +14,42 @@
 
 namespace lagrange {
 
-exported_system export_system(const model& scene, const equations_of_motion& equations)
+namespace {
+
+/// The equilibrium's state, T and V as one program, when they depend on the parameters only.
+std::optional<expression_program> linear_program(const model& scene, const linearization_result& linear,
+                                                 const std::vector<GiNaC::ex>& symbols)
+{
+    const std::size_t n = scene.coordinates.size();
+    if (linear.at.size() != n || linear.kinetic.rows() != n || linear.potential.rows() != n)
+        return std::nullopt;
+    std::vector<GiNaC::ex> entries(linear.at.begin(), linear.at.end());
+    entries.resize(2 * n, 0);
+    for (const GiNaC::matrix* m : {&linear.kinetic, &linear.potential})
+        for (unsigned i = 0; i < n; ++i)
+            for (unsigned j = 0; j < n; ++j)
+                entries.push_back((*m)(i, j));
+    for (const GiNaC::ex& e : entries) {
+        if (e.has(scene.time))
+            return std::nullopt;
+        for (const coordinate& c : scene.coordinates)
+            if (e.has(c.position) || e.has(c.velocity))
+                return std::nullopt;
+        for (const input_signal& u : scene.inputs)
+            if (e.has(u.symbol))
+                return std::nullopt;
+    }
+    try {
+        return expression_program(entries, symbols);
+    } catch (const std::invalid_argument&) {
+        return std::nullopt; // not compilable: the export goes without it
+    }
+}
+
+} // namespace
+
+exported_system export_system(const model& scene, const equations_of_motion& equations,
+                              const linearization_result* linearization)
 {
     if (equations.constraints)
         throw computation_error("`export` does not cover constraints in this version: their multipliers make "
@@ -64,6 +99,8 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
     } catch (const std::invalid_argument& error) {
         throw computation_error(std::string("the equations of motion cannot be exported: ") + error.what());
     }
+    if (linearization)
+        out.linear = linear_program(scene, *linearization, symbols);
 
     // Defaults: the first `values` line, where it gives a number (an expression in other
     // parameters is evaluated with theirs).

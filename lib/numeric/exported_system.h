@@ -9,8 +9,10 @@
 
 #include "core/model.h"
 #include "mechanics/equations_of_motion.h"
+#include "mechanics/linearization.h"
 #include "program/expression_program.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,10 +31,17 @@ struct exported_system {
     /// ∂M/∂q_k for each k (n³, k slowest), ∂F/∂q (n², row i = F_i), ∂F/∂q̇ (n²), ∂F/∂u (n·m)
     expression_program derivatives;
     std::vector<double> defaults; ///< each parameter's value in the scene's first `values` line, NaN where none
+    /// At the equilibrium the linearization is about, as functions of the parameters only: the
+    /// state there (2n: q at rest, then q̇ = 0), then T and V of the small oscillations
+    /// (n × n each, row-major). Absent when the export was given no linearization, or its
+    /// point depends on more than the parameters.
+    std::optional<expression_program> linear;
 };
 
-/// The exported system of `scene`. Throws computation_error for what the export does not
-/// cover: constraints (their multipliers make a DAE), and expressions that cannot be compiled.
-exported_system export_system(const model& scene, const equations_of_motion& equations);
+/// The exported system of `scene`, with `linear` from `linearization` when given. Throws
+/// computation_error for what the export does not cover: constraints (their multipliers
+/// make a DAE), and expressions that cannot be compiled.
+exported_system export_system(const model& scene, const equations_of_motion& equations,
+                              const linearization_result* linearization = nullptr);
 
 } // namespace lagrange

@@ -6,6 +6,8 @@
  *  out here because the C target promises no dependency beyond <math.h>. */
 #include "output/export_code.h"
 
+#include "engine/analysis.h"
+
 #include "core/number_text.h"
 
 #include <algorithm>
@@ -175,7 +177,11 @@ std::string provenance(const model& scene, const exported_system& system, const 
         << comment << "Parameters p (" << system.parameter_names.size() << "): " << list(system.parameter_names)
         << ".\n"
         << comment << "Inputs u (" << system.input_names.size() << "): " << list(system.input_names) << ".\n"
-        << comment << "Units: none are assumed; the numbers are in whatever units the scene's values use.\n";
+        << comment << "Units: none are assumed; the numbers are in whatever units the scene's values use.\n"
+        << comment
+        << (system.linear ? "Linearized: `equilibrium` gives the state the small oscillations are about and `linear`\n" +
+                                comment + "T and V there, functions of p; A and B are the Jacobian there with u = 0.\n"
+                          : "No equilibrium was found to linearize about, so there is no `equilibrium` or `linear`.\n");
     if (!names.renamed.empty()) {
         out << comment << "Renamed (a keyword or an argument name gets `_` appended):";
         for (const auto& [from, to] : names.renamed)
@@ -249,7 +255,14 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
       << "void " << name << "_mass_matrix" << args << ", double *M);\n"
       << "void " << name << "_forcing" << args << ", double *F);\n"
       << "/* The energy function h = sum q' dL/dq' - L (conserved when nothing drives or damps the motion). */\n"
-      << "double " << name << "_energy" << args << ");\n\n#endif\n";
+      << "double " << name << "_energy" << args << ");\n";
+    if (system.linear)
+        h << "/* At the equilibrium the small oscillations are about, functions of p only: the state there\n"
+          << "   (NX), and T and V (NQ x NQ each) of T q'' + V q = 0. The linearized x' = A x + B u there\n"
+          << "   has A = df/dx and B = df/du of " << name << "_jacobian at that state with u = 0. */\n"
+          << "void " << name << "_equilibrium(const double *p, double *x);\n"
+          << "void " << name << "_linear(const double *p, double *T, double *V);\n";
+    h << "\n#endif\n";
 
     std::ostringstream c;
     const std::string nq = name + "_NQ";
@@ -268,6 +281,9 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
     for (const expression_program* program : {&system.mass, &system.forcing, &system.mass_and_forcing,
                                               &system.derivatives, &system.energy})
         for (const instruction& i : program->code())
+            powers = powers || i.op == instruction::code::integer_power;
+    if (system.linear)
+        for (const instruction& i : system.linear->code())
             powers = powers || i.op == instruction::code::integer_power;
     if (powers) // only when used: an unused static function is a warning
         c << "static double lagrange_ipow(double a, int n)\n{\n    double r = 1.0;\n    int k = n < 0 ? -n : n;\n"
@@ -331,6 +347,18 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
           << "                dfdu[(" << nq << " + i) * " << nu << " + k] = column[i];\n        }\n    }\n";
     }
     c << "    return 0;\n}\n";
+    if (system.linear) {
+        const std::string parts = "2 * " + nq + " + 2 * " + nq + " * " + nq;
+        c << "\nstatic void lagrange_linear" << args << ", double *out)\n{\n"
+          << c_body(*system.linear, names, system, "out") << "}\n\n"
+          << "void " << name << "_equilibrium(const double *p, double *x)\n{\n    double out[" << parts
+          << "];\n    int i;\n    lagrange_linear(0.0, NULL, NULL, p, out);\n"
+          << "    for (i = 0; i < " << nx << "; ++i)\n        x[i] = out[i];\n}\n\n"
+          << "void " << name << "_linear(const double *p, double *T, double *V)\n{\n    double out[" << parts
+          << "];\n    int i;\n    lagrange_linear(0.0, NULL, NULL, p, out);\n"
+          << "    for (i = 0; i < " << nq << " * " << nq << "; ++i) {\n        T[i] = out[" << nx << " + i];\n"
+          << "        V[i] = out[" << nx << " + " << nq << " * " << nq << " + i];\n    }\n}\n";
+    }
     return {{name + ".h", h.str()}, {name + ".c", c.str()}};
 }
 
@@ -430,6 +458,18 @@ std::vector<exported_file> export_python(const model& scene, const exported_syst
        << "    dfdu = np.zeros(shape + (NX, NU))\n"
        << "    if NU:\n        dfdu[..., NQ:, :] = np.linalg.solve(mass, dfu)\n"
        << "    return dfdx, dfdu\n";
+    if (system.linear)
+        py << "\n\n"
+           << python_function("_linear", "The equilibrium's state, then T and V, flattened.", *system.linear, names,
+                              system, "_vector")
+           << "def equilibrium(p=None):\n"
+           << "    \"\"\"The state the small oscillations are about, shape (..., NX).\"\"\"\n"
+           << "    return _linear(0.0, np.zeros(NX), p)[..., :NX]\n\n\n"
+           << "def linear(p=None):\n"
+           << "    \"\"\"(T, V) of T q'' + V q = 0 at the equilibrium, each of shape (..., NQ, NQ).\"\"\"\n"
+           << "    both = _linear(0.0, np.zeros(NX), p)\n    shape = both.shape[:-1]\n"
+           << "    return (both[..., NX:NX + NQ * NQ].reshape(shape + (NQ, NQ)),\n"
+           << "            both[..., NX + NQ * NQ:].reshape(shape + (NQ, NQ)))\n";
     return {{name + ".py", py.str()}};
 }
 
@@ -515,6 +555,22 @@ std::vector<exported_file> export_octave(const model& scene, const exported_syst
         << "  dfdx = [zeros(n), eye(n); M \\ dq, M \\ dv];\n"
         << "  dfdu = [zeros(n, m); M \\ reshape(d(n^3 + 2 * n^2 + 1:end), m, n)'];\nend\n";
     files.push_back({name + "_jacobian.m", jac.str()});
+    if (system.linear) {
+        files.push_back({name + "_linear_parts.m",
+                         octave_function(name, "linear_parts", "The equilibrium's state, then T and V, as a column.",
+                                         *system.linear, names, system, "d", system.linear->output_count(), 1,
+                                         header)});
+        const std::string call = "  if nargin < 1 || isempty(p)\n    p = " + name + "_defaults();\n  end\n  d = " +
+                                 name + "_linear_parts(0, zeros(" + std::to_string(2 * n) + ", 1), p);\n";
+        files.push_back({name + "_equilibrium.m",
+                         "function x = " + name + "_equilibrium(p)\n  % The state the small oscillations are about "
+                         "(a column).\n" + header + call + "  x = d(1:" + std::to_string(2 * n) + ");\nend\n"});
+        files.push_back({name + "_linear.m",
+                         "function [T, V] = " + name + "_linear(p)\n  % T and V of T q'' + V q = 0 at the "
+                         "equilibrium.\n" + header + call + "  n = " + std::to_string(n) + ";\n"
+                         "  T = reshape(d(2 * n + 1:2 * n + n^2), n, n)';\n"
+                         "  V = reshape(d(2 * n + n^2 + 1:2 * n + 2 * n^2), n, n)';\nend\n"});
+    }
     return files;
 }
 
@@ -572,6 +628,15 @@ std::vector<exported_file> export_code(const model& scene, const exported_system
     case export_target::octave: return export_octave(scene, system, name, version);
     }
     return {};
+}
+
+std::vector<exported_file> export_scene(const model& scene, export_target target, const std::string& name,
+                                        const std::string& version, const budget_limits& limits)
+{
+    const analysis result = analyze_for_export(scene, limits);
+    const exported_system system =
+        export_system(scene, *result.equations, result.linearization ? &*result.linearization : nullptr);
+    return export_code(scene, system, target, name, version);
 }
 
 } // namespace lagrange

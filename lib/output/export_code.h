@@ -6,6 +6,7 @@
  *  scene's names. The interface of each target is in docs/export.md. */
 #pragma once
 
+#include "algebra/budget.h"
 #include "core/model.h"
 #include "numeric/exported_system.h"
 
@@ -36,5 +37,11 @@ struct exported_file {
 /// NAME_FUNCTION.m per function. `version` is the engine's, for the header comment.
 std::vector<exported_file> export_code(const model& scene, const exported_system& system, export_target target,
                                        const std::string& name, const std::string& version);
+
+/// The files of `target` for `scene`: its equations of motion, and the equilibrium with T and
+/// V where the scene has one (engine/analysis.h, analyze_for_export), derived under `limits`.
+/// Throws computation_error for a scene that cannot be exported.
+std::vector<exported_file> export_scene(const model& scene, export_target target, const std::string& name,
+                                        const std::string& version, const budget_limits& limits = {});
 
 } // namespace lagrange

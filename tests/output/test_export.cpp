@@ -3,7 +3,8 @@
  *  `lagrange export`: the exported C, Python and Octave code reproduces `lagrange simulate`
  *  (at tolerance 1e-12) to 1e-8 relative over the same run, and its Jacobian agrees with
  *  central differences of its own right-hand side to 1e-6; for the double pendulum, the
- *  heavy top, the damped driven oscillator (an input) and a 10-link chain. And bad input. */
+ *  heavy top, the damped driven oscillator (an input) and a 10-link chain; the exported
+ *  equilibrium, T and V against `state_space`. And bad input. */
 #include "helpers/chain_scene.h"
 #include "helpers/cli_runner.h"
 #include "helpers/tools.h"
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
@@ -114,6 +116,43 @@ void check_against(const reference& expected, const std::vector<double>& printed
         CHECK(std::abs(printed[k] - expected.end[k]) <= 1e-8 * scale);
     CHECK(printed.back() <= 1e-6); // the Jacobian against central differences
 }
+
+/// The exported equilibrium, T, V, and the Jacobian there as printed by a target's program:
+/// x* (NX), T and V (row-major), A (NX × NX), B (NX × NU). A and B must be `state_space`'s at the
+/// scene's first `values` point (the engine's own symbolic A, B), and T A₂₁ = −V (A's
+/// lower-left block is −T⁻¹V when nothing depends on the velocities at rest).
+void check_linear(const std::string& file, const std::vector<double>& printed, bool velocity_free)
+{
+    cli_result r = run_cli(file + " --want state_space --format json");
+    REQUIRE(r.exit_code == 0);
+    const nlohmann::json point = nlohmann::json::parse(r.out)["state_space"]["numeric"].at(0);
+    const auto a = point["A"].get<std::vector<std::vector<double>>>();
+    const auto b = point["B"].get<std::vector<std::vector<double>>>();
+    const std::size_t nx = a.size(), n = nx / 2, nu = b.empty() ? 0 : b[0].size();
+    REQUIRE(printed.size() == nx + 2 * n * n + nx * nx + nx * nu);
+    const double* t = &printed[nx];
+    const double* v = t + n * n;
+    const double* exported_a = v + n * n;
+    const double* exported_b = exported_a + nx * nx;
+    for (std::size_t i = 0; i < nx; ++i) {
+        for (std::size_t j = 0; j < nx; ++j)
+            CHECK(std::abs(exported_a[i * nx + j] - a[i][j]) <= 1e-12 * (1 + std::abs(a[i][j])));
+        for (std::size_t k = 0; k < nu; ++k)
+            CHECK(std::abs(exported_b[i * nu + k] - b[i][k]) <= 1e-12 * (1 + std::abs(b[i][k])));
+    }
+    for (std::size_t i = 0; i < n && velocity_free; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            double ta = 0; // (T A₂₁)_ij
+            for (std::size_t k = 0; k < n; ++k)
+                ta += t[i * n + k] * exported_a[(n + k) * nx + j];
+            CHECK(std::abs(ta + v[i * n + j]) <= 1e-12 * (1 + std::abs(v[i * n + j])));
+        }
+}
+
+/// The scenes whose equilibrium and linearization the targets export: the double pendulum
+/// (T, V coupled) and the damped driven oscillator (an input, and damping in A).
+const std::vector<std::pair<std::string, bool>> linear_cases = {{"double_pendulum", true},
+                                                                {"damped_driven_oscillator", false}};
 
 const char* c_harness = R"(#include "NAME.h"
 #include <math.h>
@@ -262,6 +301,87 @@ TEST_CASE("export: the Octave functions work with ode45 and reproduce simulate",
         check_against(expected,
                       read_numbers(run_shell("cd " + folder + " && octave-cli --no-gui --quiet check.m 2>&1")));
     }
+}
+
+TEST_CASE("export: the C equilibrium, T and V give state_space's A and B", "[export][cc]")
+{
+    for (const auto& [name, velocity_free] : linear_cases) {
+        INFO(name);
+        const std::string folder = folder_for("c-linear-" + name);
+        REQUIRE(run_cli("export " + examples + name + ".lag --to c -o " + folder).exit_code == 0);
+        std::ofstream(folder + "/linear.c") << replace_all(R"(#include "NAME.h"
+#include <stdio.h>
+int main(void)
+{
+    double x[NAME_NX], T[NAME_NQ * NAME_NQ], V[NAME_NQ * NAME_NQ], A[NAME_NX * NAME_NX], B[NAME_NX * NAME_NU + 1];
+    double u[NAME_NU + 1] = {0.0};
+    int i;
+    NAME_equilibrium(NAME_default_p, x);
+    NAME_linear(NAME_default_p, T, V);
+    if (NAME_jacobian(0.0, x, u, NAME_default_p, A, B))
+        return 1;
+    for (i = 0; i < NAME_NX; ++i)
+        printf("%.17g ", x[i]);
+    for (i = 0; i < NAME_NQ * NAME_NQ; ++i)
+        printf("%.17g ", T[i]);
+    for (i = 0; i < NAME_NQ * NAME_NQ; ++i)
+        printf("%.17g ", V[i]);
+    for (i = 0; i < NAME_NX * NAME_NX; ++i)
+        printf("%.17g ", A[i]);
+    for (i = 0; i < NAME_NX * NAME_NU; ++i)
+        printf("%.17g ", B[i]);
+    printf("\n");
+    return 0;
+}
+)", "NAME", name);
+        const std::string cc = configured_compiler();
+        run_shell("cd " + folder + " && " + cc + " -std=c99 -Wall -Wextra -pedantic -Werror -c " + name + ".c 2>&1 && " +
+                  cc + " -std=c99 -o linear linear.c " + name + ".o -lm 2>&1");
+        check_linear(examples + name + ".lag", read_numbers(run_shell(folder + "/linear")), velocity_free);
+    }
+}
+
+TEST_CASE("export: the Python equilibrium, T and V give state_space's A and B", "[export][scipy]")
+{
+    for (const auto& [name, velocity_free] : linear_cases) {
+        INFO(name);
+        const std::string folder = folder_for("py-linear-" + name);
+        REQUIRE(run_cli("export " + examples + name + ".lag --to python -o " + folder).exit_code == 0);
+        std::ofstream(folder + "/linear.py")
+            << "import sys\nsys.path.insert(0, " << nlohmann::json(folder).dump() << ")\n"
+            << "import numpy as np\nimport " << name << " as m\n"
+            << "x = m.equilibrium()\nT, V = m.linear()\nA, B = m.jacobian(0.0, x, m.DEFAULTS, np.zeros(m.NU))\n"
+            << "print(' '.join(repr(float(v)) for v in np.concatenate([x, T.ravel(), V.ravel(), A.ravel(), "
+               "B.ravel()])))\n";
+        check_linear(examples + name + ".lag", read_numbers(run_shell("/usr/bin/python3 " + folder + "/linear.py")),
+                     velocity_free);
+    }
+}
+
+TEST_CASE("export: the Octave equilibrium, T and V give state_space's A and B", "[export][octave]")
+{
+    for (const auto& [name, velocity_free] : linear_cases) {
+        INFO(name);
+        const std::string folder = folder_for("octave-linear-" + name);
+        REQUIRE(run_cli("export " + examples + name + ".lag --to octave -o " + folder).exit_code == 0);
+        std::ofstream(folder + "/linear.m")
+            << "x = " << name << "_equilibrium();\n[T, V] = " << name << "_linear();\n"
+            << "[A, B] = " << name << "_jacobian(0, x, " << name << "_defaults());\n"
+            << "printf('%.17g ', x, T', V', A', B');\nprintf('\\n');\n";
+        check_linear(examples + name + ".lag",
+                     read_numbers(run_shell("cd " + folder + " && octave-cli --no-gui --quiet linear.m 2>&1")),
+                     velocity_free);
+    }
+}
+
+TEST_CASE("export: a scene without an equilibrium is exported without the linearization", "[export]")
+{
+    const std::string folder = folder_for("c-kapitza");
+    REQUIRE(run_cli("export " + examples + "kapitza_pendulum.lag --to c -o " + folder).exit_code == 0);
+    std::ifstream header(folder + "/kapitza_pendulum.h");
+    const std::string text((std::istreambuf_iterator<char>(header)), std::istreambuf_iterator<char>());
+    CHECK(text.find("No equilibrium was found to linearize about") != std::string::npos);
+    CHECK(text.find("_linear(") == std::string::npos);
 }
 
 TEST_CASE("export: bad input is refused with nothing written", "[export]")
