@@ -288,20 +288,24 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
     if (powers) // only when used: an unused static function is a warning
         c << "static double lagrange_ipow(double a, int n)\n{\n    double r = 1.0;\n    int k = n < 0 ? -n : n;\n"
           << "    for (; k > 0; --k)\n        r *= a;\n    return n < 0 ? 1.0 / r : r;\n}\n\n";
-    c << "/* The Cholesky factor L of a (row-major, in place, lower triangle): 1 if a is not positive definite. */\n"
+    // LDLᵀ without square roots, as the engine's own solve (numeric/mass_matrix.h).
+    c << "/* The LDL^T factor of a (row-major, in place: L below the diagonal, D on it): 1 if a is not\n"
+      << "   positive definite. */\n"
       << "static int lagrange_factor(double *a)\n{\n    int i, j, k;\n    for (j = 0; j < " << nq << "; ++j) {\n"
       << "        double d = a[j * " << nq << " + j];\n        for (k = 0; k < j; ++k)\n"
-      << "            d -= a[j * " << nq << " + k] * a[j * " << nq << " + k];\n"
-      << "        if (!(d > 0.0))\n            return 1;\n        d = sqrt(d);\n        a[j * " << nq << " + j] = d;\n"
+      << "            d -= a[j * " << nq << " + k] * a[j * " << nq << " + k] * a[k * " << nq << " + k];\n"
+      << "        if (!(d > 0.0))\n            return 1;\n        a[j * " << nq << " + j] = d;\n"
       << "        for (i = j + 1; i < " << nq << "; ++i) {\n            double s = a[i * " << nq << " + j];\n"
-      << "            for (k = 0; k < j; ++k)\n                s -= a[i * " << nq << " + k] * a[j * " << nq << " + k];\n"
+      << "            for (k = 0; k < j; ++k)\n"
+      << "                s -= a[i * " << nq << " + k] * a[j * " << nq << " + k] * a[k * " << nq << " + k];\n"
       << "            a[i * " << nq << " + j] = s / d;\n        }\n    }\n    return 0;\n}\n\n"
-      << "/* Solves L L^T y = b in place, b of NQ entries. */\n"
+      << "/* Solves L D L^T y = b in place, b of NQ entries. */\n"
       << "static void lagrange_solve(const double *l, double *b)\n{\n    int i, k;\n"
-      << "    for (i = 0; i < " << nq << "; ++i) {\n        for (k = 0; k < i; ++k)\n"
-      << "            b[i] -= l[i * " << nq << " + k] * b[k];\n        b[i] /= l[i * " << nq << " + i];\n    }\n"
-      << "    for (i = " << nq << " - 1; i >= 0; --i) {\n        for (k = i + 1; k < " << nq << "; ++k)\n"
-      << "            b[i] -= l[k * " << nq << " + i] * b[k];\n        b[i] /= l[i * " << nq << " + i];\n    }\n}\n\n";
+      << "    for (i = 0; i < " << nq << "; ++i)\n        for (k = 0; k < i; ++k)\n"
+      << "            b[i] -= l[i * " << nq << " + k] * b[k];\n"
+      << "    for (i = 0; i < " << nq << "; ++i)\n        b[i] /= l[i * " << nq << " + i];\n"
+      << "    for (i = " << nq << " - 1; i >= 0; --i)\n        for (k = i + 1; k < " << nq << "; ++k)\n"
+      << "            b[i] -= l[k * " << nq << " + i] * b[k];\n}\n\n";
     c << "void " << name << "_mass_matrix" << args << ", double *M)\n{\n"
       << c_body(system.mass, names, system, "M") << "}\n\n";
     c << "void " << name << "_forcing" << args << ", double *F)\n{\n"
@@ -314,10 +318,18 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
       << c_body(system.energy, names, system, "h") << "    return h[0];\n}\n\n";
     c << "int " << name << "_rhs" << args << ", double *dxdt)\n{\n"
       << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
-      << "    lagrange_mass_and_forcing(t, x, u, p, m);\n    if (lagrange_factor(m))\n        return 1;\n"
-      << "    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
-      << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
-      << "        dxdt[" << nq << " + i] = m[" << nq << " * " << nq << " + i];\n    }\n    return 0;\n}\n\n";
+      << "    lagrange_mass_and_forcing(t, x, u, p, m);\n";
+    if (n == 2) // Cramer's rule, as the engine solves two coordinates
+        c << "    {\n        const double det = m[0] * m[3] - m[1] * m[1];\n"
+          << "        if (!(m[0] > 0.0 && det > 0.0))\n            return 1;\n"
+          << "        dxdt[2] = (m[3] * m[4] - m[1] * m[5]) / det;\n"
+          << "        dxdt[3] = (m[0] * m[5] - m[1] * m[4]) / det;\n    }\n"
+          << "    dxdt[0] = x[2];\n    dxdt[1] = x[3];\n    (void)i;\n    return 0;\n}\n\n";
+    else
+        c << "    if (lagrange_factor(m))\n        return 1;\n"
+          << "    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
+          << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
+          << "        dxdt[" << nq << " + i] = m[" << nq << " * " << nq << " + i];\n    }\n    return 0;\n}\n\n";
     const std::string nx = name + "_NX", nu = name + "_NU";
     c << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu)\n{\n"
       << "    /* d(q'')/dy = M^-1 (dF/dy - (dM/dy) q''), y each coordinate, velocity and input. */\n"
