@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file export_c.cpp
+ *  The C target of `lagrange export`: NAME.h and NAME.c (C99, nothing beyond <math.h>). The small
+ *  LDLᵀ solve is written out here because the target promises no other dependency. */
+#include "output/export_program.h"
+
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace lagrange::export_detail {
+
+namespace {
+
+/// The body of a C function that evaluates `program` into out[]: the symbols' aliases, the
+/// program, the stores; arguments it does not read are cast to void.
+std::string c_body(const expression_program& program, const naming& names, const exported_system& system,
+                   const std::string& out)
+{
+    std::ostringstream lines;
+    std::set<int> used;
+    std::vector<std::string> outputs = write_program(program, dialect::c, names, "    ", lines, used);
+    std::ostringstream body;
+    std::set<char> read;
+    for (int k : used) {
+        const argument_place at = place_of(k, system);
+        read.insert(at.array);
+        if (at.array != 't')
+            body << "    const double " << names.symbols[static_cast<std::size_t>(k)] << " = " << at.array << "["
+                 << at.index << "];\n";
+    }
+    for (char array : {'t', 'x', 'p', 'u'})
+        if (!read.count(array))
+            body << "    (void)" << array << ";\n";
+    body << lines.str();
+    for (std::size_t k = 0; k < outputs.size(); ++k)
+        body << "    " << out << "[" << k << "] = " << outputs[k] << ";\n";
+    return body.str();
+}
+
+} // namespace
+
+std::vector<exported_file> export_c(const model& scene, const exported_system& system, const std::string& name,
+                                    const std::string& version)
+{
+    const naming names = name_symbols(system, dialect::c);
+    const std::size_t n = system.coordinates, inputs = system.input_names.size();
+    const std::string args = "(double t, const double *x, const double *u, const double *p";
+    std::ostringstream h;
+    h << "/* " << name << ".h: the equations of motion as C99 functions.\n"
+      << provenance(scene, system, names, version, " * ")
+      << " * Every function is re-entrant and allocates nothing; u may be NULL when " << name << "_NU is 0.\n"
+      << " * Arrays are row-major. Build: cc -std=c99 -c " << name << ".c (link with -lm). */\n"
+      << "#ifndef " << name << "_H_INCLUDED\n#define " << name << "_H_INCLUDED\n\n"
+      << "#define " << name << "_NQ " << n << " /* coordinates */\n"
+      << "#define " << name << "_NX " << 2 * n << " /* states: the coordinates, then their velocities */\n"
+      << "#define " << name << "_NU " << inputs << " /* inputs */\n"
+      << "#define " << name << "_NP " << system.parameter_names.size() << " /* parameters */\n\n"
+      << "/* The scene's `values` (the first line), NaN where it gives none. */\n"
+      << "extern const double " << name << "_default_p[" << name << "_NP > 0 ? " << name << "_NP : 1];\n"
+      << "extern const char *const " << name << "_state_names[" << name << "_NX];\n"
+      << "extern const char *const " << name << "_parameter_names[" << name << "_NP > 0 ? " << name << "_NP : 1];\n\n"
+      << "/* dxdt = f(t, x, u, p). Returns 0, or 1 where the mass matrix is not positive definite. */\n"
+      << "int " << name << "_rhs" << args << ", double *dxdt);\n"
+      << "/* dfdx = df/dx (NX x NX) and dfdu = df/du (NX x NU; may be NULL). Returns as " << name << "_rhs. */\n"
+      << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu);\n"
+      << "/* The mass matrix M (NQ x NQ) and the forcing F (NQ) of M q'' = F. */\n"
+      << "void " << name << "_mass_matrix" << args << ", double *M);\n"
+      << "void " << name << "_forcing" << args << ", double *F);\n"
+      << "/* The energy function h = sum q' dL/dq' - L (conserved when nothing drives or damps the motion). */\n"
+      << "double " << name << "_energy" << args << ");\n";
+    if (system.linear)
+        h << "/* At the equilibrium the small oscillations are about, functions of p only: the state there\n"
+          << "   (NX), and T and V (NQ x NQ each) of T q'' + V q = 0. The linearized x' = A x + B u there\n"
+          << "   has A = df/dx and B = df/du of " << name << "_jacobian at that state with u = 0. */\n"
+          << "void " << name << "_equilibrium(const double *p, double *x);\n"
+          << "void " << name << "_linear(const double *p, double *T, double *V);\n";
+    h << "\n#endif\n";
+
+    std::ostringstream c;
+    const std::string nq = name + "_NQ";
+    c << "/* " << name << ".c: see " << name << ".h.\n" << provenance(scene, system, names, version, " * ") << " */\n"
+      << "#include \"" << name << ".h\"\n\n#include <math.h>\n#include <stddef.h>\n\n"
+      << "const double " << name << "_default_p[" << name << "_NP > 0 ? " << name << "_NP : 1] = {"
+      << (system.defaults.empty() ? "0.0" : number_list(system.defaults, "NAN")) << "};\n"
+      << "const char *const " << name << "_state_names[" << name << "_NX] = {";
+    for (std::size_t k = 0; k < system.state_names.size(); ++k)
+        c << (k ? ", " : "") << '"' << system.state_names[k] << '"';
+    c << "};\nconst char *const " << name << "_parameter_names[" << name << "_NP > 0 ? " << name << "_NP : 1] = {";
+    for (std::size_t k = 0; k < system.parameter_names.size(); ++k)
+        c << (k ? ", " : "") << '"' << system.parameter_names[k] << '"';
+    c << (system.parameter_names.empty() ? "\"\"" : "") << "};\n\n";
+    bool powers = false;
+    for (const expression_program* program : {&system.mass, &system.forcing, &system.mass_and_forcing,
+                                              &system.derivatives, &system.energy})
+        for (const instruction& i : program->code())
+            powers = powers || i.op == instruction::code::integer_power;
+    if (system.linear)
+        for (const instruction& i : system.linear->code())
+            powers = powers || i.op == instruction::code::integer_power;
+    if (powers) // only when used: an unused static function is a warning
+        c << "static double lagrange_ipow(double a, int n)\n{\n    double r = 1.0;\n    int k = n < 0 ? -n : n;\n"
+          << "    for (; k > 0; --k)\n        r *= a;\n    return n < 0 ? 1.0 / r : r;\n}\n\n";
+    // LDLᵀ without square roots, as the engine's own solve (numeric/mass_matrix.h).
+    c << "/* The LDL^T factor of a (row-major, in place: L below the diagonal, D on it): 1 if a is not\n"
+      << "   positive definite. */\n"
+      << "static int lagrange_factor(double *a)\n{\n    int i, j, k;\n    for (j = 0; j < " << nq << "; ++j) {\n"
+      << "        double d = a[j * " << nq << " + j];\n        for (k = 0; k < j; ++k)\n"
+      << "            d -= a[j * " << nq << " + k] * a[j * " << nq << " + k] * a[k * " << nq << " + k];\n"
+      << "        if (!(d > 0.0))\n            return 1;\n        a[j * " << nq << " + j] = d;\n"
+      << "        for (i = j + 1; i < " << nq << "; ++i) {\n            double s = a[i * " << nq << " + j];\n"
+      << "            for (k = 0; k < j; ++k)\n"
+      << "                s -= a[i * " << nq << " + k] * a[j * " << nq << " + k] * a[k * " << nq << " + k];\n"
+      << "            a[i * " << nq << " + j] = s / d;\n        }\n    }\n    return 0;\n}\n\n"
+      << "/* Solves L D L^T y = b in place, b of NQ entries. */\n"
+      << "static void lagrange_solve(const double *l, double *b)\n{\n    int i, k;\n"
+      << "    for (i = 0; i < " << nq << "; ++i)\n        for (k = 0; k < i; ++k)\n"
+      << "            b[i] -= l[i * " << nq << " + k] * b[k];\n"
+      << "    for (i = 0; i < " << nq << "; ++i)\n        b[i] /= l[i * " << nq << " + i];\n"
+      << "    for (i = " << nq << " - 1; i >= 0; --i)\n        for (k = i + 1; k < " << nq << "; ++k)\n"
+      << "            b[i] -= l[k * " << nq << " + i] * b[k];\n}\n\n";
+    c << "void " << name << "_mass_matrix" << args << ", double *M)\n{\n"
+      << c_body(system.mass, names, system, "M") << "}\n\n";
+    c << "void " << name << "_forcing" << args << ", double *F)\n{\n"
+      << c_body(system.forcing, names, system, "F") << "}\n\n";
+    c << "static void lagrange_mass_and_forcing" << args << ", double *out)\n{\n"
+      << c_body(system.mass_and_forcing, names, system, "out") << "}\n\n";
+    c << "static void lagrange_derivatives" << args << ", double *out)\n{\n"
+      << c_body(system.derivatives, names, system, "out") << "}\n\n";
+    c << "double " << name << "_energy" << args << ")\n{\n    double h[1];\n"
+      << c_body(system.energy, names, system, "h") << "    return h[0];\n}\n\n";
+    c << "int " << name << "_rhs" << args << ", double *dxdt)\n{\n"
+      << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
+      << "    lagrange_mass_and_forcing(t, x, u, p, m);\n";
+    if (n == 2) // Cramer's rule, as the engine solves two coordinates
+        c << "    {\n        const double det = m[0] * m[3] - m[1] * m[1];\n"
+          << "        if (!(m[0] > 0.0 && det > 0.0))\n            return 1;\n"
+          << "        dxdt[2] = (m[3] * m[4] - m[1] * m[5]) / det;\n"
+          << "        dxdt[3] = (m[0] * m[5] - m[1] * m[4]) / det;\n    }\n"
+          << "    dxdt[0] = x[2];\n    dxdt[1] = x[3];\n    (void)i;\n    return 0;\n}\n\n";
+    else
+        c << "    if (lagrange_factor(m))\n        return 1;\n"
+          << "    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
+          << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
+          << "        dxdt[" << nq << " + i] = m[" << nq << " * " << nq << " + i];\n    }\n    return 0;\n}\n\n";
+    const std::string nx = name + "_NX", nu = name + "_NU";
+    c << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu)\n{\n"
+      << "    /* d(q'')/dy = M^-1 (dF/dy - (dM/dy) q''), y each coordinate, velocity and input. */\n"
+      << "    double m[" << nq << " * " << nq << " + " << nq << "], column[" << nq << "];\n"
+      << "    double d[" << nq << " * " << nq << " * " << nq << " + 2 * " << nq << " * " << nq << " + " << nq << " * "
+      << nu << " + 1];\n"
+      << "    const double *qdd = m + " << nq << " * " << nq << ";\n    int i, j, k;\n"
+      << "    lagrange_mass_and_forcing(t, x, u, p, m);\n    lagrange_derivatives(t, x, u, p, d);\n"
+      << "    if (lagrange_factor(m))\n        return 1;\n    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
+      << "    for (i = 0; i < " << nx << " * " << nx << "; ++i)\n        dfdx[i] = 0.0;\n"
+      << "    for (i = 0; i < " << nq << "; ++i)\n        dfdx[i * " << nx << " + " << nq << " + i] = 1.0;\n"
+      << "    for (k = 0; k < 2 * " << nq << "; ++k) {\n        for (i = 0; i < " << nq << "; ++i) {\n"
+      << "            column[i] = d[" << nq << " * " << nq << " * " << nq << " + (k < " << nq << " ? 0 : " << nq
+      << " * " << nq << ") + i * " << nq << " + k % " << nq << "];\n"
+      << "            if (k < " << nq << ")\n                for (j = 0; j < " << nq << "; ++j)\n"
+      << "                    column[i] -= d[(k * " << nq << " + i) * " << nq << " + j] * qdd[j];\n        }\n"
+      << "        lagrange_solve(m, column);\n        for (i = 0; i < " << nq << "; ++i)\n"
+      << "            dfdx[(" << nq << " + i) * " << nx << " + k] = column[i];\n    }\n";
+    if (inputs == 0) {
+        c << "    (void)dfdu;\n";
+    } else {
+        c << "    if (dfdu) {\n        for (k = 0; k < " << nu << "; ++k) {\n"
+          << "            for (i = 0; i < " << nq << "; ++i) {\n"
+          << "                column[i] = d[" << nq << " * " << nq << " * " << nq << " + 2 * " << nq << " * " << nq
+          << " + i * " << nu << " + k];\n                dfdu[i * " << nu << " + k] = 0.0;\n            }\n"
+          << "            lagrange_solve(m, column);\n            for (i = 0; i < " << nq << "; ++i)\n"
+          << "                dfdu[(" << nq << " + i) * " << nu << " + k] = column[i];\n        }\n    }\n";
+    }
+    c << "    return 0;\n}\n";
+    if (system.linear) {
+        const std::string parts = "2 * " + nq + " + 2 * " + nq + " * " + nq;
+        c << "\nstatic void lagrange_linear" << args << ", double *out)\n{\n"
+          << c_body(*system.linear, names, system, "out") << "}\n\n"
+          << "void " << name << "_equilibrium(const double *p, double *x)\n{\n    double out[" << parts
+          << "];\n    int i;\n    lagrange_linear(0.0, NULL, NULL, p, out);\n"
+          << "    for (i = 0; i < " << nx << "; ++i)\n        x[i] = out[i];\n}\n\n"
+          << "void " << name << "_linear(const double *p, double *T, double *V)\n{\n    double out[" << parts
+          << "];\n    int i;\n    lagrange_linear(0.0, NULL, NULL, p, out);\n"
+          << "    for (i = 0; i < " << nq << " * " << nq << "; ++i) {\n        T[i] = out[" << nx << " + i];\n"
+          << "        V[i] = out[" << nx << " + " << nq << " * " << nq << " + i];\n    }\n}\n";
+    }
+    return {{name + ".h", h.str()}, {name + ".c", c.str()}};
+}
+
+} // namespace lagrange::export_detail

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file export_octave.cpp
+ *  The MATLAB/Octave target of `lagrange export`: one function file per function. */
+#include "output/export_program.h"
+
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace lagrange::export_detail {
+
+namespace {
+
+/// The arguments an Octave function may be called without: p from NAME_defaults(), u zero.
+std::string octave_defaults(const std::string& name, std::size_t inputs)
+{
+    return "  if nargin < 3 || isempty(p)\n    p = " + name + "_defaults();\n  end\n  if nargin < 4\n    u = zeros(" +
+           std::to_string(inputs) + ", 1);\n  end\n";
+}
+
+std::string octave_function(const std::string& name, const std::string& function, const std::string& doc,
+                            const expression_program& program, const naming& names, const exported_system& system,
+                            const std::string& result, std::size_t rows, std::size_t columns,
+                            const std::string& header)
+{
+    std::ostringstream lines;
+    std::set<int> used;
+    std::vector<std::string> outputs = write_program(program, dialect::octave, names, "  ", lines, used);
+    std::ostringstream out;
+    out << "function " << result << " = " << name << "_" << function << "(t, x, p, u)\n"
+        << "  % " << doc << "\n" << header
+        << octave_defaults(name, system.input_names.size());
+    for (int k : used) {
+        const argument_place at = place_of(k, system);
+        if (at.array != 't')
+            out << "  " << names.symbols[static_cast<std::size_t>(k)] << " = " << at.array << "(" << at.index + 1
+                << ");\n";
+    }
+    out << lines.str() << "  " << result << " = [";
+    for (std::size_t r = 0; r < rows; ++r) {
+        for (std::size_t c = 0; c < columns; ++c)
+            out << (c ? ", " : "") << outputs[r * columns + c];
+        out << (r + 1 < rows ? "; " : "");
+    }
+    out << "];\nend\n";
+    return out.str();
+}
+
+} // namespace
+
+std::vector<exported_file> export_octave(const model& scene, const exported_system& system, const std::string& name,
+                                         const std::string& version)
+{
+    const naming names = name_symbols(system, dialect::octave);
+    const std::size_t n = system.coordinates, inputs = system.input_names.size();
+    const std::string header = provenance(scene, system, names, version, "  % ");
+    const std::size_t derivatives = system.derivatives.output_count();
+    std::vector<exported_file> files;
+    files.push_back({name + "_mass_matrix.m",
+                     octave_function(name, "mass_matrix", "The mass matrix M of M q'' = F (NQ x NQ).", system.mass,
+                                     names, system, "M", n, n, header)});
+    files.push_back({name + "_forcing.m", octave_function(name, "forcing", "The forcing F of M q'' = F (a column).",
+                                                          system.forcing, names, system, "F", n, 1, header)});
+    files.push_back({name + "_energy.m",
+                     octave_function(name, "energy", "The energy function h = sum q' dL/dq' - L.", system.energy,
+                                     names, system, "h", 1, 1, header)});
+    files.push_back({name + "_derivatives.m",
+                     octave_function(name, "derivatives", "dM/dq_k (k slowest), dF/dq, dF/dq', dF/du, as a column.",
+                                     system.derivatives, names, system, "d", derivatives, 1, header)});
+    std::ostringstream defaults;
+    defaults << "function p = " << name << "_defaults()\n  % The scene's `values` (the first line), NaN where it "
+             << "gives none, in the order of the parameters.\n" << header << "  p = ["
+             << number_list(system.defaults, "NaN") << "]';\n  if isempty(p)\n    p = zeros(0, 1);\n  end\nend\n";
+    files.push_back({name + "_defaults.m", defaults.str()});
+    std::ostringstream rhs;
+    rhs << "function dxdt = " << name << "_rhs(t, x, p, u)\n"
+        << "  % dx/dt = f(t, x, u, p) as a column; for ode45 and ode15s: ode45(@(t, x) " << name
+        << "_rhs(t, x, p), tspan, x0).\n" << header
+        << octave_defaults(name, inputs)
+        << "  M = " << name << "_mass_matrix(t, x, p, u);\n  F = " << name << "_forcing(t, x, p, u);\n"
+        << "  dxdt = [x(" << n + 1 << ":" << 2 * n << "); M \\ F];\nend\n";
+    files.push_back({name + "_rhs.m", rhs.str()});
+    std::ostringstream jac;
+    jac << "function [dfdx, dfdu] = " << name << "_jacobian(t, x, p, u)\n"
+        << "  % df/dx (NX x NX) and df/du (NX x NU): d(q'')/dy = M \\ (dF/dy - (dM/dy) q'').\n" << header
+        << octave_defaults(name, inputs)
+        << "  n = " << n << ";\n  m = " << inputs << ";\n"
+        << "  M = " << name << "_mass_matrix(t, x, p, u);\n  F = " << name << "_forcing(t, x, p, u);\n"
+        << "  d = " << name << "_derivatives(t, x, p, u);\n  qdd = M \\ F;\n"
+        << "  dq = reshape(d(n^3 + 1:n^3 + n^2), n, n)';\n"
+        << "  for k = 1:n\n    dq(:, k) = dq(:, k) - reshape(d((k - 1) * n^2 + 1:k * n^2), n, n)' * qdd;\n  end\n"
+        << "  dv = reshape(d(n^3 + n^2 + 1:n^3 + 2 * n^2), n, n)';\n"
+        << "  dfdx = [zeros(n), eye(n); M \\ dq, M \\ dv];\n"
+        << "  dfdu = [zeros(n, m); M \\ reshape(d(n^3 + 2 * n^2 + 1:end), m, n)'];\nend\n";
+    files.push_back({name + "_jacobian.m", jac.str()});
+    if (system.linear) {
+        files.push_back({name + "_linear_parts.m",
+                         octave_function(name, "linear_parts", "The equilibrium's state, then T and V, as a column.",
+                                         *system.linear, names, system, "d", system.linear->output_count(), 1,
+                                         header)});
+        const std::string call = "  if nargin < 1 || isempty(p)\n    p = " + name + "_defaults();\n  end\n  d = " +
+                                 name + "_linear_parts(0, zeros(" + std::to_string(2 * n) + ", 1), p);\n";
+        files.push_back({name + "_equilibrium.m",
+                         "function x = " + name + "_equilibrium(p)\n  % The state the small oscillations are about "
+                         "(a column).\n" + header + call + "  x = d(1:" + std::to_string(2 * n) + ");\nend\n"});
+        files.push_back({name + "_linear.m",
+                         "function [T, V] = " + name + "_linear(p)\n  % T and V of T q'' + V q = 0 at the "
+                         "equilibrium.\n" + header + call + "  n = " + std::to_string(n) + ";\n"
+                         "  T = reshape(d(2 * n + 1:2 * n + n^2), n, n)';\n"
+                         "  V = reshape(d(2 * n + n^2 + 1:2 * n + 2 * n^2), n, n)';\nend\n"});
+    }
+    return files;
+}
+
+} // namespace lagrange::export_detail
