@@ -51,10 +51,6 @@ std::optional<expression_program> linear_program(const model& scene, const linea
 exported_system export_system(const model& scene, const equations_of_motion& equations,
                               const linearization_result* linearization)
 {
-    if (equations.constraints)
-        throw computation_error("`export` does not cover constraints in this version: their multipliers make "
-                                "a differential-algebraic system (eliminate them with `want eliminated`, or "
-                                "write the scene in independent coordinates)");
     exported_system out;
     const std::size_t n = scene.coordinates.size();
     if (n == 0)
@@ -84,10 +80,25 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
         for (std::size_t j = 0; j < n; ++j)
             mass[i * n + j] = equations.mass(static_cast<unsigned>(std::min(i, j)), static_cast<unsigned>(std::max(i, j)));
     // The simulation's Jacobian parts, with the parameters left symbols, then ∂F/∂u.
-    std::vector<GiNaC::ex> derivatives = motion_jacobian(scene, {mass, equations.forcing});
-    for (const GiNaC::ex& f : equations.forcing)
-        for (const input_signal& u : scene.inputs)
-            derivatives.push_back(differentiate(f, u.symbol));
+    std::vector<GiNaC::ex> derivatives;
+    if (!equations.constraints) {
+        derivatives = motion_jacobian(scene, {mass, equations.forcing});
+        for (const GiNaC::ex& f : equations.forcing)
+            for (const input_signal& u : scene.inputs)
+                derivatives.push_back(differentiate(f, u.symbol));
+    }
+    std::vector<GiNaC::ex> constraint_parts;
+    if (equations.constraints) {
+        const constraint_equations& c = *equations.constraints;
+        for (unsigned k = 0; k < c.matrix.rows(); ++k)
+            for (unsigned j = 0; j < c.matrix.cols(); ++j)
+                constraint_parts.push_back(c.matrix(k, j));
+        constraint_parts.insert(constraint_parts.end(), c.bias.begin(), c.bias.end());
+        for (const constraint& k : scene.constraints) {
+            constraint_parts.push_back(k.function);
+            out.constraint_names.push_back(k.name);
+        }
+    }
     try {
         out.mass = expression_program(mass, symbols);
         std::vector<GiNaC::ex> both = mass;
@@ -95,7 +106,10 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
         out.mass_and_forcing = expression_program(both, symbols);
         out.forcing = expression_program(equations.forcing, symbols);
         out.energy = expression_program({equations.energy}, symbols);
-        out.derivatives = expression_program(derivatives, symbols);
+        if (!derivatives.empty())
+            out.derivatives = expression_program(derivatives, symbols);
+        if (!constraint_parts.empty())
+            out.constraint_parts = expression_program(constraint_parts, symbols);
     } catch (const std::invalid_argument& error) {
         throw computation_error(std::string("the equations of motion cannot be exported: ") + error.what());
     }

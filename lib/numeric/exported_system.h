@@ -36,11 +36,16 @@ struct exported_system {
     /// (n × n each, row-major). Absent when the export was given no linearization, or its
     /// point depends on more than the parameters.
     std::optional<expression_program> linear;
+    /// With constraints (M q̈ = F + Aᵀλ, A q̈ = −c): their names, and one program of A (m × n,
+    /// row-major), c (m) and the residuals g (m: f(q, t) of a holonomic one, A q̇ + b of a
+    /// Pfaffian one), m = the number of constraints. Then `derivatives` is empty: the Jacobian of
+    /// the constrained right-hand side is not exported.
+    std::vector<std::string> constraint_names;
+    std::optional<expression_program> constraint_parts;
 };
 
 /// The exported system of `scene`, with `linear` from `linearization` when given. Throws
-/// computation_error for what the export does not cover: constraints (their multipliers
-/// make a DAE), and expressions that cannot be compiled.
+/// computation_error for expressions that cannot be compiled.
 exported_system export_system(const model& scene, const equations_of_motion& equations,
                               const linearization_result* linearization = nullptr);
 

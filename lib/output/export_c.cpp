@@ -4,6 +4,7 @@
  *  LDLᵀ solve is written out here because the target promises no other dependency. */
 #include "output/export_program.h"
 
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -39,6 +40,92 @@ std::string c_body(const expression_program& program, const naming& names, const
     return body.str();
 }
 
+/// The declarations of a constrained scene's functions (nothing without constraints).
+std::string constrained_declarations(const exported_system& system, const std::string& name, const std::string& args)
+{
+    if (!system.constraint_parts)
+        return "";
+    std::ostringstream h;
+    h << "#define " << name << "_NC " << system.constraint_names.size() << " /* constraints */\n"
+      << "extern const char *const " << name << "_constraint_names[" << name << "_NC];\n\n"
+      << "/* dxdt = f(t, x, u, p), with q'' and the multipliers lambda from\n"
+      << "   [M -A^T; A 0] [q''; lambda] = [F; -c] (M q'' = F + A^T lambda, A q'' = -c): the constraints\n"
+      << "   differentiated to the accelerations, so an integration keeps them up to its error;\n"
+      << "   " << name << "_constraints measures the drift. Returns 0, or 1 where the matrix is singular. */\n"
+      << "int " << name << "_rhs" << args << ", double *dxdt);\n"
+      << "/* The multipliers lambda (NC) at (t, x). Returns as " << name << "_rhs. */\n"
+      << "int " << name << "_multipliers" << args << ", double *lambda);\n"
+      << "/* The constraints' residuals g (NC), 0 on the motion: f(q, t) of a holonomic constraint,\n"
+      << "   A(q) q' + b of a velocity one; and A (NC x NQ), the Jacobian of their velocity form. */\n"
+      << "void " << name << "_constraints" << args << ", double *g);\n"
+      << "void " << name << "_constraint_jacobian" << args << ", double *A);\n";
+    return h.str();
+}
+
+/// A constrained scene's functions: its constraints, and the right-hand side and multipliers
+/// from the augmented system, solved by Gaussian elimination with partial pivoting (the
+/// matrix is symmetric but indefinite, so the mass matrix's LDLᵀ does not apply).
+std::string constrained_functions(const exported_system& system, const naming& names, const std::string& name,
+                                  const std::string& args)
+{
+    const std::size_t n = system.coordinates, m = system.constraint_names.size(), size = n + m;
+    const std::string nq = std::to_string(n), nc = std::to_string(m), s = std::to_string(size);
+    const std::string parts = nc + " * " + nq + " + 2 * " + nc;
+    std::ostringstream c;
+    c << "const char *const " << name << "_constraint_names[" << name << "_NC] = {";
+    for (std::size_t k = 0; k < m; ++k)
+        c << (k ? ", " : "") << '"' << system.constraint_names[k] << '"';
+    c << "};\n\n"
+      << "static void lagrange_constraint_parts" << args << ", double *out)\n{\n"
+      << c_body(*system.constraint_parts, names, system, "out") << "}\n\n"
+      << "void " << name << "_constraints" << args << ", double *g)\n{\n    double out[" << parts << "];\n    int i;\n"
+      << "    lagrange_constraint_parts(t, x, u, p, out);\n    for (i = 0; i < " << nc << "; ++i)\n"
+      << "        g[i] = out[" << nc << " * " << nq << " + " << nc << " + i];\n}\n\n"
+      << "void " << name << "_constraint_jacobian" << args << ", double *A)\n{\n    double out[" << parts
+      << "];\n    int i;\n    lagrange_constraint_parts(t, x, u, p, out);\n"
+      << "    for (i = 0; i < " << nc << " * " << nq << "; ++i)\n        A[i] = out[i];\n}\n\n"
+      << "/* Solves a y = b in place (a: " << s << " x " << s << ", row-major) by Gaussian elimination with partial\n"
+      << "   pivoting: 1 if a is singular. */\n"
+      << "static int lagrange_lu_solve(double *a, double *b)\n{\n    int i, j, k;\n"
+      << "    for (k = 0; k < " << s << "; ++k) {\n        int best = k;\n"
+      << "        for (i = k + 1; i < " << s << "; ++i)\n"
+      << "            if (fabs(a[i * " << s << " + k]) > fabs(a[best * " << s << " + k]))\n                best = i;\n"
+      << "        if (!(fabs(a[best * " << s << " + k]) > 0.0))\n            return 1;\n"
+      << "        if (best != k) {\n            double swap;\n            for (j = 0; j < " << s << "; ++j) {\n"
+      << "                swap = a[k * " << s << " + j];\n                a[k * " << s << " + j] = a[best * " << s
+      << " + j];\n                a[best * " << s << " + j] = swap;\n            }\n"
+      << "            swap = b[k];\n            b[k] = b[best];\n            b[best] = swap;\n        }\n"
+      << "        for (i = k + 1; i < " << s << "; ++i) {\n"
+      << "            const double f = a[i * " << s << " + k] / a[k * " << s << " + k];\n"
+      << "            for (j = k; j < " << s << "; ++j)\n                a[i * " << s << " + j] -= f * a[k * " << s
+      << " + j];\n            b[i] -= f * b[k];\n        }\n    }\n"
+      << "    for (i = " << s << " - 1; i >= 0; --i) {\n        for (j = i + 1; j < " << s << "; ++j)\n"
+      << "            b[i] -= a[i * " << s << " + j] * b[j];\n        b[i] /= a[i * " << s << " + i];\n    }\n"
+      << "    return 0;\n}\n\n"
+      << "/* q'' then lambda, from [M -A^T; A 0] [q''; lambda] = [F; -c]. */\n"
+      << "static int lagrange_augmented" << args << ", double *y)\n{\n"
+      << "    double m[" << nq << " * " << nq << " + " << nq << "], k[" << parts << "], a[" << s << " * " << s
+      << "];\n    int i, j;\n"
+      << "    lagrange_mass_and_forcing(t, x, u, p, m);\n    lagrange_constraint_parts(t, x, u, p, k);\n"
+      << "    for (i = 0; i < " << s << " * " << s << "; ++i)\n        a[i] = 0.0;\n"
+      << "    for (i = 0; i < " << nq << "; ++i) {\n        for (j = 0; j < " << nq << "; ++j)\n"
+      << "            a[i * " << s << " + j] = m[i * " << nq << " + j];\n        y[i] = m[" << nq << " * " << nq
+      << " + i];\n    }\n"
+      << "    for (i = 0; i < " << nc << "; ++i) {\n        for (j = 0; j < " << nq << "; ++j) {\n"
+      << "            a[(" << nq << " + i) * " << s << " + j] = k[i * " << nq << " + j];\n"
+      << "            a[j * " << s << " + " << nq << " + i] = -k[i * " << nq << " + j];\n        }\n"
+      << "        y[" << nq << " + i] = -k[" << nc << " * " << nq << " + i];\n    }\n"
+      << "    return lagrange_lu_solve(a, y);\n}\n\n"
+      << "int " << name << "_rhs" << args << ", double *dxdt)\n{\n    double y[" << s << "];\n    int i;\n"
+      << "    if (lagrange_augmented(t, x, u, p, y))\n        return 1;\n"
+      << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
+      << "        dxdt[" << nq << " + i] = y[i];\n    }\n    return 0;\n}\n\n"
+      << "int " << name << "_multipliers" << args << ", double *lambda)\n{\n    double y[" << s << "];\n    int i;\n"
+      << "    if (lagrange_augmented(t, x, u, p, y))\n        return 1;\n"
+      << "    for (i = 0; i < " << nc << "; ++i)\n        lambda[i] = y[" << nq << " + i];\n    return 0;\n}\n";
+    return c.str();
+}
+
 } // namespace
 
 std::vector<exported_file> export_c(const model& scene, const exported_system& system, const std::string& name,
@@ -47,6 +134,7 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
     const naming names = name_symbols(system, dialect::c);
     const std::size_t n = system.coordinates, inputs = system.input_names.size();
     const std::string args = "(double t, const double *x, const double *u, const double *p";
+    const bool constrained = system.constraint_parts.has_value();
     std::ostringstream h;
     h << "/* " << name << ".h: the equations of motion as C99 functions.\n"
       << provenance(scene, system, names, version, " * ")
@@ -61,11 +149,14 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
       << "extern const double " << name << "_default_p[" << name << "_NP > 0 ? " << name << "_NP : 1];\n"
       << "extern const char *const " << name << "_state_names[" << name << "_NX];\n"
       << "extern const char *const " << name << "_parameter_names[" << name << "_NP > 0 ? " << name << "_NP : 1];\n\n"
-      << "/* dxdt = f(t, x, u, p). Returns 0, or 1 where the mass matrix is not positive definite. */\n"
-      << "int " << name << "_rhs" << args << ", double *dxdt);\n"
-      << "/* dfdx = df/dx (NX x NX) and dfdu = df/du (NX x NU; may be NULL). Returns as " << name << "_rhs. */\n"
-      << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu);\n"
-      << "/* The mass matrix M (NQ x NQ) and the forcing F (NQ) of M q'' = F. */\n"
+      << constrained_declarations(system, name, args)
+      << (constrained ? "" : "/* dxdt = f(t, x, u, p). Returns 0, or 1 where the mass matrix is not positive definite. */\n")
+      << (constrained ? "" : "int " + name + "_rhs" + args + ", double *dxdt);\n")
+      << (constrained ? "" : "/* dfdx = df/dx (NX x NX) and dfdu = df/du (NX x NU; may be NULL). Returns as " + name +
+                                 "_rhs. */\n")
+      << (constrained ? "" : "int " + name + "_jacobian" + args + ", double *dfdx, double *dfdu);\n")
+      << "/* The mass matrix M (NQ x NQ) and the forcing F (NQ) of M q'' = F" << (constrained ? " + A^T lambda" : "")
+      << ". */\n"
       << "void " << name << "_mass_matrix" << args << ", double *M);\n"
       << "void " << name << "_forcing" << args << ", double *F);\n"
       << "/* The energy function h = sum q' dL/dq' - L (conserved when nothing drives or damps the motion). */\n"
@@ -96,14 +187,16 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
                                               &system.derivatives, &system.energy})
         for (const instruction& i : program->code())
             powers = powers || i.op == instruction::code::integer_power;
-    if (system.linear)
-        for (const instruction& i : system.linear->code())
-            powers = powers || i.op == instruction::code::integer_power;
+    for (const std::optional<expression_program>* program : {&system.linear, &system.constraint_parts})
+        if (*program)
+            for (const instruction& i : (*program)->code())
+                powers = powers || i.op == instruction::code::integer_power;
     if (powers) // only when used: an unused static function is a warning
         c << "static double lagrange_ipow(double a, int n)\n{\n    double r = 1.0;\n    int k = n < 0 ? -n : n;\n"
           << "    for (; k > 0; --k)\n        r *= a;\n    return n < 0 ? 1.0 / r : r;\n}\n\n";
     // LDLᵀ without square roots, as the engine's own solve (numeric/mass_matrix.h).
-    c << "/* The LDL^T factor of a (row-major, in place: L below the diagonal, D on it): 1 if a is not\n"
+    if (!constrained)
+        c << "/* The LDL^T factor of a (row-major, in place: L below the diagonal, D on it): 1 if a is not\n"
       << "   positive definite. */\n"
       << "static int lagrange_factor(double *a)\n{\n    int i, j, k;\n    for (j = 0; j < " << nq << "; ++j) {\n"
       << "        double d = a[j * " << nq << " + j];\n        for (k = 0; k < j; ++k)\n"
@@ -126,53 +219,58 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
       << c_body(system.forcing, names, system, "F") << "}\n\n";
     c << "static void lagrange_mass_and_forcing" << args << ", double *out)\n{\n"
       << c_body(system.mass_and_forcing, names, system, "out") << "}\n\n";
-    c << "static void lagrange_derivatives" << args << ", double *out)\n{\n"
-      << c_body(system.derivatives, names, system, "out") << "}\n\n";
+    if (!constrained)
+        c << "static void lagrange_derivatives" << args << ", double *out)\n{\n"
+          << c_body(system.derivatives, names, system, "out") << "}\n\n";
     c << "double " << name << "_energy" << args << ")\n{\n    double h[1];\n"
       << c_body(system.energy, names, system, "h") << "    return h[0];\n}\n\n";
-    c << "int " << name << "_rhs" << args << ", double *dxdt)\n{\n"
-      << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
-      << "    lagrange_mass_and_forcing(t, x, u, p, m);\n";
-    if (n == 2) // Cramer's rule, as the engine solves two coordinates
-        c << "    {\n        const double det = m[0] * m[3] - m[1] * m[1];\n"
-          << "        if (!(m[0] > 0.0 && det > 0.0))\n            return 1;\n"
-          << "        dxdt[2] = (m[3] * m[4] - m[1] * m[5]) / det;\n"
-          << "        dxdt[3] = (m[0] * m[5] - m[1] * m[4]) / det;\n    }\n"
-          << "    dxdt[0] = x[2];\n    dxdt[1] = x[3];\n    (void)i;\n    return 0;\n}\n\n";
-    else
-        c << "    if (lagrange_factor(m))\n        return 1;\n"
-          << "    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
-          << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
-          << "        dxdt[" << nq << " + i] = m[" << nq << " * " << nq << " + i];\n    }\n    return 0;\n}\n\n";
     const std::string nx = name + "_NX", nu = name + "_NU";
-    c << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu)\n{\n"
-      << "    /* d(q'')/dy = M^-1 (dF/dy - (dM/dy) q''), y each coordinate, velocity and input. */\n"
-      << "    double m[" << nq << " * " << nq << " + " << nq << "], column[" << nq << "];\n"
-      << "    double d[" << nq << " * " << nq << " * " << nq << " + 2 * " << nq << " * " << nq << " + " << nq << " * "
-      << nu << " + 1];\n"
-      << "    const double *qdd = m + " << nq << " * " << nq << ";\n    int i, j, k;\n"
-      << "    lagrange_mass_and_forcing(t, x, u, p, m);\n    lagrange_derivatives(t, x, u, p, d);\n"
-      << "    if (lagrange_factor(m))\n        return 1;\n    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
-      << "    for (i = 0; i < " << nx << " * " << nx << "; ++i)\n        dfdx[i] = 0.0;\n"
-      << "    for (i = 0; i < " << nq << "; ++i)\n        dfdx[i * " << nx << " + " << nq << " + i] = 1.0;\n"
-      << "    for (k = 0; k < 2 * " << nq << "; ++k) {\n        for (i = 0; i < " << nq << "; ++i) {\n"
-      << "            column[i] = d[" << nq << " * " << nq << " * " << nq << " + (k < " << nq << " ? 0 : " << nq
-      << " * " << nq << ") + i * " << nq << " + k % " << nq << "];\n"
-      << "            if (k < " << nq << ")\n                for (j = 0; j < " << nq << "; ++j)\n"
-      << "                    column[i] -= d[(k * " << nq << " + i) * " << nq << " + j] * qdd[j];\n        }\n"
-      << "        lagrange_solve(m, column);\n        for (i = 0; i < " << nq << "; ++i)\n"
-      << "            dfdx[(" << nq << " + i) * " << nx << " + k] = column[i];\n    }\n";
-    if (inputs == 0) {
-        c << "    (void)dfdu;\n";
+    if (constrained) {
+        c << constrained_functions(system, names, name, args);
     } else {
-        c << "    if (dfdu) {\n        for (k = 0; k < " << nu << "; ++k) {\n"
-          << "            for (i = 0; i < " << nq << "; ++i) {\n"
-          << "                column[i] = d[" << nq << " * " << nq << " * " << nq << " + 2 * " << nq << " * " << nq
-          << " + i * " << nu << " + k];\n                dfdu[i * " << nu << " + k] = 0.0;\n            }\n"
-          << "            lagrange_solve(m, column);\n            for (i = 0; i < " << nq << "; ++i)\n"
-          << "                dfdu[(" << nq << " + i) * " << nu << " + k] = column[i];\n        }\n    }\n";
+        c << "int " << name << "_rhs" << args << ", double *dxdt)\n{\n"
+          << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
+          << "    lagrange_mass_and_forcing(t, x, u, p, m);\n";
+        if (n == 2) // Cramer's rule, as the engine solves two coordinates
+            c << "    {\n        const double det = m[0] * m[3] - m[1] * m[1];\n"
+              << "        if (!(m[0] > 0.0 && det > 0.0))\n            return 1;\n"
+              << "        dxdt[2] = (m[3] * m[4] - m[1] * m[5]) / det;\n"
+              << "        dxdt[3] = (m[0] * m[5] - m[1] * m[4]) / det;\n    }\n"
+              << "    dxdt[0] = x[2];\n    dxdt[1] = x[3];\n    (void)i;\n    return 0;\n}\n\n";
+        else
+            c << "    if (lagrange_factor(m))\n        return 1;\n"
+              << "    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
+              << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
+              << "        dxdt[" << nq << " + i] = m[" << nq << " * " << nq << " + i];\n    }\n    return 0;\n}\n\n";
+        c << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu)\n{\n"
+          << "    /* d(q'')/dy = M^-1 (dF/dy - (dM/dy) q''), y each coordinate, velocity and input. */\n"
+          << "    double m[" << nq << " * " << nq << " + " << nq << "], column[" << nq << "];\n"
+          << "    double d[" << nq << " * " << nq << " * " << nq << " + 2 * " << nq << " * " << nq << " + " << nq << " * "
+          << nu << " + 1];\n"
+          << "    const double *qdd = m + " << nq << " * " << nq << ";\n    int i, j, k;\n"
+          << "    lagrange_mass_and_forcing(t, x, u, p, m);\n    lagrange_derivatives(t, x, u, p, d);\n"
+          << "    if (lagrange_factor(m))\n        return 1;\n    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
+          << "    for (i = 0; i < " << nx << " * " << nx << "; ++i)\n        dfdx[i] = 0.0;\n"
+          << "    for (i = 0; i < " << nq << "; ++i)\n        dfdx[i * " << nx << " + " << nq << " + i] = 1.0;\n"
+          << "    for (k = 0; k < 2 * " << nq << "; ++k) {\n        for (i = 0; i < " << nq << "; ++i) {\n"
+          << "            column[i] = d[" << nq << " * " << nq << " * " << nq << " + (k < " << nq << " ? 0 : " << nq
+          << " * " << nq << ") + i * " << nq << " + k % " << nq << "];\n"
+          << "            if (k < " << nq << ")\n                for (j = 0; j < " << nq << "; ++j)\n"
+          << "                    column[i] -= d[(k * " << nq << " + i) * " << nq << " + j] * qdd[j];\n        }\n"
+          << "        lagrange_solve(m, column);\n        for (i = 0; i < " << nq << "; ++i)\n"
+          << "            dfdx[(" << nq << " + i) * " << nx << " + k] = column[i];\n    }\n";
+        if (inputs == 0) {
+            c << "    (void)dfdu;\n";
+        } else {
+            c << "    if (dfdu) {\n        for (k = 0; k < " << nu << "; ++k) {\n"
+              << "            for (i = 0; i < " << nq << "; ++i) {\n"
+              << "                column[i] = d[" << nq << " * " << nq << " * " << nq << " + 2 * " << nq << " * " << nq
+              << " + i * " << nu << " + k];\n                dfdu[i * " << nu << " + k] = 0.0;\n            }\n"
+              << "            lagrange_solve(m, column);\n            for (i = 0; i < " << nq << "; ++i)\n"
+              << "                dfdu[(" << nq << " + i) * " << nu << " + k] = column[i];\n        }\n    }\n";
+        }
+        c << "    return 0;\n}\n";
     }
-    c << "    return 0;\n}\n";
     if (system.linear) {
         const std::string parts = "2 * " + nq + " + 2 * " + nq + " * " + nq;
         c << "\nstatic void lagrange_linear" << args << ", double *out)\n{\n"

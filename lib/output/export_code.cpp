@@ -158,6 +158,10 @@ std::string provenance(const model& scene, const exported_system& system, const 
         << comment << "Parameters p (" << system.parameter_names.size() << "): " << list(system.parameter_names)
         << ".\n"
         << comment << "Inputs u (" << system.input_names.size() << "): " << list(system.input_names) << ".\n"
+        << (system.constraint_parts
+                ? comment + "Constraints (" + std::to_string(system.constraint_names.size()) + "): " +
+                      list(system.constraint_names) + "; M q'' = F + A^T lambda with A q'' = -c.\n"
+                : std::string())
         << comment << "Units: none are assumed; the numbers are in whatever units the scene's values use.\n"
         << comment
         << (system.linear ? "Linearized: `equilibrium` gives the state the small oscillations are about and `linear`\n" +

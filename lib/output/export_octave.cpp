@@ -47,6 +47,45 @@ std::string octave_function(const std::string& name, const std::string& function
     return out.str();
 }
 
+/// A constrained scene's files: the constraints, and the right-hand side and the multipliers
+/// from the augmented system [M −Aᵀ; A 0] [q̈; λ] = [F; −c].
+std::vector<exported_file> constrained_files(const exported_system& system, const naming& names,
+                                             const std::string& name, const std::string& header)
+{
+    const std::size_t n = system.coordinates, m = system.constraint_names.size();
+    const std::string nq = std::to_string(n), nc = std::to_string(m);
+    const std::string inputs = octave_defaults(name, system.input_names.size());
+    const std::string parts = "  d = " + name + "_constraint_parts(t, x, p, u);\n";
+    const std::string augmented = "  M = " + name + "_mass_matrix(t, x, p, u);\n  F = " + name +
+                                  "_forcing(t, x, p, u);\n" + parts + "  A = reshape(d(1:" + nc + " * " + nq + "), " +
+                                  nq + ", " + nc + ")';\n  c = d(" + nc + " * " + nq + " + 1:" + nc + " * " + nq +
+                                  " + " + nc + ");\n  y = [M, -A'; A, zeros(" + nc + ")] \\ [F; -c];\n";
+    std::vector<exported_file> files;
+    files.push_back({name + "_constraint_parts.m",
+                     octave_function(name, "constraint_parts", "A (row by row), c, then the residuals g, as a column.",
+                                     *system.constraint_parts, names, system, "d",
+                                     system.constraint_parts->output_count(), 1, header)});
+    files.push_back({name + "_constraints.m",
+                     "function g = " + name + "_constraints(t, x, p, u)\n  % The residuals g (a column), 0 on the "
+                     "motion: f(q, t) of a holonomic constraint, A(q) q' + b of a velocity one.\n" + header + inputs +
+                     parts + "  g = d(" + nc + " * " + nq + " + " + nc + " + 1:end);\nend\n"});
+    files.push_back({name + "_constraint_jacobian.m",
+                     "function A = " + name + "_constraint_jacobian(t, x, p, u)\n  % A (NC x NQ) of the velocity "
+                     "form A q' + b = 0.\n" + header + inputs + parts + "  A = reshape(d(1:" + nc + " * " + nq +
+                     "), " + nq + ", " + nc + ")';\nend\n"});
+    files.push_back({name + "_rhs.m",
+                     "function dxdt = " + name + "_rhs(t, x, p, u)\n  % dx/dt as a column: q'' from [M -A'; A 0] "
+                     "[q''; lambda] = [F; -c], the constraints\n  % differentiated to the accelerations (" + name +
+                     "_constraints measures their drift); for ode45: ode45(@(t, x) " + name +
+                     "_rhs(t, x, p), tspan, x0).\n" + header + inputs + augmented + "  dxdt = [x(" + nq + " + 1:2 * " +
+                     nq + "); y(1:" + nq + ")];\nend\n"});
+    files.push_back({name + "_multipliers.m",
+                     "function lambda = " + name + "_multipliers(t, x, p, u)\n  % The multipliers lambda of M q'' = "
+                     "F + A' lambda (a column).\n" + header + inputs + augmented + "  lambda = y(" + nq +
+                     " + 1:end);\nend\n"});
+    return files;
+}
+
 } // namespace
 
 std::vector<exported_file> export_octave(const model& scene, const exported_system& system, const std::string& name,
@@ -65,35 +104,40 @@ std::vector<exported_file> export_octave(const model& scene, const exported_syst
     files.push_back({name + "_energy.m",
                      octave_function(name, "energy", "The energy function h = sum q' dL/dq' - L.", system.energy,
                                      names, system, "h", 1, 1, header)});
-    files.push_back({name + "_derivatives.m",
-                     octave_function(name, "derivatives", "dM/dq_k (k slowest), dF/dq, dF/dq', dF/du, as a column.",
-                                     system.derivatives, names, system, "d", derivatives, 1, header)});
     std::ostringstream defaults;
     defaults << "function p = " << name << "_defaults()\n  % The scene's `values` (the first line), NaN where it "
              << "gives none, in the order of the parameters.\n" << header << "  p = ["
              << number_list(system.defaults, "NaN") << "]';\n  if isempty(p)\n    p = zeros(0, 1);\n  end\nend\n";
     files.push_back({name + "_defaults.m", defaults.str()});
-    std::ostringstream rhs;
-    rhs << "function dxdt = " << name << "_rhs(t, x, p, u)\n"
-        << "  % dx/dt = f(t, x, u, p) as a column; for ode45 and ode15s: ode45(@(t, x) " << name
-        << "_rhs(t, x, p), tspan, x0).\n" << header
-        << octave_defaults(name, inputs)
-        << "  M = " << name << "_mass_matrix(t, x, p, u);\n  F = " << name << "_forcing(t, x, p, u);\n"
-        << "  dxdt = [x(" << n + 1 << ":" << 2 * n << "); M \\ F];\nend\n";
-    files.push_back({name + "_rhs.m", rhs.str()});
-    std::ostringstream jac;
-    jac << "function [dfdx, dfdu] = " << name << "_jacobian(t, x, p, u)\n"
-        << "  % df/dx (NX x NX) and df/du (NX x NU): d(q'')/dy = M \\ (dF/dy - (dM/dy) q'').\n" << header
-        << octave_defaults(name, inputs)
-        << "  n = " << n << ";\n  m = " << inputs << ";\n"
-        << "  M = " << name << "_mass_matrix(t, x, p, u);\n  F = " << name << "_forcing(t, x, p, u);\n"
-        << "  d = " << name << "_derivatives(t, x, p, u);\n  qdd = M \\ F;\n"
-        << "  dq = reshape(d(n^3 + 1:n^3 + n^2), n, n)';\n"
-        << "  for k = 1:n\n    dq(:, k) = dq(:, k) - reshape(d((k - 1) * n^2 + 1:k * n^2), n, n)' * qdd;\n  end\n"
-        << "  dv = reshape(d(n^3 + n^2 + 1:n^3 + 2 * n^2), n, n)';\n"
-        << "  dfdx = [zeros(n), eye(n); M \\ dq, M \\ dv];\n"
-        << "  dfdu = [zeros(n, m); M \\ reshape(d(n^3 + 2 * n^2 + 1:end), m, n)'];\nend\n";
-    files.push_back({name + "_jacobian.m", jac.str()});
+    if (system.constraint_parts) {
+        for (exported_file& file : constrained_files(system, names, name, header))
+            files.push_back(std::move(file));
+    } else {
+        files.push_back({name + "_derivatives.m",
+                         octave_function(name, "derivatives", "dM/dq_k (k slowest), dF/dq, dF/dq', dF/du, as a column.",
+                                         system.derivatives, names, system, "d", derivatives, 1, header)});
+        std::ostringstream rhs;
+        rhs << "function dxdt = " << name << "_rhs(t, x, p, u)\n"
+            << "  % dx/dt = f(t, x, u, p) as a column; for ode45 and ode15s: ode45(@(t, x) " << name
+            << "_rhs(t, x, p), tspan, x0).\n" << header
+            << octave_defaults(name, inputs)
+            << "  M = " << name << "_mass_matrix(t, x, p, u);\n  F = " << name << "_forcing(t, x, p, u);\n"
+            << "  dxdt = [x(" << n + 1 << ":" << 2 * n << "); M \\ F];\nend\n";
+        files.push_back({name + "_rhs.m", rhs.str()});
+        std::ostringstream jac;
+        jac << "function [dfdx, dfdu] = " << name << "_jacobian(t, x, p, u)\n"
+            << "  % df/dx (NX x NX) and df/du (NX x NU): d(q'')/dy = M \\ (dF/dy - (dM/dy) q'').\n" << header
+            << octave_defaults(name, inputs)
+            << "  n = " << n << ";\n  m = " << inputs << ";\n"
+            << "  M = " << name << "_mass_matrix(t, x, p, u);\n  F = " << name << "_forcing(t, x, p, u);\n"
+            << "  d = " << name << "_derivatives(t, x, p, u);\n  qdd = M \\ F;\n"
+            << "  dq = reshape(d(n^3 + 1:n^3 + n^2), n, n)';\n"
+            << "  for k = 1:n\n    dq(:, k) = dq(:, k) - reshape(d((k - 1) * n^2 + 1:k * n^2), n, n)' * qdd;\n  end\n"
+            << "  dv = reshape(d(n^3 + n^2 + 1:n^3 + 2 * n^2), n, n)';\n"
+            << "  dfdx = [zeros(n), eye(n); M \\ dq, M \\ dv];\n"
+            << "  dfdu = [zeros(n, m); M \\ reshape(d(n^3 + 2 * n^2 + 1:end), m, n)'];\nend\n";
+        files.push_back({name + "_jacobian.m", jac.str()});
+    }
     if (system.linear) {
         files.push_back({name + "_linear_parts.m",
                          octave_function(name, "linear_parts", "The equilibrium's state, then T and V, as a column.",

@@ -34,6 +34,43 @@ std::string python_function(const std::string& function, const std::string& doc,
     return out.str();
 }
 
+/// A constrained scene's functions: the constraints, and the right-hand side and the
+/// multipliers from the augmented system [M −Aᵀ; A 0] [q̈; λ] = [F; −c].
+std::string constrained_functions(const exported_system& system, const naming& names, const std::string& list)
+{
+    std::ostringstream py;
+    py << "NC = " << system.constraint_names.size() << "\nCONSTRAINTS = " << list << "\n\n\n"
+       << python_function("_constraint_parts", "A (flattened), c, then the residuals g.", *system.constraint_parts,
+                          names, system, "_vector")
+       << "def constraints(t, x, p=None, u=None):\n"
+       << "    \"\"\"The residuals g, shape (..., NC), 0 on the motion: f(q, t) of a holonomic constraint,\n"
+       << "    A(q) q' + b of a velocity one.\"\"\"\n"
+       << "    return _constraint_parts(t, x, p, u)[..., NC * NQ + NC:]\n\n\n"
+       << "def constraint_jacobian(t, x, p=None, u=None):\n"
+       << "    \"\"\"A of the velocity form A q' + b = 0, shape (..., NC, NQ).\"\"\"\n"
+       << "    parts = _constraint_parts(t, x, p, u)\n"
+       << "    return parts[..., :NC * NQ].reshape(parts.shape[:-1] + (NC, NQ))\n\n\n"
+       << "def _augmented(t, x, p, u):\n"
+       << "    t, x, p, u, shape = _arguments(t, x, p, u)\n"
+       << "    both = _mass_and_forcing(t, x, p, u)\n"
+       << "    parts = _constraint_parts(t, x, p, u)\n"
+       << "    a = parts[..., :NC * NQ].reshape(shape + (NC, NQ))\n"
+       << "    k = np.zeros(shape + (NQ + NC, NQ + NC))\n"
+       << "    k[..., :NQ, :NQ] = both[..., :NQ * NQ].reshape(shape + (NQ, NQ))\n"
+       << "    k[..., :NQ, NQ:] = -np.swapaxes(a, -1, -2)\n    k[..., NQ:, :NQ] = a\n"
+       << "    b = np.concatenate([both[..., NQ * NQ:], -parts[..., NC * NQ:NC * NQ + NC]], axis=-1)\n"
+       << "    return x, shape, np.linalg.solve(k, b[..., None])[..., 0]\n\n\n"
+       << "def rhs(t, x, p=None, u=None):\n"
+       << "    \"\"\"dx/dt, shape (..., NX): q'' from [M -A^T; A 0] [q''; lambda] = [F; -c], the constraints\n"
+       << "    differentiated to the accelerations (constraints() measures their drift).\"\"\"\n"
+       << "    x, shape, y = _augmented(t, x, p, u)\n"
+       << "    return np.concatenate([np.broadcast_to(x[..., NQ:], shape + (NQ,)), y[..., :NQ]], axis=-1)\n\n\n"
+       << "def multipliers(t, x, p=None, u=None):\n"
+       << "    \"\"\"The multipliers lambda of M q'' = F + A^T lambda, shape (..., NC).\"\"\"\n"
+       << "    return _augmented(t, x, p, u)[2][..., NQ:]\n";
+    return py.str();
+}
+
 } // namespace
 
 std::vector<exported_file> export_python(const model& scene, const exported_system& system, const std::string& name,
@@ -78,11 +115,14 @@ std::vector<exported_file> export_python(const model& scene, const exported_syst
                           "_vector");
     py << python_function("_mass_and_forcing", "M (flattened) then F, their common parts computed once.",
                           system.mass_and_forcing, names, system, "_vector");
-    py << python_function("_derivatives", "dM/dq_k (k slowest), dF/dq, dF/dq', dF/du, flattened.",
-                          system.derivatives, names, system, "_vector");
     py << python_function("energy", "The energy function h = sum q' dL/dq' - L.", system.energy, names, system,
                           "_scalar");
-    py << "def rhs(t, x, p=None, u=None):\n"
+    if (system.constraint_parts)
+        py << constrained_functions(system, names, quoted_list(system.constraint_names));
+    else
+        py << python_function("_derivatives", "dM/dq_k (k slowest), dF/dq, dF/dq', dF/du, flattened.",
+                              system.derivatives, names, system, "_vector")
+           << "def rhs(t, x, p=None, u=None):\n"
        << "    \"\"\"dx/dt = f(t, x, u, p), shape (..., NX); numpy.linalg.LinAlgError where M is singular.\"\"\"\n"
        << "    t, x, p, u, shape = _arguments(t, x, p, u)\n"
        << "    both = _mass_and_forcing(t, x, p, u)\n"

@@ -4,7 +4,8 @@
  *  (at tolerance 1e-12) to 1e-8 relative over the same run, and its Jacobian agrees with
  *  central differences of its own right-hand side to 1e-6; for the double pendulum, the
  *  heavy top, the damped driven oscillator (an input) and a 10-link chain; the exported
- *  equilibrium, T and V against `state_space`. And bad input. */
+ *  equilibrium, T and V against `state_space`; the rolling coin's constrained export against
+ *  simulate and the engine's multipliers. And bad input. */
 #include "helpers/chain_scene.h"
 #include "helpers/cli_runner.h"
 #include "helpers/tools.h"
@@ -384,6 +385,96 @@ TEST_CASE("export: a scene without an equilibrium is exported without the linear
     CHECK(text.find("_linear(") == std::string::npos);
 }
 
+TEST_CASE("export: the rolling coin's constrained C code reproduces simulate", "[export][cc]")
+{
+    const exported_case coin{examples + "rolling_coin.lag", 1, "", "", ""};
+    const reference expected = simulate(coin);
+    const std::string folder = folder_for("c-coin");
+    REQUIRE(run_cli("export " + coin.file + " --to c -o " + folder).exit_code == 0);
+    std::ofstream(folder + "/coin.c") << R"(#include "rolling_coin.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#define NX rolling_coin_NX
+static void f(double t, const double *x, double *dxdt)
+{
+    if (rolling_coin_rhs(t, x, NULL, rolling_coin_default_p, dxdt)) { fprintf(stderr, "singular\n"); exit(1); }
+}
+int main(int argc, char **argv)
+{
+    double x[NX], k1[NX], k2[NX], k3[NX], k4[NX], y[NX], g[rolling_coin_NC], worst = 0;
+    double until = atof(argv[1]), h, t = 0;
+    int steps = atoi(argv[2]), i, s;
+    h = until / steps;
+    for (i = 0; i < NX; ++i) x[i] = atof(argv[i + 3]);
+    for (s = 0; s < steps; ++s, t = s * h) {
+        f(t, x, k1);
+        for (i = 0; i < NX; ++i) y[i] = x[i] + 0.5 * h * k1[i];
+        f(t + 0.5 * h, y, k2);
+        for (i = 0; i < NX; ++i) y[i] = x[i] + 0.5 * h * k2[i];
+        f(t + 0.5 * h, y, k3);
+        for (i = 0; i < NX; ++i) y[i] = x[i] + h * k3[i];
+        f(t + h, y, k4);
+        for (i = 0; i < NX; ++i) x[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    }
+    rolling_coin_constraints(until, x, NULL, rolling_coin_default_p, g);
+    for (i = 0; i < rolling_coin_NC; ++i) if (fabs(g[i]) > worst) worst = fabs(g[i]);
+    for (i = 0; i < NX; ++i) printf("%.17g ", x[i]);
+    printf("%.17g\n", worst);
+    return 0;
+}
+)";
+    const std::string cc = configured_compiler();
+    run_shell("cd " + folder + " && " + cc + " -std=c99 -Wall -Wextra -pedantic -Werror -O2 -c rolling_coin.c 2>&1 && " +
+              cc + " -std=c99 -O2 -o coin coin.c rolling_coin.o -lm 2>&1");
+    // the last number is the constraints' largest residual at the end, which check_against holds to 1e-6;
+    // RK4's drift off them is far below
+    check_against(expected, read_numbers(run_shell(folder + "/coin 1 5000 " + numbers(expected.start, " "))));
+}
+
+TEST_CASE("export: the rolling coin's Python module reproduces simulate and the multipliers", "[export][scipy]")
+{
+    const exported_case coin{examples + "rolling_coin.lag", 1, "", "", ""};
+    const reference expected = simulate(coin);
+    const std::string folder = folder_for("py-coin");
+    REQUIRE(run_cli("export " + coin.file + " --to python -o " + folder).exit_code == 0);
+    // The engine's λ in closed form (`want multipliers`), evaluated by SymPy at the start.
+    cli_result r = run_cli(coin.file + " --want multipliers --format json");
+    REQUIRE(r.exit_code == 0);
+    const nlohmann::json lambdas = nlohmann::json::parse(r.out)["multipliers"];
+    std::ofstream(folder + "/check.py")
+        << "import sys, json\nsys.path.insert(0, " << nlohmann::json(folder).dump() << ")\n"
+        << "import numpy as np\nimport sympy\nfrom scipy.integrate import solve_ivp\nimport rolling_coin as m\n"
+        << "x0 = np.array([" << numbers(expected.start, ", ") << "], dtype=float)\n"
+        << "run = solve_ivp(m.rhs, (0, 1), x0, args=(m.DEFAULTS,), method='DOP853', rtol=1e-13, atol=1e-13)\n"
+        << "lambdas = json.loads(" << nlohmann::json(lambdas.dump()).dump() << ")\n"
+        << "at = dict(zip(m.STATE + m.PARAMETERS, list(x0) + list(m.DEFAULTS)))\n"
+        << "names = {n: sympy.Symbol(n) for n in at}\n"
+        << "engine = [float(sympy.sympify(lambdas[c].replace('^', '**'), locals=names).subs(at)) for c in m.CONSTRAINTS]\n"
+        << "ours = m.multipliers(0.0, x0)\n"
+        << "worst = max(abs(a - b) / max(1.0, abs(b)) for a, b in zip(ours, engine))\n"
+        << "drift = np.max(np.abs(m.constraints(1.0, run.y[:, -1])))\n"
+        << "print(' '.join(repr(v) for v in run.y[:, -1]), repr(max(worst, drift)))\n";
+    check_against(expected, read_numbers(run_shell("/usr/bin/python3 " + folder + "/check.py")));
+}
+
+TEST_CASE("export: the rolling coin's Octave functions reproduce simulate", "[export][octave]")
+{
+    const exported_case coin{examples + "rolling_coin.lag", 1, "", "", ""};
+    const reference expected = simulate(coin);
+    const std::string folder = folder_for("octave-coin");
+    REQUIRE(run_cli("export " + coin.file + " --to octave -o " + folder).exit_code == 0);
+    std::ofstream(folder + "/check.m")
+        << "p = rolling_coin_defaults();\nx0 = [" << numbers(expected.start, "; ") << "];\n"
+        << "opts = odeset('RelTol', 1e-12, 'AbsTol', 1e-13);\n"
+        << "[t, X] = ode45(@(t, x) rolling_coin_rhs(t, x, p), [0 1], x0, opts);\n"
+        << "lambda = rolling_coin_multipliers(0, x0, p);\n"
+        << "g = rolling_coin_constraints(1, X(end, :)', p);\n"
+        << "printf('%.17g ', X(end, :));\nprintf('%.17g\\n', max(abs(g)));\n";
+    check_against(expected,
+                  read_numbers(run_shell("cd " + folder + " && octave-cli --no-gui --quiet check.m 2>&1")));
+}
+
 TEST_CASE("export: bad input is refused with nothing written", "[export]")
 {
     const std::string pendulum = examples + "double_pendulum.lag";
@@ -403,10 +494,12 @@ TEST_CASE("export: bad input is refused with nothing written", "[export]")
         struct stat info {};
         CHECK(::stat((folder + never).c_str(), &info) != 0);
     }
-    // A constrained scene is a DAE, not exported in this version: exit 1 with the reason.
-    cli_result coin = run_cli("export " + examples + "rolling_coin.lag --to c -o " + folder + "/d");
-    CHECK(coin.exit_code == 1);
-    CHECK(coin.err.find("does not cover constraints") != std::string::npos);
+    // A free body's scene has no equations of motion to export: exit 1 with the reason.
+    cli_result body = run_cli("export " + examples + "free_asymmetric_top.lag --to c -o " + folder + "/d");
+    CHECK(body.exit_code == 1);
+    CHECK(body.err.find("has no coordinates") != std::string::npos);
+    struct stat info {};
+    CHECK(::stat((folder + "/d").c_str(), &info) != 0);
 }
 
 TEST_CASE("export: names are the scene's, and a keyword is renamed as the header says", "[export]")
