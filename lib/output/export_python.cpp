@@ -24,8 +24,8 @@ std::string python_function(const std::string& function, const std::string& doc,
     for (int k : used) {
         const argument_place at = place_of(k, system);
         if (at.array != 't')
-            out << "    " << names.symbols[static_cast<std::size_t>(k)] << " = " << at.array << "[..., " << at.index
-                << "]\n";
+            out << "    " << names.symbols[static_cast<std::size_t>(k)] << " = _column(" << at.array << ", " << at.index
+                << ")\n";
     }
     out << lines.str() << "    return " << result << "(shape, ";
     for (std::size_t k = 0; k < outputs.size(); ++k)
@@ -64,7 +64,7 @@ std::string constrained_functions(const exported_system& system, const naming& n
        << "    \"\"\"dx/dt, shape (..., NX): q'' from [M -A^T; A 0] [q''; lambda] = [F; -c], the constraints\n"
        << "    differentiated to the accelerations (constraints() measures their drift).\"\"\"\n"
        << "    x, shape, y = _augmented(t, x, p, u)\n"
-       << "    return np.concatenate([np.broadcast_to(x[..., NQ:], shape + (NQ,)), y[..., :NQ]], axis=-1)\n\n\n"
+       << "    return np.concatenate([np.broadcast_to(np.asarray(x)[..., NQ:], shape + (NQ,)), y[..., :NQ]], axis=-1)\n\n\n"
        << "def multipliers(t, x, p=None, u=None):\n"
        << "    \"\"\"The multipliers lambda of M q'' = F + A^T lambda, shape (..., NC).\"\"\"\n"
        << "    return _augmented(t, x, p, u)[2][..., NQ:]\n";
@@ -104,8 +104,13 @@ std::vector<exported_file> export_python(const model& scene, const exported_syst
        << "        raise ValueError(f\"x, p and u end in {NX}, {NP} and {NU} entries, not {x.shape}, {p.shape}, "
           "{u.shape}\")\n"
        << "    t = np.asarray(t, dtype=float)\n"
-       << "    return t, x, p, u, np.broadcast_shapes(t.shape, x.shape[:-1], p.shape[:-1], u.shape[:-1])\n\n\n"
+       << "    shape = np.broadcast_shapes(t.shape, x.shape[:-1], p.shape[:-1], u.shape[:-1])\n"
+       << "    if shape == ():  # one state: Python floats, far quicker than NumPy's 0-d arrays\n"
+       << "        return float(t), x.tolist(), p.tolist(), u.tolist(), shape\n"
+       << "    return t, x, p, u, shape\n\n\n"
+       << "def _column(a, k):\n    return a[k] if isinstance(a, list) else a[..., k]\n\n\n"
        << "def _vector(shape, *values):\n"
+       << "    if shape == ():\n        return np.array(values, dtype=float)\n"
        << "    return np.stack([np.broadcast_to(np.asarray(v, dtype=float), shape) for v in values], axis=-1)\n\n\n"
        << "def _square(shape, *values):\n    return _vector(shape, *values).reshape(shape + (NQ, NQ))\n\n\n"
        << "def _scalar(shape, value):\n    return np.broadcast_to(np.asarray(value, dtype=float), shape).copy()\n\n\n";
@@ -128,7 +133,7 @@ std::vector<exported_file> export_python(const model& scene, const exported_syst
        << "    both = _mass_and_forcing(t, x, p, u)\n"
        << "    mass, force = both[..., :NQ * NQ].reshape(shape + (NQ, NQ)), both[..., NQ * NQ:]\n"
        << "    qdd = np.linalg.solve(mass, force[..., None])[..., 0]\n"
-       << "    return np.concatenate([np.broadcast_to(x[..., NQ:], shape + (NQ,)), qdd], axis=-1)\n\n\n"
+       << "    return np.concatenate([np.broadcast_to(np.asarray(x)[..., NQ:], shape + (NQ,)), qdd], axis=-1)\n\n\n"
        << "def jacobian(t, x, p=None, u=None):\n"
        << "    \"\"\"(df/dx of shape (..., NX, NX), df/du of shape (..., NX, NU)).\"\"\"\n"
        << "    t, x, p, u, shape = _arguments(t, x, p, u)\n"
