@@ -35,8 +35,8 @@ struct damped_factor {
 };
 
 struct damping_result {
-    GiNaC::matrix damping;        ///< C_ij = −∂Q_i/∂q̇_j at the equilibrium, at rest, inputs 0
-    GiNaC::possymbol s;           ///< named "s" unless the scene uses that name
+    GiNaC::matrix damping;        ///< C_ij = −∂Q_i/∂q̇_j at the equilibrium, at rest, inputs 0 [E·τ/(q_i q_j)]
+    GiNaC::possymbol s;           ///< named "s" unless the scene uses that name [1/τ]
     GiNaC::ex polynomial;         ///< det(K + sC + s²M) made primitive (leading coefficient positive)
     bool closed_form = false;     ///< every factor has degree ≤ 2 in s
     std::vector<damped_factor> factors; ///< when closed_form, in a fixed order

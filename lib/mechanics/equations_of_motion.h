@@ -32,12 +32,12 @@ std::optional<acceleration_form> group_by_accelerations(const model& scene, cons
 /// terms (generalized forces, constraint multipliers) are added here, to both forms.
 struct equations_of_motion {
     GiNaC::ex lagrangian;                ///< the L they come from (lagrangian_result::lagrangian)
-    std::vector<GiNaC::ex> momenta;      ///< p_i = ∂L/∂q̇_i
-    GiNaC::matrix mass;                  ///< M_ij = ∂p_i/∂q̇_j (n × n)
-    std::vector<GiNaC::ex> forcing;      ///< f_i = ∂L/∂q_i − Σ_j ∂p_i/∂q_j q̇_j − ∂p_i/∂t + Q_i
+    std::vector<GiNaC::ex> momenta;      ///< p_i = ∂L/∂q̇_i [E·τ/q_i]
+    GiNaC::matrix mass;                  ///< M_ij = ∂p_i/∂q̇_j (n × n) [E·τ²/(q_i q_j)]
+    std::vector<GiNaC::ex> forcing;      ///< f_i = ∂L/∂q_i − Σ_j ∂p_i/∂q_j q̇_j − ∂p_i/∂t + Q_i [E/q_i]
     /// Q: dissipation, dampers and applied forces (mechanics/forces.h), in `forcing` and the residuals.
     generalized_forces forces;
-    GiNaC::ex energy;                    ///< the energy function h = Σ q̇_i p_i − L
+    GiNaC::ex energy;                    ///< the energy function h = Σ q̇_i p_i − L [E]
     /// The scene's constraints, when it has some: then M q̈ = f + Aᵀλ with A q̈ = −c, and the
     /// residuals below less Σ_k a_ki λ_k.
     std::optional<constraint_equations> constraints;

@@ -16,15 +16,16 @@
 namespace lagrange {
 
 struct linearization_result {
-    std::vector<GiNaC::ex> at;  ///< the equilibrium
-    GiNaC::matrix kinetic;      ///< T_ij = ∂²T/∂q̇i∂q̇j at the equilibrium
+    std::vector<GiNaC::ex> at;  ///< the equilibrium [q_i]
+    GiNaC::matrix kinetic;      ///< T_ij = ∂²T/∂q̇i∂q̇j at the equilibrium [E·τ²/(q_i q_j)]
     /// V_ij = ∂²U/∂qi∂qj at the equilibrium (U = −L0, lagrangian.h), plus the stiffness
     /// K_f = −∂Q/∂q of position-dependent applied forces there (`force_stiffness`): the K of
     /// T q̈ + (C − G) q̇ + K q = 0. Not symmetric when those forces are circulatory.
+    /// [E/(q_i q_j)]
     GiNaC::matrix potential;
     /// G_ij = ∂aⱼ/∂qi − ∂aᵢ/∂qj at the equilibrium, with L1 = Σ aᵢ(q) q̇ᵢ: antisymmetric; the
     /// linearized equations are T q̈ − G q̇ + V q = 0. All zero when L has no part linear in
-    /// the velocities.
+    /// the velocities. [E·τ/(q_i q_j)]
     GiNaC::matrix gyroscopic;
     bool has_gyroscopic() const; ///< whether some entry of G is not identically 0
     /// K_f = −∂Q/∂q at the equilibrium, at rest, inputs 0 (mechanics/forces.h), already in

@@ -26,7 +26,7 @@ struct modes_result {
     /// For which roots they were left out, for the notes: "the roots of an irreducible cubic
     /// in the parameters, …" or "a repeated ω², whose modes … are not found in closed form".
     std::string vectors_left_out_why;
-    std::vector<GiNaC::ex> frequencies;       ///< ω², ascending where the order is known
+    std::vector<GiNaC::ex> frequencies;       ///< ω², ascending where the order is known [1/τ²]
     std::vector<std::vector<GiNaC::ex>> modes;///< one mode vector per frequency
     std::vector<GiNaC::ex> normal_coordinates;///< ζ_k = (Aᵀ T (q − q₀))_k with Aᵀ T A = I
     std::vector<GiNaC::ex> displacements;     ///< q − q₀ per coordinate (q where q₀ = 0)

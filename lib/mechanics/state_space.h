@@ -21,12 +21,12 @@ struct state_space_result {
     std::vector<GiNaC::ex> state;  ///< q₁ … qₙ, then q̇₁ … q̇ₙ (the scene's symbols)
     std::vector<GiNaC::ex> inputs; ///< the inputs' symbols, in scene order
     /// A = [[0, I], [−M⁻¹K, M⁻¹(G − C)]]: 2n × 2n, ∂(q̇, q̈)/∂(q, q̇) at the equilibrium, at
-    /// rest, inputs 0.
+    /// rest, inputs 0. [1/τ, or q_i/(q_j τ) across coordinates]
     GiNaC::matrix a;
-    /// B = [[0], [M⁻¹ B_q]]: 2n × m, ∂(q̇, q̈)/∂u there.
+    /// B = [[0], [M⁻¹ B_q]]: 2n × m, ∂(q̇, q̈)/∂u there. [q_i/(τ² u_k) in its lower half]
     GiNaC::matrix b;
-    GiNaC::matrix damping;      ///< C (damping.h), n × n
-    GiNaC::matrix input_matrix; ///< B_q = ∂Q/∂u at the equilibrium, at rest, inputs 0: n × m
+    GiNaC::matrix damping;      ///< C (damping.h), n × n [E·τ/(q_i q_j)]
+    GiNaC::matrix input_matrix; ///< B_q = ∂Q/∂u at the equilibrium, at rest, inputs 0: n × m [E/(q_i u_k)]
 };
 
 /// B_q = ∂Q/∂u at (q = at, q̇ = 0, inputs 0): n × m, m = the number of inputs. Throws

@@ -16,9 +16,9 @@ namespace lagrange {
 /// ⟨T⟩ and ⟨V⟩ over [from, to], the span the simulation covered. Energies in the
 /// scene's units (none are assumed), times in its time unit.
 struct virial_result {
-    double kinetic = 0;   ///< ⟨T⟩ = (1/(t1 − t0)) ∫ T dt
-    double potential = 0; ///< ⟨V⟩
-    double from = 0, to = 0;
+    double kinetic = 0;   ///< ⟨T⟩ = (1/(t1 − t0)) ∫ T dt [E]
+    double potential = 0; ///< ⟨V⟩ [E]
+    double from = 0, to = 0; ///< the span averaged over [τ]
     /// The quadrature's error in ⟨T⟩ and ⟨V⟩, estimated (the trapezoid rule on the
     /// simulation's output times, against every other sample: Richardson); none for an
     /// odd number of output intervals.
