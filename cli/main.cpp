@@ -83,6 +83,9 @@ lagrange::model load_scene(const std::string& path, const std::vector<std::strin
 /// The help of --initial, which every command that integrates takes.
 const char* const initial_help = "initial values such as \"theta=0.1, phi'=0\": they replace the scene's for those "
                                  "coordinates";
+/// The help of --project-initial, beside --initial.
+const char* const project_initial_help = "start from the initial state moved onto the constraints by least change "
+                                         "(printed first) when it is off them; without it that is an error";
 
 /// A plot's title: the scene's, or its file name.
 std::string plot_title(const lagrange::model& scene) { return scene.title.empty() ? scene.file : scene.title; }
@@ -118,6 +121,7 @@ struct run_options {
     std::string want;
     std::vector<std::string> values;
     std::vector<std::string> initial; ///< --initial, applied in order
+    bool project_initial = false;     ///< --project-initial
     std::string format = "text";
     std::string output;
     bool timings = false;
@@ -128,12 +132,13 @@ struct run_options {
 /// The analysis of the products in `want` (a --want list; empty: the scene's or the
 /// default ones), with progress on the terminal.
 lagrange::analysis analyze_wanted(const lagrange::model& scene, const std::string& want,
-                                  const lagrange::budget_limits& budget)
+                                  const lagrange::budget_limits& budget, bool project_initial)
 {
     std::set<lagrange::product> wanted;
     if (!want.empty())
         wanted = lagrange::parse_want_list(want);
     lagrange::simulation_settings settings;
+    settings.project_initial = project_initial;
     settings.progress = progress_line::standard_error().callback();
     return lagrange::analyze(scene, wanted, budget, settings);
 }
@@ -173,7 +178,7 @@ int analyze_scene(const run_options& options)
     if (!options.sweeps.empty())
         return sweep_scene(options);
     lagrange::model scene = load_scene(options.scene_path, options.values, options.initial, options.budget.max_seconds);
-    lagrange::analysis result = analyze_wanted(scene, options.want, options.budget);
+    lagrange::analysis result = analyze_wanted(scene, options.want, options.budget, options.project_initial);
     write_document(result, options.format, options.timings, options.output);
     return exit_ok;
 }
@@ -182,6 +187,7 @@ struct motion_options {
     std::string scene_path;
     std::vector<std::string> values;
     std::vector<std::string> initial; ///< --initial, applied in order
+    bool project_initial = false;     ///< --project-initial
     std::optional<double> until;
     std::string method;
     std::optional<double> tolerance;
@@ -214,6 +220,7 @@ int motion_command(const motion_options& options, lagrange::product wanted, cons
     if (!options.method.empty())
         settings.method = options.method;
     settings.tolerance = options.tolerance;
+    settings.project_initial = options.project_initial;
     settings.progress = progress_line::standard_error().callback();
     settings.native = !options.interpret;
     lagrange::analysis result = lagrange::analyze(scene, {wanted}, budget, settings);
@@ -474,7 +481,7 @@ int report_scene(const run_options& options, const lagrange::budget_limits& budg
         throw usage_error("`report -o` takes a file ending in .tex or .pdf, not `" + path + "`");
     lagrange::source_text source = read_scene(options.scene_path, budget.max_seconds);
     lagrange::model scene = load_scene(source, options.values, options.initial);
-    lagrange::analysis result = analyze_wanted(scene, options.want, budget);
+    lagrange::analysis result = analyze_wanted(scene, options.want, budget, options.project_initial);
     lagrange::report_options report;
     // Figures go beside the .tex file, named after it (letters, digits and `-` only).
     std::size_t slash = path.rfind('/');
@@ -533,6 +540,7 @@ int run(int argc, char** argv)
     app.add_option("--want", options.want, "products to compute, comma-separated (default: the scene's `want`)");
     app.add_option("--values", options.values, "a parameter point such as a=1,b=2.5 (repeatable)");
     app.add_option("--initial", options.initial, initial_help);
+    app.add_flag("--project-initial", options.project_initial, project_initial_help);
     app.add_option("--format", options.format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
     app.add_option("-o,--output", options.output, "write the output to this file");
     app.add_flag("--timings", options.timings, "show which stages ran and how long each took");
@@ -563,6 +571,7 @@ int run(int argc, char** argv)
     report->add_option("--want", report_options.want, "products to derive, comma-separated (default: the scene's `want`)");
     report->add_option("--values", report_options.values, "a parameter point such as a=1,b=2.5 (repeatable)");
     report->add_option("--initial", report_options.initial, initial_help);
+    report->add_flag("--project-initial", report_options.project_initial, project_initial_help);
     report->footer(products_help());
 
     motion_options simulate_options, workprecision_options;
@@ -572,6 +581,7 @@ int run(int argc, char** argv)
         sub->add_option("SCENE", o->scene_path, "the scene file (`-` for standard input)")->required();
         sub->add_option("--values", o->values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
         sub->add_option("--initial", o->initial, initial_help);
+        sub->add_flag("--project-initial", o->project_initial, project_initial_help);
         sub->add_option("--until", o->until, "end time (default: the scene's `simulate until`)")
             ->check(positive_number);
         sub->add_option("--plot", o->plot, "draw a plot with gnuplot: .svg, .png or .pdf, by the extension");

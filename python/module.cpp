@@ -54,6 +54,7 @@ struct run_request {
     bool native = true;
     std::size_t max_terms = lagrange::budget_limits{}.max_terms;
     double max_seconds = lagrange::budget_limits{}.max_seconds;
+    bool project_initial = false; ///< start from an initial state off the constraints projected onto them
 };
 
 /// GiNaC is not thread-safe: one load at a time, whichever Python thread asks. A fork
@@ -85,6 +86,7 @@ std::string run(const lagrange::model& loaded, const run_request& request, const
     settings.method = request.method;
     settings.tolerance = request.tolerance;
     settings.estimate_error = request.estimate_error;
+    settings.project_initial = request.project_initial;
     settings.native = request.native;
     lagrange::analysis result = lagrange::analyze(scene, wanted, limits, settings);
     lagrange::document_options options;
@@ -375,9 +377,10 @@ PYBIND11_MODULE(_lagrange, m)
             [](const lagrange::model& scene, const std::string& format, const std::vector<std::string>& want,
                const std::vector<std::string>& values, const std::vector<std::string>& initial,
                std::optional<double> until, std::optional<std::string> method, std::optional<double> tolerance,
-               bool estimate_error, bool native, std::size_t max_terms, double max_seconds, bool timings) {
-                run_request request{want,      values,         initial, until,     method,
-                                    tolerance, estimate_error, native,  max_terms, max_seconds};
+               bool estimate_error, bool native, std::size_t max_terms, double max_seconds, bool timings,
+               bool project_initial) {
+                run_request request{want,      values,         initial, until,     method,     tolerance,
+                                    estimate_error, native,  max_terms, max_seconds, project_initial};
                 lagrange::require_document_format(format); // ValueError (pybind11), before the fork
                 return run_in_child([&] { return run(scene, request, format, timings); });
             },
@@ -387,6 +390,7 @@ PYBIND11_MODULE(_lagrange, m)
             py::arg("method") = py::none(), py::arg("tolerance") = py::none(), py::arg("estimate_error") = true,
             py::arg("native") = true, py::arg("max_terms") = lagrange::budget_limits{}.max_terms,
             py::arg("max_seconds") = lagrange::budget_limits{}.max_seconds, py::arg("timings") = false,
+            py::arg("project_initial") = false,
             "Runs the engine and returns the document (json, text or latex) as a string.");
 
     m.def(

@@ -7,6 +7,7 @@
 #include "algebra/canonical_order.h"
 #include "algebra/expression.h"
 #include "algebra/factor.h"
+#include "algebra/pythagorean.h"
 
 #include <cmath>
 #include <map>
@@ -135,7 +136,10 @@ bool vanishes(const ex& e)
     if (e.is_zero())
         return true;
     ex expanded = e.expand();
-    return expanded.is_zero() || expanded.normal().is_zero();
+    if (expanded.is_zero() || pythagorean(expanded).is_zero())
+        return true;
+    const ex fraction = expanded.normal();
+    return fraction.is_zero() || pythagorean(fraction.numer().expand()).is_zero();
 }
 
 bool is_zero_matrix(const GiNaC::matrix& m)
@@ -153,9 +157,10 @@ ex tidy(const ex& e)
         budget_check(); // GiNaC's normal and factor can take long: a checkpoint before each
         ex fraction = canonical_numer_denom(e);
         budget_check();
-        ex numerator = factor_if_quick(fraction.op(0));
+        // sin² th0 + cos² th0 = 1 first (algebra/pythagorean.h): factors then see the shorter form
+        ex numerator = factor_if_quick(pythagorean(fraction.op(0)));
         budget_check();
-        return numerator / factor_if_quick(fraction.op(1));
+        return numerator / factor_if_quick(pythagorean(fraction.op(1)));
     } catch (const budget_exceeded&) {
         throw; // out of budget: the stage stops, no fallback
     } catch (const std::exception&) {

@@ -8,6 +8,7 @@
 #include "algebra/expression.h"
 #include "algebra/factor.h"
 #include "algebra/harmonic.h"
+#include "algebra/pythagorean.h"
 
 #include <cln/integer.h>
 
@@ -358,11 +359,14 @@ GiNaC::ex collect_compact(const harmonic_polynomial& p, const GiNaC::lst& variab
     return collect_compact(to_ex(p), variables, angles);
 }
 
-GiNaC::ex simplifier::canonical(const GiNaC::ex& e) const { return trig_canonical(e, angles); }
+// Sines of parameter angles (th0) are atoms of the canonical form: sin² th0 + cos² th0 = 1
+// is applied after it, where it shortens a sum, and again after the grouping, which can
+// gather such a sum into one coefficient.
+GiNaC::ex simplifier::canonical(const GiNaC::ex& e) const { return pythagorean(trig_canonical(e, angles)); }
 
 GiNaC::ex simplifier::compact(const GiNaC::ex& canonical_form) const
 {
-    return collect_compact(rewrite(canonical_form, rules), variables, angles);
+    return pythagorean(collect_compact(rewrite(canonical_form, rules), variables, angles));
 }
 
 GiNaC::ex simplifier::compact(const harmonic_polynomial& canonical_form) const
@@ -405,7 +409,7 @@ GiNaC::ex simplifier::compact_harmonic(const harmonic_polynomial& canonical_form
     }
     if (!screen.may_fire(atoms, term_atoms))
         if (std::optional<ex> grouped = collect_compact_harmonic(canonical_form, variables, angles))
-            return *grouped;
+            return pythagorean(*grouped);
     return compact(to_ex(canonical_form));
 }
 

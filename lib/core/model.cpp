@@ -6,6 +6,21 @@
 
 namespace lagrange {
 
+void initial_state::merge(const initial_state& later)
+{
+    for (const auto& [name, value] : later.positions)
+        positions[name] = value;
+    for (const auto& [name, value] : later.velocities)
+        velocities[name] = value;
+    for (const auto& [name, value] : later.others)
+        others[name] = value;
+    for (const auto& [name, written] : later.position_written)
+        position_written[name] = written;
+    for (const auto& [name, written] : later.velocity_written)
+        velocity_written[name] = written;
+    statement = later.statement;
+}
+
 const std::vector<std::pair<product, std::string>>& product_names()
 {
     static const std::vector<std::pair<product, std::string>> names = {

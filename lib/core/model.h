@@ -191,11 +191,23 @@ struct value_point {
     std::vector<std::pair<std::string, GiNaC::ex>> inputs;
 };
 
+/// Where a statement or value was written, with the text of its line: an error found
+/// later (an initial state off the constraints, at simulation) points there with a caret.
+struct written_at {
+    source_location where;
+    std::string line_text;
+};
+
 /// `initial q = 0.1, q' = 0`: entries not named are 0.
 struct initial_state {
     std::map<std::string, GiNaC::ex> positions;  ///< by coordinate name
     std::map<std::string, GiNaC::ex> velocities; ///< by coordinate name
     std::map<std::string, GiNaC::ex> others;     ///< e.g. body angular velocities
+    /// Where each position's and velocity's value was written (a scene line or --initial).
+    std::map<std::string, written_at> position_written, velocity_written;
+    written_at statement; ///< the last `initial` line or --initial that gave entries
+    /// The entries `later` gives replace these (an --initial after the scene's line).
+    void merge(const initial_state& later);
 };
 
 /// `simulate until T_end [step dt] [method NAME] [tolerance tol]`.
@@ -204,6 +216,7 @@ struct simulation_request {
     std::optional<GiNaC::ex> step;
     std::string method = "auto";
     std::optional<GiNaC::ex> tolerance;
+    written_at statement;
 };
 
 /// The products a scene can ask for (§4 of the spec), in the spec's order.

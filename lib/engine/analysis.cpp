@@ -386,9 +386,6 @@ const std::vector<stage_definition>& stage_table()
          "small oscillations", "symbolic modes", refuses_constraints("`asymptotic`"), true, true},
         {stage_id::damping, "damping", {product::damping}, {}, {stage_id::linearization}, has_static_point,
          [](stage_context& c) {
-             if (c.result.linearization->has_gyroscopic())
-                 throw computation_error("damped small oscillations with gyroscopic terms (G ≠ 0) are not "
-                                         "computed");
              c.result.damping = damped_oscillations(c.scene, *c.result.linearization, c.simplifier_for_scene(),
                                                     c.result.modes ? &*c.result.modes : nullptr);
          }, "small oscillations", "small oscillations", refuses_constraints("`damping`")},

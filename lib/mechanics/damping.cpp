@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file damping.cpp
- *  The damping matrix, det(K + sC + s²M) and its closed forms, proportional damping. */
+ *  The damping matrix, det(K + s(C − G) + s²M) and its closed forms, proportional damping. */
 #include "mechanics/damping.h"
 #include "core/names.h"
 
@@ -178,7 +178,9 @@ damping_result damped_oscillations(const model& scene, const linearization_resul
     GiNaC::matrix pencil(n, n);
     for (unsigned i = 0; i < n; ++i)
         for (unsigned j = 0; j < n; ++j)
-            pencil(i, j) = linear.potential(i, j) + s * result.damping(i, j) + s * s * linear.kinetic(i, j);
+            pencil(i, j) = linear.potential(i, j) + s * (result.damping(i, j) - linear.gyroscopic(i, j)) +
+                           s * s * linear.kinetic(i, j);
+    result.gyroscopic = linear.has_gyroscopic();
     std::vector<ex> coefficients = primitive_determinant(pencil, s);
     for (std::size_t k = 0; k < coefficients.size(); ++k)
         result.polynomial += coefficients[k] * GiNaC::pow(s, static_cast<int>(k));
@@ -187,7 +189,10 @@ damping_result damped_oscillations(const model& scene, const linearization_resul
         result.factors = std::move(*factors);
     }
 
-    // Proportional (classical) damping: C M⁻¹ K symmetric, i.e. C M⁻¹ K = K M⁻¹ C.
+    // Proportional (classical) damping: C M⁻¹ K symmetric, i.e. C M⁻¹ K = K M⁻¹ C. With G
+    // the undamped modes are complex already: the notion does not apply.
+    if (result.gyroscopic)
+        return result;
     GiNaC::matrix inverse_mass = linear.kinetic.inverse();
     GiNaC::matrix left = result.damping.mul(inverse_mass).mul(linear.potential);
     GiNaC::matrix right = linear.potential.mul(inverse_mass).mul(result.damping);

@@ -37,7 +37,10 @@ struct damped_factor {
 struct damping_result {
     GiNaC::matrix damping;        ///< C_ij = −∂Q_i/∂q̇_j at the equilibrium, at rest, inputs 0 [E·τ/(q_i q_j)]
     GiNaC::possymbol s;           ///< named "s" unless the scene uses that name [1/τ]
-    GiNaC::ex polynomial;         ///< det(K + sC + s²M) made primitive (leading coefficient positive)
+    GiNaC::ex polynomial;         ///< det(K + s(C − G) + s²M) made primitive (leading coefficient positive)
+    /// G ≠ 0 (a part of L linear in the velocities): the polynomial holds it, as the
+    /// equations T q̈ + (C − G) q̇ + K q = 0 do; there is then no proportional damping.
+    bool gyroscopic = false;
     bool closed_form = false;     ///< every factor has degree ≤ 2 in s
     std::vector<damped_factor> factors; ///< when closed_form, in a fixed order
     /// C M⁻¹ K = K M⁻¹ C (Caughey–O'Kelly): the undamped mode shapes diagonalize C too.
@@ -48,7 +51,8 @@ struct damping_result {
 };
 
 /// C, the characteristic polynomial in s and its closed forms at the linearization's
-/// equilibrium; `modes` (when given, with closed forms) gives the modal damping ratios.
+/// equilibrium (with the gyroscopic matrix G where L has one); `modes` (when given, with
+/// closed forms, and G = 0) gives the modal damping ratios.
 damping_result damped_oscillations(const model& scene, const linearization_result& linear,
                                    const simplifier& simplify, const modes_result* modes = nullptr);
 

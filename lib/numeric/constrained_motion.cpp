@@ -6,6 +6,7 @@
 #include "algebra/calculus.h"
 #include "numeric/compiled_motion.h"
 #include "numeric/values.h"
+#include "core/number_text.h"
 
 #include <Eigen/Dense>
 
@@ -100,12 +101,17 @@ void constrained_motion::solve(double t, const double* x, double* acceleration, 
             multipliers[k] = solution[n + k];
 }
 
-double constrained_motion::residual(double t, const double* x) const
+std::vector<double> constrained_motion::residuals(double t, const double* x) const
 {
     std::vector<double> values(2 * m_);
     evaluate(residuals_, t, x, values.data());
+    return values;
+}
+
+double constrained_motion::residual(double t, const double* x) const
+{
     double largest = 0;
-    for (double v : values)
+    for (double v : residuals(t, x))
         largest = std::max(largest, std::abs(v));
     return largest;
 }
@@ -158,6 +164,64 @@ ode_system constrained_motion::system() const
     return s;
 }
 
+namespace {
+
+/// The bad input of an initial state `given` off the constraints: located at the written
+/// value that the projection (`projected`, null when it did not converge) moves most, else
+/// at the `initial` line, else at the `simulate` line; it names each constraint missed and
+/// by how much, and suggests the projected state as an `initial` line.
+scene_error off_constraints(const model& scene, const constrained_motion& motion, const std::vector<double>& given,
+                            const std::vector<double>* projected, double tolerance)
+{
+    const std::size_t n = motion.coordinates(), m = motion.constraints();
+    const std::vector<double> residuals = motion.residuals(0, given.data());
+    std::string missed;
+    for (std::size_t k = 0; k < m; ++k) {
+        const double position = std::abs(residuals[k]), velocity = std::abs(residuals[m + k]);
+        if (position > tolerance)
+            missed += (missed.empty() ? "`" : ", `") + scene.constraints[k].name + "` by " + message_number(position, 3);
+        else if (velocity > tolerance)
+            missed += (missed.empty() ? "`" : ", `") + scene.constraints[k].name + "` by " +
+                      message_number(velocity, 3) + " in the velocities";
+    }
+    std::string message = "the initial state is off the constraints (" + missed + ")";
+    if (projected) {
+        std::string line;
+        for (std::size_t i = 0; i < 2 * n; ++i)
+            if (i < n || (*projected)[i] != 0)
+                line += (line.empty() ? "" : ", ") + scene.coordinates[i % n].name + (i < n ? "" : "'") + " = " +
+                        round_trip((*projected)[i]);
+        message += "; projected onto them by least change it is `initial " + line +
+                   "`: start from a state on the constraints, or pass --project-initial (Python: "
+                   "project_initial=True) to start from the projected one";
+    } else {
+        message += ", and projecting it onto them by least change does not converge: start from a state on the "
+                   "constraints";
+    }
+    written_at at{{scene.file, 1, 1}, ""};
+    if (scene.simulation)
+        at = scene.simulation->statement;
+    if (scene.initial) {
+        at = scene.initial->statement;
+        double moved = -1;
+        for (std::size_t i = 0; i < 2 * n; ++i) {
+            const auto& written = i < n ? scene.initial->position_written : scene.initial->velocity_written;
+            auto found = written.find(scene.coordinates[i % n].name);
+            const double change = projected ? std::abs((*projected)[i] - given[i]) : 0;
+            if (found != written.end() && change > moved) {
+                moved = change;
+                at = found->second;
+            }
+        }
+    }
+    scene_error error(at.where, message);
+    if (!at.line_text.empty())
+        error.attach_line_text(at.line_text);
+    return error;
+}
+
+} // namespace
+
 simulation_result simulate_constrained(const model& scene, const equations_of_motion& equations,
                                        const simulation_settings& settings)
 {
@@ -192,11 +256,18 @@ simulation_result simulate_constrained(const model& scene, const equations_of_mo
     }
     result.method = to_string(method);
 
+    // A state off the constraints is not the motion the user wrote: run from it only when
+    // asked to project it, and then say where it was moved to.
     std::vector<double> x0 = initial_state_vector(scene, result.values);
     const double initial_residual = motion.residual(0, x0.data());
     if (initial_residual > result.tolerance) {
-        result.initial_residual = initial_residual;
+        const std::vector<double> given = x0;
         motion.project(0, x0.data());
+        const bool converged = motion.residual(0, x0.data()) <= result.tolerance;
+        if (!settings.project_initial || !converged)
+            throw off_constraints(scene, motion, given, converged ? &x0 : nullptr, result.tolerance);
+        result.initial_residual = initial_residual;
+        result.projected_initial = x0;
     }
     double output_step = until / 1000;
     if (scene.simulation && scene.simulation->step)

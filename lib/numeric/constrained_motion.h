@@ -35,6 +35,8 @@ public:
     void solve(double t, const double* x, double* acceleration, double* multipliers) const;
     /// The largest |f| of a holonomic constraint and |Σ a q̇ + b| of every constraint at (t, x).
     double residual(double t, const double* x) const;
+    /// Each holonomic f (0 for a Pfaffian row), then each A q̇ + b, at (t, x).
+    std::vector<double> residuals(double t, const double* x) const;
     /// Moves x onto the constraints: q by minimum-norm Newton steps on the holonomic ones,
     /// then q̇ by the least change that satisfies A q̇ + b = 0.
     void project(double t, double* x) const;
@@ -52,7 +54,10 @@ private:
     mutable std::vector<double> scratch_, symbols_, outputs_;
 };
 
-/// Simulates a scene with constraints (see above).
+/// Simulates a scene with constraints (see above). An initial state off the constraints
+/// (by more than the tolerance) is a scene_error at the value the least-change projection
+/// moves most, naming the residuals and suggesting the projected state; with
+/// settings.project_initial the run starts from the projected state instead.
 simulation_result simulate_constrained(const model& scene, const equations_of_motion& equations,
                                        const simulation_settings& settings = {});
 

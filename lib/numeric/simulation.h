@@ -24,6 +24,9 @@ struct simulation_settings {
     std::optional<std::string> method; ///< overrides the scene's method ("auto" picks)
     std::optional<double> tolerance;  ///< overrides the scene's tolerance (default 1e-9)
     bool estimate_error = true;       ///< also run at tolerance/1000 to estimate the error
+    /// An initial state off the constraints is an error (a scene_error at its value) unless
+    /// this asks to move it onto them by least change (`--project-initial`).
+    bool project_initial = false;
     double max_seconds = 120;
     /// Compile the equations to machine code with the system's C compiler (one compilation,
     /// then faster evaluations than the interpreter's); the default. Without a
@@ -95,6 +98,7 @@ struct simulation_result {
     /// Scenes with constraints: the largest residual of the constraints before each projection.
     std::optional<double> constraint_residual;
     std::optional<double> initial_residual;   ///< of the `initial` state, when it was projected
+    std::optional<std::vector<double>> projected_initial; ///< (q, q̇) it was projected to
     std::vector<constraint_event> constraint_events;
 };
 

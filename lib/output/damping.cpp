@@ -58,6 +58,12 @@ std::string regime_text(const damped_factor& f, syntax s)
                  : "underdamped if " + d + " > 0, critical if = 0, overdamped if < 0";
 }
 
+/// "C" or, with a gyroscopic matrix, "(C − G)": the velocity term of det(K + s·… + s²M).
+std::string velocity_matrix(const damping_result& damping, syntax s)
+{
+    return damping.gyroscopic ? (s == syntax::latex ? "(C - G)" : "(C − G)") : "C";
+}
+
 } // namespace
 
 void write_damping_text(std::ostream& out, const model& scene, const damping_result& damping)
@@ -71,7 +77,8 @@ void write_damping_text(std::ostream& out, const model& scene, const damping_res
             out << (j ? ", " : "") << print(damping.damping(i, j), s);
         out << "]\n";
     }
-    out << "  det(K + " << print_name(damping.s.get_name(), s) << "C + " << print_name(damping.s.get_name(), s)
+    out << "  det(K + " << print_name(damping.s.get_name(), s) << velocity_matrix(damping, s) << " + "
+        << print_name(damping.s.get_name(), s)
         << "²M) = " << print(damping.polynomial, s, s_order(damping)) << " = 0\n";
     if (!damping.closed_form)
         out << "  roots: no closed form (a factor of degree above 2)\n";
@@ -90,6 +97,8 @@ void write_damping_text(std::ostream& out, const model& scene, const damping_res
                 out << (k ? ", " : " ") << print(damping.modal_damping_ratios[k], s);
         }
         out << '\n';
+    } else if (damping.gyroscopic) {
+        out << "  with the gyroscopic matrix G the damped modes are complex\n";
     } else {
         out << "  damping not proportional: the damped modes are complex\n";
     }
@@ -101,7 +110,8 @@ void write_damping_latex(std::ostream& out, const model& scene, const damping_re
     const syntax s = syntax::latex;
     const std::string variable = print_name(damping.s.get_name(), s);
     out << "\\subsection*{Damping}\n\\begin{align*}\nC &= " << latex_matrix(damping.damping) << "\n\\end{align*}\n";
-    out << "Characteristic polynomial $\\det(K + " << variable << "C + " << variable << "^{2}M)$:\n"
+    out << "Characteristic polynomial $\\det(K + " << variable << velocity_matrix(damping, s) << " + " << variable
+        << "^{2}M)$:\n"
         << latex_equation("", print_terms(damping.polynomial, s, s_order(damping)), " = 0");
     if (!damping.closed_form)
         out << "No closed form of the roots (a factor of degree above 2).\n";
@@ -121,6 +131,8 @@ void write_damping_latex(std::ostream& out, const model& scene, const damping_re
             out << "$";
         }
         out << ".\n\n";
+    } else if (damping.gyroscopic) {
+        out << "With the gyroscopic matrix $G$ the damped modes are complex.\n\n";
     } else {
         out << "The damping is not proportional: the damped modes are complex.\n\n";
     }
@@ -141,6 +153,7 @@ void write_damping_json(nlohmann::ordered_json& doc, const model& scene, const d
     nlohmann::ordered_json characteristic;
     characteristic["variable"] = damping.s.get_name();
     characteristic["polynomial"] = print(damping.polynomial, s, s_order(damping));
+    characteristic["gyroscopic"] = damping.gyroscopic; // det(K + s(C − G) + s²M) when true
     if (damping.closed_form) {
         nlohmann::ordered_json factors = nlohmann::ordered_json::array();
         for (const damped_factor& f : damping.factors) {
@@ -336,7 +349,7 @@ void write_damping_section(report_writer& w)
         w.latex("\n");
         w.display_matrix("C", d.damping);
         w.text("With ").latex("$q \\propto e^{" + s + "t}$").text(" the characteristic polynomial is ");
-        w.latex("$\\det(K + " + s + "C + " + s + "^{2}M)$:\n");
+        w.latex("$\\det(K + " + s + velocity_matrix(d, syntax::latex) + " + " + s + "^{2}M)$:\n");
         w.display_terms("", print_terms(d.polynomial, syntax::latex, term_order{{{d.s}}}), " = 0");
         if (!d.closed_form) {
             w.text("It has a factor of degree above 2, so its roots are given numerically below.");
@@ -376,6 +389,8 @@ void write_damping_section(report_writer& w)
                 w.latex("$" + ratios + "$");
             }
             w.text(".");
+        } else if (d.gyroscopic) {
+            w.text("With the gyroscopic matrix G the damped modes are complex.");
         } else {
             w.text("The damping is not proportional (")
                 .latex("$C M^{-1} K \\ne K M^{-1} C$")

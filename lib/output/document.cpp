@@ -234,6 +234,8 @@ void write_text(std::ostream& out, const analysis& result, const document_option
         out << scene.title << "\n\n";
     out << "coordinates: " << join_names(coordinate_names(scene), syntax::text, ", ") << '\n';
     out << "parameters:  " << join_names(parameter_names(scene), syntax::text, ", ") << '\n';
+    if (result.simulation) // a state the user did not write comes first, not buried in the run
+        write_projected_initial_text(out, *result.simulation);
     for (const family_writers& family : families())
         if (family.text)
             family.text(out, result, options);

@@ -16,6 +16,9 @@
 namespace lagrange {
 
 /// Run times are printed only when `timings` is set (they differ from run to run).
+/// The state an initial state off the constraints was projected to (`--project-initial`),
+/// for the top of the text document; nothing when it was not projected.
+void write_projected_initial_text(std::ostream& out, const simulation_result& s);
 void write_simulation_text(std::ostream& out, const simulation_result& s, bool timings);
 void write_workprecision_text(std::ostream& out, const workprecision_result& w);
 void write_simulation_latex(std::ostream& out, const simulation_result& s, bool timings);

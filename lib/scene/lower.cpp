@@ -523,7 +523,9 @@ private:
             if (target.count(name))
                 throw scene_error(a.target.where, "`" + name + (a.velocity ? "'" : "") + "` is given twice");
             target[name] = constant_value(*a.value, "an initial value");
+            (a.velocity ? state.velocity_written : state.position_written)[name] = {a.value->where, source_.line(a.value->where.line)};
         }
+        state.statement = {s.where, source_.line(s.where.line)};
         return state;
     }
 
@@ -540,6 +542,7 @@ private:
         if (scene_.simulation)
             throw scene_error(s.where, "`simulate` is given twice");
         simulation_request r;
+        r.statement = {s.where, source_.line(s.where.line)};
         r.until = positive_constant(*s.value, "the end time");
         if (s.step) {
             r.step = positive_constant(*s.step, "the step");
@@ -777,17 +780,17 @@ void add_values(model& scene, const std::string& text, const std::string& origin
 
 void add_initial(model& scene, const std::string& text, const std::string& origin)
 {
-    lower_option(scene, origin, "initial", text, "give initial values as `theta=0.1, phi'=0`",
+    const std::string keyword = "initial"; // lower_option reads `initial TEXT`
+    lower_option(scene, origin, keyword, text, "give initial values as `theta=0.1, phi'=0`",
                  [&](lowering& lower, const statement& s) {
-                     const initial_state given = lower.initial_line(s);
-                     initial_state state = scene.initial.value_or(initial_state{});
-                     for (const auto& [name, value] : given.positions)
-                         state.positions[name] = value;
-                     for (const auto& [name, value] : given.velocities)
-                         state.velocities[name] = value;
-                     for (const auto& [name, value] : given.others)
-                         state.others[name] = value;
-                     scene.initial = state;
+                     initial_state given = lower.initial_line(s);
+                     // Where the values were written, in the option's own text (without the keyword).
+                     for (auto* written : {&given.position_written, &given.velocity_written})
+                         for (auto& [name, at] : *written)
+                             at = {{origin, at.where.line, at.where.column - static_cast<int>(keyword.size() + 1)}, text};
+                     given.statement = {{origin, 1, 1}, text};
+                     scene.initial = scene.initial.value_or(initial_state{});
+                     scene.initial->merge(given);
                  });
 }
 

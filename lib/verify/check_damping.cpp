@@ -250,7 +250,8 @@ std::vector<verification_entry> verify_damping(const model& scene, const lineari
         std::optional<Eigen::MatrixXd> symbolic = matrix_at(damping.damping, parameters);
         std::optional<Eigen::MatrixXd> mass = matrix_at(linear.kinetic, parameters);
         std::optional<Eigen::MatrixXd> stiffness = matrix_at(linear.potential, parameters);
-        if (q0.size() != n || !symbolic || !mass || !stiffness)
+        std::optional<Eigen::MatrixXd> gyroscopic = matrix_at(linear.gyroscopic, parameters);
+        if (q0.size() != n || !symbolic || !mass || !stiffness || !gyroscopic)
             continue;
         std::optional<Eigen::MatrixXd> beside = damping_beside(scene, parameters, q0);
         if (!beside)
@@ -267,12 +268,13 @@ std::vector<verification_entry> verify_damping(const model& scene, const lineari
                          "C(" + scene.coordinates[i].name + ", " + scene.coordinates[j].name + ")", where, here,
                          there);
             }
-        // p(s)/det(K + sC + s²M) is the same at every s (the factor removed to make p primitive).
+        // p(s)/det(K + s(C − G) + s²M) is the same at every s (the factor removed to make p
+        // primitive); C from the differences beside the equilibrium, G as linearized.
         std::optional<complex> ratio;
         int compared = 0;
         for (int k = 0; compared < static_cast<int>(2 * n) + 2 && k < 8 * static_cast<int>(n) + 8; ++k) {
             const complex s(-0.3 + 0.125 * k, 0.375 + 0.25 * k);
-            const Eigen::MatrixXcd pencil = stiffness->cast<complex>() + s * reference.cast<complex>() +
+            const Eigen::MatrixXcd pencil = stiffness->cast<complex>() + s * (reference - *gyroscopic).cast<complex>() +
                                             (s * s) * mass->cast<complex>();
             const complex det = pencil.partialPivLu().determinant();
             const double scale = std::pow(stiffness->norm() + std::abs(s) * reference.norm() +
@@ -293,7 +295,7 @@ std::vector<verification_entry> verify_damping(const model& scene, const lineari
                     break;
             } else if (std::abs(r - *ratio) > tolerance * std::abs(*ratio)) {
                 fail("the damped characteristic polynomial",
-                     "|p(s)/det(K + sC + s²M)| at s = " + message_number(s.real()) + " + " +
+                     "|p(s)/det(K + s(C − G) + s²M)| at s = " + message_number(s.real()) + " + " +
                          message_number(s.imag()) + "i",
                      where, std::abs(r), std::abs(*ratio));
             }
@@ -312,7 +314,8 @@ std::vector<verification_entry> verify_damping(const model& scene, const lineari
              "beside the equilibrium" +
                  points,
              true},
-            {"damped_characteristic", "against det(K + sC + s²M) (LU) at " + std::to_string(2 * n + 2) +
+            {"damped_characteristic", std::string("against det(K + ") + (damping.gyroscopic ? "s(C − G)" : "sC") +
+                                          " + s²M) (LU) at " + std::to_string(2 * n + 2) +
                                           " complex s" + points,
              true}};
 }

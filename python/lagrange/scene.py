@@ -151,7 +151,8 @@ class Scene:
         "m=1,l=2" or a list of them, replacing the scene's `values` lines; ``initial``: a dict
         ``{"theta": 0.1, "theta'": 0}`` (or ``theta_dot``) or a string "theta=0.1, theta'=0",
         replacing the scene's `initial` entries it names. ``settings``: until, method,
-        tolerance, estimate_error, native, max_terms, max_seconds (as the command-line options)."""
+        tolerance, estimate_error, native, max_terms, max_seconds, project_initial (as the
+        command-line options)."""
         if isinstance(want, str):
             want = [want]
         _check_settings(settings)
@@ -277,15 +278,18 @@ class Scene:
         return ResultList(points)
 
     def simulate(self, until=None, method=None, tolerance=None, values=None, initial=None, estimate_error=True,
-                 native=True, **settings):
+                 native=True, project_initial=False, **settings):
         """Integrates the equations of motion from the scene's `initial` state: ``t`` (numpy),
         ``states`` ({name: numpy array}: each coordinate, then each ``q_dot``), ``y`` (all
         states as columns, in that order), ``method``, ``steps``, ``invariants`` and the rest
         of the JSON `simulation` object. ``until``, ``method``, ``tolerance`` override the
         scene's `simulate` line; ``initial`` (``{"theta": 0.1, "theta'": 0}``) the entries of
-        its `initial` line that it names; ``values`` its `values` lines."""
+        its `initial` line that it names; ``values`` its `values` lines. An initial state off
+        the constraints raises SceneError (with the projected state suggested) unless
+        ``project_initial=True``, which starts from it projected onto them by least change
+        (then ``projected_initial`` and ``initial_residual`` say where to and from how far)."""
         settings = dict(settings, until=until, method=method, tolerance=tolerance, estimate_error=estimate_error,
-                        native=native)
+                        native=native, project_initial=project_initial)
         settings = {k: v for k, v in settings.items() if v is not None}
         doc, c = self._parts("simulation", ["simulation"], values, settings, initial=initial)
         s = doc["simulation"]

@@ -272,6 +272,41 @@ TEST_CASE("cli: --initial sets the initial values as an initial line does, error
     CHECK(not_values.err.rfind("--initial:1:", 0) == 0);
 }
 
+TEST_CASE("cli: an initial state off the constraints exits with 2, projected only when asked", "[cli][initial]")
+{
+    // examples/ladder.lag starts on its constraints; x = y = 0 with θ = 0.3 is far off them.
+    // The error points at the value the projection moves most: y, from 0 to cos 0.3.
+    const std::string ladder = examples + "ladder.lag";
+    cli_result option = run_cli("simulate " + ladder + " --initial \"x=0, y=0, theta=0.3\"", "", 60);
+    CHECK(option.exit_code == 2);
+    CHECK(option.err.rfind("--initial:1:8: error: the initial state is off the constraints", 0) == 0);
+    CHECK(option.err.find("\nx=0, y=0, theta=0.3\n       ^\n") != std::string::npos);
+    CHECK(option.out.empty());
+    std::string text = read_file(ladder);
+    const std::string line = "initial x = sin(0.2), y = cos(0.2), theta = 0.2";
+    REQUIRE(text.find(line) != std::string::npos);
+    text.replace(text.find(line), line.size(), "initial theta = 0.3");
+    const std::string scene = temporary_file("ladder_off.lag", text);
+    for (const std::string& command : {"simulate " + scene, scene, scene + " --want simulation --format json"}) {
+        cli_result r = run_cli(command, "", 60);
+        CHECK(r.exit_code == 2);
+        CHECK(r.err.find("ladder_off.lag:16:17: error: the initial state is off the constraints") != std::string::npos);
+        CHECK(r.err.find("initial theta = 0.3\n                ^\n") != std::string::npos);
+    }
+    // --project-initial starts from the projected state, printed at the top of the output.
+    cli_result projected = run_cli("simulate " + scene + " --project-initial", "", 60);
+    REQUIRE(projected.exit_code == 0);
+    const std::size_t top = projected.out.find("initial state projected onto the constraints");
+    CHECK(top != std::string::npos);
+    CHECK(top < projected.out.find("Lagrangian"));
+    cli_result json = run_cli("simulate " + scene + " --project-initial --format json", "", 60);
+    REQUIRE(json.exit_code == 0);
+    nlohmann::json doc = nlohmann::json::parse(json.out)["simulation"];
+    CHECK(doc["initial_residual"].get<double>() == Approx(0.955336).epsilon(1e-5));
+    CHECK(doc["projected_initial"]["theta"].get<double>() == doc["states"]["theta"][0].get<double>());
+    CHECK(doc["projected_initial"]["y"].get<double>() == Approx(std::cos(0.3)).epsilon(1e-12));
+}
+
 TEST_CASE("cli: every command takes and honours --max-terms and --max-seconds", "[cli][budget]")
 {
     // The 10-link chain's characteristic polynomial takes far more than a second.

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -218,4 +219,48 @@ TEST_CASE("corpus: a simulation along a linearized mode at small amplitude follo
         ++compared;
     }
     CHECK(compared >= 10);
+}
+
+TEST_CASE("corpus: the damped characteristic polynomial vanishes at the numeric damped eigenvalues",
+          "[corpus][damping]")
+{
+    // Two routes to the damped eigenvalues: det(K + s(C − G) + s²M) derived symbolically,
+    // and the numeric quadratic eigenproblem through its first-order (companion) form.
+    int compared = 0;
+    for (const std::string& path : corpus()) {
+        INFO(path);
+        model scene = lagrange_test::load(lagrange_test::read_file(path));
+        if (!scene.has_generalized_forces() || !scene.constraints.empty() || scene.values.size() != 1)
+            continue;
+        std::optional<analysis> a;
+        try {
+            a = analyze(scene, {product::damping, product::numeric});
+        } catch (const computation_error&) {
+            continue; // no damped small oscillations here (forces that do not vanish at rest, t in L)
+        }
+        if (!a->damping || !a->numeric || a->numeric->size() != 1 || a->numeric->front().eigenvalues.empty())
+            continue;
+        GiNaC::exmap point;
+        const std::map<std::string, GiNaC::ex> values = merged_values(scene); // inputs too: left out
+        for (const parameter& q : scene.parameters)
+            if (values.count(q.name))
+                point[lagrange_test::symbol_of(scene, q.name)] = values.at(q.name);
+        const GiNaC::ex p = GiNaC::evalf(a->damping->polynomial.subs(point)).expand();
+        const GiNaC::ex& s = a->damping->s;
+        for (const std::complex<double>& root : a->numeric->front().eigenvalues) {
+            INFO("s = " << root.real() << " + " << root.imag() << "i");
+            std::complex<double> value = 0;
+            double scale = 0;
+            for (int k = p.degree(s); k >= 0; --k) {
+                const GiNaC::ex c = p.coeff(s, k);
+                REQUIRE(GiNaC::is_a<GiNaC::numeric>(c));
+                const double ck = GiNaC::ex_to<GiNaC::numeric>(c).to_double();
+                value = value * root + ck;
+                scale = scale * std::abs(root) + std::abs(ck);
+            }
+            CHECK(std::abs(value) <= 1e-9 * scale);
+        }
+        ++compared;
+    }
+    CHECK(compared >= 3);
 }

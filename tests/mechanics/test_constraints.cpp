@@ -406,10 +406,16 @@ initial y1 = -1.2, y2 = -1
 simulate until 1
 want simulation
 )");
-    analysis result = analyze(scene);
+    // Off the string by 0.2: an error by default (below), projected when asked (by least
+    // change: 0.1 each).
+    simulation_settings project;
+    project.project_initial = true;
+    analysis result = analyze(scene, {}, {}, project);
     const simulation_result& s = *result.simulation;
-    // The initial state is off the string by 0.2 and projected (by least change: 0.1 each).
     REQUIRE(s.initial_residual);
+    REQUIRE(s.projected_initial);
+    CHECK((*s.projected_initial)[0] == Approx(-1.1));
+    CHECK((*s.projected_initial)[1] == Approx(-0.9));
     CHECK(*s.initial_residual == Approx(0.2));
     CHECK(s.run.states.front()[0] == Approx(-1.1));
     // a = (m2 − m1) g/(m1 + m2) upward for m1, from rest: y1(1) = −1.1 + a/2.
@@ -417,6 +423,72 @@ want simulation
     CHECK(s.run.final_state[0] == Approx(-1.1 + a / 2).epsilon(1e-10));
     CHECK(s.run.final_state[0] + s.run.final_state[1] == Approx(-2).epsilon(1e-12));
     CHECK(s.constraint_events.empty());
+}
+
+TEST_CASE("constraints: an initial state off the constraints is an error at its value", "[constraints][simulation]")
+{
+    // The ladder given only θ(0) = 0.3: x = y = 0 is far off both constraints. The
+    // least-change projection moves x and y (here onto sin 0.3, cos 0.3), but another scene's
+    // may land far from what was meant: it is never done silently. The error points at the
+    // written value the projection moves most (θ, the only one written), names the
+    // constraints and their residuals, and suggests the projected state.
+    const std::string text = R"(parameters m l g
+coordinates x y theta
+T = 1/2*m*(x'^2 + y'^2) + 1/2*(m*l^2/12)*theta'^2
+V = m*g*y
+constraint wall: x = l/2*sin(theta)
+constraint floor: y = l/2*cos(theta)
+values m = 1, l = 2, g = 9.81
+initial theta = 0.3
+simulate until 0.2
+want simulation
+)";
+    model scene = load(text);
+    try {
+        analyze(scene);
+        FAIL("no error");
+    } catch (const scene_error& e) {
+        const std::string message = e.what();
+        INFO(message);
+        CHECK(e.where().line == 8);
+        CHECK(e.where().column == 17);
+        CHECK(e.has_line_text());
+        CHECK(e.line_text() == "initial theta = 0.3");
+        CHECK(message.find("`floor` by 0.955") != std::string::npos);
+        CHECK(message.find("`wall` by 0.296") != std::string::npos);
+        CHECK(message.find("`initial x = 0.2955202066613395") != std::string::npos);
+        CHECK(message.find("--project-initial") != std::string::npos);
+    }
+    // Asked to project, it starts from the projected state and says so.
+    simulation_settings project;
+    project.project_initial = true;
+    analysis result = analyze(scene, {}, {}, project);
+    REQUIRE(result.simulation);
+    REQUIRE(result.simulation->projected_initial);
+    const std::vector<double>& x0 = *result.simulation->projected_initial;
+    CHECK(x0[0] == Approx(std::sin(x0[2])).margin(1e-12)); // on the wall
+    CHECK(x0[1] == Approx(std::cos(x0[2])).margin(1e-12)); // on the floor
+    CHECK(x0[2] == Approx(0.3).epsilon(1e-12));
+    CHECK(*result.simulation->initial_residual == Approx(0.955336).epsilon(1e-5));
+    // A velocity off a velocity constraint is located at that velocity.
+    model rolling = load(R"(parameters m R
+coordinates x phi
+T = 1/2*m*x'^2 + 1/4*m*R^2*phi'^2
+constraint roll: x' = R*phi'
+values m = 1, R = 0.5
+initial x = 0, phi = 0, x' = 1, phi' = 0.1
+simulate until 0.2
+want simulation
+)");
+    try {
+        analyze(rolling);
+        FAIL("no error");
+    } catch (const scene_error& e) {
+        INFO(e.what());
+        CHECK(e.where().line == 6);
+        CHECK(e.where().column == 30); // the 1 of x' = 1
+        CHECK(std::string(e.what()).find("`roll` by 0.95") != std::string::npos);
+    }
 }
 
 TEST_CASE("constraints: a pendulum in Cartesian coordinates oscillates at g/l", "[constraints][linearization]")

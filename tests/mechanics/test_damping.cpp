@@ -11,6 +11,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <Eigen/Dense>
+
 #include <complex>
 
 using namespace lagrange;
@@ -155,10 +157,72 @@ TEST_CASE("damping: a scene with dissipation has `damping` among its default pro
     CHECK_FALSE(analyze(plain).damping);
 }
 
-TEST_CASE("damping: gyroscopic terms with damping are refused, not printed wrong", "[damping][errors]")
+TEST_CASE("damping: gyroscopic terms with damping enter the polynomial, in a default run too", "[damping]")
 {
+    // Isotropic: det(K + s(C − G) + s²M) = (m s² + c s + k)² + B² s², which det(K + sC + s²M)
+    // alone, (m s² + c s + k)², would get wrong. The default run computes and verifies it.
     model scene = load("parameters m k B c\ncoordinates x y\n"
                        "L = 1/2*m*(x'^2 + y'^2) + 1/2*B*(x*y' - y*x') - 1/2*k*(x^2 + y^2)\n"
-                       "dissipation F = 1/2*c*(x'^2 + y'^2)\n");
-    CHECK_THROWS_WITH(analyze(scene, {product::damping}), Catch::Contains("gyroscopic"));
+                       "dissipation F = 1/2*c*(x'^2 + y'^2)\nequilibrium x = 0, y = 0\n");
+    analysis a = analyze(scene);
+    REQUIRE(a.damping);
+    CHECK(a.damping->gyroscopic);
+    const GiNaC::ex s = a.damping->s, m = symbol_of(scene, "m"), k = symbol_of(scene, "k"),
+                    B = symbol_of(scene, "B"), c = symbol_of(scene, "c");
+    CHECK(same(a.damping->polynomial, GiNaC::pow(m * s * s + c * s + k, 2) + B * B * s * s));
+    REQUIRE(a.verification); // a failed check throws; this one was made
+    bool checked = false;
+    for (const verification_entry& entry : a.verification->entries)
+        checked = checked || (entry.item == "damped_characteristic" && entry.checked);
+    CHECK(checked);
+}
+
+TEST_CASE("damping: with a gyroscopic matrix, det(K + s(C − G) + s²M) and its roots are A's eigenvalues",
+          "[damping][gyroscopic]")
+{
+    // A charge in a magnetic field (G ≠ 0) with a damper on x: numeric, state_space and
+    // transfer handled it while `damping` refused. Its polynomial is checked against an
+    // independent route: the eigenvalues of state_space's A at the same values.
+    model scene = load(R"(parameters m k B c
+coordinates x y
+L = 1/2*m*(x'^2 + y'^2) + B/2*(x*y' - y*x') - 1/2*k*(x^2 + 2*y^2)
+dissipation F = 1/2*c*x'^2
+equilibrium x = 0, y = 0
+values m = 1, k = 1, B = 0.5, c = 0.2
+)");
+    analysis a = analyze(scene, {product::damping, product::state_space, product::numeric});
+    REQUIRE(a.damping);
+    REQUIRE(a.state_space);
+    const damping_result& d = *a.damping;
+    CHECK(d.gyroscopic);
+    CHECK_FALSE(d.proportional);
+    CHECK(d.modal_damping_ratios.empty());
+    // The closed form at the values: m²s⁴ + c m s³ + (3 k m + B²) s² + 2 c k s + 2 k².
+    GiNaC::exmap values{{symbol_of(scene, "m"), 1}, {symbol_of(scene, "k"), 1}, {symbol_of(scene, "B"), GiNaC::numeric(1, 2)},
+                        {symbol_of(scene, "c"), GiNaC::numeric(1, 5)}};
+    const GiNaC::ex p = d.polynomial.subs(values).expand();
+    REQUIRE(p.degree(d.s) == 4);
+    // Its roots against the eigenvalues of A (Eigen's EigenSolver on the 4 × 4 state matrix).
+    Eigen::Matrix4d A;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            A(i, j) = value_at(a.state_space->a(static_cast<unsigned>(i), static_cast<unsigned>(j)), values);
+    Eigen::EigenSolver<Eigen::Matrix4d> solver(A);
+    const GiNaC::ex leading = p.coeff(d.s, 4);
+    for (int k = 0; k < 4; ++k) {
+        const std::complex<double> s = solver.eigenvalues()[k];
+        GiNaC::exmap at{{d.s, GiNaC::numeric(s.real()) + GiNaC::I * GiNaC::numeric(s.imag())}};
+        const std::complex<double> residual = complex_value((p / leading).subs(at));
+        INFO("s = " << s.real() << " + " << s.imag() << "i");
+        CHECK(std::abs(residual) < 1e-12);
+    }
+    // And the numeric damped eigenvalues (the companion linearization) are the same four.
+    REQUIRE(a.numeric);
+    REQUIRE(a.numeric->front().eigenvalues.size() == 4);
+    for (const std::complex<double>& s : a.numeric->front().eigenvalues) {
+        double nearest = 1;
+        for (int k = 0; k < 4; ++k)
+            nearest = std::min(nearest, std::abs(s - std::complex<double>(solver.eigenvalues()[k])));
+        CHECK(nearest < 1e-12);
+    }
 }

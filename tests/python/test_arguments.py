@@ -128,3 +128,33 @@ def test_export_writes_the_python_module_and_refuses_a_bad_target(example, tmp_p
     with pytest.raises(ValueError, match="target must be"):
         example("double_pendulum.lag").export("fortran", tmp_path / "bad")
     assert not (tmp_path / "bad").exists()
+
+
+LADDER_OFF = """
+parameters m l g
+coordinates x y theta
+T = 1/2*m*(x'^2 + y'^2) + 1/2*(m*l^2/12)*theta'^2
+V = m*g*y
+constraint wall: x = l/2*sin(theta)
+constraint floor: y = l/2*cos(theta)
+values m = 1, l = 2, g = 9.81
+initial theta = 0.3
+simulate until 0.2
+"""
+
+
+def test_an_initial_state_off_the_constraints_is_a_scene_error_unless_projected():
+    """As the command line: an error at the value, with the projected state suggested;
+    ``project_initial=True`` starts from that state and says so, as --project-initial."""
+    scene = lagrange.Scene.from_text(LADDER_OFF, name="ladder.lag")
+    with pytest.raises(lagrange.SceneError) as error:
+        scene.simulate()
+    assert (error.value.file, error.value.line, error.value.column) == ("ladder.lag", 9, 17)
+    assert "project_initial=True" in str(error.value)
+    run = scene.simulate(project_initial=True)
+    assert run.projected_initial["y"] == pytest.approx(numpy.cos(0.3), rel=1e-12)
+    assert run.states["y"][0] == run.projected_initial["y"]
+    assert run.initial_residual == pytest.approx(0.955336, rel=1e-5)
+    cli = subprocess.run([CLI, "simulate", "-", "--project-initial", "--format", "json"], input=LADDER_OFF,
+                         capture_output=True, text=True, check=True)
+    assert json.loads(cli.stdout)["simulation"]["projected_initial"]["y"] == run.projected_initial["y"]
