@@ -47,7 +47,7 @@ void plot_phase_portrait(const std::string& path, const phase_portrait& portrait
     if (!portrait.separatrices.empty())
         body << "set cntrparam levels discrete " << level_list(portrait.separatrices) << "\n"
              << "set table 'separatrices.dat'\nsplot 'grid.dat' using 1:2:3 with lines\nunset table\n";
-    body << "unset contour\nset title " << gnuplot_string(title + "\nphase portrait of " + portrait.coordinate)
+    body << "unset contour\nset title " << gnuplot_string(title + ": phase portrait of " + portrait.coordinate)
          << " noenhanced\nset xlabel " << gnuplot_string(portrait.coordinate) << " noenhanced\nset ylabel "
          << gnuplot_string(portrait.coordinate + "'") << " noenhanced\n"
          << "set xrange [" << shortest(portrait.q_low) << ":" << shortest(portrait.q_high) << "]\n"

@@ -48,7 +48,7 @@ void plot_poincare(const std::string& path, const poincare_result& result, const
                            (s.direction > 0 ? ", " + q + "' > 0" : s.direction < 0 ? ", " + q + "' < 0" : "") +
                            ", energy " + shortest(result.energy);
     std::ostringstream body;
-    body << "set title " << gnuplot_string(title + "\n" + subtitle) << " noenhanced\n"
+    body << "set title " << gnuplot_string(title + ": " + subtitle) << " noenhanced\n"
          << "set xlabel " << gnuplot_string(result.coordinates[j]) << " noenhanced\n"
          << "set ylabel " << gnuplot_string(result.coordinates[j] + "'") << " noenhanced\n"
          << "set tics out\nunset key\nunset colorbox\n"
