@@ -50,8 +50,6 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
         frames.markers.push_back({p.name, real_value(at_values(p.mass, scene, values), "a point's mass"), true});
         for (const GiNaC::ex& x : three(p.position))
             outputs.push_back(at_values(x, scene, values));
-        if (p.position.size() > 2)
-            frames.dimensions = 3;
     }
     const std::size_t pivot = frames.markers.size();
     frames.markers.push_back({"pivot", 0, false});
@@ -63,8 +61,6 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
             frames.markers.push_back({"spring " + std::to_string(s + 1), 0, false});
             for (const GiNaC::ex& x : three(*end))
                 outputs.push_back(at_values(x, scene, values));
-            if (end->size() > 2)
-                frames.dimensions = 3;
         }
         frames.springs.push_back({frames.markers.size() - 2, frames.markers.size() - 1});
     }
@@ -105,6 +101,10 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
         if (motion.conservative())
             frames.energy_drift.push_back(motion.energy(run.states[f].data()) - h0);
     }
+    // Planar when no marker ever leaves z = 0 (the model may keep planar points in three components).
+    for (std::size_t k = 2; k < frames.positions.size(); k += 3)
+        if (frames.positions[k] != 0)
+            frames.dimensions = 3;
     if (!frames.energy_drift.empty()) {
         const double scale = std::max(std::abs(h0), 1e-300);
         for (double& d : frames.energy_drift)

@@ -78,6 +78,7 @@ TEST_CASE("poincare: Hénon–Heiles at E = 1/12 conserves the energy at every c
     settings.orbits = 16;
     settings.crossings = 60;
     settings.seed = 7;
+    settings.tolerance = 1e-10;
     settings.threads = 1;
     const lagrange::poincare_result one = section_of(scene, "x = 0, x' > 0", settings);
     settings.threads = 2;
@@ -95,7 +96,9 @@ TEST_CASE("poincare: Hénon–Heiles at E = 1/12 conserves the energy at every c
             const double h = (u * u + v * v) / 2 + (x * x + y * y) / 2 + x * x * y - y * y * y / 3;
             worst = std::max(worst, std::abs(h - settings.energy) / settings.energy);
         }
-    CHECK(worst <= 1e-9);
+    // The tolerance bounds the error of a span of a few periods; over 60 crossings (about 400
+    // time units, 60 periods) the energy drifts past it, by 2.7 times at tolerance 1e-9.
+    CHECK(worst <= 10 * settings.tolerance);
     CHECK(worst > 0); // measured, not assumed
     std::ostringstream a, b;
     lagrange::write_poincare_csv(a, one);
