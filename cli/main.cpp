@@ -9,6 +9,9 @@
 #include "output/export_code.h"
 #include "output/format.h"
 #include "output/ensemble_output.h"
+#include "output/animation_output.h"
+#include "output/phase_output.h"
+#include "output/poincare_output.h"
 #include "output/report.h"
 #include "output/response_output.h"
 #include "output/simulation.h"
@@ -428,6 +431,163 @@ int ensemble_command(const ensemble_options& options, const lagrange::budget_lim
     return exit_ok;
 }
 
+struct poincare_options {
+    std::string scene_path;
+    std::string section;
+    double energy = 0;
+    std::size_t orbits = lagrange::poincare_settings{}.orbits;
+    std::size_t crossings = lagrange::poincare_settings{}.crossings;
+    double until = lagrange::poincare_settings{}.until;
+    std::optional<double> tolerance;
+    std::uint64_t seed = 1;
+    std::size_t threads = 0;
+    std::string output;
+    bool interpret = false;
+    std::vector<std::string> values;
+};
+
+/// `lagrange poincare SCENE --section "q = 0, q' > 0" --energy E`: the crossings of many
+/// orbits at energy E, as CSV (standard output or -o FILE.csv) or a picture (-o FILE.svg|png|pdf).
+int poincare_command(const poincare_options& options, const lagrange::budget_limits& budget)
+{
+    const std::string& path = options.output;
+    const std::size_t dot = path.rfind('.');
+    const std::string extension = dot == std::string::npos ? "" : path.substr(dot);
+    const bool to_file = !path.empty() && path != "-", csv = !to_file || extension == ".csv";
+    if (!csv) {
+        try {
+            lagrange::plot_format_of(path);
+        } catch (const std::invalid_argument&) {
+            throw usage_error("`poincare -o` takes a file ending in .csv, .svg, .png or .pdf, not `" + path + "`");
+        }
+    }
+    lagrange::model scene = load_scene(options.scene_path, options.values, {}, budget.max_seconds);
+    const lagrange::poincare_section section = lagrange::parse_poincare_section(options.section, scene);
+    // The equilibria give the energy's minimum; a scene whose equilibria are not found still has a section.
+    lagrange::analysis result;
+    try {
+        result = lagrange::analyze(scene, {lagrange::product::equations, lagrange::product::equilibrium}, budget);
+    } catch (const lagrange::computation_error&) {
+        result = lagrange::analyze(scene, {lagrange::product::equations}, budget);
+    }
+    lagrange::poincare_settings settings;
+    settings.energy = options.energy;
+    settings.orbits = options.orbits;
+    settings.crossings = options.crossings;
+    settings.until = options.until;
+    if (options.tolerance)
+        settings.tolerance = *options.tolerance;
+    settings.seed = options.seed;
+    settings.threads = options.threads;
+    settings.native = !options.interpret;
+    lagrange::poincare_result section_result;
+    try {
+        section_result = lagrange::compute_poincare(scene, *result.equations,
+                                                    result.equilibria ? &*result.equilibria : nullptr, section, settings);
+    } catch (const lagrange::poincare_request_error& error) {
+        throw usage_error(error.what());
+    }
+    if (csv) {
+        std::ostringstream out;
+        lagrange::write_poincare_csv(out, section_result);
+        write_output(to_file ? path : "-", out.str());
+    } else {
+        lagrange::plot_poincare(path, section_result, plot_title(scene));
+    }
+    std::cerr << lagrange::poincare_summary_text(section_result);
+    return exit_ok;
+}
+
+struct phase_options {
+    std::string scene_path;
+    std::string coordinate;
+    std::size_t levels = lagrange::phase_settings{}.levels;
+    std::string output;
+    std::vector<std::string> values;
+};
+
+/// `lagrange phase SCENE [--coordinate q] -o FILE`: the phase portrait as a picture
+/// (FILE.svg|png|pdf) or its energy grid (FILE.csv).
+int phase_command(const phase_options& options, const lagrange::budget_limits& budget)
+{
+    const std::string& path = options.output;
+    const bool csv = path.size() > 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
+    if (!csv) {
+        try {
+            lagrange::plot_format_of(path);
+        } catch (const std::invalid_argument&) {
+            throw usage_error("`phase -o` takes a file ending in .svg, .png, .pdf or .csv, not `" + path + "`");
+        }
+    }
+    lagrange::model scene = load_scene(options.scene_path, options.values, {}, budget.max_seconds);
+    lagrange::phase_settings settings;
+    settings.levels = options.levels;
+    if (!options.coordinate.empty())
+        settings.coordinate = lagrange::phase_coordinate(options.coordinate, scene);
+    lagrange::analysis result;
+    try {
+        result = lagrange::analyze(scene, {lagrange::product::equations, lagrange::product::equilibrium}, budget);
+    } catch (const lagrange::computation_error&) {
+        result = lagrange::analyze(scene, {lagrange::product::equations}, budget);
+    }
+    const lagrange::phase_portrait portrait = lagrange::compute_phase_portrait(
+        scene, *result.equations, result.equilibria ? &*result.equilibria : nullptr, settings);
+    if (csv) {
+        std::ostringstream out;
+        lagrange::write_phase_csv(out, portrait);
+        write_output(path, out.str());
+    } else {
+        lagrange::plot_phase_portrait(path, portrait, plot_title(scene));
+    }
+    std::cerr << lagrange::phase_summary_text(portrait);
+    return exit_ok;
+}
+
+struct animate_options {
+    std::string scene_path;
+    std::string output;
+    double fps = 30;
+    double speed = 1;
+    double trail = 0;
+    std::string view;
+    std::optional<double> until;
+    std::optional<double> tolerance;
+    bool interpret = false;
+    std::vector<std::string> values;
+    std::vector<std::string> initial;
+};
+
+/// `lagrange animate SCENE -o FILE.html|mp4|gif`: the motion as a self-contained player or a video.
+int animate_command(const animate_options& options, const lagrange::budget_limits& budget)
+{
+    auto ends_with = [&](const std::string& suffix) {
+        const std::string& p = options.output;
+        return p.size() > suffix.size() && p.compare(p.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    const bool html = ends_with(".html"), video = ends_with(".mp4") || ends_with(".gif");
+    if (!html && !video)
+        throw usage_error("`animate -o` takes a file ending in .html, .mp4 or .gif, not `" + options.output + "`");
+    if (!lagrange::known_animation_view(options.view))
+        throw usage_error("--view takes xy, xz or 3d, not `" + options.view + "`");
+    lagrange::model scene = load_scene(options.scene_path, options.values, options.initial, budget.max_seconds);
+    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::equations}, budget);
+    lagrange::animation_settings settings;
+    settings.fps = options.fps;
+    settings.until = options.until;
+    if (options.tolerance)
+        settings.tolerance = *options.tolerance;
+    else if (scene.simulation && scene.simulation->tolerance)
+        settings.tolerance = lagrange::real_value(*scene.simulation->tolerance, "the scene's tolerance");
+    settings.native = !options.interpret;
+    lagrange::animation_view view{options.speed, options.trail, options.view};
+    if (video) {
+        lagrange::write_animation_video(options.output, {}, view); // says why before the work
+    }
+    const lagrange::animation_frames frames = lagrange::compute_animation(scene, *result.equations, settings);
+    write_output(options.output, lagrange::animation_html(frames, view, plot_title(scene)));
+    return exit_ok;
+}
+
 struct export_options {
     std::string scene_path;
     std::string target;
@@ -671,7 +831,73 @@ int run(int argc, char** argv)
     ensemble->add_flag("--interpret", ensemble_options.interpret,
                        "evaluate the equations with the interpreter (default: machine code by the system's C compiler)");
 
-    for (CLI::App* command : {report, simulate, workprecision, response, ensemble, exporter})
+    poincare_options poincare_options;
+    CLI::App* poincare = app.add_subcommand(
+        "poincare", "a Poincaré section: the crossings of many orbits at one energy, on all cores (docs/pictures.md)");
+    poincare->add_option("SCENE", poincare_options.scene_path, "the scene file (`-` for standard input)")->required();
+    poincare->add_option("--section", poincare_options.section, "the section: \"q = level\" or \"q = level, q' > 0\"")
+        ->required();
+    poincare->add_option("--energy", poincare_options.energy, "the energy of every orbit")
+        ->required()
+        ->check(finite_number);
+    poincare->add_option("--orbits", poincare_options.orbits, "orbits, each started on the section")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{10000000}))
+        ->capture_default_str();
+    poincare->add_option("--crossings", poincare_options.crossings, "crossings per orbit, at most (the start counts)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
+        ->capture_default_str();
+    poincare->add_option("--until", poincare_options.until, "the longest time of an orbit")
+        ->check(positive_number)
+        ->capture_default_str();
+    poincare->add_option("--tolerance", poincare_options.tolerance, "target of each orbit's relative error (default 1e-9)")
+        ->check(finite_number & CLI::Range(1e-14, 0.5));
+    poincare->add_option("--seed", poincare_options.seed, "seed of the orbits' starts (default 1)");
+    poincare->add_option("--threads", poincare_options.threads, "threads (default: all cores)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{4096}));
+    poincare->add_option("-o,--output", poincare_options.output,
+                         "FILE.csv, or a picture FILE.svg, FILE.png or FILE.pdf (default: CSV on standard output)");
+    poincare->add_option("--values", poincare_options.values,
+                         "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
+    poincare->add_flag("--interpret", poincare_options.interpret,
+                       "evaluate the equations with the interpreter (default: machine code by the system's C compiler)");
+
+    phase_options phase_options;
+    CLI::App* phase = app.add_subcommand(
+        "phase", "a phase portrait: q against q' over a grid of energies, with separatrices (docs/pictures.md)");
+    phase->add_option("SCENE", phase_options.scene_path, "the scene file (`-` for standard input)")->required();
+    phase->add_option("--coordinate", phase_options.coordinate, "the coordinate drawn (default: the first)");
+    phase->add_option("--levels", phase_options.levels, "energies drawn between the minimum and the top")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{200}))
+        ->capture_default_str();
+    phase->add_option("-o,--output", phase_options.output, "FILE.svg, FILE.png or FILE.pdf, or FILE.csv (the grid)")
+        ->required();
+    phase->add_option("--values", phase_options.values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
+
+    animate_options animate_options;
+    CLI::App* animate = app.add_subcommand(
+        "animate", "the motion as a self-contained HTML player (docs/pictures.md)");
+    animate->add_option("SCENE", animate_options.scene_path, "the scene file (`-` for standard input)")->required();
+    animate->add_option("-o,--output", animate_options.output, "FILE.html (or .mp4, .gif: with ffmpeg)")->required();
+    animate->add_option("--fps", animate_options.fps, "frames per second of simulated time")
+        ->check(positive_number & CLI::Range(0.1, 1000.0))
+        ->capture_default_str();
+    animate->add_option("--speed", animate_options.speed, "simulated time per second of playing")
+        ->check(positive_number)
+        ->capture_default_str();
+    animate->add_option("--trail", animate_options.trail, "seconds of path drawn behind each point")
+        ->check(finite_number & CLI::Range(0.0, 1e6))
+        ->capture_default_str();
+    animate->add_option("--view", animate_options.view, "xy, xz or 3d (default: xy for planar scenes, else 3d)");
+    animate->add_option("--until", animate_options.until, "the length in simulated time (default: the scene's `simulate until`)")
+        ->check(positive_number);
+    animate->add_option("--tolerance", animate_options.tolerance, "target of the relative error (default: the scene's, or 1e-9)")
+        ->check(finite_number & CLI::Range(1e-14, 0.5));
+    animate->add_option("--values", animate_options.values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
+    animate->add_option("--initial", animate_options.initial, initial_help);
+    animate->add_flag("--interpret", animate_options.interpret,
+                      "evaluate the equations with the interpreter (default: machine code by the system's C compiler)");
+
+    for (CLI::App* command : {report, simulate, workprecision, response, ensemble, exporter, poincare, phase, animate})
         add_budget_options(command);
 
     try {
@@ -700,6 +926,12 @@ int run(int argc, char** argv)
         return ensemble_command(ensemble_options, options.budget);
     if (exporter->parsed())
         return export_command(export_options, options.budget);
+    if (poincare->parsed())
+        return poincare_command(poincare_options, options.budget);
+    if (phase->parsed())
+        return phase_command(phase_options, options.budget);
+    if (animate->parsed())
+        return animate_command(animate_options, options.budget);
     if (options.scene_path.empty()) {
         std::cerr << app.help();
         return exit_bad_input;

@@ -39,17 +39,32 @@ count="${LAGRANGE_MAP_COUNT:-200}"
 "$lagrange" ensemble "$root/tests/scenes/ensemble_double_pendulum.lag" \
   --grid "theta=-3.1..3.1:$count, phi=-3.1..3.1:$count" --until 10 --measure flip_time \
   -o "$folder/ensemble_flip_map.png"
+# The pictures of motion (docs/pictures.md): Hénon–Heiles' sections at E = 1/12 and 1/8, the
+# double pendulum's section, its θ phase portrait and its player.
+hh="$root/tests/ensemble/scenes/henon_heiles.lag"
+dp="$root/tests/scenes/ensemble_double_pendulum.lag"
+"$lagrange" poincare "$hh" --section "x = 0, x' > 0" --energy 0.0833333333333333 --orbits 60 --crossings 300 \
+  -o "$folder/henon_heiles_section_12.png" 2>/dev/null
+"$lagrange" poincare "$hh" --section "x = 0, x' > 0" --energy 0.125 --orbits 60 --crossings 300 \
+  -o "$folder/henon_heiles_section_8.png" 2>/dev/null
+"$lagrange" poincare "$dp" --section "phi = 0, phi' > 0" --energy -15 --orbits 40 --crossings 200 \
+  -o "$folder/double_pendulum_section.png" 2>/dev/null
+"$lagrange" phase "$dp" --coordinate theta -o "$folder/double_pendulum_phase.svg" 2>/dev/null
+"$lagrange" animate "$examples/double_pendulum.lag" --trail 2 -o "$folder/double_pendulum.html"
 
 fail() { echo "error: $1" >&2; exit 1; }
 for pdf in double_pendulum_report bodies_report free_asymmetric_top_report; do
   head -c 5 "$folder/$pdf.pdf" | grep -q '%PDF-' || fail "$folder/$pdf.pdf is not a PDF"
 done
-for svg in beats workprecision damped_driven_oscillator_bode; do
+for svg in beats workprecision damped_driven_oscillator_bode double_pendulum_phase; do
   grep -q '<svg' "$folder/$svg.svg" || fail "no SVG drawn into $folder/$svg.svg"
 done
 grep -q 'resonance' "$folder/damped_driven_oscillator_bode.svg" || fail "the Bode diagram lacks its resonance peak"
 # beats.lag has two coordinates: two panels, each with its own axis label.
 grep -q 'θ' "$folder/beats.svg" && grep -q 'φ' "$folder/beats.svg" || fail "beats.svg lacks a panel per coordinate"
-[ "$(head -c 4 "$folder/ensemble_flip_map.png" | tail -c 3)" = PNG ] || fail "no PNG map drawn into $folder"
+for png in ensemble_flip_map henon_heiles_section_12 henon_heiles_section_8 double_pendulum_section; do
+  [ "$(head -c 4 "$folder/$png.png" | tail -c 3)" = PNG ] || fail "no PNG drawn into $folder/$png.png"
+done
+grep -q 'lagrangePlayer' "$folder/double_pendulum.html" || fail "no player written into $folder/double_pendulum.html"
 echo "wrote into $folder:"
-(cd "$folder" && ls -1 -- *.pdf *.svg *.png)
+(cd "$folder" && ls -1 -- *.pdf *.svg *.png *.html)

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file animation.h
+ *  The frames of an animation (`lagrange animate`): the scene's motion integrated once by
+ *  DOP853, read at evenly spaced times from its dense output, and turned into what is drawn:
+ *  the points (with their masses), the ends of the springs, the fixed pivot, and the rods —
+ *  pairs of these whose distance the motion keeps constant (a pendulum's string, a shared
+ *  body). The writers (output/animation_output.h) only draw what is here. */
+#pragma once
+
+#include "mechanics/equations_of_motion.h"
+#include "core/model.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lagrange {
+
+struct animation_settings {
+    double fps = 30;                ///< samples per unit of simulated time
+    std::optional<double> until;    ///< overrides the scene's `simulate until`
+    double tolerance = 1e-9;        ///< target of the relative error (per step ÷12, as simulate)
+    bool native = true;
+};
+
+struct animation_frames {
+    /// What is drawn at each frame, in order: the points, then the pivot (the origin) when a
+    /// rod holds a point to it, then the ends of each spring.
+    struct marker {
+        std::string name;
+        double mass = 0;     ///< points: their mass at the values; 0 for the others
+        bool point = false;  ///< a point mass (drawn as a disc)
+    };
+    std::vector<marker> markers;
+    struct link {
+        std::size_t a = 0, b = 0; ///< markers
+    };
+    std::vector<link> rods, springs;
+    std::size_t dimensions = 2;     ///< 2 when every position is planar, else 3
+    double step = 0;                ///< simulated time between frames (1/fps)
+    std::vector<double> times;
+    std::vector<double> positions;  ///< frame after frame: each marker's (x, y, z)
+    std::vector<double> energy_drift; ///< (h − h₀)/scale at each frame (empty: h is not conserved)
+    std::string method;             ///< the integrator's name
+    std::size_t steps = 0;
+    const double* at(std::size_t frame, std::size_t marker) const
+    {
+        return positions.data() + (frame * markers.size() + marker) * 3;
+    }
+};
+
+/// Throws computation_error for a scene with nothing to draw (no points), constraints, or no
+/// end time; the integration's own errors pass through.
+animation_frames compute_animation(const model& scene, const equations_of_motion& equations,
+                                   const animation_settings& settings);
+
+} // namespace lagrange

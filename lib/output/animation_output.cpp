@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file animation_output.cpp
+ *  The animation's HTML page (see animation_output.h). The player is written here, in plain
+ *  JavaScript on a 2-D canvas: it draws a few discs, lines and coils, which needs no library. */
+#include "output/animation_output.h"
+
+#include "core/number_text.h"
+#include "core/errors.h"
+#include "system/external.h"
+
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+namespace lagrange {
+
+namespace {
+
+/// Text safe inside HTML and inside a <script> element ("</" would end it).
+std::string html_escape(const std::string& text)
+{
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+const char* const player_script = R"JS(
+(function () {
+  "use strict";
+  const D = JSON.parse(document.getElementById("lagrange-data").textContent);
+  const canvas = document.getElementById("stage"), g = canvas.getContext("2d");
+  const slider = document.getElementById("time"), button = document.getElementById("play");
+  const speedBox = document.getElementById("speed"), viewBox = document.getElementById("view");
+  const clock = document.getElementById("clock");
+  const M = D.markers.length, F = D.times.length, T = D.times[F - 1];
+  let t = 0, playing = false, last = null, speed = D.speed, view = D.view, yaw = 0.6, pitch = 0.35;
+  slider.max = T; slider.step = D.step / 4;
+  speedBox.value = String(speed);
+  viewBox.value = view;
+  // The position of marker m at time t, between the two frames around it (linear).
+  function position(m, time) {
+    const s = Math.min(Math.max(time / D.step, 0), F - 1), f = Math.min(Math.floor(s), F - 2), u = s - f;
+    const a = (f * M + m) * 3, b = ((f + 1) * M + m) * 3, p = D.positions;
+    if (F < 2) return [p[m * 3], p[m * 3 + 1], p[m * 3 + 2]];
+    return [p[a] + u * (p[b] - p[a]), p[a + 1] + u * (p[b + 1] - p[a + 1]), p[a + 2] + u * (p[b + 2] - p[a + 2])];
+  }
+  function project(r) {
+    if (view === "xz") return [r[0], r[2]];
+    if (view === "3d") {
+      const x = Math.cos(yaw) * r[0] - Math.sin(yaw) * r[1], y = Math.sin(yaw) * r[0] + Math.cos(yaw) * r[1];
+      return [x, Math.cos(pitch) * r[2] - Math.sin(pitch) * y];
+    }
+    return [r[0], r[1]];
+  }
+  // The drawing's scale: every marker at every frame fits.
+  let box;
+  function fit() {
+    let lo = [Infinity, Infinity], hi = [-Infinity, -Infinity];
+    for (let f = 0; f < F; ++f)
+      for (let m = 0; m < M; ++m) {
+        if (!D.markers[m].name) continue;
+        const q = project(position(m, f * D.step));
+        lo = [Math.min(lo[0], q[0]), Math.min(lo[1], q[1])];
+        hi = [Math.max(hi[0], q[0]), Math.max(hi[1], q[1])];
+      }
+    const span = Math.max(hi[0] - lo[0], hi[1] - lo[1], 1e-9);
+    box = {cx: (lo[0] + hi[0]) / 2, cy: (lo[1] + hi[1]) / 2, scale: 0.8 * Math.min(canvas.width, canvas.height) / span};
+  }
+  function screen(r) {
+    const q = project(r);
+    return [canvas.width / 2 + (q[0] - box.cx) * box.scale, canvas.height / 2 - (q[1] - box.cy) * box.scale];
+  }
+  const heaviest = Math.max(...D.markers.map(m => m.mass), 1e-300);
+  function coil(a, b) {
+    const dx = b[0] - a[0], dy = b[1] - a[1], L = Math.hypot(dx, dy), turns = 12;
+    if (L === 0) return;
+    const nx = -dy / L, ny = dx / L, w = 6;
+    g.beginPath(); g.moveTo(a[0], a[1]);
+    for (let k = 1; k < 2 * turns; ++k) {
+      const u = (k + 0.5) / (2 * turns), side = k % 2 ? w : -w;
+      g.lineTo(a[0] + dx * u + nx * side, a[1] + dy * u + ny * side);
+    }
+    g.lineTo(b[0], b[1]); g.stroke();
+  }
+  function draw() {
+    g.clearRect(0, 0, canvas.width, canvas.height);
+    const at = [];
+    for (let m = 0; m < M; ++m) at.push(screen(position(m, t)));
+    if (D.trail > 0) {
+      g.strokeStyle = "rgba(31,119,180,0.35)"; g.lineWidth = 1.5;
+      for (let m = 0; m < M; ++m) {
+        if (!D.markers[m].point) continue;
+        g.beginPath();
+        const from = Math.max(0, t - D.trail);
+        for (let s = from; s < t; s += D.step / 2) { const q = screen(position(m, s)); s === from ? g.moveTo(q[0], q[1]) : g.lineTo(q[0], q[1]); }
+        g.lineTo(at[m][0], at[m][1]); g.stroke();
+      }
+    }
+    g.strokeStyle = "#444"; g.lineWidth = 3;
+    for (const r of D.rods) { g.beginPath(); g.moveTo(at[r[0]][0], at[r[0]][1]); g.lineTo(at[r[1]][0], at[r[1]][1]); g.stroke(); }
+    g.strokeStyle = "#2ca02c"; g.lineWidth = 2;
+    for (const s of D.springs) coil(at[s[0]], at[s[1]]);
+    for (let m = 0; m < M; ++m) {
+      const k = D.markers[m];
+      if (k.name === "pivot") { g.fillStyle = "#000"; g.fillRect(at[m][0] - 5, at[m][1] - 5, 10, 10); }
+      if (!k.point) continue;
+      g.fillStyle = "#d62728"; g.beginPath();
+      g.arc(at[m][0], at[m][1], 6 + 14 * Math.cbrt(k.mass / heaviest), 0, 2 * Math.PI); g.fill();
+    }
+    const f = Math.min(Math.round(t / D.step), F - 1);
+    clock.textContent = "t = " + t.toFixed(2) + (D.drift.length ? "   energy drift " + D.drift[f].toExponential(1) : "");
+    slider.value = t;
+  }
+  function frame(now) {
+    if (!playing) return;
+    if (last !== null) t += (now - last) / 1000 * speed;
+    last = now;
+    if (t >= T) { t = T; playing = false; button.textContent = "play"; }
+    draw();
+    if (playing) requestAnimationFrame(frame);
+  }
+  function play() { if (t >= T) t = 0; playing = true; last = null; button.textContent = "pause"; requestAnimationFrame(frame); }
+  function pause() { playing = false; button.textContent = "play"; }
+  function setTime(time) { t = Math.min(Math.max(Number(time), 0), T); draw(); }
+  button.onclick = () => (playing ? pause() : play());
+  slider.oninput = () => { pause(); setTime(slider.value); };
+  speedBox.onchange = () => { speed = Number(speedBox.value); };
+  viewBox.onchange = () => { view = viewBox.value; fit(); draw(); };
+  let drag = null;
+  canvas.onmousedown = e => { drag = [e.clientX, e.clientY]; };
+  window.onmouseup = () => { drag = null; };
+  canvas.onmousemove = e => {
+    if (!drag || view !== "3d") return;
+    yaw += (e.clientX - drag[0]) / 200; pitch += (e.clientY - drag[1]) / 200; drag = [e.clientX, e.clientY]; draw();
+  };
+  window.lagrangePlayer = { time: () => t, setTime, play, pause, playing: () => playing };
+  fit();
+  // #t=2.5: open paused at that time; otherwise play from the start.
+  const wanted = /(?:^#|&)t=([0-9.eE+-]+)/.exec(location.hash);
+  if (wanted && isFinite(Number(wanted[1]))) setTime(Number(wanted[1])); else { draw(); play(); }
+})();
+)JS";
+
+} // namespace
+
+void write_animation_video(const std::string& path, const animation_frames&, const animation_view&)
+{
+    if (!program_available("ffmpeg"))
+        throw computation_error("ffmpeg is not installed (Debian package ffmpeg), so `" + path +
+                                "` cannot be encoded: install it, or write the self-contained player with -o FILE.html");
+    throw computation_error("encoding `" + path + "` is not implemented in this version: write the self-contained "
+                            "player with -o FILE.html");
+}
+
+bool known_animation_view(const std::string& view)
+{
+    return view.empty() || view == "xy" || view == "xz" || view == "3d";
+}
+
+std::string animation_html(const animation_frames& frames, const animation_view& view, const std::string& title)
+{
+    // The data, numbers as the shortest decimals that read back as the same double.
+    std::ostringstream data;
+    data << "{\"step\":" << shortest(frames.step) << ",\"speed\":" << shortest(view.speed)
+         << ",\"trail\":" << shortest(view.trail) << ",\"view\":\""
+         << (view.view.empty() ? (frames.dimensions == 2 ? "xy" : "3d") : view.view) << "\",\"markers\":[";
+    for (std::size_t m = 0; m < frames.markers.size(); ++m)
+        data << (m ? "," : "") << "{\"name\":" << nlohmann::json(frames.markers[m].name).dump()
+             << ",\"mass\":" << shortest(frames.markers[m].mass)
+             << ",\"point\":" << (frames.markers[m].point ? "true" : "false") << "}";
+    data << "],\"rods\":[";
+    for (std::size_t r = 0; r < frames.rods.size(); ++r)
+        data << (r ? "," : "") << "[" << frames.rods[r].a << "," << frames.rods[r].b << "]";
+    data << "],\"springs\":[";
+    for (std::size_t s = 0; s < frames.springs.size(); ++s)
+        data << (s ? "," : "") << "[" << frames.springs[s].a << "," << frames.springs[s].b << "]";
+    data << "],\"times\":[";
+    for (std::size_t f = 0; f < frames.times.size(); ++f)
+        data << (f ? "," : "") << shortest(frames.times[f]);
+    data << "],\"positions\":[";
+    for (std::size_t k = 0; k < frames.positions.size(); ++k)
+        data << (k ? "," : "") << shortest(frames.positions[k]);
+    data << "],\"drift\":[";
+    for (std::size_t f = 0; f < frames.energy_drift.size(); ++f)
+        data << (f ? "," : "") << shortest(frames.energy_drift[f]);
+    data << "],\"method\":" << nlohmann::json(frames.method).dump() << "}";
+
+    std::ostringstream out;
+    out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << html_escape(title)
+        << "</title>\n<style>\nbody { font-family: sans-serif; margin: 1em; }\ncanvas { border: 1px solid #ccc; "
+           "display: block; }\n#controls { margin-top: 0.5em; display: flex; gap: 0.7em; align-items: center; }\n"
+           "#time { width: 420px; }\n#clock { font-family: monospace; }\n</style>\n</head>\n<body>\n<h3>"
+        << html_escape(title) << "</h3>\n<canvas id=\"stage\" width=\"640\" height=\"560\"></canvas>\n"
+        << "<div id=\"controls\"><button id=\"play\">play</button><input id=\"time\" type=\"range\" min=\"0\" "
+           "value=\"0\"><label>speed <select id=\"speed\"><option>0.25</option><option>0.5</option><option>1</option>"
+           "<option>2</option><option>4</option></select></label><label>view <select id=\"view\"><option>xy</option>"
+           "<option>xz</option><option>3d</option></select></label><span id=\"clock\"></span></div>\n"
+        << "<p>Drawn by lagrange from the simulation's dense output (" << html_escape(frames.method) << ", "
+        << frames.steps << " steps). Link to a moment with #t=2.5.</p>\n"
+        << "<script id=\"lagrange-data\" type=\"application/json\">" << data.str() << "</script>\n<script>"
+        << player_script << "</script>\n</body>\n</html>\n";
+    return out.str();
+}
+
+} // namespace lagrange

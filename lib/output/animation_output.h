@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file animation_output.h
+ *  An animation (numeric/animation.h) as one self-contained HTML page: the frames embedded
+ *  as JSON, drawn on a canvas by a small script (discs sized by mass, rods, springs as coils,
+ *  the pivot, trails, a clock and the energy drift), with play and pause, a time slider,
+ *  speed and view controls. No network: nothing is loaded from elsewhere. `#t=2.5` in the
+ *  address opens the page paused at t = 2.5. */
+#pragma once
+
+#include "numeric/animation.h"
+
+#include <string>
+
+namespace lagrange {
+
+struct animation_view {
+    double speed = 1;          ///< simulated time per second of playing
+    double trail = 0;          ///< seconds of simulated time drawn behind each point (0: none)
+    std::string view = "";     ///< "xy", "xz" or "3d" ("": xy for planar scenes, 3d otherwise)
+};
+
+/// The page. The data sits in `<script id="lagrange-data" type="application/json">`; the
+/// player is `window.lagrangePlayer` (time(), setTime(t), play(), pause(), playing()).
+std::string animation_html(const animation_frames& frames, const animation_view& view, const std::string& title);
+
+/// MP4 or GIF by ffmpeg. Throws computation_error saying so when ffmpeg is not on $PATH
+/// (Debian package ffmpeg); this version does not encode videos yet and says that too.
+void write_animation_video(const std::string& path, const animation_frames& frames, const animation_view& view);
+
+/// Whether `view` is one of "", "xy", "xz", "3d".
+bool known_animation_view(const std::string& view);
+
+} // namespace lagrange
