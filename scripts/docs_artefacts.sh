@@ -41,7 +41,7 @@ count="${LAGRANGE_MAP_COUNT:-200}"
   -o "$folder/ensemble_flip_map.png"
 # The pictures of motion (docs/pictures.md): Hénon–Heiles' sections at E = 1/12 and 1/8, the
 # double pendulum's section, its θ phase portrait and its player.
-hh="$root/tests/ensemble/scenes/henon_heiles.lag"
+hh="$root/tests/scenes/henon_heiles.lag"
 dp="$root/tests/scenes/ensemble_double_pendulum.lag"
 "$lagrange" poincare "$hh" --section "x = 0, x' > 0" --energy 0.0833333333333333 --orbits 60 --crossings 300 \
   -o "$folder/henon_heiles_section_12.png" 2>/dev/null

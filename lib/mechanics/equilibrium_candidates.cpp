@@ -5,11 +5,13 @@
 #include "mechanics/equilibrium_candidates.h"
 
 #include "algebra/budget.h"
+#include "algebra/canonical_order.h"
 #include "algebra/expression.h"
 #include "algebra/factor.h"
 #include "algebra/sign.h"
 #include "algebra/trig_canonical.h"
 
+#include <algorithm>
 #include <functional>
 
 namespace lagrange {
@@ -46,6 +48,7 @@ std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
             return {};
         ex factored = factor_if_quick(g);
         exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
+        std::sort(factors.begin(), factors.end(), canonical_less); // a mul keeps hash order: roots in a fixed one
         for (ex factor : factors) {
             if (is_a<GiNaC::power>(factor))
                 factor = factor.op(0);
@@ -80,6 +83,7 @@ std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
     auto roots_in_cos = [&](const ex& polynomial) {
         ex factored = factor_if_quick(polynomial);
         exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
+        std::sort(factors.begin(), factors.end(), canonical_less); // a mul keeps hash order: roots in a fixed one
         for (ex factor : factors) {
             if (is_a<GiNaC::power>(factor))
                 factor = factor.op(0);

@@ -14,7 +14,7 @@ using namespace lagrange_test;
 
 namespace {
 
-const std::string scenes = std::string(LAGRANGE_SOURCE_DIR) + "/tests/ensemble/scenes/";
+const std::string scenes = std::string(LAGRANGE_SOURCE_DIR) + "/tests/scenes/";
 const std::string henon_heiles = scenes + "henon_heiles.lag";
 
 } // namespace

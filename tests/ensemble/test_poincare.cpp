@@ -18,7 +18,7 @@ using namespace lagrange_test;
 
 namespace {
 
-const std::string scenes = std::string(LAGRANGE_SOURCE_DIR) + "/tests/ensemble/scenes/";
+const std::string scenes = std::string(LAGRANGE_SOURCE_DIR) + "/tests/scenes/";
 
 lagrange::poincare_result section_of(const lagrange::model& scene, const std::string& text,
                                      const lagrange::poincare_settings& settings)
