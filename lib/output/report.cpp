@@ -512,22 +512,6 @@ void report_writer::display(const std::string& lhs, const GiNaC::ex& e, const st
     display_terms(lhs, print_terms(e, syntax::latex), rhs, relation);
 }
 
-namespace {
-
-const std::string scaled_open = "\\[\\resizebox{\\linewidth}{!}{$\\displaystyle ", scaled_close = "$}\\]\n";
-
-/// A display from latex_equation, with a scaled one only ever scaled down
-/// (\fitdisplay of the preamble), never blown up to the page width.
-std::string fitted(const std::string& display)
-{
-    if (display.compare(0, scaled_open.size(), scaled_open) == 0 && display.size() >= scaled_open.size() + scaled_close.size())
-        return "\\[\\fitdisplay{" +
-               display.substr(scaled_open.size(), display.size() - scaled_open.size() - scaled_close.size()) + "}\\]\n";
-    return display;
-}
-
-} // namespace
-
 void report_writer::display_terms(const std::string& lhs, const std::vector<std::string>& terms,
                                   const std::string& rhs, const std::string& relation)
 {
@@ -553,7 +537,7 @@ void report_writer::display_rows(const std::vector<row>& rows)
                              "",
                              r.relation});
     }
-    out_ << latex_equations(shown, fitted, "\n");
+    out_ << latex_equations(shown, "\n");
 }
 
 void report_writer::display_matrix(const std::string& lhs, const GiNaC::matrix& m)
@@ -687,10 +671,6 @@ report_document build_report(const analysis& result, const source_text& source, 
             "\\ifdefined\\pdftrailerid \\pdftrailerid{}\\fi\n"
             "\\ifdefined\\pdfinfoomitdate \\pdfinfoomitdate=1\\fi\n"
             "\\allowdisplaybreaks\n"
-            "\\newsavebox{\\fitbox}\n"
-            "\\newcommand{\\fitdisplay}[1]{\\sbox{\\fitbox}{$\\displaystyle #1$}"
-            "\\ifdim\\wd\\fitbox>\\linewidth\\resizebox{\\linewidth}{!}{\\usebox{\\fitbox}}"
-            "\\else\\usebox{\\fitbox}\\fi}\n"
             "\\begin{document}\n");
     for (const report_section& section : report_sections())
         if (section.applies(result))
