@@ -564,7 +564,9 @@ bool report_writer::figure(const std::string& name, const std::string& script, d
         return false;
     }
     const std::string size = fixed(width_cm, 2) + "cm," + fixed(height_cm, 2) + "cm";
-    gnuplot_run run = run_gnuplot("set encoding utf8\nset terminal pdfcairo noenhanced color font 'Sans,9' size " + size +
+    // Labels at the body size (11 pt): pdfcairo draws a font of n points at n·fontscale·4/3.
+    gnuplot_run run = run_gnuplot("set encoding utf8\nset terminal pdfcairo noenhanced color font 'Sans,11' fontscale 0.75 size " +
+                                      size +
                                       "\nset output 'figure.pdf'\n" + script + "unset output\n",
                                   "figure.pdf", {}, {"SOURCE_DATE_EPOCH=0"});
     if (!run.drawn)
