@@ -3,6 +3,8 @@
  *  The LaTeX building blocks of the documents and the report (see latex_blocks.h). */
 #include "output/latex_blocks.h"
 
+#include "core/number_text.h"
+
 #include <algorithm>
 #include <cctype>
 #include <functional>
@@ -31,6 +33,31 @@ std::string latex_text(const std::string& text)
     std::string out;
     for (std::size_t i = 0; i < text.size(); ++i) {
         char c = text[i];
+        // A number with an exponent ("1e+03", "1.13e-13", not the "e2" of a name x1e2) as
+        // 10^{3} and 1.13 \times 10^{-13}.
+        if (std::isdigit(static_cast<unsigned char>(c)) &&
+            (i == 0 || !(std::isalnum(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '_' || text[i - 1] == '.'))) {
+            std::size_t j = i;
+            while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j])))
+                ++j;
+            if (j + 1 < text.size() && text[j] == '.' && std::isdigit(static_cast<unsigned char>(text[j + 1])))
+                for (++j; j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]));)
+                    ++j;
+            std::size_t k = j;
+            if (k < text.size() && (text[k] == 'e' || text[k] == 'E')) {
+                ++k;
+                if (k < text.size() && (text[k] == '+' || text[k] == '-'))
+                    ++k;
+                const std::size_t digits = k;
+                while (k < text.size() && std::isdigit(static_cast<unsigned char>(text[k])))
+                    ++k;
+                if (k > digits && (k == text.size() || !(std::isalnum(static_cast<unsigned char>(text[k])) || text[k] == '_'))) {
+                    out += "$" + latex_exponent(text.substr(i, k - i)) + "$";
+                    i = k - 1;
+                    continue;
+                }
+            }
+        }
         if (static_cast<unsigned char>(c) >= 0x80) {
             bool known = false;
             for (const auto& [from, to] : unicode)

@@ -15,7 +15,8 @@
 
 namespace lagrange {
 
-/// Free text with LaTeX's special characters escaped (a few Unicode symbols become math).
+/// Free text with LaTeX's special characters escaped (a few Unicode symbols become math,
+/// and a number with an exponent, 1e-14, becomes 10^{-14}).
 std::string latex_text(const std::string& text);
 
 /// A rough width of LaTeX math in characters (for line breaking).
