@@ -480,6 +480,8 @@ std::vector<std::vector<std::string>> matrix_entries(const std::string& term, st
 std::string entry_name(const std::string& lhs, std::size_t i, std::size_t j, bool column)
 {
     const std::string index = column ? std::to_string(i + 1) : std::to_string(i + 1) + std::to_string(j + 1);
+    if (lhs.size() > 3 && lhs.back() == ')' && lhs.find('(') != std::string::npos) // \mathcal{M}(q): \mathcal{M}_{12}
+        return lhs.substr(0, lhs.find('(')) + "_{" + index + "}";
     if (lhs.size() > 3 && lhs.back() == '}') {
         const std::size_t sub = lhs.rfind("_{");
         if (sub != std::string::npos && group_end(lhs, sub + 1) == lhs.size())
@@ -528,8 +530,12 @@ std::string matrix_rows(const std::string& lhs, const std::vector<std::vector<st
 std::string latex_equation(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs,
                            const std::string& relation)
 {
+    // A matrix named by the lhs (\mathbf{T}, a_{1}) and clearly wider than a line (the
+    // estimate is rough) lists its entries; one without a name (a determinant) is left
+    // to its writer.
     std::string kind;
-    if (terms.size() == 1 && display_width(lhs) + display_width(terms[0]) + display_width(rhs) + 2 > line_width) {
+    const bool named = !lhs.empty() && lhs.rfind("\\det", 0) != 0;
+    if (named && terms.size() == 1 && display_width(lhs) + display_width(terms[0]) + display_width(rhs) > line_width + 8) {
         const std::vector<std::vector<std::string>> entries = matrix_entries(terms[0], kind);
         if (!entries.empty())
             return align_open + matrix_rows(lhs, entries, kind, rhs, relation) + align_close;

@@ -320,7 +320,13 @@ void write_characteristic(report_writer& w)
     std::string matrix = latex_matrix(shifted);
     matrix.replace(0, std::string("\\begin{pmatrix}").size(), "\\begin{vmatrix}");
     matrix.replace(matrix.size() - std::string("\\end{pmatrix}").size(), std::string::npos, "\\end{vmatrix}");
-    w.display_terms("\\det(" + pencil + ")", {matrix}, " = 0");
+    if (latex_math_width("\\det(" + pencil + ") = " + matrix) <= 70) {
+        w.display_terms("\\det(" + pencil + ")", {matrix}, " = 0");
+    } else { // too wide for a line: the matrix named D, its entries listed
+        w.display_terms("\\det \\mathbf{D}", {"0"});
+        w.text("where ").latex("$\\mathbf{D} = " + pencil + "$:");
+        w.display_matrix("\\mathbf{D}", shifted);
+    }
     w.text("Expanding the determinant (fraction-free elimination) and dividing out the factors common to all "
            "coefficients, with the leading coefficient positive, gives the characteristic polynomial in ")
         .latex("$" + omega + "^{2}$:");
