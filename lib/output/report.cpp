@@ -580,7 +580,7 @@ bool report_writer::figure(const std::string& name, const std::string& script, d
                                 (run.timed_out ? std::string(" (timed out)") : "") + ": " + run.log.substr(0, 400));
     std::string file = options_.figure_prefix + name;
     figures_.push_back({file + ".pdf", strip_pdf_dates(run.plot)});
-    out_ << "\\begin{figure}[htbp]\n\\centering\n\\includegraphics[width=" << (width_cm >= 16.5 ? "\\linewidth" : "")
+    out_ << "\\begin{figure}[!htbp]\n\\centering\n\\includegraphics[width=" << (width_cm >= 16.5 ? "\\linewidth" : "")
          << (width_cm >= 16.5 ? "" : std::to_string(static_cast<int>(width_cm * 10)) + "mm") << "]{" << file
          << "}\n\\caption{" << caption << "}\n\\end{figure}\n";
     return true;
@@ -679,6 +679,10 @@ report_document build_report(const analysis& result, const source_text& source, 
             "\\ifdefined\\pdftrailerid \\pdftrailerid{}\\fi\n"
             "\\ifdefined\\pdfinfoomitdate \\pdfinfoomitdate=1\\fi\n"
             "\\allowdisplaybreaks\n"
+            // A page of floats starts at its top (a last figure alone on a page is not centred
+            // in it, half a page blank above it), and floats may fill most of a text page.
+            "\\makeatletter\\setlength{\\@fptop}{0pt}\\makeatother\n"
+            "\\renewcommand{\\topfraction}{0.85}\n\\renewcommand{\\floatpagefraction}{0.6}\n"
             "\\begin{document}\n");
     for (const report_section& section : report_sections())
         if (section.applies(result))
