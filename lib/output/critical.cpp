@@ -161,7 +161,8 @@ void write_critical_section(report_writer& w)
 {
     const critical_result& r = *w.result().critical;
     w.latex("\\section{Critical parameters}\n");
-    w.text("The eigenvalues s of the linearized equations (q ∝ e^{st}) as the parameter runs over the range, the "
+    w.text("The eigenvalues ").latex("$s$").text(" of the linearized equations (").latex("$q \\propto e^{st}$")
+        .text(") as the parameter runs over the range, the "
            "other parameters fixed; where a real part crosses 0 the equilibrium gains or loses stability. Each "
            "crossing is bracketed on a grid of " + std::to_string(r.grid.size()) +
            " points and refined with the TOMS 748 root finder.");
