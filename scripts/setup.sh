@@ -12,6 +12,8 @@ packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2
 packages+=(libsleef-dev)
 # Nettle: SHA-256 names the entries of the cache of compiled equations (lib/system/cache.cpp)
 packages+=(nettle-dev)
+# zlib: the report typesetting test reads the figures' PDF streams
+packages+=(zlib1g-dev)
 # The Python module (python/, built by default when these are found) and its tests and notebook:
 # pybind11 and Debian's /usr/bin/python3 with numpy, SymPy, pytest, nbclient and ipykernel.
 packages+=(python3-dev pybind11-dev python3-pybind11 python3-numpy python3-sympy python3-pytest python3-nbclient python3-ipykernel)

@@ -93,7 +93,14 @@ std::string latex_exponent(const std::string& decimal)
     const std::size_t e = decimal.find_first_of("eE");
     if (e == std::string::npos)
         return decimal;
-    return decimal.substr(0, e) + "\\times10^{" + bare_exponent(decimal.substr(e + 1)) + "}";
+    // A mantissa of 1 is left out, as a textbook writes it: 10^{3}, -10^{-8}.
+    const std::string mantissa = decimal.substr(0, e);
+    const std::string power = "10^{" + bare_exponent(decimal.substr(e + 1)) + "}";
+    if (mantissa == "1" || mantissa == "+1")
+        return power;
+    if (mantissa == "-1")
+        return "-" + power;
+    return mantissa + "\\times" + power;
 }
 
 std::string text_exponent(const std::string& decimal)

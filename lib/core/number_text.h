@@ -35,8 +35,8 @@ std::string hexadecimal(double x);
 /// "1.5e20"; the exponent without '+' or leading zeros).
 std::string float_decimal(double x);
 
-/// A decimal with an exponent ("1.5e-20", "2e+05") in LaTeX, "1.5\times10^{-20}",
-/// "2\times10^{5}"; one without an exponent unchanged.
+/// A decimal with an exponent ("1.5e-20", "2e+05", "1e+03") in LaTeX, "1.5\times10^{-20}",
+/// "2\times10^{5}", "10^{3}" (a mantissa of 1 left out); one without an exponent unchanged.
 std::string latex_exponent(const std::string& decimal);
 
 /// The same in Unicode text: "1.5×10⁻²⁰".

@@ -17,6 +17,9 @@ namespace lagrange {
 
 namespace {
 
+/// A number in LaTeX math: the shortest round trip, its exponent as \times10^{k}.
+std::string latex_round_trip(double x) { return latex_exponent(round_trip(x)); }
+
 const char* const axis_names[] = {"x", "y", "z"};
 
 
@@ -387,18 +390,18 @@ void write_bodies_latex(std::ostream& out, const analysis& result)
                     unsigned role = 0;
                     while (s.roles[role] != k)
                         ++role;
-                    rows.push_back(print(e.omega[k], syntax::latex) + "(t) &= " + round_trip(s.amplitudes[role]) +
-                                   "\\,\\mathrm{" + functions[role] + "}(" + round_trip(s.rate) + "\\,t " +
-                                   (s.phase < 0 ? "- " : "+ ") + round_trip(std::abs(s.phase)) + ", k)");
+                    rows.push_back(print(e.omega[k], syntax::latex) + "(t) &= " + latex_round_trip(s.amplitudes[role]) +
+                                   "\\,\\mathrm{" + functions[role] + "}(" + latex_round_trip(s.rate) + "\\,t " +
+                                   (s.phase < 0 ? "- " : "+ ") + latex_round_trip(std::abs(s.phase)) + ", k)");
                 }
-                out << "Jacobi elliptic solution, $k = " << round_trip(s.modulus) << "$, period $" << round_trip(s.period)
+                out << "Jacobi elliptic solution, $k = " << latex_round_trip(s.modulus) << "$, period $" << latex_round_trip(s.period)
                     << "$:\n\\begin{align*}\n" << join(rows, " \\\\\n") << "\n\\end{align*}\n";
             }
             if (e.poinsot)
-                out << "Poinsot: the ellipsoid $\\omega^{T} I \\omega = 2T$ has the semi-axes\n\\[" << round_trip(e.poinsot->ellipsoid_axes[0])
-                    << ",\\quad " << round_trip(e.poinsot->ellipsoid_axes[1]) << ",\\quad "
-                    << round_trip(e.poinsot->ellipsoid_axes[2]) << "\\]\nand the invariable plane is at the distance\n\\[2T/|L| = "
-                    << round_trip(e.poinsot->plane_distance) << "\\]\nfrom the centre.\n\n";
+                out << "Poinsot: the ellipsoid $\\omega^{T} I \\omega = 2T$ has the semi-axes\n\\[" << latex_round_trip(e.poinsot->ellipsoid_axes[0])
+                    << ",\\quad " << latex_round_trip(e.poinsot->ellipsoid_axes[1]) << ",\\quad "
+                    << latex_round_trip(e.poinsot->ellipsoid_axes[2]) << "\\]\nand the invariable plane is at the distance\n\\[2T/|L| = "
+                    << latex_round_trip(e.poinsot->plane_distance) << "\\]\nfrom the centre.\n\n";
             if (!e.stability.empty())
                 out << "Rotation about axes 1, 2, 3: " << join(e.stability, ", ") << ".\n\n";
         }

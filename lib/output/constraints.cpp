@@ -132,15 +132,18 @@ void write_constraints_latex(std::ostream& out, const analysis& result)
             out << latex_text("Together the constraints are not integrable: the motion is nonholonomic.") << "\n\n";
     }
     if (result.constrained && result.linearization) {
-        std::string names;
+        std::string names; // as the equations write them: θ, not theta
         for (std::size_t k : result.constrained->independent)
-            names += (names.empty() ? "" : ", ") + scene.coordinates[k].name;
-        out << latex_text("Small oscillations in the independent coordinates " + names +
-                          " (the others follow from the constraints).") << "\n\n";
+            names += (names.empty() ? "" : ", ") + print_name(scene.coordinates[k].name, s);
+        out << latex_text("Small oscillations in the independent coordinates ") << "$" << names << "$"
+            << latex_text(" (the others follow from the constraints).") << "\n\n";
     }
     if (result.elimination && !result.elimination->equations.empty()) {
         out << "\\subsection*{Equations with the constraints eliminated}\n";
-        out << latex_text("In the coordinates " + kept_names(result) + ":") << "\n";
+        std::string kept;
+        for (std::size_t k : result.elimination->kept)
+            kept += (kept.empty() ? "" : ", ") + print_name(scene.coordinates[k].name, s);
+        out << latex_text("In the coordinates ") << "$" << kept << "$:\n";
         for (const GiNaC::ex& e : result.elimination->equations)
             out << latex_equation("", print_terms(e, s, velocity_order(scene)), " = 0");
     }
@@ -216,10 +219,12 @@ void write_constraints_section(report_writer& w)
     w.latex("\\section{Constraints}\n");
     w.text("With the constraints the equations of motion read");
     w.latex("\n\\[M\\ddot{q} = f + A^{\\mathsf{T}}\\lambda,\\qquad A\\ddot{q} = -c,\\]\n");
-    w.text("where row k of A holds the velocity coefficients of constraint k (its gradient, for a holonomic "
-           "one), λ_k is its multiplier and A q̈ = −c is the constraint differentiated to the accelerations. "
-           "For constraints linear in the velocities these are the Lagrange–d'Alembert equations. "
-           "The constraints are:");
+    w.text("where row ").latex("$k$").text(" of ").latex("$A$")
+        .text(" holds the velocity coefficients of constraint ").latex("$k$")
+        .text(" (its gradient, for a holonomic one), ").latex("$\\lambda_{k}$").text(" is its multiplier and ")
+        .latex("$A\\ddot{q} = -c$")
+        .text(" is the constraint differentiated to the accelerations. For constraints linear in the velocities "
+              "these are the Lagrange–d'Alembert equations. The constraints are:");
     w.latex("\n");
     const constraint_equations* shown =
         result.equations && result.equations->constraints ? &*result.equations->constraints : nullptr;
@@ -228,22 +233,27 @@ void write_constraints_section(report_writer& w)
         std::string kind = c.constraint_kind == constraint::kind::holonomic ? "holonomic"
                            : shown && shown->integrable[k] ? "Pfaffian, integrable (a holonomic form exists)"
                                                            : "Pfaffian, not integrable";
-        w.latex("\n\\noindent ").text(c.name + " (" + kind + "):");
+        w.latex("\n\n\\noindent ").text(c.name + " (" + kind + "):");
         w.display_terms("", print_terms(c.function, syntax::latex, velocity_order(scene)), " = 0");
     }
     if (shown && !shown->jointly_integrable)
         w.text("Together the constraints are not integrable (Frobenius): the motion is nonholonomic.");
     if (result.constrained && result.linearization) {
-        std::string names;
+        std::string names; // as the equations write them: θ, not theta
         for (std::size_t k : result.constrained->independent)
-            names += (names.empty() ? "" : ", ") + scene.coordinates[k].name;
-        w.text(" The small oscillations below are in the independent coordinates " + names +
-               ", on the tangent space of the constraints at the equilibrium.");
+            names += (names.empty() ? "" : ", ") + report_writer::name(scene.coordinates[k].name);
+        w.text(" The small oscillations below are in the independent coordinates ")
+            .latex("$" + names + "$")
+            .text(", on the tangent space of the constraints at the equilibrium.");
     }
     if (!result.multipliers)
         return;
     w.latex("\n\\subsection*{Multipliers}\n");
-    w.text("Solving [M −Aᵀ; A 0] [q̈; λ] = [f; −c] gives the multipliers:");
+    w.text("Solving ")
+        .latex("$\\begin{pmatrix} M & -A^{\\mathsf{T}} \\\\ A & 0\\end{pmatrix}"
+               "\\begin{pmatrix}\\ddot{q} \\\\ \\lambda\\end{pmatrix} = "
+               "\\begin{pmatrix} f \\\\ -c\\end{pmatrix}$")
+        .text(" gives the multipliers:");
     w.latex("\n");
     for (std::size_t k = 0; k < result.multipliers->constraints.size(); ++k)
         w.display_terms(report_writer::name(scene.constraints[k].multiplier.get_name()),

@@ -93,16 +93,17 @@ void critical_latex(std::ostream& out, const critical_result& r)
         out << "\n$\\operatorname{Re} s = 0$ at $" << name << " = " << latex_number(c.value, 13) << "$: "
             << crossing_kind(c) << " (" << c.unstable_before << " $\\to$ " << c.unstable_after
             << " eigenvalues with $\\operatorname{Re} s > 0$).\n";
-    // four complex eigenvalues a row are wider than the page: the table is scaled to it
-    out << "\n\\noindent\\resizebox{\\linewidth}{!}{%\n\\begin{tabular}{ll}\n$" << name
+    // Four complex eigenvalues a row are wider than the page: the second column is a
+    // paragraph, each eigenvalue its own formula, so the row wraps between them.
+    out << "\n\\noindent\\begin{tabular}{lp{0.8\\linewidth}}\n$" << name
         << "$ & eigenvalues $s$\\\\\n\\hline\n";
     for_each_row(r, [&](std::size_t i) {
-        out << "$" << latex_number(r.grid[i]) << "$ & $";
+        out << "$" << latex_number(r.grid[i]) << "$ & \\raggedright ";
         for (std::size_t k = 0; k < r.locus[i].size(); ++k)
-            out << (k == 0 ? "" : ",\\ ") << complex_text(r.locus[i][k]);
-        out << "$\\\\\n";
+            out << (k == 0 ? "$" : ", $") << complex_text(r.locus[i][k]) << "$";
+        out << "\\tabularnewline\n";
     });
-    out << "\\end{tabular}}\n";
+    out << "\\end{tabular}\n";
 }
 
 } // namespace
@@ -160,7 +161,8 @@ void write_critical_section(report_writer& w)
 {
     const critical_result& r = *w.result().critical;
     w.latex("\\section{Critical parameters}\n");
-    w.text("The eigenvalues s of the linearized equations (q ∝ e^{st}) as the parameter runs over the range, the "
+    w.text("The eigenvalues ").latex("$s$").text(" of the linearized equations (").latex("$q \\propto e^{st}$")
+        .text(") as the parameter runs over the range, the "
            "other parameters fixed; where a real part crosses 0 the equilibrium gains or loses stability. Each "
            "crossing is bracketed on a grid of " + std::to_string(r.grid.size()) +
            " points and refined with the TOMS 748 root finder.");

@@ -251,12 +251,15 @@ void write_text(std::ostream& out, const analysis& result, const document_option
 void write_latex(std::ostream& out, const analysis& result, const document_options& options)
 {
     const model& scene = *result.scene;
-    out << "\\documentclass[11pt]{article}\n"
-           "\\usepackage[utf8]{inputenc}\n"
-           "\\usepackage{amsmath}\n"
-           "\\usepackage{graphicx}\n"
-           "\\usepackage[margin=2cm]{geometry}\n"
-           "\\begin{document}\n";
+    if (options.latex_body)
+        out << "% lagrange: the body of a LaTeX document (needs \\usepackage{amsmath})\n";
+    else
+        out << "\\documentclass[11pt]{article}\n"
+               "\\usepackage[utf8]{inputenc}\n"
+               "\\usepackage{amsmath}\n"
+               "\\usepackage{graphicx}\n"
+               "\\usepackage[margin=2cm]{geometry}\n"
+               "\\begin{document}\n";
     out << "\\section*{" << latex_text(scene.title.empty() ? "Scene" : scene.title) << "}\n";
     if (!scene.coordinates.empty()) // a free body's scene has none
         out << "Coordinates: $" << join_names(coordinate_names(scene), syntax::latex, ",\\ ") << "$.\\\\\n";
@@ -270,7 +273,8 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
             out << latex_text(s.stage) << " & " << seconds(s.seconds) << " s\\\\\n";
         out << "\\end{tabular}\n";
     }
-    out << "\\end{document}\n";
+    if (!options.latex_body)
+        out << "\\end{document}\n";
 }
 
 void write_json(std::ostream& out, const analysis& result, const document_options& options)

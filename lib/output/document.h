@@ -12,12 +12,14 @@
 namespace lagrange {
 
 struct document_options {
-    bool timings = false; ///< include each stage's time (`--timings`)
+    bool timings = false;    ///< include each stage's time (`--timings`)
+    bool latex_body = false; ///< LaTeX: only the body (headings, prose, align* blocks) to paste into a paper
 };
 
 void write_text(std::ostream& out, const analysis& result, const document_options& options = {});
 
-/// A complete LaTeX document (amsmath) that pdflatex compiles.
+/// A complete LaTeX document (amsmath) that pdflatex compiles; with `latex_body`, only what
+/// goes between \begin{document} and \end{document} (it needs amsmath).
 void write_latex(std::ostream& out, const analysis& result, const document_options& options = {});
 
 /// One JSON object with the keys of the spec (§4).

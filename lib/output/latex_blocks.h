@@ -15,16 +15,18 @@
 
 namespace lagrange {
 
-/// Free text with LaTeX's special characters escaped (a few Unicode symbols become math).
+/// Free text with LaTeX's special characters escaped (a few Unicode symbols become math,
+/// and a number with an exponent, 1e-14, becomes 10^{-14}).
 std::string latex_text(const std::string& text);
 
 /// A rough width of LaTeX math in characters (for line breaking).
 std::size_t latex_math_width(const std::string& latex);
 
 /// A display `lhs relation terms rhs`: align* broken across lines, between terms or,
-/// for a term wider than a line, at the signs of the sum inside its parentheses
-/// (\right. … \left.); scaled to the page width only when a piece that cannot be
-/// broken (a matrix, a long fraction) is wider than the page.
+/// for a term wider than a line, at the signs of the sums inside its parentheses
+/// (\right. … \left.), its long fractions and square roots first written with
+/// parentheses ((a + b)^{1/2}); a matrix wider than the page as the names of its long
+/// entries, each then on rows of its own. Never scaled: every formula is at the body size.
 std::string latex_equation(const std::string& lhs, const std::vector<std::string>& terms, const std::string& rhs,
                            const std::string& relation = "=");
 
@@ -36,12 +38,9 @@ struct latex_row {
     std::string relation = "=";
 };
 
-/// Related equations in one align*, aligned on their relation, rows apart by 4pt; a row
-/// that has to be scaled stands alone, as `scaled` rewrites its display (as is if empty).
-/// `before` goes before each display.
-std::string latex_equations(const std::vector<latex_row>& rows,
-                            const std::function<std::string(const std::string&)>& scaled = {},
-                            const std::string& before = "");
+/// Related equations in one align*, aligned on their relation, rows apart by 4pt.
+/// `before` goes before the display.
+std::string latex_equations(const std::vector<latex_row>& rows, const std::string& before = "");
 
 /// A pmatrix of the entries, printed deterministically.
 std::string latex_matrix(const GiNaC::matrix& m);

@@ -470,7 +470,7 @@ void write_operating_point_section(report_writer& w)
         .text(" and the independent speeds ")
         .latex("$" + listed(speeds) + "$")
         .text(point.chosen ? " (chosen as the complement of the best-conditioned pivots of the constraint Jacobians)"
-                           : " (named by the scene's \\texttt{independent} line)")
+                           : " (named by the scene's `independent` line)")
         .text(", so the state is ")
         .latex("$x = (" + listed(state) + ")$")
         .text(" and ")

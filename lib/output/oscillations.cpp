@@ -342,6 +342,17 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
                     << " & \\text{(relative error} &\\le " << print(GiNaC::numeric(n.error[k]), s) << ")"
                     << (k + 1 < n.omega.size() ? "\\\\\n" : "\n");
             out << "\\end{align*}\n";
+            // The mode vectors, as the text output lists them: the columns of A, AᵀTA = I.
+            if (n.modes.size() > 0) {
+                out << "with the mode vectors (the columns of $A$, $A^{\\mathsf{T}}\\mathbf{T}A = I$)\n\\begin{align*}\n";
+                for (Eigen::Index k = 0; k < n.modes.cols(); ++k) {
+                    out << "a_{" << k + 1 << "} &= \\begin{pmatrix}";
+                    for (Eigen::Index i = 0; i < n.modes.rows(); ++i)
+                        out << (i ? " \\\\ " : "") << latex_exponent(round_trip(n.modes(i, k)));
+                    out << "\\end{pmatrix}" << (k + 1 < n.modes.cols() ? ",\\\\\n" : "\n");
+                }
+                out << "\\end{align*}\n";
+            }
             std::string growth;
             for (std::size_t k = 0; k < n.omega.size(); ++k)
                 growth += growth_sentence_latex(n, k, [&](double x) { return print(GiNaC::numeric(x), s); });

@@ -320,7 +320,13 @@ void write_characteristic(report_writer& w)
     std::string matrix = latex_matrix(shifted);
     matrix.replace(0, std::string("\\begin{pmatrix}").size(), "\\begin{vmatrix}");
     matrix.replace(matrix.size() - std::string("\\end{pmatrix}").size(), std::string::npos, "\\end{vmatrix}");
-    w.display_terms("\\det(" + pencil + ")", {matrix}, " = 0");
+    if (latex_math_width("\\det(" + pencil + ") = " + matrix) <= 70) {
+        w.display_terms("\\det(" + pencil + ")", {matrix}, " = 0");
+    } else { // too wide for a line: the matrix named D, its entries listed
+        w.display_terms("\\det \\mathbf{D}", {"0"});
+        w.text("where ").latex("$\\mathbf{D} = " + pencil + "$:");
+        w.display_matrix("\\mathbf{D}", shifted);
+    }
     w.text("Expanding the determinant (fraction-free elimination) and dividing out the factors common to all "
            "coefficients, with the leading coefficient positive, gives the characteristic polynomial in ")
         .latex("$" + omega + "^{2}$:");
@@ -512,22 +518,6 @@ void report_writer::display(const std::string& lhs, const GiNaC::ex& e, const st
     display_terms(lhs, print_terms(e, syntax::latex), rhs, relation);
 }
 
-namespace {
-
-const std::string scaled_open = "\\[\\resizebox{\\linewidth}{!}{$\\displaystyle ", scaled_close = "$}\\]\n";
-
-/// A display from latex_equation, with a scaled one only ever scaled down
-/// (\fitdisplay of the preamble), never blown up to the page width.
-std::string fitted(const std::string& display)
-{
-    if (display.compare(0, scaled_open.size(), scaled_open) == 0 && display.size() >= scaled_open.size() + scaled_close.size())
-        return "\\[\\fitdisplay{" +
-               display.substr(scaled_open.size(), display.size() - scaled_open.size() - scaled_close.size()) + "}\\]\n";
-    return display;
-}
-
-} // namespace
-
 void report_writer::display_terms(const std::string& lhs, const std::vector<std::string>& terms,
                                   const std::string& rhs, const std::string& relation)
 {
@@ -553,7 +543,7 @@ void report_writer::display_rows(const std::vector<row>& rows)
                              "",
                              r.relation});
     }
-    out_ << latex_equations(shown, fitted, "\n");
+    out_ << latex_equations(shown, "\n");
 }
 
 void report_writer::display_matrix(const std::string& lhs, const GiNaC::matrix& m)
@@ -580,7 +570,9 @@ bool report_writer::figure(const std::string& name, const std::string& script, d
         return false;
     }
     const std::string size = fixed(width_cm, 2) + "cm," + fixed(height_cm, 2) + "cm";
-    gnuplot_run run = run_gnuplot("set encoding utf8\nset terminal pdfcairo noenhanced color font 'Sans,9' size " + size +
+    // Labels at the body size (11 pt): pdfcairo draws a font of n points at n·fontscale·4/3.
+    gnuplot_run run = run_gnuplot("set encoding utf8\nset terminal pdfcairo noenhanced color font 'Sans,11' fontscale 0.75 size " +
+                                      size +
                                       "\nset output 'figure.pdf'\n" + script + "unset output\n",
                                   "figure.pdf", {}, {"SOURCE_DATE_EPOCH=0"});
     if (!run.drawn)
@@ -588,7 +580,7 @@ bool report_writer::figure(const std::string& name, const std::string& script, d
                                 (run.timed_out ? std::string(" (timed out)") : "") + ": " + run.log.substr(0, 400));
     std::string file = options_.figure_prefix + name;
     figures_.push_back({file + ".pdf", strip_pdf_dates(run.plot)});
-    out_ << "\\begin{figure}[htbp]\n\\centering\n\\includegraphics[width=" << (width_cm >= 16.5 ? "\\linewidth" : "")
+    out_ << "\\begin{figure}[!htbp]\n\\centering\n\\includegraphics[width=" << (width_cm >= 16.5 ? "\\linewidth" : "")
          << (width_cm >= 16.5 ? "" : std::to_string(static_cast<int>(width_cm * 10)) + "mm") << "]{" << file
          << "}\n\\caption{" << caption << "}\n\\end{figure}\n";
     return true;
@@ -687,10 +679,10 @@ report_document build_report(const analysis& result, const source_text& source, 
             "\\ifdefined\\pdftrailerid \\pdftrailerid{}\\fi\n"
             "\\ifdefined\\pdfinfoomitdate \\pdfinfoomitdate=1\\fi\n"
             "\\allowdisplaybreaks\n"
-            "\\newsavebox{\\fitbox}\n"
-            "\\newcommand{\\fitdisplay}[1]{\\sbox{\\fitbox}{$\\displaystyle #1$}"
-            "\\ifdim\\wd\\fitbox>\\linewidth\\resizebox{\\linewidth}{!}{\\usebox{\\fitbox}}"
-            "\\else\\usebox{\\fitbox}\\fi}\n"
+            // A page of floats starts at its top (a last figure alone on a page is not centred
+            // in it, half a page blank above it), and floats may fill most of a text page.
+            "\\makeatletter\\setlength{\\@fptop}{0pt}\\makeatother\n"
+            "\\renewcommand{\\topfraction}{0.85}\n\\renewcommand{\\floatpagefraction}{0.6}\n"
             "\\begin{document}\n");
     for (const report_section& section : report_sections())
         if (section.applies(result))

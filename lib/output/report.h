@@ -73,9 +73,9 @@ public:
         std::string rhs;
         std::string relation = "=";
     };
-    /// Several displays in one aligned block (rows wider than the page on their own, scaled down).
+    /// Several displays in one aligned block, each broken across lines where long (never scaled).
     void display_rows(const std::vector<row>& rows);
-    /// `lhs = (matrix)`, scaled to the page width when wider.
+    /// `lhs = (matrix)`; one wider than the page names its long entries and lists them below.
     void display_matrix(const std::string& lhs, const GiNaC::matrix& m);
 
     /// Runs `script` (gnuplot commands that draw on the pdfcairo terminal the

@@ -439,6 +439,23 @@ void write_simulation(report_writer& w, const simulation_result& s)
 {
     const std::size_t n = s.coordinates.size();
     w.latex("\\subsection{Simulation}\n");
+    // The coordinates against time, one panel each (at most 3000 points drawn).
+    // Drawn before the prose, so that the float can take the top of this page rather than
+    // a page of its own at the end (which left half a page blank).
+    if (!s.run.states.empty() && s.run.times.size() == s.run.states.size() && n > 0) {
+        std::size_t panels = 0;
+        const std::string script = trajectory_plot_script(s, 4, "", panels);
+        std::string names;
+        for (std::size_t i = 0; i < n; ++i)
+            names += (i ? (i + 1 == n ? " and " : ", ") : "") + std::string("$") + report_writer::name(s.coordinates[i]) + "(t)$";
+        std::string caption = names + " from the simulation (" + latex_text(s.method) + ").";
+        if (s.beats && s.beats->measured > 0)
+            caption += " The envelope of $" + report_writer::name(s.beats->coordinate) +
+                       "$ swells and fades with the beat period: measured $" + report_writer::number(s.beats->measured, 5) +
+                       "$, predicted $2\\pi/(\\omega_{+} - \\omega_{-}) = " + report_writer::number(s.beats->predicted, 5) + "$.";
+        w.figure(s.beats ? "beats" : "motion", script, 15, 2.2 + 4.4 * static_cast<double>(panels > 0 ? panels : 2),
+                 caption);
+    }
     if (!s.values.empty()) {
         w.text("At ");
         std::size_t k = 0;
@@ -512,21 +529,6 @@ void write_simulation(report_writer& w, const simulation_result& s)
             .text(".\n");
     }
 
-    // The coordinates against time, one panel each (at most 3000 points drawn).
-    if (s.run.states.empty() || s.run.times.size() != s.run.states.size() || n == 0)
-        return;
-    std::size_t panels = 0;
-    const std::string script = trajectory_plot_script(s, 4, "", panels);
-    std::string names;
-    for (std::size_t i = 0; i < n; ++i)
-        names += (i ? (i + 1 == n ? " and " : ", ") : "") + std::string("$") + report_writer::name(s.coordinates[i]) + "(t)$";
-    std::string caption = names + " from the simulation (" + latex_text(s.method) + ").";
-    if (s.beats && s.beats->measured > 0)
-        caption += " The envelope of $" + report_writer::name(s.beats->coordinate) +
-                   "$ swells and fades with the beat period: measured $" + report_writer::number(s.beats->measured, 5) +
-                   "$, predicted $2\\pi/(\\omega_{+} - \\omega_{-}) = " + report_writer::number(s.beats->predicted, 5) + "$.";
-    w.figure(s.beats ? "beats" : "motion", script, 15, 2.2 + 3.4 * static_cast<double>(panels > 0 ? panels : 2),
-             caption);
     if (s.beats && s.beats->measured > 0 && s.beats->predicted > 0) {
         const beat_measurement& b = *s.beats;
         const double difference = std::abs(b.measured - b.predicted) / b.predicted;

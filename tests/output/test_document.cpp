@@ -67,6 +67,25 @@ TEST_CASE("document: LaTeX is a whole document with escaped title and relations 
     CHECK(latex.find("\\end{document}") != std::string::npos);
 }
 
+TEST_CASE("document: LaTeX body only, with the numeric mode vectors", "[document][latex]")
+{
+    // Issue 38: the align* blocks to paste into a paper, and the modes the text output lists.
+    model scene = load("scene \"Two springs\"\nparameters m k\ncoordinates x y\n"
+                       "L = 1/2*m*x'^2 + 1/2*m*y'^2 - 1/2*k*x^2 - 1/2*k*(y - x)^2\n"
+                       "equilibrium x = 0, y = 0\nvalues m = 1, k = 1\n");
+    document_options options;
+    options.latex_body = true;
+    std::ostringstream out;
+    write_latex(out, analyze(scene), options);
+    const std::string latex = out.str();
+    CHECK(latex.find("\\documentclass") == std::string::npos);
+    CHECK(latex.find("\\begin{document}") == std::string::npos);
+    CHECK(latex.find("\\end{document}") == std::string::npos);
+    CHECK(latex.find("\\begin{align*}") != std::string::npos);
+    CHECK(latex.find("a_{1} &= \\begin{pmatrix}") != std::string::npos);
+    CHECK(latex.find("a_{2} &= \\begin{pmatrix}") != std::string::npos);
+}
+
 namespace {
 
 /// The widest overfull \hbox of a pdflatex log, in pt (0 if none).
@@ -133,8 +152,12 @@ TEST_CASE("document: the triple pendulum's characteristic polynomial breaks acro
     for (const std::string& term : print_terms(result.characteristic->polynomial, syntax::latex,
                                                term_order{{{result.characteristic->omega}}}))
         joined += (joined.empty() ? "" : " ") + term;
-    const std::string unbroken =
-        without(without(without(display, "\\right.\\\\\n&\\quad\\left."), "\\\\\n&\\quad"), "\\right.");
+    // (a line that starts with a sign has "{}" before it, to keep the sign binary)
+    const std::string unbroken = without(
+        without(without(without(without(display, "\\right.\\\\\n&\\quad\\left.{}"), "\\right.\\\\\n&\\quad\\left."),
+                        "\\\\\n&\\quad{}"),
+                "\\\\\n&\\quad"),
+        "\\right.");
     CHECK(unbroken.find("&" + joined + " = 0") != std::string::npos);
 
     std::string log;
