@@ -90,6 +90,10 @@ const char* const initial_help = "initial values such as \"theta=0.1, phi'=0\": 
 const char* const project_initial_help = "start from the initial state moved onto the constraints by least change "
                                          "(printed first) when it is off them; without it that is an error";
 
+/// The help of --latex-body, beside --format.
+const char* const latex_body_help = "with --format latex: only the body (headings, prose and equations), without the "
+                                    "preamble, to paste into a paper";
+
 /// A plot's title: the scene's, or its file name.
 std::string plot_title(const lagrange::model& scene) { return scene.title.empty() ? scene.file : scene.title; }
 
@@ -128,6 +132,7 @@ struct run_options {
     std::string format = "text";
     std::string output;
     bool timings = false;
+    bool latex_body = false; ///< --latex-body
     lagrange::budget_limits budget;
     std::vector<std::string> sweeps;
 };
@@ -147,12 +152,14 @@ lagrange::analysis analyze_wanted(const lagrange::model& scene, const std::strin
 }
 
 /// The analysis as text, LaTeX or JSON, to `path` (or standard output). Run times only
-/// with `timings`: the output stays the same run to run.
-void write_document(const lagrange::analysis& result, const std::string& format, bool timings,
+/// with `timings`: the output stays the same run to run; `latex_body`: LaTeX without its
+/// preamble, to paste into a paper.
+void write_document(const lagrange::analysis& result, const std::string& format, bool timings, bool latex_body,
                     const std::string& path)
 {
     lagrange::document_options document;
     document.timings = timings;
+    document.latex_body = latex_body;
     write_output(path, lagrange::document_text(result, format, document));
 }
 
@@ -182,7 +189,7 @@ int analyze_scene(const run_options& options)
         return sweep_scene(options);
     lagrange::model scene = load_scene(options.scene_path, options.values, options.initial, options.budget.max_seconds);
     lagrange::analysis result = analyze_wanted(scene, options.want, options.budget, options.project_initial);
-    write_document(result, options.format, options.timings, options.output);
+    write_document(result, options.format, options.timings, options.latex_body, options.output);
     return exit_ok;
 }
 
@@ -200,6 +207,7 @@ struct motion_options {
     std::string output;
     bool interpret = false; ///< evaluate the equations with the interpreter instead of native code
     bool timings = false;
+    bool latex_body = false; ///< --latex-body
 };
 
 /// A --plot path whose extension names no format is a usage error, before any work.
@@ -240,7 +248,7 @@ int motion_command(const motion_options& options, lagrange::product wanted, cons
         if (result.workprecision)
             lagrange::plot_workprecision(options.plot, *result.workprecision, title);
     }
-    write_document(result, options.format, options.timings, options.output);
+    write_document(result, options.format, options.timings, options.latex_body, options.output);
     return exit_ok;
 }
 
@@ -702,6 +710,7 @@ int run(int argc, char** argv)
     app.add_option("--initial", options.initial, initial_help);
     app.add_flag("--project-initial", options.project_initial, project_initial_help);
     app.add_option("--format", options.format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
+    app.add_flag("--latex-body", options.latex_body, latex_body_help);
     app.add_option("-o,--output", options.output, "write the output to this file");
     app.add_flag("--timings", options.timings, "show which stages ran and how long each took");
     app.add_option("--sweep", options.sweeps,
@@ -746,6 +755,7 @@ int run(int argc, char** argv)
             ->check(positive_number);
         sub->add_option("--plot", o->plot, "draw a plot with gnuplot: .svg, .png or .pdf, by the extension");
         sub->add_option("--format", o->format, "output format")->check(CLI::IsMember({"text", "latex", "json"}));
+        sub->add_flag("--latex-body", o->latex_body, latex_body_help);
         sub->add_option("-o,--output", o->output, "write the output to this file");
         sub->add_flag("--interpret", o->interpret,
                       "evaluate the equations with the interpreter (default: compiled to machine code by the "

@@ -317,3 +317,21 @@ TEST_CASE("cli: damped modes in JSON, text and LaTeX", "[cli][damped_modes]")
     CHECK(latex.out.find("Their modes $x$, in the same order") != std::string::npos);
     CHECK(latex.out.find("x &= \\begin{pmatrix}") != std::string::npos);
 }
+
+TEST_CASE("cli: --latex-body gives the LaTeX without its preamble", "[cli]")
+{
+    const std::string scene = std::string(LAGRANGE_SOURCE_DIR) + "/examples/double_pendulum.lag";
+    cli_result whole = run_cli(scene + " --want frequencies --format latex");
+    cli_result body = run_cli(scene + " --want frequencies --format latex --latex-body");
+    REQUIRE(whole.exit_code == 0);
+    REQUIRE(body.exit_code == 0);
+    CHECK(whole.out.find("\\documentclass") != std::string::npos);
+    CHECK(body.out.find("\\documentclass") == std::string::npos);
+    CHECK(body.out.find("\\begin{document}") == std::string::npos);
+    CHECK(body.out.find("\\end{document}") == std::string::npos);
+    // after its comment line, the body is the whole document's between \begin and \end{document}
+    const std::size_t begin = whole.out.find("\\begin{document}\n") + std::string("\\begin{document}\n").size();
+    const std::size_t end = whole.out.find("\\end{document}");
+    CHECK(body.out.find("\\subsection*{Lagrangian}") != std::string::npos);
+    CHECK(body.out.substr(body.out.find('\n') + 1) == whole.out.substr(begin, end - begin));
+}
