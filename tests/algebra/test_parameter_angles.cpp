@@ -57,7 +57,7 @@ TEST_CASE("parameter angles: sin² + cos² of a parameter is 1, proved, never gu
     CHECK(at(simplify(root), th0, 5) > 0);
 }
 
-TEST_CASE("parameter angles: acos(cos th0) is kept, it is th0 only on [0, π]", "[algebra][pythagorean]")
+TEST_CASE("parameter angles: acos(cos th0) is kept, it is th0 only from 0 to π", "[algebra][pythagorean]")
 {
     const GiNaC::possymbol th0("th0");
     const GiNaC::realsymbol x("x"), xd("x_dot");
