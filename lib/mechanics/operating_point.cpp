@@ -194,6 +194,28 @@ bool linearizes_about_operating_point(const model& scene)
     return !scene.coordinates.empty() && (!scene.constraints.empty() || scene.operating_point);
 }
 
+std::vector<std::size_t> coupled_states(const matrix& a)
+{
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < a.rows(); ++i)
+        kept.push_back(i);
+    for (bool removed = true; removed;) {
+        removed = false;
+        for (std::size_t k = 0; k < kept.size() && !removed; ++k) {
+            bool row = true, column = true;
+            for (std::size_t other : kept) {
+                row = row && vanishes(a(static_cast<unsigned>(kept[k]), static_cast<unsigned>(other)));
+                column = column && vanishes(a(static_cast<unsigned>(other), static_cast<unsigned>(kept[k])));
+            }
+            if (row || column) {
+                kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
+                removed = true;
+            }
+        }
+    }
+    return kept;
+}
+
 operating_linearization linearize_about(const model& scene, const equations_of_motion& equations,
                                         const simplifier& simplify)
 {
@@ -478,14 +500,20 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
             c0(i, j) = simplified(c0(i, j), simplify);
     result.configuration = c0;
 
-    // det(sI − A), cleared of denominators.
+    // det(sI − A), cleared of denominators: s^z det(sI − A') with A' the rest of A.
     result.s = GiNaC::realsymbol(unused_name(scene, "s"));
     {
-        matrix pencil(states, states);
-        for (unsigned i = 0; i < states; ++i)
-            for (unsigned j = 0; j < states; ++j)
-                pencil(i, j) = (i == j ? ex(result.s) : ex(0)) - result.a(i, j);
-        const ex fraction = fraction_free_determinant(pencil).normal().numer_denom();
+        const std::vector<std::size_t> kept = coupled_states(result.a);
+        const unsigned size = static_cast<unsigned>(kept.size());
+        matrix pencil(size, size);
+        for (unsigned i = 0; i < size; ++i)
+            for (unsigned j = 0; j < size; ++j)
+                pencil(i, j) = (i == j ? ex(result.s) : ex(0)) -
+                               result.a(static_cast<unsigned>(kept[i]), static_cast<unsigned>(kept[j]));
+        const ex fraction = (GiNaC::pow(result.s, static_cast<int>(states - size)) *
+                             (size ? fraction_free_determinant(pencil) : ex(1)))
+                                .normal()
+                                .numer_denom();
         ex polynomial = fraction.op(0);
         if (std::optional<int> sign = sign_of(fraction.op(1)); sign && *sign < 0)
             polynomial = -polynomial;

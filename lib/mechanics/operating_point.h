@@ -55,6 +55,13 @@ struct operating_linearization {
 /// `linearize about` line.
 bool linearizes_about_operating_point(const model& scene);
 
+/// The states of A left when those whose row or column of A is 0 are taken out, again
+/// until none is (indices, ascending): such a state's row or column of sI − A is s e_i, so
+/// it gives a factor s of det(sI − A), an eigenvalue 0 at every parameter value, and the
+/// rest is the determinant without it. The bicycle's position, heading and wheel angles
+/// (ignorable coordinates) leave its 4 × 4 lean and steer block.
+std::vector<std::size_t> coupled_states(const GiNaC::matrix& a);
+
 /// A, B and the residual at the scene's `linearize about` point (else its `equilibrium`
 /// line: at rest, or the steady motion it names). Throws scene_error, at the statement, when the point violates a
 /// constraint (with the residual) or the `independent` line does not span the constraints;
