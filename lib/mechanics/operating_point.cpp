@@ -175,6 +175,11 @@ std::vector<std::size_t> dependent_set(const model& scene, const matrix& jacobia
     return dependent;
 }
 
+/// Above this many expression nodes in sI − A's coupled block, det(sI − A) is left
+/// unexpanded: the bicycle's 4 × 4 block in v and λ takes seconds and fills pages, while a
+/// rolling disc's is a few dozen nodes.
+constexpr std::size_t largest_expanded_pencil = 4000;
+
 ex simplified(const ex& e, const simplifier& simplify) { return simplify_ratio(e, simplify); }
 
 /// Whether e is 0: exactly, or (where the simplifier falls short) at the sample point to
@@ -504,12 +509,24 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
     result.s = GiNaC::realsymbol(unused_name(scene, "s"));
     {
         const std::vector<std::size_t> kept = coupled_states(result.a);
-        const unsigned size = static_cast<unsigned>(kept.size());
+        unsigned size = static_cast<unsigned>(kept.size());
         matrix pencil(size, size);
         for (unsigned i = 0; i < size; ++i)
             for (unsigned j = 0; j < size; ++j)
                 pencil(i, j) = (i == j ? ex(result.s) : ex(0)) -
                                result.a(static_cast<unsigned>(kept[i]), static_cast<unsigned>(kept[j]));
+        std::size_t nodes = 0;
+        for (unsigned i = 0; i < size; ++i)
+            for (unsigned j = 0; j < size; ++j)
+                for (auto k = pencil(i, j).preorder_begin(); k != pencil(i, j).preorder_end(); ++k)
+                    ++nodes;
+        if (nodes > largest_expanded_pencil) {
+            result.characteristic_left_out = "A's coupled " + std::to_string(size) + " × " + std::to_string(size) +
+                                             " block has " + std::to_string(nodes) + " nodes, so det(sI − A) is not "
+                                             "expanded symbolically; its roots are the eigenvalues at the `values` "
+                                             "points";
+            size = 0;
+        }
         const ex fraction = (GiNaC::pow(result.s, static_cast<int>(states - size)) *
                              (size ? fraction_free_determinant(pencil) : ex(1)))
                                 .normal()
@@ -517,7 +534,8 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
         ex polynomial = fraction.op(0);
         if (std::optional<int> sign = sign_of(fraction.op(1)); sign && *sign < 0)
             polynomial = -polynomial;
-        result.characteristic = factor_if_quick(polynomial);
+        if (result.characteristic_left_out.empty())
+            result.characteristic = factor_if_quick(polynomial);
     }
 
     // What kind of point it is.

@@ -18,6 +18,7 @@
 #include <ginac/ginac.h>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace lagrange {
@@ -45,6 +46,9 @@ struct operating_linearization {
     /// det(sI − A) with its denominators cleared, leading coefficient positive, factored: the
     /// eigenvalues of A are its roots in `s` (named "s" unless the scene uses that name).
     GiNaC::ex characteristic;
+    /// Why det(sI − A) was not expanded (A's coupled block too large to be worth it: the
+    /// bicycle's); empty when `characteristic` holds it.
+    std::string characteristic_left_out;
     GiNaC::realsymbol s;
     /// steady: whether the moving coordinates enter no equation (M, f, Q, the constraints),
     /// so that A and B hold all along the motion, not at this instant only.

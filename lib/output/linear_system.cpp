@@ -237,7 +237,10 @@ void write_linear_system_text(std::ostream& out, const analysis& result)
         out << "  x = (" << joined(state_names(result, how)) << "),  u = (" << joined(input_names(scene, how))
             << ")\n";
         matrix_text(out, "A", ss.a, "  ");
-        if (result.operating)
+        if (result.operating && !result.operating->characteristic_left_out.empty())
+            out << "  det(" << print_name(result.operating->s.get_name(), how) << "I − A): "
+                << result.operating->characteristic_left_out << "\n";
+        else if (result.operating)
             out << "  det(" << print_name(result.operating->s.get_name(), how) << "I − A) ∝ "
                 << print(result.operating->characteristic, how, term_order{{{result.operating->s}}}) << "\n";
         if (ss.b.cols())
@@ -348,8 +351,12 @@ void write_linear_system_json(nlohmann::ordered_json& doc, const analysis& resul
         entry["numeric"] = points;
         if (result.operating) {
             entry["operating_point"] = operating_point_json(scene, *result.operating);
-            entry["characteristic"] = {{"variable", result.operating->s.get_name()},
-                                       {"polynomial", print(result.operating->characteristic, how)}};
+            if (result.operating->characteristic_left_out.empty())
+                entry["characteristic"] = {{"variable", result.operating->s.get_name()},
+                                           {"polynomial", print(result.operating->characteristic, how)}};
+            else
+                entry["characteristic"] = {{"variable", result.operating->s.get_name()},
+                                           {"left_out", result.operating->characteristic_left_out}};
         }
         doc["state_space"] = entry;
     }
