@@ -175,6 +175,43 @@ std::vector<std::size_t> dependent_set(const model& scene, const matrix& jacobia
     return dependent;
 }
 
+/// The order to which `e` vanishes at `at`, or less: a product adds its factors' orders,
+/// a positive integer power multiplies its base's, and anything else is of order 1 where
+/// its value there is 0 (0 otherwise, and where it cannot be evaluated).
+int vanishing_order(const ex& e, const GiNaC::exmap& at)
+{
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        int order = 0;
+        for (std::size_t k = 0; k < e.nops(); ++k)
+            order += vanishing_order(e.op(k), at);
+        return order;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::posint)) {
+        const int base = vanishing_order(e.op(0), at);
+        return base == 0 ? 0 : base * GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_int();
+    }
+    if (GiNaC::is_a<GiNaC::numeric>(e))
+        return e.is_zero() ? 2 : 0;
+    try {
+        return e.subs(at).is_zero() ? 1 : 0;
+    } catch (const std::exception&) {
+        return 0;
+    }
+}
+
+/// `e` without the terms of its sum that vanish to second order at `at`: the same value
+/// and first derivatives there, from a much smaller expression.
+ex first_order_part(const ex& e, const GiNaC::exmap& at)
+{
+    if (!GiNaC::is_a<GiNaC::add>(e))
+        return e;
+    GiNaC::exvector kept;
+    for (std::size_t k = 0; k < e.nops(); ++k)
+        if (vanishing_order(e.op(k), at) < 2)
+            kept.push_back(e.op(k));
+    return GiNaC::add(kept);
+}
+
 /// Above this many expression nodes in sI − A's coupled block, det(sI − A) is left
 /// unexpanded: the bicycle's 4 × 4 block in v and λ takes seconds and fills pages, while a
 /// rolling disc's is a few dozen nodes.
@@ -420,6 +457,13 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
         variables.push_back(c.velocity);
     for (const input_signal& u : scene.inputs)
         variables.push_back(u.symbol);
+    // Linearize before differentiating: terms that vanish to second order at the point have
+    // no part in the Jacobian there (most of the bicycle's forcing, quadratic in the rates).
+    GiNaC::exmap at_point = at;
+    for (const auto& [symbol, value] : held)
+        at_point[symbol] = value;
+    for (ex& r : residual)
+        r = first_order_part(r, at_point);
     matrix jacobian(size, static_cast<unsigned>(variables.size()));
     for (unsigned r = 0; r < size; ++r)
         for (unsigned z = 0; z < variables.size(); ++z)
