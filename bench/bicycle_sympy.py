@@ -7,7 +7,7 @@ import sys
 import time
 
 start = time.perf_counter()
-import numpy as np
+import mpmath
 from sympy import acos, pi, sin, cos, sqrt, symbols
 from sympy.physics.mechanics import (KanesMethod, Point, ReferenceFrame, RigidBody, dot, dynamicsymbols,
                                      inertia)
@@ -92,6 +92,6 @@ point.update({u.diff(): 0 for u in (u1, u2, u3, u4, u5, u6)})
 A, B, _ = KM.linearize(A_and_B=True, op_point=point, linear_solver="CRAMER")
 A = A.xreplace(values).evalf().extract([1, 2, 3, 5], [1, 2, 3, 5])
 seconds = time.perf_counter() - start
-at5 = np.array(A.subs(v, 5).evalf(), dtype=float)
+eigenvalues, _ = mpmath.eig(mpmath.matrix(A.subs(v, 5).evalf().tolist()))
 print(f"{seconds:.3f}")
-print(" ".join(repr(complex(x)) for x in sorted(np.linalg.eigvals(at5), key=lambda z: (z.imag, z.real))))
+print(" ".join(repr(complex(x)) for x in sorted(eigenvalues, key=lambda z: (complex(z).imag, complex(z).real))))
