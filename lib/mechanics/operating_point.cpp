@@ -175,41 +175,54 @@ std::vector<std::size_t> dependent_set(const model& scene, const matrix& jacobia
     return dependent;
 }
 
-/// The order to which `e` vanishes at `at`, or less: a product adds its factors' orders,
-/// a positive integer power multiplies its base's, and anything else is of order 1 where
-/// its value there is 0 (0 otherwise, and where it cannot be evaluated).
-int vanishing_order(const ex& e, const GiNaC::exmap& at)
+/// The gradient of `e` with respect to `variables` at `at` (which gives every symbol of `e`
+/// that is not left free), term by term and factor by factor: the value of each factor at
+/// the point once, and a derivative only of the factors that hold a variable. A term with
+/// two factors that vanish there has no part in it (most of the bicycle's forcing, quadratic
+/// in the rates); one with a single such factor contributes through that factor only. This
+/// linearizes before it simplifies: no derivative of the whole expression is ever formed.
+std::vector<ex> gradient_at(const ex& e, const std::vector<ex>& variables, const GiNaC::exmap& at)
 {
-    if (GiNaC::is_a<GiNaC::mul>(e)) {
-        int order = 0;
-        for (std::size_t k = 0; k < e.nops(); ++k)
-            order += vanishing_order(e.op(k), at);
-        return order;
+    std::vector<ex> gradient(variables.size(), 0);
+    GiNaC::exvector terms;
+    if (GiNaC::is_a<GiNaC::add>(e))
+        for (std::size_t t = 0; t < e.nops(); ++t)
+            terms.push_back(e.op(t));
+    else
+        terms.push_back(e);
+    for (const ex& term : terms) {
+        GiNaC::exvector factors;
+        if (GiNaC::is_a<GiNaC::mul>(term))
+            for (std::size_t k = 0; k < term.nops(); ++k)
+                factors.push_back(term.op(k));
+        else
+            factors.push_back(term);
+        GiNaC::exvector values;
+        std::vector<std::size_t> zeros;
+        for (std::size_t k = 0; k < factors.size() && zeros.size() < 2; ++k) {
+            values.push_back(factors[k].subs(at));
+            if (values.back().is_zero())
+                zeros.push_back(k);
+        }
+        if (zeros.size() >= 2)
+            continue;
+        for (std::size_t i = 0; i < factors.size(); ++i) {
+            if (!zeros.empty() && zeros.front() != i)
+                continue;
+            ex others = 1;
+            for (std::size_t j = 0; j < factors.size(); ++j)
+                if (j != i)
+                    others *= values[j];
+            for (std::size_t z = 0; z < variables.size(); ++z) {
+                if (!factors[i].has(variables[z]))
+                    continue;
+                const ex d = differentiate(factors[i], GiNaC::ex_to<GiNaC::symbol>(variables[z])).subs(at);
+                if (!d.is_zero())
+                    gradient[z] += d * others;
+            }
+        }
     }
-    if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::posint)) {
-        const int base = vanishing_order(e.op(0), at);
-        return base == 0 ? 0 : base * GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_int();
-    }
-    if (GiNaC::is_a<GiNaC::numeric>(e))
-        return e.is_zero() ? 2 : 0;
-    try {
-        return e.subs(at).is_zero() ? 1 : 0;
-    } catch (const std::exception&) {
-        return 0;
-    }
-}
-
-/// `e` without the terms of its sum that vanish to second order at `at`: the same value
-/// and first derivatives there, from a much smaller expression.
-ex first_order_part(const ex& e, const GiNaC::exmap& at)
-{
-    if (!GiNaC::is_a<GiNaC::add>(e))
-        return e;
-    GiNaC::exvector kept;
-    for (std::size_t k = 0; k < e.nops(); ++k)
-        if (vanishing_order(e.op(k), at) < 2)
-            kept.push_back(e.op(k));
-    return GiNaC::add(kept);
+    return gradient;
 }
 
 /// Above this many expression nodes in sI − A's coupled block, det(sI − A) is left
@@ -457,19 +470,16 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
         variables.push_back(c.velocity);
     for (const input_signal& u : scene.inputs)
         variables.push_back(u.symbol);
-    // Linearize before differentiating: terms that vanish to second order at the point have
-    // no part in the Jacobian there (most of the bicycle's forcing, quadratic in the rates).
+    // Linearize before differentiating: the gradient at the point, term by term.
     GiNaC::exmap at_point = at;
     for (const auto& [symbol, value] : held)
         at_point[symbol] = value;
-    for (ex& r : residual)
-        r = first_order_part(r, at_point);
     matrix jacobian(size, static_cast<unsigned>(variables.size()));
-    for (unsigned r = 0; r < size; ++r)
+    for (unsigned r = 0; r < size; ++r) {
+        const std::vector<ex> row = gradient_at(residual[r], variables, at_point);
         for (unsigned z = 0; z < variables.size(); ++z)
-            jacobian(r, z) = -differentiate(residual[r], GiNaC::ex_to<GiNaC::symbol>(variables[z]))
-                                  .subs(at)
-                                  .subs(held);
+            jacobian(r, z) = -row[z];
+    }
     const matrix rates = system_inverse.mul(jacobian); // [φ_q, φ_q̇, φ_u; λ_…]
     auto phi = [&](std::size_t i, std::size_t z) { return rates(static_cast<unsigned>(i), static_cast<unsigned>(z)); };
 
