@@ -251,16 +251,36 @@ bool linearizes_about_operating_point(const model& scene)
 
 std::vector<std::size_t> coupled_states(const matrix& a)
 {
+    // Which entries are 0, decided once: literally, else nonzero where a value at random
+    // symbols says so clearly, else by vanishes() (expanded and normalized).
+    std::mt19937 random(20261203);
+    std::uniform_real_distribution<double> value(0.5, 2.0);
+    GiNaC::exmap sample;
+    const std::size_t n = a.rows();
+    std::vector<std::vector<bool>> zero(n, std::vector<bool>(n, true));
+    for (unsigned i = 0; i < n; ++i)
+        for (unsigned j = 0; j < n; ++j) {
+            const ex& e = a(i, j);
+            if (e.is_zero())
+                continue;
+            for (auto k = e.preorder_begin(); k != e.preorder_end(); ++k)
+                if (GiNaC::is_a<GiNaC::symbol>(*k) && !sample.count(*k))
+                    sample[*k] = value(random);
+            const ex v = e.subs(sample).evalf();
+            const bool clearly =
+                GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(v)).to_double() > 1e-6;
+            zero[i][j] = !clearly && vanishes(e);
+        }
     std::vector<std::size_t> kept;
-    for (std::size_t i = 0; i < a.rows(); ++i)
+    for (std::size_t i = 0; i < n; ++i)
         kept.push_back(i);
     for (bool removed = true; removed;) {
         removed = false;
         for (std::size_t k = 0; k < kept.size() && !removed; ++k) {
             bool row = true, column = true;
             for (std::size_t other : kept) {
-                row = row && vanishes(a(static_cast<unsigned>(kept[k]), static_cast<unsigned>(other)));
-                column = column && vanishes(a(static_cast<unsigned>(other), static_cast<unsigned>(kept[k])));
+                row = row && zero[kept[k]][other];
+                column = column && zero[other][kept[k]];
             }
             if (row || column) {
                 kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
