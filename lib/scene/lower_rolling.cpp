@@ -139,6 +139,10 @@ std::vector<constraint> rolling_constraints(const model& scene, const rolling_re
                                          "(0, 0, -1)`): the ground is the plane through the origin across it");
 
     const vector3 up{-scene.gravity->direction[0], -scene.gravity->direction[1], -scene.gravity->direction[2]};
+    for (const ex& component : up)
+        if (!GiNaC::is_a<GiNaC::numeric>(component.evalf()))
+            throw scene_error(request.where, "`rolls … on ground` needs the direction of gravity in numbers, as "
+                                             "`gravity g along (0, 0, -1)`: the ground lies across it");
     const std::vector<ex>& angles = *wheel.orientation;
     const GiNaC::matrix turn = rotation_sequence(wheel.rotation_axes, angles);
     const vector3 centre{(*wheel.position)[0], (*wheel.position)[1], (*wheel.position)[2]};

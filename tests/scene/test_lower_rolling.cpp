@@ -98,4 +98,8 @@ TEST_CASE("rolls: errors", "[lower][rolls]")
                   "body D disk(r) mass m axis y at (x, 0, r) orientation rotations(y q)\nrolls D on ground\n",
                   4, 1, "needs three-dimensional gravity");
     require_error(coin + "constraint D_roll_x: x = 0\nrolls D on ground\n", 6, 7, "already declared");
+    require_error("parameters m g r a\ncoordinates x y h q1 q2 q3\n"
+                  "body D disk(r) mass m axis y at (x, y, h) orientation rotations(z q1, x q2, y q3)\n"
+                  "gravity g along (0, a, -1)\nrolls D on ground\n",
+                  5, 1, "direction of gravity in numbers");
 }
