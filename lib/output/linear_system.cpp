@@ -279,8 +279,8 @@ namespace {
 /// measure a display that wide, and nobody reads it.
 constexpr std::size_t largest_typeset_matrix = 20000;
 
-/// A matrix of numbers with many columns, scaled to the line width (graphicx), where its
-/// full digits would run off the page.
+/// A matrix with many columns (the bicycle's 10 states), scaled to the line width
+/// (graphicx), where its entries or their full digits would run off the page.
 std::string page_wide(const std::string& matrix, Eigen::Index columns)
 {
     return columns > 6 ? "\\resizebox{0.9\\linewidth}{!}{$" + matrix + "$}" : matrix;
@@ -304,7 +304,8 @@ void write_linear_system_latex(std::ostream& out, const analysis& result)
             out << "$A$ is too large to typeset (" << a.size() << " characters of \\LaTeX); the text and JSON "
                 << "outputs hold it, and its values follow.\n";
         else
-            out << "\\begin{align*}\nA &= " << a << ",\\\\\nB &= " << latex_matrix(ss.b) << "\n\\end{align*}\n";
+            out << "\\begin{align*}\nA &= " << page_wide(a, ss.a.cols()) << ",\\\\\nB &= " << latex_matrix(ss.b)
+                << "\n\\end{align*}\n";
         for (const state_space_point& p : result.state_space_values)
             out << "At $" << values_text(p.values, how) << "$:\n\\begin{align*}\nA &= " << page_wide(numbers_latex(p.a), p.a.cols())
                 << ",\\\\\nB &= " << page_wide(numbers_latex(p.b), p.b.cols()) << "\n\\end{align*}\n";
