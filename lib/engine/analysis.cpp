@@ -71,7 +71,8 @@ struct stage_context {
 /// The stages, in the order they run (the rows of stage_table(), in the same order).
 enum class stage_id {
     inertia, euler, lagrangian, equations, multipliers, elimination, top, time, equilibrium, linearization,
-    characteristic, modes, asymptotic, damping, numeric, critical, state_space, operating_point, transfer, floquet,
+    characteristic, modes, asymptotic, damping, numeric, critical, state_space, operating_point, critical_operating,
+    transfer, floquet,
     conserved, hamiltonian, reduced, steady, simulation, workprecision, virial, verification
 };
 
@@ -123,6 +124,11 @@ bool any_scene(const model&) { return true; }
 /// `equilibrium` line names a steady rate (the `steady` stage studies that motion).
 bool has_constraints(const model& scene) { return !scene.coordinates.empty() && !scene.constraints.empty(); }
 bool has_static_point(const model& scene) { return !scene.coordinates.empty() && !scene.steady; }
+/// Critical parameters of the small oscillations, where no operating point takes their place.
+bool has_static_critical(const model& scene)
+{
+    return has_static_point(scene) && !linearizes_about_operating_point(scene);
+}
 /// A steady motion on Routh's reduced system; with constraints it is an operating point of
 /// `state_space` instead.
 bool has_steady(const model& scene)
@@ -395,7 +401,7 @@ const std::vector<stage_definition>& stage_table()
              c.result.numeric = numeric_normal_modes(c.scene, *c.result.linearization, damping ? &*damping : nullptr);
          },
          "small oscillations", "small oscillations", handles_constraints, false},
-        {stage_id::critical, "critical", {product::critical}, {}, {stage_id::linearization}, has_static_point,
+        {stage_id::critical, "critical", {product::critical}, {}, {stage_id::linearization}, has_static_critical,
          [](stage_context& c) {
              const std::optional<GiNaC::matrix> damping = damping_at_rest(c.result, c.simplifier_for_scene());
              c.result.critical = critical_parameters(c.scene, *c.result.linearization, damping ? &*damping : nullptr);
@@ -419,6 +425,11 @@ const std::vector<stage_definition>& stage_table()
              if (!has_free_coordinate(c.scene, *c.result.state_space))
                  c.result.state_space_values = state_space_at_values(c.scene, *c.result.state_space);
          }, "linear system", "linear system"},
+        // About an operating point (constraints, `linearize about`): the eigenvalues of its A.
+        {stage_id::critical_operating, "critical", {product::critical}, {}, {stage_id::operating_point},
+         linearizes_about_operating_point,
+         [](stage_context& c) { c.result.critical = critical_parameters(c.scene, c.result.operating->a); },
+         "critical parameters", "", handles_constraints, false},
         {stage_id::transfer, "transfer", {product::transfer}, {}, {stage_id::state_space, stage_id::operating_point},
          has_coordinates,
          [](stage_context& c) {

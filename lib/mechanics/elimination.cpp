@@ -34,7 +34,8 @@ elimination_result find_eliminations(const model& scene, const simplifier& simpl
         const ex f = c.function.subs(solutions).expand();
         for (std::size_t j = scene.coordinates.size(); j-- > 0;) {
             const GiNaC::realsymbol& q = scene.coordinates[j].position;
-            if (solved[j] || f.degree(q) != 1)
+            // not polynomial in q (q under a square root): not linear, and GiNaC's degree throws
+            if (solved[j] || !f.is_polynomial(q) || f.degree(q) != 1)
                 continue;
             const ex coefficient = f.coeff(q, 1);
             if (coefficient.is_zero() || !free_of_coordinates(scene, coefficient))

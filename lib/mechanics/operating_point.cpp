@@ -175,6 +175,61 @@ std::vector<std::size_t> dependent_set(const model& scene, const matrix& jacobia
     return dependent;
 }
 
+/// The gradient of `e` with respect to `variables` at `at` (which gives every symbol of `e`
+/// that is not left free), term by term and factor by factor: the value of each factor at
+/// the point once, and a derivative only of the factors that hold a variable. A term with
+/// two factors that vanish there has no part in it (most of the bicycle's forcing, quadratic
+/// in the rates); one with a single such factor contributes through that factor only. This
+/// linearizes before it simplifies: no derivative of the whole expression is ever formed.
+std::vector<ex> gradient_at(const ex& e, const std::vector<ex>& variables, const GiNaC::exmap& at)
+{
+    std::vector<ex> gradient(variables.size(), 0);
+    GiNaC::exvector terms;
+    if (GiNaC::is_a<GiNaC::add>(e))
+        for (std::size_t t = 0; t < e.nops(); ++t)
+            terms.push_back(e.op(t));
+    else
+        terms.push_back(e);
+    for (const ex& term : terms) {
+        GiNaC::exvector factors;
+        if (GiNaC::is_a<GiNaC::mul>(term))
+            for (std::size_t k = 0; k < term.nops(); ++k)
+                factors.push_back(term.op(k));
+        else
+            factors.push_back(term);
+        GiNaC::exvector values;
+        std::vector<std::size_t> zeros;
+        for (std::size_t k = 0; k < factors.size() && zeros.size() < 2; ++k) {
+            values.push_back(factors[k].subs(at));
+            if (values.back().is_zero())
+                zeros.push_back(k);
+        }
+        if (zeros.size() >= 2)
+            continue;
+        for (std::size_t i = 0; i < factors.size(); ++i) {
+            if (!zeros.empty() && zeros.front() != i)
+                continue;
+            ex others = 1;
+            for (std::size_t j = 0; j < factors.size(); ++j)
+                if (j != i)
+                    others *= values[j];
+            for (std::size_t z = 0; z < variables.size(); ++z) {
+                if (!factors[i].has(variables[z]))
+                    continue;
+                const ex d = differentiate(factors[i], GiNaC::ex_to<GiNaC::symbol>(variables[z])).subs(at);
+                if (!d.is_zero())
+                    gradient[z] += d * others;
+            }
+        }
+    }
+    return gradient;
+}
+
+/// Above this many expression nodes in sI − A's coupled block, det(sI − A) is left
+/// unexpanded: the bicycle's 4 × 4 block in v and λ takes seconds and fills pages, while a
+/// rolling disc's is a few dozen nodes.
+constexpr std::size_t largest_expanded_pencil = 4000;
+
 ex simplified(const ex& e, const simplifier& simplify) { return simplify_ratio(e, simplify); }
 
 /// Whether e is 0: exactly, or (where the simplifier falls short) at the sample point to
@@ -192,6 +247,48 @@ bool is_zero_at(const ex& e, const GiNaC::exmap& sample)
 bool linearizes_about_operating_point(const model& scene)
 {
     return !scene.coordinates.empty() && (!scene.constraints.empty() || scene.operating_point);
+}
+
+std::vector<std::size_t> coupled_states(const matrix& a)
+{
+    // Which entries are 0, decided once: literally, else nonzero where a value at random
+    // symbols says so clearly, else by vanishes() (expanded and normalized).
+    std::mt19937 random(20261203);
+    std::uniform_real_distribution<double> value(0.5, 2.0);
+    GiNaC::exmap sample;
+    const std::size_t n = a.rows();
+    std::vector<std::vector<bool>> zero(n, std::vector<bool>(n, true));
+    for (unsigned i = 0; i < n; ++i)
+        for (unsigned j = 0; j < n; ++j) {
+            const ex& e = a(i, j);
+            if (e.is_zero())
+                continue;
+            for (auto k = e.preorder_begin(); k != e.preorder_end(); ++k)
+                if (GiNaC::is_a<GiNaC::symbol>(*k) && !sample.count(*k))
+                    sample[*k] = value(random);
+            const ex v = e.subs(sample).evalf();
+            const bool clearly =
+                GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(v)).to_double() > 1e-6;
+            zero[i][j] = !clearly && vanishes(e);
+        }
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < n; ++i)
+        kept.push_back(i);
+    for (bool removed = true; removed;) {
+        removed = false;
+        for (std::size_t k = 0; k < kept.size() && !removed; ++k) {
+            bool row = true, column = true;
+            for (std::size_t other : kept) {
+                row = row && zero[kept[k]][other];
+                column = column && zero[other][kept[k]];
+            }
+            if (row || column) {
+                kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
+                removed = true;
+            }
+        }
+    }
+    return kept;
 }
 
 operating_linearization linearize_about(const model& scene, const equations_of_motion& equations,
@@ -393,12 +490,16 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
         variables.push_back(c.velocity);
     for (const input_signal& u : scene.inputs)
         variables.push_back(u.symbol);
+    // Linearize before differentiating: the gradient at the point, term by term.
+    GiNaC::exmap at_point = at;
+    for (const auto& [symbol, value] : held)
+        at_point[symbol] = value;
     matrix jacobian(size, static_cast<unsigned>(variables.size()));
-    for (unsigned r = 0; r < size; ++r)
+    for (unsigned r = 0; r < size; ++r) {
+        const std::vector<ex> row = gradient_at(residual[r], variables, at_point);
         for (unsigned z = 0; z < variables.size(); ++z)
-            jacobian(r, z) = -differentiate(residual[r], GiNaC::ex_to<GiNaC::symbol>(variables[z]))
-                                  .subs(at)
-                                  .subs(held);
+            jacobian(r, z) = -row[z];
+    }
     const matrix rates = system_inverse.mul(jacobian); // [φ_q, φ_q̇, φ_u; λ_…]
     auto phi = [&](std::size_t i, std::size_t z) { return rates(static_cast<unsigned>(i), static_cast<unsigned>(z)); };
 
@@ -478,18 +579,37 @@ operating_linearization linearize_about(const model& scene, const equations_of_m
             c0(i, j) = simplified(c0(i, j), simplify);
     result.configuration = c0;
 
-    // det(sI − A), cleared of denominators.
+    // det(sI − A), cleared of denominators: s^z det(sI − A') with A' the rest of A.
     result.s = GiNaC::realsymbol(unused_name(scene, "s"));
     {
-        matrix pencil(states, states);
-        for (unsigned i = 0; i < states; ++i)
-            for (unsigned j = 0; j < states; ++j)
-                pencil(i, j) = (i == j ? ex(result.s) : ex(0)) - result.a(i, j);
-        const ex fraction = fraction_free_determinant(pencil).normal().numer_denom();
+        const std::vector<std::size_t> kept = coupled_states(result.a);
+        unsigned size = static_cast<unsigned>(kept.size());
+        matrix pencil(size, size);
+        for (unsigned i = 0; i < size; ++i)
+            for (unsigned j = 0; j < size; ++j)
+                pencil(i, j) = (i == j ? ex(result.s) : ex(0)) -
+                               result.a(static_cast<unsigned>(kept[i]), static_cast<unsigned>(kept[j]));
+        std::size_t nodes = 0;
+        for (unsigned i = 0; i < size; ++i)
+            for (unsigned j = 0; j < size; ++j)
+                for (auto k = pencil(i, j).preorder_begin(); k != pencil(i, j).preorder_end(); ++k)
+                    ++nodes;
+        if (nodes > largest_expanded_pencil) {
+            result.characteristic_left_out = "A's coupled " + std::to_string(size) + " × " + std::to_string(size) +
+                                             " block has " + std::to_string(nodes) + " nodes, so det(sI − A) is not "
+                                             "expanded symbolically; its roots are the eigenvalues at the `values` "
+                                             "points";
+            size = 0;
+        }
+        const ex fraction = (GiNaC::pow(result.s, static_cast<int>(states - size)) *
+                             (size ? fraction_free_determinant(pencil) : ex(1)))
+                                .normal()
+                                .numer_denom();
         ex polynomial = fraction.op(0);
         if (std::optional<int> sign = sign_of(fraction.op(1)); sign && *sign < 0)
             polynomial = -polynomial;
-        result.characteristic = factor_if_quick(polynomial);
+        if (result.characteristic_left_out.empty())
+            result.characteristic = factor_if_quick(polynomial);
     }
 
     // What kind of point it is.

@@ -18,6 +18,7 @@
 #include <ginac/ginac.h>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace lagrange {
@@ -45,6 +46,9 @@ struct operating_linearization {
     /// det(sI − A) with its denominators cleared, leading coefficient positive, factored: the
     /// eigenvalues of A are its roots in `s` (named "s" unless the scene uses that name).
     GiNaC::ex characteristic;
+    /// Why det(sI − A) was not expanded (A's coupled block too large to be worth it: the
+    /// bicycle's); empty when `characteristic` holds it.
+    std::string characteristic_left_out;
     GiNaC::realsymbol s;
     /// steady: whether the moving coordinates enter no equation (M, f, Q, the constraints),
     /// so that A and B hold all along the motion, not at this instant only.
@@ -54,6 +58,13 @@ struct operating_linearization {
 /// Whether a scene's `state_space` is computed here: it has constraints or a
 /// `linearize about` line.
 bool linearizes_about_operating_point(const model& scene);
+
+/// The states of A left when those whose row or column of A is 0 are taken out, again
+/// until none is (indices, ascending): such a state's row or column of sI − A is s e_i, so
+/// it gives a factor s of det(sI − A), an eigenvalue 0 at every parameter value, and the
+/// rest is the determinant without it. The bicycle's position, heading and wheel angles
+/// (ignorable coordinates) leave its 4 × 4 lean and steer block.
+std::vector<std::size_t> coupled_states(const GiNaC::matrix& a);
 
 /// A, B and the residual at the scene's `linearize about` point (else its `equilibrium`
 /// line: at rest, or the steady motion it names). Throws scene_error, at the statement, when the point violates a

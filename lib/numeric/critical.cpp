@@ -5,7 +5,13 @@
 
 #include "core/errors.h"
 #include "core/number_text.h"
+#include "mechanics/operating_point.h"
+#include "numeric/compiled_modes.h"
 #include "numeric/point_modes.h"
+#include "program/double_double.h"
+#include "program/expression_program.h"
+
+#include <Eigen/Eigenvalues>
 
 #include <boost/math/tools/toms748_solve.hpp>
 
@@ -14,6 +20,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 
 namespace lagrange {
 
@@ -76,41 +83,22 @@ int unstable_count(const spectrum& s)
     return count;
 }
 
-} // namespace
-
-critical_result critical_parameters(const model& scene, const linearization_result& linear,
-                                    const GiNaC::matrix* damping)
+/// The scene's `critical` request, with the parameter's name and range.
+critical_result started(const model& scene)
 {
     if (!scene.critical)
         throw computation_error("`critical` needs a range: a line such as `critical v from 0 to 10`");
-    const critical_request& request = *scene.critical;
     critical_result result;
-    result.parameter = scene.parameters.at(request.parameter).name;
-    result.from = request.from;
-    result.to = request.to;
-    point_modes path(scene, linear, damping);
-    std::vector<double> values(scene.parameters.size(), std::nan(""));
-    std::vector<bool> given(scene.parameters.size(), false);
-    if (!scene.values.empty())
-        read_value_point(scene, scene.values.front(), values, given);
-    for (std::size_t k = 0; k < scene.parameters.size(); ++k) {
-        if (k == request.parameter)
-            continue;
-        if (path.uses(k) && !given[k])
-            throw computation_error("`critical` needs a value of parameter `" + scene.parameters[k].name +
-                                    "` (a `values` line or --values)");
-        if (path.uses(k))
-            result.values.emplace_back(scene.parameters[k].name, values[k]);
-    }
+    result.parameter = scene.parameters.at(scene.critical->parameter).name;
+    result.from = scene.critical->from;
+    result.to = scene.critical->to;
+    return result;
+}
 
-    numeric_modes modes;
-    const auto at = [&](double p) {
-        values[request.parameter] = p;
-        path.evaluate(values.data(), modes,
-                      [&] { return "`" + result.parameter + "` = " + shortest(p) + " in the critical range"; });
-        return spectrum_of(modes);
-    };
-
+/// The eigenvalues over the grid of [from, to], and the crossings of each real part
+/// through 0 between grid points, refined by TOMS 748 (`at`: the spectrum at a value).
+void search(const critical_request& request, const std::function<spectrum(double)>& at, critical_result& result)
+{
     std::vector<spectrum> spectra;
     for (std::size_t i = 0; i <= grid_intervals; ++i) {
         // the ends exactly; between them, points that do not drift from the table's
@@ -165,6 +153,110 @@ critical_result critical_parameters(const model& scene, const linearization_resu
     }
     std::sort(result.crossings.begin(), result.crossings.end(),
               [](const critical_crossing& x, const critical_crossing& y) { return x.value < y.value; });
+}
+
+} // namespace
+
+critical_result critical_parameters(const model& scene, const linearization_result& linear,
+                                    const GiNaC::matrix* damping)
+{
+    critical_result result = started(scene);
+    const critical_request& request = *scene.critical;
+    point_modes path(scene, linear, damping);
+    std::vector<double> values(scene.parameters.size(), std::nan(""));
+    std::vector<bool> given(scene.parameters.size(), false);
+    if (!scene.values.empty())
+        read_value_point(scene, scene.values.front(), values, given);
+    for (std::size_t k = 0; k < scene.parameters.size(); ++k) {
+        if (k == request.parameter)
+            continue;
+        if (path.uses(k) && !given[k])
+            throw computation_error("`critical` needs a value of parameter `" + scene.parameters[k].name +
+                                    "` (a `values` line or --values)");
+        if (path.uses(k))
+            result.values.emplace_back(scene.parameters[k].name, values[k]);
+    }
+
+    numeric_modes modes;
+    const auto at = [&](double p) {
+        values[request.parameter] = p;
+        path.evaluate(values.data(), modes,
+                      [&] { return "`" + result.parameter + "` = " + shortest(p) + " in the critical range"; });
+        return spectrum_of(modes);
+    };
+
+    search(request, at, result);
+    return result;
+}
+
+critical_result critical_parameters(const model& scene, const GiNaC::matrix& state_matrix)
+{
+    critical_result result = started(scene);
+    const critical_request& request = *scene.critical;
+    // Ignorable states give eigenvalues 0 at every value: only the coupled block can cross.
+    const std::vector<std::size_t> kept = coupled_states(state_matrix);
+    if (kept.empty())
+        throw computation_error("`critical`: every eigenvalue of A is 0 at every value of `" + result.parameter +
+                                "`, so none crosses the imaginary axis");
+    const auto size = static_cast<Eigen::Index>(kept.size());
+    std::vector<GiNaC::ex> entries, symbols;
+    for (std::size_t i : kept)
+        for (std::size_t j : kept)
+            entries.push_back(state_matrix(static_cast<unsigned>(i), static_cast<unsigned>(j)));
+    for (const parameter& p : scene.parameters)
+        symbols.push_back(p.symbol);
+    expression_program program;
+    try {
+        program = expression_program(entries, symbols);
+    } catch (const std::invalid_argument& error) {
+        throw computation_error(std::string("`critical` needs A in the parameters only (give every coordinate a "
+                                            "value in `linearize about`): ") + error.what());
+    }
+    std::vector<double> values(scene.parameters.size(), std::nan(""));
+    std::vector<bool> given(scene.parameters.size(), false);
+    if (!scene.values.empty())
+        read_value_point(scene, scene.values.front(), values, given);
+    const GiNaC::lst all(entries.begin(), entries.end());
+    for (std::size_t k = 0; k < scene.parameters.size(); ++k) {
+        if (k == request.parameter || !all.has(scene.parameters[k].symbol))
+            continue;
+        if (!given[k])
+            throw computation_error("`critical` needs a value of parameter `" + scene.parameters[k].name +
+                                    "` (a `values` line or --values)");
+        result.values.emplace_back(scene.parameters[k].name, values[k]);
+    }
+    // A in double-double, rounded once: its entries are exact rational functions whose
+    // terms may cancel; the eigenvalues then come from Eigen.
+    std::vector<double_double> scratch, out(entries.size());
+    Eigen::MatrixXd a(size, size);
+    const auto at = [&](double p) {
+        values[request.parameter] = p;
+        program.run(values.data(), scratch, out.data());
+        for (Eigen::Index i = 0; i < size; ++i)
+            for (Eigen::Index j = 0; j < size; ++j) {
+                const double entry = out[static_cast<std::size_t>(i * size + j)].hi;
+                if (!std::isfinite(entry))
+                    throw computation_error("`critical`: an entry of A is not finite at `" + result.parameter +
+                                            "` = " + shortest(p) + " in the critical range");
+                a(i, j) = entry;
+            }
+        Eigen::EigenSolver<Eigen::MatrixXd> solver(a, false);
+        if (solver.info() != Eigen::Success)
+            throw computation_error("`critical`: the eigenvalues of A did not converge at `" + result.parameter +
+                                    "` = " + shortest(p));
+        spectrum s;
+        double largest = 0;
+        for (Eigen::Index k = 0; k < size; ++k) {
+            s.eigenvalues.push_back(solver.eigenvalues()(k));
+            largest = std::max(largest, std::abs(s.eigenvalues.back()));
+        }
+        std::sort(s.eigenvalues.begin(), s.eigenvalues.end(), [](const auto& x, const auto& y) {
+            return x.imag() != y.imag() ? x.imag() < y.imag() : x.real() < y.real();
+        });
+        s.zero = 1e-12 * (1 + largest);
+        return s;
+    };
+    search(request, at, result);
     return result;
 }
 

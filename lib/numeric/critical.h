@@ -48,4 +48,11 @@ struct critical_result {
 critical_result critical_parameters(const model& scene, const linearization_result& linear,
                                     const GiNaC::matrix* damping);
 
+/// The same about an operating point: the eigenvalues of the state matrix A of
+/// `state_space` (mechanics/operating_point.h), the bicycle's lean and steer. The states
+/// whose row or column of A is 0 identically (ignorable coordinates: eigenvalues 0 at every
+/// value) are left out of the search and of the locus. A is compiled once and evaluated in
+/// double-double. Throws computation_error as above, and when A depends on a coordinate.
+critical_result critical_parameters(const model& scene, const GiNaC::matrix& state_matrix);
+
 } // namespace lagrange

@@ -237,7 +237,10 @@ void write_linear_system_text(std::ostream& out, const analysis& result)
         out << "  x = (" << joined(state_names(result, how)) << "),  u = (" << joined(input_names(scene, how))
             << ")\n";
         matrix_text(out, "A", ss.a, "  ");
-        if (result.operating)
+        if (result.operating && !result.operating->characteristic_left_out.empty())
+            out << "  det(" << print_name(result.operating->s.get_name(), how) << "I − A): "
+                << result.operating->characteristic_left_out << "\n";
+        else if (result.operating)
             out << "  det(" << print_name(result.operating->s.get_name(), how) << "I − A) ∝ "
                 << print(result.operating->characteristic, how, term_order{{{result.operating->s}}}) << "\n";
         if (ss.b.cols())
@@ -270,6 +273,21 @@ void write_linear_system_text(std::ostream& out, const analysis& result)
     }
 }
 
+namespace {
+
+/// Above this many characters a symbolic A (the whole bicycle's) is not typeset: TeX cannot
+/// measure a display that wide, and nobody reads it.
+constexpr std::size_t largest_typeset_matrix = 20000;
+
+/// A matrix with many columns (the bicycle's 10 states), scaled to the line width
+/// (graphicx), where its entries or their full digits would run off the page.
+std::string page_wide(const std::string& matrix, Eigen::Index columns)
+{
+    return columns > 6 ? "\\resizebox{0.9\\linewidth}{!}{$" + matrix + "$}" : matrix;
+}
+
+} // namespace
+
 void write_linear_system_latex(std::ostream& out, const analysis& result)
 {
     const model& scene = *result.scene;
@@ -280,12 +298,17 @@ void write_linear_system_latex(std::ostream& out, const analysis& result)
             << (result.operating ? "linearized about the operating point (see the text output for its residual)"
                                  : "at the equilibrium")
             << ", with $x = ("
-            << joined(state_names(result, how)) << ")$ and $u = (" << joined(input_names(scene, how)) << ")$:\n"
-            << "\\begin{align*}\nA &= " << latex_matrix(ss.a) << ",\\\\\nB &= " << latex_matrix(ss.b)
-            << "\n\\end{align*}\n";
+            << joined(state_names(result, how)) << ")$ and $u = (" << joined(input_names(scene, how)) << ")$:\n";
+        const std::string a = latex_matrix(ss.a);
+        if (a.size() > largest_typeset_matrix)
+            out << "$A$ is too large to typeset (" << a.size() << " characters of \\LaTeX); the text and JSON "
+                << "outputs hold it, and its values follow.\n";
+        else
+            out << "\\begin{align*}\nA &= " << page_wide(a, ss.a.cols()) << ",\\\\\nB &= " << latex_matrix(ss.b)
+                << "\n\\end{align*}\n";
         for (const state_space_point& p : result.state_space_values)
-            out << "At $" << values_text(p.values, how) << "$:\n\\begin{align*}\nA &= " << numbers_latex(p.a)
-                << ",\\\\\nB &= " << numbers_latex(p.b) << "\n\\end{align*}\n";
+            out << "At $" << values_text(p.values, how) << "$:\n\\begin{align*}\nA &= " << page_wide(numbers_latex(p.a), p.a.cols())
+                << ",\\\\\nB &= " << page_wide(numbers_latex(p.b), p.b.cols()) << "\n\\end{align*}\n";
     }
     if (result.transfer && shows(result, product::transfer)) {
         const transfer_result& tr = *result.transfer;
@@ -348,8 +371,12 @@ void write_linear_system_json(nlohmann::ordered_json& doc, const analysis& resul
         entry["numeric"] = points;
         if (result.operating) {
             entry["operating_point"] = operating_point_json(scene, *result.operating);
-            entry["characteristic"] = {{"variable", result.operating->s.get_name()},
-                                       {"polynomial", print(result.operating->characteristic, how)}};
+            if (result.operating->characteristic_left_out.empty())
+                entry["characteristic"] = {{"variable", result.operating->s.get_name()},
+                                           {"polynomial", print(result.operating->characteristic, how)}};
+            else
+                entry["characteristic"] = {{"variable", result.operating->s.get_name()},
+                                           {"left_out", result.operating->characteristic_left_out}};
         }
         doc["state_space"] = entry;
     }

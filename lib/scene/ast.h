@@ -106,6 +106,7 @@ struct statement {
     std::optional<body_statement> body;
     bool on_point = false;           ///< `force on P (...)` rather than `force q = ...`
     expr_ptr right;                  ///< constraint: the right-hand side (`value` is the left); critical: `to`
+    std::optional<name_ref> axis;    ///< rolls: `axis y` (`names` holds the body and the surface, `value` the radius)
 };
 
 struct scene_ast {

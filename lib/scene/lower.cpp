@@ -123,6 +123,8 @@ private:
             scene_.independent = lower_independent(s, scene_, source_.line(s.where.line));
         } else if (k == "critical") {
             lower_critical(s);
+        } else if (k == "rolls") {
+            lower_rolls(s);
         }
     }
 

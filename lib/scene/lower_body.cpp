@@ -536,9 +536,18 @@ void body_lowering::lower_torque(const statement& s)
     body.torque = lower_vector(*s.vector, context);
 }
 
+void body_lowering::lower_rolls(const statement& s)
+{
+    rolling_.push_back({s.names[0], std::nullopt, s.axis, s.where});
+    if (s.value)
+        rolling_.back().radius = lower(*s.value, expr_context{"a radius", false, false, true, false});
+}
+
 void body_lowering::resolve_body_attachments()
 {
     resolve_attachments(scene_, attachments_);
+    for (const rolling_request& request : rolling_)
+        add_rolling_constraints(scene_, request, rolling_, [&](const std::string& n) { return names_.count(n) > 0; });
 }
 
 } // namespace lagrange

@@ -11,6 +11,7 @@
 #include "core/model.h"
 #include "scene/ast.h"
 #include "scene/lower_expression.h"
+#include "scene/lower_rolling.h"
 
 #include <ginac/ginac.h>
 
@@ -53,7 +54,10 @@ protected:
     void lower_body(const statement& s);
     void lower_omega(const statement& s);
     void lower_torque(const statement& s);
-    /// At the end of the scene: composes the `attached to` chains (resolve_attachments).
+    /// `rolls W on ground [radius r] [axis y]`: kept until the end of the scene.
+    void lower_rolls(const statement& s);
+    /// At the end of the scene: composes the `attached to` chains (resolve_attachments), then
+    /// adds the constraints of the `rolls` lines, which need the bodies' poses.
     void resolve_body_attachments();
 
 private:
@@ -64,6 +68,7 @@ private:
     GiNaC::ex lower_density(const expr_node& node, const rigid_body& body);
 
     std::map<std::size_t, name_ref> attachments_; ///< body index → the name after `attached to`
+    std::vector<rolling_request> rolling_;        ///< the `rolls` lines, in order
 };
 
 /// Composes each attached body's `at` and orientation with those of the body it is

@@ -131,7 +131,7 @@ private:
     //            | spring | body | omega | torque | equilibrium | ratio | limit
     //            | values | initial | simulate | use | want
     //            | dissipation | damper | force | input | constraint | linearize | independent
-    //            | critical
+    //            | critical | rolls
     statement parse_statement()
     {
         const token& first = current();
@@ -170,6 +170,7 @@ private:
         else if (k == "linearize") parse_linearize(s);
         else if (k == "independent") parse_independent(s);
         else if (k == "critical") parse_critical(s);
+        else if (k == "rolls") parse_rolls(s);
         else
             throw scene_error(first.where, "unknown statement " + quote(k));
         return s;
@@ -466,6 +467,29 @@ private:
         s.value = parse_expr();
         expect_keyword("to");
         s.right = parse_expr();
+    }
+
+    // rolls := 'rolls' NAME 'on' 'ground' { 'radius' expr | 'axis' NAME }
+    void parse_rolls(statement& s)
+    {
+        s.names.push_back(expect_name("the name of the rolling body"));
+        expect_keyword("on");
+        if (!at_name("ground"))
+            fail_here("`ground`, the plane the body rolls on");
+        s.names.push_back({current().text, current().where});
+        take();
+        std::set<std::string> seen;
+        while (at(token_kind::name)) {
+            const token& option = current();
+            if (!seen.insert(option.text).second)
+                throw scene_error(option.where, quote(option.text) + " is given twice");
+            if (accept_name("radius"))
+                s.value = parse_expr();
+            else if (accept_name("axis"))
+                s.axis = expect_name("`x`, `y` or `z`");
+            else
+                fail_here("`radius`, `axis` or the end of the statement");
+        }
     }
 
     // simulate := 'simulate' 'until' expr { 'step' expr | 'method' NAME | 'tolerance' expr }

@@ -26,7 +26,9 @@ TEST_CASE("examples: every scene runs in every format", "[examples]")
         REQUIRE(json.exit_code == 0);
         nlohmann::json doc = nlohmann::json::parse(json.out);
         CHECK(doc.contains("stages"));
-        CHECK(doc["equations"].size() == doc["coordinates"].size());
+        // a scene whose `want` line leaves the equations out (the whole bicycle's fill pages) has none
+        if (doc.contains("equations") || read_file(scene).find("\nwant ") == std::string::npos)
+            CHECK(doc["equations"].size() == doc["coordinates"].size());
     }
 }
 

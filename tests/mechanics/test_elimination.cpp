@@ -140,3 +140,18 @@ TEST_CASE("elimination: offered in the output, refused where it cannot be done",
     CHECK(refused.exit_code == 1);
     CHECK(refused.err.find("cannot all be eliminated") != std::string::npos);
 }
+
+TEST_CASE("elimination: a constraint with a coordinate under a square root is not linear in it",
+          "[elimination][constraints]")
+{
+    // a wheel's contact height r·√(1 − (k·a)²) (`rolls`): h can be eliminated, q2 cannot,
+    // and asking GiNaC for the degree in q2 must not throw
+    const model scene = load("parameters m g r\ncoordinates h q1 q2\n"
+                             "body D disk(r) mass m axis y at (0, 0, h) orientation rotations(z q1, x q2)\n"
+                             "gravity g along (0, 0, -1)\n"
+                             "constraint c: h = r*sqrt(1 - sin(q2)^2/2 + sin(q1)*cos(q2)/3)\n");
+    const analysis a = analyze(scene, {product::equations});
+    REQUIRE(a.elimination);
+    REQUIRE(a.elimination->eliminated.size() == 1);
+    CHECK(scene.coordinates[a.elimination->eliminated[0].coordinate].name == "h");
+}

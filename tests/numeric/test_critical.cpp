@@ -9,6 +9,7 @@
  *  a = k. */
 #include "engine/analysis.h"
 #include "numeric/critical.h"
+#include "helpers/bicycle_benchmark.h"
 #include "helpers/cli_runner.h"
 #include "helpers/scene_helpers.h"
 
@@ -25,40 +26,14 @@ namespace {
 
 using complex = std::complex<double>;
 
-/// Table 2 of Meijaard et al. (2007): at each speed, the weave pair (one of the conjugates
-/// listed), the capsize and the castor eigenvalues; at v = 0 the four real ones.
-const std::map<int, std::vector<complex>>& table_2()
-{
-    static const std::map<int, std::vector<complex>> table = {
-        {0, {3.13164324790656, -3.13164324790656, 5.53094371765393, -5.53094371765393}},
-        {1, {{3.52696170990070, 0.80774027519930}, -3.13423125066578, -7.11008014637442}},
-        {2, {{2.68234517512745, 1.68066296590675}, -3.07158645641514, -8.67387984831735}},
-        {3, {{1.70675605663975, 2.31582447384325}, -2.63366137253667, -10.35101467245920}},
-        {4, {{0.41325331521125, 3.07910818603206}, -1.42944427361326, -12.15861426576447}},
-        {5, {{-0.77534188219585, 4.46486771378823}, -0.32286642900409, -14.07838969279822}},
-        {6, {{-1.52644486584142, 5.87673060598709}, -0.00406690076970, -16.08537123098030}},
-        {7, {{-2.13875644258362, 7.19525913329805}, 0.10268170574766, -18.15788466125262}},
-        {8, {{-2.69348683581097, 8.46037971396931}, 0.14327879765713, -20.27940894394569}},
-        {9, {{-3.21675402252485, 9.69377351531791}, 0.15790184030917, -22.43788559040858}},
-        {10, {{-3.72016840437287, 10.90681139476287}, 0.16105338653172, -24.62459635017404}},
-    };
-    return table;
-}
+using lagrange_test::bicycle_table_2;
+using lagrange_test::relative_distance;
 
 model bicycle()
 {
     return load_model(source_text("bicycle_reduced.lag",
                                   lagrange_test::read_file(std::string(LAGRANGE_SOURCE_DIR) +
                                                            "/examples/bicycle_reduced.lag")));
-}
-
-/// The computed eigenvalue nearest `reference`, relative to |reference|.
-double relative_distance(const std::vector<complex>& computed, complex reference)
-{
-    double best = 1e300;
-    for (const complex& s : computed)
-        best = std::min(best, std::abs(s - reference) / std::abs(reference));
-    return best;
 }
 
 } // namespace
@@ -77,7 +52,7 @@ TEST_CASE("critical: the reduced bicycle's eigenvalues match Meijaard's Table 2"
         INFO("v = " << v);
         REQUIRE(r.grid[i] == static_cast<double>(v));
         REQUIRE(r.locus[i].size() == 4);
-        for (const complex& reference : table_2().at(v)) {
+        for (const complex& reference : bicycle_table_2().at(v)) {
             INFO("reference " << reference);
             CHECK(relative_distance(r.locus[i], reference) <= 1e-10);
             CHECK(relative_distance(r.locus[i], std::conj(reference)) <= 1e-10);
