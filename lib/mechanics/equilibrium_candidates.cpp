@@ -21,6 +21,24 @@ using GiNaC::ex_to;
 using GiNaC::exvector;
 using GiNaC::is_a;
 
+namespace {
+
+/// The distinct irreducible factors of `polynomial` (powers taken to their base), in canonical
+/// order: a GiNaC product keeps its factors in hash order, which would order the roots
+/// differently from process to process.
+exvector factor_bases(const ex& polynomial)
+{
+    const ex factored = factor_if_quick(polynomial);
+    exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
+    for (ex& factor : factors)
+        if (is_a<GiNaC::power>(factor))
+            factor = factor.op(0);
+    std::sort(factors.begin(), factors.end(), canonical_less);
+    return factors;
+}
+
+} // namespace
+
 std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
 {
     std::vector<ex> roots;
@@ -46,12 +64,7 @@ std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
     if (!trigonometric) {
         if (!g.info(GiNaC::info_flags::polynomial))
             return {};
-        ex factored = factor_if_quick(g);
-        exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
-        std::sort(factors.begin(), factors.end(), canonical_less); // a mul keeps hash order: roots in a fixed one
-        for (ex factor : factors) {
-            if (is_a<GiNaC::power>(factor))
-                factor = factor.op(0);
+        for (const ex& factor : factor_bases(g)) {
             if (factor.degree(q) == 1) {
                 add_root(tidy(-factor.coeff(q, 0) / factor.coeff(q, 1)));
             } else if (factor.degree(q) == 2) {
@@ -81,12 +94,7 @@ std::vector<ex> solve_one(const ex& gradient, const GiNaC::symbol& q)
     a = a.expand();
     b = b.expand();
     auto roots_in_cos = [&](const ex& polynomial) {
-        ex factored = factor_if_quick(polynomial);
-        exvector factors = is_a<GiNaC::mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
-        std::sort(factors.begin(), factors.end(), canonical_less); // a mul keeps hash order: roots in a fixed one
-        for (ex factor : factors) {
-            if (is_a<GiNaC::power>(factor))
-                factor = factor.op(0);
+        for (const ex& factor : factor_bases(polynomial)) {
             if (factor.degree(c) != 1)
                 continue;
             ex value = tidy(-factor.coeff(c, 0) / factor.coeff(c, 1));
