@@ -6,6 +6,10 @@
  *  (tests/mechanics/test_bicycle.cpp). */
 #pragma once
 
+#include "numeric/critical.h"
+
+#include <catch2/catch.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -43,6 +47,27 @@ inline double relative_distance(const std::vector<std::complex<double>>& compute
     for (const std::complex<double>& s : computed)
         best = std::min(best, std::abs(s - reference) / std::abs(reference));
     return best;
+}
+
+/// The eigenvalues of a `critical v from 0 to 10` run against Table 2: its table rows are
+/// v = 0, 1, …, 10 exactly, each with the four lean and steer eigenvalues, every reference
+/// (and its conjugate) matched to 1e-10 relative.
+inline void check_table_2(const lagrange::critical_result& r)
+{
+    REQUIRE(r.parameter == "v");
+    std::size_t rows = 0;
+    for (std::size_t i = 0; i < r.grid.size(); i += r.table_every, ++rows) {
+        const int v = static_cast<int>(rows);
+        INFO("v = " << v);
+        REQUIRE(r.grid[i] == static_cast<double>(v));
+        REQUIRE(r.locus[i].size() == 4);
+        for (const std::complex<double>& reference : bicycle_table_2().at(v)) {
+            INFO("reference " << reference);
+            CHECK(relative_distance(r.locus[i], reference) <= 1e-10);
+            CHECK(relative_distance(r.locus[i], std::conj(reference)) <= 1e-10);
+        }
+    }
+    CHECK(rows == 11);
 }
 
 } // namespace lagrange_test

@@ -19,8 +19,7 @@
 #include <vector>
 
 using namespace lagrange;
-using lagrange_test::bicycle_table_2;
-using lagrange_test::relative_distance;
+using lagrange_test::check_table_2;
 
 namespace {
 
@@ -57,22 +56,7 @@ TEST_CASE("bicycle: the whole bicycle's lean and steer eigenvalues match Meijaar
 {
     const analysis& result = bicycle().result;
     REQUIRE(result.critical);
-    const critical_result& r = *result.critical;
-    REQUIRE(r.parameter == "v");
-    std::size_t rows = 0;
-    for (std::size_t i = 0; i < r.grid.size(); i += r.table_every, ++rows) {
-        const int v = static_cast<int>(rows);
-        INFO("v = " << v);
-        REQUIRE(r.grid[i] == static_cast<double>(v));
-        // the position, heading and wheel angles are ignorable: only lean and steer remain
-        REQUIRE(r.locus[i].size() == 4);
-        for (const complex& reference : bicycle_table_2().at(v)) {
-            INFO("reference " << reference);
-            CHECK(relative_distance(r.locus[i], reference) <= 1e-10);
-            CHECK(relative_distance(r.locus[i], std::conj(reference)) <= 1e-10);
-        }
-    }
-    CHECK(rows == 11);
+    check_table_2(*result.critical);
 }
 
 TEST_CASE("bicycle: the whole bicycle's weave and capsize speeds to 1e-10", "[bicycle]")

@@ -26,8 +26,7 @@ namespace {
 
 using complex = std::complex<double>;
 
-using lagrange_test::bicycle_table_2;
-using lagrange_test::relative_distance;
+using lagrange_test::check_table_2;
 
 model bicycle()
 {
@@ -43,22 +42,7 @@ TEST_CASE("critical: the reduced bicycle's eigenvalues match Meijaard's Table 2"
     const model scene = bicycle();
     const analysis result = analyze(scene, {product::critical});
     REQUIRE(result.critical);
-    const critical_result& r = *result.critical;
-    REQUIRE(r.parameter == "v");
-    // the table's rows are v = 0, 1, …, 10 exactly
-    std::size_t rows = 0;
-    for (std::size_t i = 0; i < r.grid.size(); i += r.table_every, ++rows) {
-        const int v = static_cast<int>(rows);
-        INFO("v = " << v);
-        REQUIRE(r.grid[i] == static_cast<double>(v));
-        REQUIRE(r.locus[i].size() == 4);
-        for (const complex& reference : bicycle_table_2().at(v)) {
-            INFO("reference " << reference);
-            CHECK(relative_distance(r.locus[i], reference) <= 1e-10);
-            CHECK(relative_distance(r.locus[i], std::conj(reference)) <= 1e-10);
-        }
-    }
-    CHECK(rows == 11);
+    check_table_2(*result.critical);
 }
 
 TEST_CASE("critical: the reduced bicycle's weave and capsize speeds to 1e-10", "[critical]")
