@@ -824,7 +824,8 @@ int run(int argc, char** argv)
     ensemble->add_option("-o,--output", ensemble_options.output, "FILE.csv, FILE.json or FILE.png (default: CSV on standard output)");
     ensemble->add_option("--threads", ensemble_options.threads, "threads per process (default: all cores)")
         ->check(CLI::Range(std::size_t{1}, std::size_t{4096}));
-    ensemble->add_option("--tolerance", ensemble_options.tolerance, "target of each run's relative error (default 1e-9)")
+    ensemble->add_option("--tolerance", ensemble_options.tolerance,
+                         "target of each run's relative error (default: the scene's, else 1e-9)")
         ->check(finite_number & CLI::Range(1e-14, 0.5));
     ensemble->add_option("--random", ensemble_options.random,
                          "N random points, uniform in the --grid ranges (name=from..to[:log]) instead of the grid")

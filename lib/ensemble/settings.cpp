@@ -3,7 +3,7 @@
  *  An ensemble's settings (see settings.h). */
 #include "ensemble/settings.h"
 
-#include "numeric/values.h"
+#include "numeric/simulation.h"
 
 #include <cmath>
 
@@ -14,19 +14,24 @@ ensemble_settings ensemble_settings_for(const model& scene, const ensemble_measu
 {
     if (request.seed != 1 && request.random == 0)
         throw ensemble_request_error("--seed goes with --random N");
-    ensemble_settings settings;
-    if (request.until)
-        settings.until = *request.until;
-    else if (measure.what == ensemble_measure::kind::floquet_stable)
-        settings.until = 1; // each run lasts one period of the drive
-    else if (scene.simulation)
-        settings.until = real_value(scene.simulation->until, "the scene's `simulate until`");
-    else
+    simulation_settings asked; // the span is read as `simulate` reads it: one rule for both
+    asked.until = request.until;
+    asked.tolerance = request.tolerance;
+    if (!asked.until && measure.what == ensemble_measure::kind::floquet_stable)
+        asked.until = 1; // each run lasts one period of the drive
+    if (!asked.until && !scene.simulation)
         throw ensemble_request_error("give the end time of every run with --until T (the scene has no `simulate until`)");
-    if (!(settings.until > 0) || !std::isfinite(settings.until))
+    if (asked.until && !(*asked.until > 0 && std::isfinite(*asked.until)))
         throw ensemble_request_error("the end time must be a positive number");
-    if (request.tolerance)
-        settings.tolerance = *request.tolerance;
+    simulation_span span;
+    try {
+        span = simulation_span_of(scene, asked);
+    } catch (const computation_error& error) {
+        throw ensemble_request_error(error.what());
+    }
+    ensemble_settings settings;
+    settings.until = span.until;
+    settings.tolerance = span.tolerance;
     settings.random = request.random;
     settings.seed = request.seed;
     settings.native = request.native;

@@ -30,8 +30,10 @@ struct ensemble_request_error : std::invalid_argument {
 };
 
 /// The settings of `request` for `scene` and `measure`. The end time: `until`, else one
-/// period of the drive for floquet_stable, else the scene's `simulate until`. Throws
-/// ensemble_request_error when there is none, or it is not a positive number.
+/// period of the drive for floquet_stable, else the scene's `simulate until`; the
+/// tolerance: `tolerance`, else the scene's, else 1e-9 (as `simulate` reads them). Throws
+/// ensemble_request_error when there is no end time, it is not a positive number, or the
+/// tolerance is outside 1e-14 … 1.
 ensemble_settings ensemble_settings_for(const model& scene, const ensemble_measure& measure,
                                         const ensemble_request& request);
 

@@ -44,6 +44,14 @@ TEST_CASE("ensemble settings: the end time, the tolerance and the random points"
     seed_alone.seed = 3;
     CHECK_THROWS_AS(ensemble_settings_for(with_end, final_state, seed_alone), ensemble_request_error);
 
+    // The span is read as `simulate` reads it: the scene's tolerance when none is asked for.
+    model with_tolerance = load(oscillator + "initial x = 1\nsimulate until 7 tolerance 1e-6\n");
+    CHECK(ensemble_settings_for(with_tolerance, final_state, {}).tolerance == 1e-6);
+    CHECK(ensemble_settings_for(with_end, final_state, {}).tolerance == 1e-9);
+    ensemble_request too_loose;
+    too_loose.tolerance = 2;
+    CHECK_THROWS_AS(ensemble_settings_for(with_end, final_state, too_loose), ensemble_request_error);
+
     // The CLI: a usage error, exit 2, with the reason.
     cli_result no_end = run_cli("ensemble - --grid \"x=0..1:2\"", oscillator + "initial x = 1\n");
     CHECK(no_end.exit_code == 2);
