@@ -459,9 +459,10 @@ const std::vector<stage_definition>& stage_table()
              c.result.hamiltonian = derive_hamiltonian(c.scene, *c.result.lagrangian, *c.result.equations,
                                                        c.simplifier_for_scene());
          }, "", "hamiltonian", refuses_constraints("`hamiltonian`")},
-        {stage_id::reduced, "reduced", {product::reduced}, {}, {stage_id::lagrangian}, has_coordinates,
+        {stage_id::reduced, "reduced", {product::reduced}, {}, {stage_id::equations}, has_coordinates,
          [](stage_context& c) {
-             c.result.reduced = reduce_cyclic(c.scene, *c.result.lagrangian, c.simplifier_for_scene());
+             c.result.reduced =
+                 reduce_cyclic(c.scene, *c.result.lagrangian, *c.result.equations, c.simplifier_for_scene());
          }, "symmetries", "symmetries", refuses_constraints("`reduced`")},
         // An `equilibrium` line that names a steady rate: the motion on the reduced system.
         {stage_id::steady, "steady", {}, {product::equilibrium, product::linearization, product::characteristic, product::frequencies,

@@ -216,7 +216,8 @@ hamiltonian_result derive_hamiltonian(const model& scene, const lagrangian_resul
     return result;
 }
 
-reduced_result reduce_cyclic(const model& scene, const lagrangian_result& lagrangian, const simplifier& simplify)
+reduced_result reduce_cyclic(const model& scene, const lagrangian_result& lagrangian,
+                             const equations_of_motion& equations, const simplifier& simplify)
 {
     if (!lagrangian.split)
         throw computation_error("the Lagrangian is not quadratic in the velocities, so Routh's reduction has no "
@@ -232,8 +233,9 @@ reduced_result reduce_cyclic(const model& scene, const lagrangian_result& lagran
     const GiNaC::exmap rest = velocities_at_rest(scene);
     const auto& coords = scene.coordinates;
     const unsigned k = static_cast<unsigned>(result.cyclic.size()), m = static_cast<unsigned>(result.kept.size());
+    // M's blocks of the cyclic (c) and kept (a) coordinates, in canonical form as L's
     auto second = [&](std::size_t i, std::size_t j) {
-        return differentiate(differentiate(l, coords[i].velocity), coords[j].velocity);
+        return simplify.canonical(equations.mass(static_cast<unsigned>(i), static_cast<unsigned>(j)));
     };
     GiNaC::matrix mcc(k, k), mca(k, m), maa(m, m);
     for (unsigned i = 0; i < k; ++i) {

@@ -87,7 +87,9 @@ struct reduced_result {
 };
 
 /// Throws computation_error when no coordinate is cyclic or L is not quadratic in the velocities.
-reduced_result reduce_cyclic(const model& scene, const lagrangian_result& lagrangian, const simplifier& simplify);
+/// The kinetic blocks are those of the equations' mass matrix M.
+reduced_result reduce_cyclic(const model& scene, const lagrangian_result& lagrangian,
+                             const equations_of_motion& equations, const simplifier& simplify);
 
 /// e tidied for printing: multiple angles through single ones, sin² = 1 − cos² in
 /// numerator and denominator, common factors cancelled, factored.
