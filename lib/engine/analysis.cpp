@@ -205,9 +205,9 @@ const std::vector<product>& every_product()
     return all;
 }
 
-/// The stages in the order they run. Adding a product is one line of core/products.inc,
-/// one row here (and its stage_id), one result field in `analysis`, and its family's
-/// writers (output/document.cpp).
+/// The stages in the order they run. Adding a product is one LAGRANGE_OWN_PRODUCT line of
+/// core/products.inc (which gives it its `analysis` field and its place in the documents
+/// and the report), one row here with its stage_id, and its own files.
 const std::vector<stage_definition>& stage_table()
 {
     static const std::vector<stage_definition> table = {

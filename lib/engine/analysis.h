@@ -59,13 +59,11 @@ struct analysis {
     std::optional<modes_result> modes;
     std::optional<asymptotic_result> asymptotic;
     std::optional<std::vector<numeric_modes>> numeric;
-    std::optional<critical_result> critical; ///< crossings of the imaginary axis over the `critical` range
     std::optional<std::vector<inertia_result>> inertia; ///< one per body, in scene order
     std::optional<std::vector<euler_result>> euler;     ///< one per free body (with `omega`)
     std::optional<std::vector<top_result>> tops;        ///< bodies turned by three coordinates (heavy tops)
     std::optional<simulation_result> simulation;
     std::optional<workprecision_result> workprecision;
-    std::optional<virial_result> virial; ///< ⟨T⟩ and ⟨V⟩ over the simulation
     std::optional<damping_result> damping;   ///< damped small oscillations (dissipation, dampers)
     /// How each symbolic result was checked numerically before it is printed.
     std::optional<verification_result> verification;
@@ -86,6 +84,12 @@ struct analysis {
     /// `state_space` about an operating point (constraints, or a `linearize about` line): then
     /// `state_space` holds its A and B in the independent states.
     std::optional<operating_linearization> operating;
+    // The products with a result of their own (core/products.inc): `std::optional<result> id`.
+#define LAGRANGE_PRODUCT(id, name, scope, by_default)
+#define LAGRANGE_OWN_PRODUCT(id, name, scope, by_default, result) std::optional<result> id;
+#include "core/products.inc"
+#undef LAGRANGE_OWN_PRODUCT
+#undef LAGRANGE_PRODUCT
 };
 
 /// What verify_results reads of an analysis: a pointer to each result it computed.

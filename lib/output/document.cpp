@@ -15,8 +15,6 @@
 #include "output/symmetries.h"
 #include "output/print.h"
 #include "output/simulation.h"
-#include "output/virial.h"
-#include "output/critical.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +22,17 @@
 #include <stdexcept>
 
 namespace lagrange {
+
+// The writers of the products with an output family of their own (core/products.inc),
+// defined in output/<id>.cpp.
+#define LAGRANGE_PRODUCT(id, name, scope, by_default)
+#define LAGRANGE_OWN_PRODUCT(id, name, scope, by_default, result)                                           \
+    void write_##id##_text(std::ostream& out, const analysis& result);                                      \
+    void write_##id##_latex(std::ostream& out, const analysis& result);                                     \
+    void write_##id##_json(nlohmann::ordered_json& doc, const analysis& result);
+#include "core/products.inc"
+#undef LAGRANGE_OWN_PRODUCT
+#undef LAGRANGE_PRODUCT
 
 namespace {
 
@@ -169,7 +178,8 @@ family_writers family()
             [](nlohmann::ordered_json& doc, const analysis& r, const document_options&) { json(doc, r); }};
 }
 
-/// Every family, in the order the three documents show them. Adding a family is one row.
+/// Every family, in the order the three documents show them: the built-in families, with
+/// the products that have a family of their own after the work-precision table.
 const std::vector<family_writers>& families()
 {
     using options = const document_options&;
@@ -218,8 +228,12 @@ const std::vector<family_writers>& families()
              if (r.workprecision)
                  doc["workprecision"] = workprecision_json(*r.workprecision);
          }},
-        family<write_virial_text, write_virial_latex, write_virial_json>(),
-        family<write_critical_text, write_critical_latex, write_critical_json>(),
+#define LAGRANGE_PRODUCT(id, name, scope, by_default)
+#define LAGRANGE_OWN_PRODUCT(id, name, scope, by_default, result)                                           \
+    family<write_##id##_text, write_##id##_latex, write_##id##_json>(),
+#include "core/products.inc"
+#undef LAGRANGE_OWN_PRODUCT
+#undef LAGRANGE_PRODUCT
         {write_verification_text, write_verification_latex, write_verification_json},
     };
     return table;

@@ -648,7 +648,12 @@ const std::vector<report_section>& report_sections()
          [](const analysis& r) { return r.operating && r.state_space && wants(r, product::state_space); },
          write_operating_point_section},
         {"floquet", [](const analysis& r) { return r.floquet.has_value(); }, write_floquet_section},
-        {"critical", [](const analysis& r) { return r.critical.has_value(); }, write_critical_section},
+#define LAGRANGE_PRODUCT(id, name, scope, by_default)
+#define LAGRANGE_OWN_PRODUCT(id, name, scope, by_default, result)                                           \
+    {name, [](const analysis& r) { return r.id.has_value(); }, write_##id##_section},
+#include "core/products.inc"
+#undef LAGRANGE_OWN_PRODUCT
+#undef LAGRANGE_PRODUCT
         {"symmetries",
          [](const analysis& r) {
              return r.conserved.has_value() || r.hamiltonian.has_value() || r.steady.has_value() ||

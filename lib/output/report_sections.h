@@ -49,9 +49,14 @@ void write_symmetries_section(report_writer& w);
 /// integrability, the multipliers and the constraint forces.
 void write_constraints_section(report_writer& w);
 
-/// Critical parameters (critical.cpp): the crossings of the imaginary axis over the
-/// `critical` range, the table of eigenvalues and the root locus.
-void write_critical_section(report_writer& w);
+/// The report sections of the products with an output family of their own
+/// (core/products.inc), defined in output/<id>.cpp; listed in report_sections() after the
+/// Floquet section, in products.inc's order.
+#define LAGRANGE_PRODUCT(id, name, scope, by_default)
+#define LAGRANGE_OWN_PRODUCT(id, name, scope, by_default, result) void write_##id##_section(report_writer& w);
+#include "core/products.inc"
+#undef LAGRANGE_OWN_PRODUCT
+#undef LAGRANGE_PRODUCT
 
 /// The parameter values of a numeric point as LaTeX, "m = 1,\ k = 4" (the numeric sections'
 /// subsection titles).

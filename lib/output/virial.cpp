@@ -2,6 +2,7 @@
 /** @file virial.cpp
  *  The time averages of T and V as text, LaTeX and JSON (see virial.h). */
 #include "output/virial.h"
+#include "output/report_sections.h"
 
 #include "core/number_text.h"
 
@@ -54,6 +55,27 @@ void write_virial_json(nlohmann::ordered_json& doc, const analysis& result)
     if (v.quadrature_error)
         entry["quadrature_error"] = *v.quadrature_error;
     doc["virial"] = entry;
+}
+
+void write_virial_section(report_writer& w)
+{
+    const virial_result& v = *w.result().virial;
+    w.latex("\\section{Time averages}\n");
+    w.text("The kinetic and potential energy averaged over the simulated motion, from ")
+        .latex("$t = " + report_writer::number(v.from) + "$ to $t = " + report_writer::number(v.to) + "$")
+        .text(". For a bounded motion in a potential homogeneous of degree ")
+        .latex("$n$")
+        .text(", the virial theorem gives ")
+        .latex("$2\\langle T\\rangle = n\\langle V\\rangle$")
+        .text(" over a long time.");
+    w.latex("\n\\begin{align*}\n\\langle T\\rangle &= " + report_writer::number(v.kinetic, 10) +
+            ",\\\\\n\\langle V\\rangle &= " + report_writer::number(v.potential, 10) +
+            ",\\\\\n2\\langle T\\rangle / \\langle V\\rangle &= " +
+            report_writer::number(2 * v.kinetic / v.potential, 10) + ".\n\\end{align*}\n");
+    if (v.quadrature_error)
+        w.text("The averages' quadrature error is estimated at ")
+            .latex("$" + report_writer::number(*v.quadrature_error, 3) + "$")
+            .text(".\n");
 }
 
 } // namespace lagrange

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file virial.h
- *  The virial product (numeric/virial.h) as text, LaTeX and JSON. */
+ *  The virial product (numeric/virial.h) as text, LaTeX and JSON; its report section is
+ *  declared in report_sections.h. */
 #pragma once
 
 #include "engine/analysis.h"

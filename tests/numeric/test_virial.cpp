@@ -88,3 +88,18 @@ TEST_CASE("virial: the JSON key of the product, and its errors", "[virial][cli]"
     CHECK(none.exit_code == 1);
     CHECK(none.err.find("end time") != std::string::npos);
 }
+
+TEST_CASE("virial: the report section gives the averages", "[virial][report]")
+{
+    const std::string scene = temporary_file("kepler_virial_report.lag", kepler(1) + "want virial\n");
+    const std::string tex = temporary_file("kepler_virial_report.tex", "");
+    cli_result r = run_cli("report " + scene + " -o " + tex, "", 60);
+    REQUIRE(r.exit_code == 0);
+    const std::string latex = read_file(tex);
+    REQUIRE(latex.find("\\section{Time averages}") != std::string::npos);
+    // ⟨V⟩ as the report prints it, read back as a number
+    const std::string key = "\\langle V\\rangle &= ";
+    const std::size_t at = latex.find(key);
+    REQUIRE(at != std::string::npos);
+    CHECK(std::abs(std::stod(latex.substr(at + key.size())) + 1 / kepler_a) < 1e-6);
+}
