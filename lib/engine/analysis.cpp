@@ -709,12 +709,18 @@ analysis analyze(const model& scene, const std::set<product>& wanted, const simu
 
 analysis analyze_for_export(const model& scene, const budget_limits& limits)
 {
+    std::set<product> wanted{product::equations};
+    // the conserved quantities of a Lagrangian alone (as the `conserved` stage has them)
+    if (scene.constraints.empty() && !scene.has_generalized_forces())
+        wanted.insert(product::conserved);
     if (scene.constraints.empty() && !scene.steady)
         try {
-            return analyze(scene, {product::equations, product::linearization}, limits);
+            std::set<product> linear = wanted;
+            linear.insert(product::linearization);
+            return analyze(scene, linear, limits);
         } catch (const computation_error&) { // budget_exceeded too: then without the linearization
         }
-    return analyze(scene, {product::equations}, limits);
+    return analyze(scene, wanted, limits);
 }
 
 point_modes numeric_modes_path(const analysis& result)

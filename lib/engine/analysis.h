@@ -116,8 +116,9 @@ analysis analyze(const model& scene, const std::set<product>& wanted = {}, const
 /// The same, with the default budgets.
 analysis analyze(const model& scene, const std::set<product>& wanted, const simulation_settings& simulation);
 
-/// What `export` needs: the equations of motion, and the linearization at the scene's
-/// equilibrium where one can be found (a scene without one is exported without it).
+/// What `export` needs: the equations of motion, the conserved quantities of a scene without
+/// constraints or generalized forces, and the linearization at the scene's equilibrium where
+/// one can be found (a scene without one is exported without it).
 analysis analyze_for_export(const model& scene, const budget_limits& limits = {});
 
 /// The numeric modes' path for `result` (which holds a linearization): its T, V, G and, when

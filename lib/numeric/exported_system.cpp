@@ -49,7 +49,7 @@ std::optional<expression_program> linear_program(const model& scene, const linea
 } // namespace
 
 exported_system export_system(const model& scene, const equations_of_motion& equations,
-                              const linearization_result* linearization)
+                              const linearization_result* linearization, const conserved_result* conserved)
 {
     exported_system out;
     const std::size_t n = scene.coordinates.size();
@@ -115,6 +115,19 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
     }
     if (linearization)
         out.linear = linear_program(scene, *linearization, symbols);
+    if (conserved) {
+        std::vector<GiNaC::ex> quantities;
+        if (conserved->energy) {
+            quantities.push_back(*conserved->energy);
+            out.conserved_names.push_back("energy");
+        }
+        for (std::size_t k = 0; k < conserved->cyclic.size(); ++k) {
+            quantities.push_back(conserved->momenta[k]);
+            out.conserved_names.push_back("p_" + scene.coordinates[conserved->cyclic[k]].name);
+        }
+        if (!quantities.empty())
+            out.conserved = expression_program(quantities, symbols);
+    }
 
     // Defaults: the first `values` line, where it gives a number (an expression in other
     // parameters is evaluated with theirs).

@@ -10,6 +10,7 @@
 #include "core/model.h"
 #include "mechanics/equations_of_motion.h"
 #include "mechanics/linearization.h"
+#include "mechanics/symmetries.h"
 #include "program/expression_program.h"
 
 #include <optional>
@@ -42,11 +43,17 @@ struct exported_system {
     /// the constrained right-hand side is not exported.
     std::vector<std::string> constraint_names;
     std::optional<expression_program> constraint_parts;
+    /// What the motion conserves: the energy function h (named `energy`) where L does not
+    /// depend on t, then the momentum ∂L/∂q̇ of each cyclic coordinate (named `p_` + its name).
+    /// Absent when the export was given none, or nothing is conserved.
+    std::vector<std::string> conserved_names;
+    std::optional<expression_program> conserved;
 };
 
-/// The exported system of `scene`, with `linear` from `linearization` when given. Throws
-/// computation_error for expressions that cannot be compiled.
+/// The exported system of `scene`, with `linear` from `linearization` and `conserved` from
+/// `conserved` when given. Throws computation_error for expressions that cannot be compiled.
 exported_system export_system(const model& scene, const equations_of_motion& equations,
-                              const linearization_result* linearization = nullptr);
+                              const linearization_result* linearization = nullptr,
+                              const conserved_result* conserved = nullptr);
 
 } // namespace lagrange

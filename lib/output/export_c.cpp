@@ -161,6 +161,13 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
       << "void " << name << "_forcing" << args << ", double *F);\n"
       << "/* The energy function h = sum q' dL/dq' - L (conserved when nothing drives or damps the motion). */\n"
       << "double " << name << "_energy" << args << ");\n";
+    if (system.conserved) {
+        h << "/* What the motion conserves (NCONSERVED values, named in " << name << "_conserved_names): the\n"
+          << "   energy function where L does not depend on t, then the momentum of each cyclic coordinate. */\n"
+          << "#define " << name << "_NCONSERVED " << system.conserved_names.size() << "\n"
+          << "extern const char *const " << name << "_conserved_names[" << name << "_NCONSERVED];\n"
+          << "void " << name << "_conserved" << args << ", double *conserved);\n";
+    }
     if (system.linear)
         h << "/* At the equilibrium the small oscillations are about, functions of p only: the state there\n"
           << "   (NX), and T and V (NQ x NQ each) of T q'' + V q = 0. The linearized x' = A x + B u there\n"
@@ -181,13 +188,21 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
     c << "};\nconst char *const " << name << "_parameter_names[" << name << "_NP > 0 ? " << name << "_NP : 1] = {";
     for (std::size_t k = 0; k < system.parameter_names.size(); ++k)
         c << (k ? ", " : "") << '"' << system.parameter_names[k] << '"';
-    c << (system.parameter_names.empty() ? "\"\"" : "") << "};\n\n";
+    c << (system.parameter_names.empty() ? "\"\"" : "") << "};\n";
+    if (system.conserved) {
+        c << "const char *const " << name << "_conserved_names[" << name << "_NCONSERVED] = {";
+        for (std::size_t k = 0; k < system.conserved_names.size(); ++k)
+            c << (k ? ", " : "") << '"' << system.conserved_names[k] << '"';
+        c << "};\n";
+    }
+    c << "\n";
     bool powers = false;
     for (const expression_program* program : {&system.mass, &system.forcing, &system.mass_and_forcing,
                                               &system.derivatives, &system.energy})
         for (const instruction& i : program->code())
             powers = powers || i.op == instruction::code::integer_power;
-    for (const std::optional<expression_program>* program : {&system.linear, &system.constraint_parts})
+    for (const std::optional<expression_program>* program :
+         {&system.linear, &system.constraint_parts, &system.conserved})
         if (*program)
             for (const instruction& i : (*program)->code())
                 powers = powers || i.op == instruction::code::integer_power;
@@ -224,6 +239,9 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
           << c_body(system.derivatives, names, system, "out") << "}\n\n";
     c << "double " << name << "_energy" << args << ")\n{\n    double h[1];\n"
       << c_body(system.energy, names, system, "h") << "    return h[0];\n}\n\n";
+    if (system.conserved)
+        c << "void " << name << "_conserved" << args << ", double *conserved)\n{\n"
+          << c_body(*system.conserved, names, system, "conserved") << "}\n\n";
     const std::string nx = name + "_NX", nu = name + "_NU";
     if (constrained) {
         c << constrained_functions(system, names, name, args);

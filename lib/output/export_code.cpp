@@ -45,7 +45,8 @@ namespace {
 
 /// Argument and result names of the generated functions: a scene name equal to one is renamed.
 const std::set<std::string> argument_names = {"t", "x", "u", "p", "shape", "dxdt", "M", "F", "D", "dfdx", "dfdu",
-                                              "h", "i", "j", "k", "qdd", "column"};
+                                              "h", "i", "j", "k", "qdd", "column",
+                                              "conserved"};
 
 } // namespace
 
@@ -247,7 +248,8 @@ std::vector<exported_file> export_scene(const model& scene, export_target target
 {
     const analysis result = analyze_for_export(scene, limits);
     const exported_system system =
-        export_system(scene, *result.equations, result.linearization ? &*result.linearization : nullptr);
+        export_system(scene, *result.equations, result.linearization ? &*result.linearization : nullptr,
+                      result.conserved ? &*result.conserved : nullptr);
     return export_code(scene, system, target, name, version);
 }
 

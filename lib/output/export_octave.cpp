@@ -104,6 +104,15 @@ std::vector<exported_file> export_octave(const model& scene, const exported_syst
     files.push_back({name + "_energy.m",
                      octave_function(name, "energy", "The energy function h = sum q' dL/dq' - L.", system.energy,
                                      names, system, "h", 1, 1, header)});
+    if (system.conserved) {
+        std::string named;
+        for (const std::string& n : system.conserved_names)
+            named += (named.empty() ? "" : ", ") + n;
+        files.push_back({name + "_conserved.m",
+                         octave_function(name, "conserved", "What the motion conserves, a column: " + named + ".",
+                                         *system.conserved, names, system, "conserved", system.conserved_names.size(), 1,
+                                         header)});
+    }
     std::ostringstream defaults;
     defaults << "function p = " << name << "_defaults()\n  % The scene's `values` (the first line), NaN where it "
              << "gives none, in the order of the parameters.\n" << header << "  p = ["

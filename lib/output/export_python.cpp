@@ -95,6 +95,7 @@ std::vector<exported_file> export_python(const model& scene, const exported_syst
        << "STATE = " << quoted_list(system.state_names) << "\n"
        << "PARAMETERS = " << quoted_list(system.parameter_names) << "\n"
        << "INPUTS = " << quoted_list(system.input_names) << "\n"
+       << (system.conserved ? "CONSERVED = " + quoted_list(system.conserved_names) + "\n" : "")
        << "DEFAULTS = np.array([" << number_list(system.defaults, "np.nan") << "], dtype=float)\n\n\n"
        << "def _arguments(t, x, p, u):\n"
        << "    x = np.asarray(x, dtype=float)\n"
@@ -122,6 +123,11 @@ std::vector<exported_file> export_python(const model& scene, const exported_syst
                           system.mass_and_forcing, names, system, "_vector");
     py << python_function("energy", "The energy function h = sum q' dL/dq' - L.", system.energy, names, system,
                           "_scalar");
+    if (system.conserved)
+        py << python_function("conserved",
+                              "What the motion conserves, shape (..., len(CONSERVED)), named in CONSERVED: the\n"
+                              "    energy function where L does not depend on t, then each cyclic coordinate's momentum.",
+                              *system.conserved, names, system, "_vector");
     if (system.constraint_parts)
         py << constrained_functions(system, names, quoted_list(system.constraint_names));
     else

@@ -504,3 +504,87 @@ TEST_CASE("export: names are the scene's, and a keyword is renamed as the header
     CHECK(text.find("const char *const keywords_state_names[keywords_NX] = {\"x\", \"while\", \"x_dot\", "
                     "\"while_dot\"};") != std::string::npos);
 }
+
+namespace {
+
+/// The spherical pendulum's conserved quantities in closed form (θ from the downward
+/// vertical, φ cyclic): h = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ and p_φ = m l² sin²θ φ̇, at
+/// the state and parameters below.
+const std::vector<double> spherical_state{0.7, 0.3, 0.4, 1.1}, spherical_p{1.3, 0.8, 9.81};
+std::vector<double> spherical_conserved()
+{
+    const double th = spherical_state[0], thd = spherical_state[2], phd = spherical_state[3];
+    const double m = spherical_p[0], l = spherical_p[1], g = spherical_p[2], s = std::sin(th);
+    return {0.5 * m * l * l * (thd * thd + s * s * phd * phd) - m * g * l * std::cos(th), m * l * l * s * s * phd};
+}
+
+void check_conserved(const std::vector<double>& printed)
+{
+    const std::vector<double> expected = spherical_conserved();
+    REQUIRE(printed.size() >= expected.size());
+    for (std::size_t k = 0; k < expected.size(); ++k)
+        CHECK(std::abs(printed[k] - expected[k]) < 1e-13 * std::max(1.0, std::abs(expected[k])));
+}
+
+} // namespace
+
+TEST_CASE("export: the C conserved quantities are the energy and the cyclic momentum", "[export][cc]")
+{
+    const std::string folder = folder_for("c-conserved");
+    REQUIRE(run_cli("export " + examples + "spherical_pendulum.lag --to c -o " + folder).exit_code == 0);
+    std::ofstream(folder + "/conserved.c") << R"(#include "spherical_pendulum.h"
+#include <stdio.h>
+#include <string.h>
+int main(void)
+{
+    const double x[4] = {)" + numbers(spherical_state, ", ") + R"(}, p[3] = {)" + numbers(spherical_p, ", ") + R"(};
+    double c[spherical_pendulum_NCONSERVED];
+    if (spherical_pendulum_NCONSERVED != 2 || strcmp(spherical_pendulum_conserved_names[0], "energy") != 0 ||
+        strcmp(spherical_pendulum_conserved_names[1], "p_phi") != 0)
+        return 1;
+    spherical_pendulum_conserved(0.0, x, NULL, p, c);
+    printf("%.17g %.17g\n", c[0], c[1]);
+    return 0;
+}
+)";
+    const std::string cc = configured_compiler();
+    check_conserved(read_numbers(run_shell("cd " + folder + " && " + cc +
+                                           " -std=c99 -Wall -Wextra -pedantic -Werror -O2 -o conserved conserved.c "
+                                           "spherical_pendulum.c -lm 2>&1 && ./conserved")));
+}
+
+TEST_CASE("export: the Python conserved quantities hold along a solve_ivp run", "[export][scipy]")
+{
+    const std::string folder = folder_for("py-conserved");
+    REQUIRE(run_cli("export " + examples + "spherical_pendulum.lag --to python -o " + folder).exit_code == 0);
+    std::ofstream(folder + "/check.py")
+        << "import sys\nsys.path.insert(0, " << nlohmann::json(folder).dump() << ")\n"
+        << "import numpy as np\nfrom scipy.integrate import solve_ivp\nimport spherical_pendulum as m\n"
+        << "assert m.CONSERVED == ['energy', 'p_phi'], m.CONSERVED\n"
+        << "p = np.array([" << numbers(spherical_p, ", ") << "])\nx0 = np.array([" << numbers(spherical_state, ", ")
+        << "])\nrun = solve_ivp(lambda t, x: m.rhs(t, x, p), (0, 5), x0, method='DOP853', rtol=1e-13, atol=1e-13)\n"
+        << "c = m.conserved(0.0, run.y.T, p)\ndrift = np.max(np.abs(c - c[0]), axis=0) / np.maximum(1, np.abs(c[0]))\n"
+        << "print(repr(c[0][0]), repr(c[0][1]), repr(float(np.max(drift))))\n";
+    const std::vector<double> printed = read_numbers(run_shell("/usr/bin/python3 " + folder + "/check.py"));
+    check_conserved(printed);
+    REQUIRE(printed.size() == 3);
+    CHECK(printed[2] < 1e-10); // constant along the motion, to the integration's error
+}
+
+TEST_CASE("export: the Octave conserved quantities are the energy and the cyclic momentum", "[export][octave]")
+{
+    const std::string folder = folder_for("octave-conserved");
+    REQUIRE(run_cli("export " + examples + "spherical_pendulum.lag --to octave -o " + folder).exit_code == 0);
+    std::ofstream(folder + "/check.m") << "c = spherical_pendulum_conserved(0, [" << numbers(spherical_state, "; ")
+                                       << "], [" << numbers(spherical_p, "; ") << "]);\nprintf('%.17g ', c);\n";
+    check_conserved(read_numbers(run_shell("cd " + folder + " && octave-cli --no-gui --quiet check.m 2>&1")));
+}
+
+TEST_CASE("export: a driven or damped scene exports no conserved quantities", "[export]")
+{
+    const std::string folder = folder_for("py-not-conserved");
+    REQUIRE(run_cli("export " + examples + "damped_driven_oscillator.lag --to python -o " + folder).exit_code == 0);
+    const std::string module = read_file(folder + "/damped_driven_oscillator.py");
+    CHECK(module.find("CONSERVED") == std::string::npos);
+    CHECK(module.find("def conserved") == std::string::npos);
+}
