@@ -80,16 +80,25 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
         for (std::size_t j = 0; j < n; ++j)
             mass[i * n + j] = equations.mass(static_cast<unsigned>(std::min(i, j)), static_cast<unsigned>(std::max(i, j)));
     // The simulation's Jacobian parts, with the parameters left symbols, then ∂F/∂u.
-    std::vector<GiNaC::ex> derivatives;
-    if (!equations.constraints) {
-        derivatives = motion_jacobian(scene, {mass, equations.forcing});
-        for (const GiNaC::ex& f : equations.forcing)
-            for (const input_signal& u : scene.inputs)
-                derivatives.push_back(differentiate(f, u.symbol));
-    }
-    std::vector<GiNaC::ex> constraint_parts;
+    std::vector<GiNaC::ex> derivatives = motion_jacobian(scene, {mass, equations.forcing});
+    for (const GiNaC::ex& f : equations.forcing)
+        for (const input_signal& u : scene.inputs)
+            derivatives.push_back(differentiate(f, u.symbol));
+    std::vector<GiNaC::ex> constraint_parts, constraint_derivatives;
     if (equations.constraints) {
         const constraint_equations& c = *equations.constraints;
+        // ∂A/∂q_k (k slowest), then ∂c/∂q, ∂c/∂q̇ and ∂c/∂u, row r = c_r
+        for (const coordinate& q : scene.coordinates)
+            for (unsigned r = 0; r < c.matrix.rows(); ++r)
+                for (unsigned j = 0; j < c.matrix.cols(); ++j)
+                    constraint_derivatives.push_back(differentiate(c.matrix(r, j), q.position));
+        for (bool velocity : {false, true})
+            for (const GiNaC::ex& bias : c.bias)
+                for (const coordinate& q : scene.coordinates)
+                    constraint_derivatives.push_back(differentiate(bias, velocity ? q.velocity : q.position));
+        for (const GiNaC::ex& bias : c.bias)
+            for (const input_signal& u : scene.inputs)
+                constraint_derivatives.push_back(differentiate(bias, u.symbol));
         for (unsigned k = 0; k < c.matrix.rows(); ++k)
             for (unsigned j = 0; j < c.matrix.cols(); ++j)
                 constraint_parts.push_back(c.matrix(k, j));
@@ -106,10 +115,11 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
         out.mass_and_forcing = expression_program(both, symbols);
         out.forcing = expression_program(equations.forcing, symbols);
         out.energy = expression_program({equations.energy}, symbols);
-        if (!derivatives.empty())
-            out.derivatives = expression_program(derivatives, symbols);
-        if (!constraint_parts.empty())
+        out.derivatives = expression_program(derivatives, symbols);
+        if (!constraint_parts.empty()) {
             out.constraint_parts = expression_program(constraint_parts, symbols);
+            out.constraint_derivatives = expression_program(constraint_derivatives, symbols);
+        }
     } catch (const std::invalid_argument& error) {
         throw computation_error(std::string("the equations of motion cannot be exported: ") + error.what());
     }

@@ -39,10 +39,11 @@ struct exported_system {
     std::optional<expression_program> linear;
     /// With constraints (M q̈ = F + Aᵀλ, A q̈ = −c): their names, and one program of A (m × n,
     /// row-major), c (m) and the residuals g (m: f(q, t) of a holonomic one, A q̇ + b of a
-    /// Pfaffian one), m = the number of constraints. Then `derivatives` is empty: the Jacobian of
-    /// the constrained right-hand side is not exported.
+    /// Pfaffian one), m = the number of constraints; and for the Jacobian, ∂A/∂q_k (m × n each,
+    /// k slowest), ∂c/∂q (m × n, row r = c_r), ∂c/∂q̇ (m × n) and ∂c/∂u (m × inputs).
     std::vector<std::string> constraint_names;
     std::optional<expression_program> constraint_parts;
+    std::optional<expression_program> constraint_derivatives;
     /// What the motion conserves: the energy function h (named `energy`) where L does not
     /// depend on t, then the momentum ∂L/∂q̇ of each cyclic coordinate (named `p_` + its name).
     /// Absent when the export was given none, or nothing is conserved.

@@ -40,6 +40,8 @@ std::string c_body(const expression_program& program, const naming& names, const
     return body.str();
 }
 
+std::string nx_of(const std::string& name) { return name + "_NX"; }
+
 /// The declarations of a constrained scene's functions (nothing without constraints).
 std::string constrained_declarations(const exported_system& system, const std::string& name, const std::string& args)
 {
@@ -122,7 +124,62 @@ std::string constrained_functions(const exported_system& system, const naming& n
       << "        dxdt[" << nq << " + i] = y[i];\n    }\n    return 0;\n}\n\n"
       << "int " << name << "_multipliers" << args << ", double *lambda)\n{\n    double y[" << s << "];\n    int i;\n"
       << "    if (lagrange_augmented(t, x, u, p, y))\n        return 1;\n"
-      << "    for (i = 0; i < " << nc << "; ++i)\n        lambda[i] = y[" << nq << " + i];\n    return 0;\n}\n";
+      << "    for (i = 0; i < " << nc << "; ++i)\n        lambda[i] = y[" << nq << " + i];\n    return 0;\n}\n\n";
+    // d[q'', lambda]/ds = K^-1 (d[F; -c]/ds - (dK/ds) [q''; lambda]), K = [M -A^T; A 0]; M and
+    // A depend on q alone, so dK/ds is there only for s a coordinate.
+    const std::size_t inputs = system.input_names.size();
+    const std::string nu = std::to_string(inputs);
+    const std::string cube = nq + " * " + nq + " * " + nq, square = nq + " * " + nq;
+    const std::string abase = nc + " * " + nq + " * " + nq;
+    c << "static void lagrange_constraint_derivatives" << args << ", double *out)\n{\n"
+      << c_body(*system.constraint_derivatives, names, system, "out") << "}\n\n"
+      << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu)\n{\n"
+      << "    double y[" << s << "], k0[" << s << " * " << s << "], k[" << s << " * " << s << "], col[" << s << "];\n"
+      << "    double d[" << cube << " + 2 * " << square << " + " << nq << " * " << nu << " + 1];\n"
+      << "    double e[" << abase << " + 2 * " << nc << " * " << nq << " + " << nc << " * " << nu << " + 1];\n"
+      << "    double m[" << square << " + " << nq << "], a[" << parts << "];\n    int i, j, r, v;\n"
+      << "    if (lagrange_augmented(t, x, u, p, y))\n        return 1;\n"
+      << "    lagrange_mass_and_forcing(t, x, u, p, m);\n    lagrange_constraint_parts(t, x, u, p, a);\n"
+      << "    lagrange_derivatives(t, x, u, p, d);\n    lagrange_constraint_derivatives(t, x, u, p, e);\n"
+      << "    for (i = 0; i < " << s << " * " << s << "; ++i)\n        k0[i] = 0.0;\n"
+      << "    for (i = 0; i < " << nq << "; ++i)\n        for (j = 0; j < " << nq << "; ++j)\n"
+      << "            k0[i * " << s << " + j] = m[i * " << nq << " + j];\n"
+      << "    for (r = 0; r < " << nc << "; ++r)\n        for (j = 0; j < " << nq << "; ++j) {\n"
+      << "            k0[(" << nq << " + r) * " << s << " + j] = a[r * " << nq << " + j];\n"
+      << "            k0[j * " << s << " + " << nq << " + r] = -a[r * " << nq << " + j];\n        }\n"
+      << "    for (i = 0; i < " << nx_of(name) << " * " << nx_of(name) << "; ++i)\n        dfdx[i] = 0.0;\n"
+      << "    for (i = 0; i < " << nq << "; ++i)\n        dfdx[i * " << nx_of(name) << " + " << nq << " + i] = 1.0;\n"
+      << "    for (v = 0; v < 2 * " << nq << " + " << nu << "; ++v) {\n"
+      << "        if (v >= 2 * " << nq << " && !dfdu)\n            break;\n"
+      << "        for (i = 0; i < " << nq << "; ++i)\n"
+      << "            col[i] = v < 2 * " << nq << " ? d[" << cube << " + (v < " << nq << " ? 0 : " << square
+      << ") + i * " << nq << " + v % " << nq << "]\n"
+      << "                                : d[" << cube << " + 2 * " << square << " + i * " << nu << " + v - 2 * " << nq
+      << "];\n"
+      << "        for (r = 0; r < " << nc << "; ++r)\n"
+      << "            col[" << nq << " + r] = v < 2 * " << nq << " ? -e[" << abase << " + (v < " << nq << " ? 0 : "
+      << nc << " * " << nq << ") + r * " << nq << " + v % " << nq << "]\n"
+      << "                                     : -e[" << abase << " + 2 * " << nc << " * " << nq << " + r * " << nu
+      << " + v - 2 * " << nq << "];\n"
+      << "        if (v < " << nq << ") {\n"
+      << "            for (i = 0; i < " << nq << "; ++i)\n                for (j = 0; j < " << nq << "; ++j)\n"
+      << "                    col[i] -= d[(v * " << nq << " + i) * " << nq << " + j] * y[j];\n"
+      << "            for (r = 0; r < " << nc << "; ++r)\n                for (j = 0; j < " << nq << "; ++j) {\n"
+      << "                    col[j] += e[(v * " << nc << " + r) * " << nq << " + j] * y[" << nq << " + r];\n"
+      << "                    col[" << nq << " + r] -= e[(v * " << nc << " + r) * " << nq << " + j] * y[j];\n"
+      << "                }\n        }\n"
+      << "        for (i = 0; i < " << s << " * " << s << "; ++i)\n            k[i] = k0[i];\n"
+      << "        if (lagrange_lu_solve(k, col))\n            return 1;\n"
+      << "        for (i = 0; i < " << nq << "; ++i) {\n"
+      << "            if (v < 2 * " << nq << ")\n"
+      << "                dfdx[(" << nq << " + i) * " << nx_of(name) << " + v] = col[i];\n"
+      << "            else\n                dfdu[(" << nq << " + i) * " << nu << " + v - 2 * " << nq << "] = col[i];\n"
+      << "        }\n    }\n";
+    if (inputs > 0)
+        c << "    if (dfdu)\n        for (i = 0; i < " << nq << " * " << nu << "; ++i)\n            dfdu[i] = 0.0;\n";
+    else
+        c << "    (void)dfdu;\n";
+    c << "    return 0;\n}\n";
     return c.str();
 }
 
@@ -152,9 +209,8 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
       << constrained_declarations(system, name, args)
       << (constrained ? "" : "/* dxdt = f(t, x, u, p). Returns 0, or 1 where the mass matrix is not positive definite. */\n")
       << (constrained ? "" : "int " + name + "_rhs" + args + ", double *dxdt);\n")
-      << (constrained ? "" : "/* dfdx = df/dx (NX x NX) and dfdu = df/du (NX x NU; may be NULL). Returns as " + name +
-                                 "_rhs. */\n")
-      << (constrained ? "" : "int " + name + "_jacobian" + args + ", double *dfdx, double *dfdu);\n")
+      << "/* dfdx = df/dx (NX x NX) and dfdu = df/du (NX x NU; may be NULL). Returns as " << name << "_rhs. */\n"
+      << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu);\n"
       << "/* The mass matrix M (NQ x NQ) and the forcing F (NQ) of M q'' = F" << (constrained ? " + A^T lambda" : "")
       << ". */\n"
       << "void " << name << "_mass_matrix" << args << ", double *M);\n"
@@ -202,7 +258,7 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
         for (const instruction& i : program->code())
             powers = powers || i.op == instruction::code::integer_power;
     for (const std::optional<expression_program>* program :
-         {&system.linear, &system.constraint_parts, &system.conserved})
+         {&system.linear, &system.constraint_parts, &system.constraint_derivatives, &system.conserved})
         if (*program)
             for (const instruction& i : (*program)->code())
                 powers = powers || i.op == instruction::code::integer_power;
@@ -234,9 +290,8 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
       << c_body(system.forcing, names, system, "F") << "}\n\n";
     c << "static void lagrange_mass_and_forcing" << args << ", double *out)\n{\n"
       << c_body(system.mass_and_forcing, names, system, "out") << "}\n\n";
-    if (!constrained)
-        c << "static void lagrange_derivatives" << args << ", double *out)\n{\n"
-          << c_body(system.derivatives, names, system, "out") << "}\n\n";
+    c << "static void lagrange_derivatives" << args << ", double *out)\n{\n"
+      << c_body(system.derivatives, names, system, "out") << "}\n\n";
     c << "double " << name << "_energy" << args << ")\n{\n    double h[1];\n"
       << c_body(system.energy, names, system, "h") << "    return h[0];\n}\n\n";
     if (system.conserved)

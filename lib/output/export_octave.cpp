@@ -83,6 +83,31 @@ std::vector<exported_file> constrained_files(const exported_system& system, cons
                      "function lambda = " + name + "_multipliers(t, x, p, u)\n  % The multipliers lambda of M q'' = "
                      "F + A' lambda (a column).\n" + header + inputs + augmented + "  lambda = y(" + nq +
                      " + 1:end);\nend\n"});
+    files.push_back({name + "_constraint_derivatives.m",
+                     octave_function(name, "constraint_derivatives",
+                                     "dA/dq_k (k slowest), dc/dq, dc/dq', dc/du, as a column.",
+                                     *system.constraint_derivatives, names, system, "e",
+                                     system.constraint_derivatives->output_count(), 1, header)});
+    // d[q''; lambda]/dy = K \ (d[F; -c]/dy - (dK/dy) [q''; lambda]), K = [M -A'; A 0]
+    files.push_back({name + "_jacobian.m",
+                     "function [dfdx, dfdu] = " + name + "_jacobian(t, x, p, u)\n  % df/dx (NX x NX) and df/du (NX x "
+                     "NU): d[q''; lambda]/dy = K \\ (d[F; -c]/dy - (dK/dy) [q''; lambda]),\n  % K = [M -A'; A 0].\n" +
+                     header + inputs + "  n = " + nq + ";\n  m = " + nc + ";\n  nu = " +
+                     std::to_string(system.input_names.size()) + ";\n  M = " + name +
+                     "_mass_matrix(t, x, p, u);\n  F = " + name + "_forcing(t, x, p, u);\n" + parts +
+                     "  A = reshape(d(1:m * n), n, m)';\n  c = d(m * n + 1:m * n + m);\n"
+                     "  K = [M, -A'; A, zeros(m)];\n  y = K \\ [F; -c];\n  qdd = y(1:n);\n  lambda = y(n + 1:end);\n"
+                     "  D = " + name + "_derivatives(t, x, p, u);\n  E = " + name +
+                     "_constraint_derivatives(t, x, p, u);\n  b = m * n^2;\n"
+                     "  R = [reshape(D(n^3 + 1:n^3 + n^2), n, n)', reshape(D(n^3 + n^2 + 1:n^3 + 2 * n^2), n, n)', "
+                     "reshape(D(n^3 + 2 * n^2 + 1:end), nu, n)';\n"
+                     "       -reshape(E(b + 1:b + m * n), n, m)', -reshape(E(b + m * n + 1:b + 2 * m * n), n, m)', "
+                     "-reshape(E(b + 2 * m * n + 1:end), nu, m)'];\n"
+                     "  for k = 1:n\n    dM = reshape(D((k - 1) * n^2 + 1:k * n^2), n, n)';\n"
+                     "    dA = reshape(E((k - 1) * m * n + 1:k * m * n), n, m)';\n"
+                     "    R(:, k) = R(:, k) - [dM * qdd - dA' * lambda; dA * qdd];\n  end\n"
+                     "  Z = K \\ R;\n  dfdx = [zeros(n), eye(n); Z(1:n, 1:2 * n)];\n"
+                     "  dfdu = [zeros(n, nu); Z(1:n, 2 * n + 1:end)];\nend\n"});
     return files;
 }
 
@@ -118,13 +143,13 @@ std::vector<exported_file> export_octave(const model& scene, const exported_syst
              << "gives none, in the order of the parameters.\n" << header << "  p = ["
              << number_list(system.defaults, "NaN") << "]';\n  if isempty(p)\n    p = zeros(0, 1);\n  end\nend\n";
     files.push_back({name + "_defaults.m", defaults.str()});
+    files.push_back({name + "_derivatives.m",
+                     octave_function(name, "derivatives", "dM/dq_k (k slowest), dF/dq, dF/dq', dF/du, as a column.",
+                                     system.derivatives, names, system, "d", derivatives, 1, header)});
     if (system.constraint_parts) {
         for (exported_file& file : constrained_files(system, names, name, header))
             files.push_back(std::move(file));
     } else {
-        files.push_back({name + "_derivatives.m",
-                         octave_function(name, "derivatives", "dM/dq_k (k slowest), dF/dq, dF/dq', dF/du, as a column.",
-                                         system.derivatives, names, system, "d", derivatives, 1, header)});
         std::ostringstream rhs;
         rhs << "function dxdt = " << name << "_rhs(t, x, p, u)\n"
             << "  % dx/dt = f(t, x, u, p) as a column; for ode45 and ode15s: ode45(@(t, x) " << name

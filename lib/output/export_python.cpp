@@ -59,15 +59,41 @@ std::string constrained_functions(const exported_system& system, const naming& n
        << "    k[..., :NQ, :NQ] = both[..., :NQ * NQ].reshape(shape + (NQ, NQ))\n"
        << "    k[..., :NQ, NQ:] = -np.swapaxes(a, -1, -2)\n    k[..., NQ:, :NQ] = a\n"
        << "    b = np.concatenate([both[..., NQ * NQ:], -parts[..., NC * NQ:NC * NQ + NC]], axis=-1)\n"
-       << "    return x, shape, np.linalg.solve(k, b[..., None])[..., 0]\n\n\n"
+       << "    return x, shape, np.linalg.solve(k, b[..., None])[..., 0], k\n\n\n"
        << "def rhs(t, x, p=None, u=None):\n"
        << "    \"\"\"dx/dt, shape (..., NX): q'' from [M -A^T; A 0] [q''; lambda] = [F; -c], the constraints\n"
        << "    differentiated to the accelerations (constraints() measures their drift).\"\"\"\n"
-       << "    x, shape, y = _augmented(t, x, p, u)\n"
+       << "    x, shape, y, _ = _augmented(t, x, p, u)\n"
        << "    return np.concatenate([np.broadcast_to(np.asarray(x)[..., NQ:], shape + (NQ,)), y[..., :NQ]], axis=-1)\n\n\n"
        << "def multipliers(t, x, p=None, u=None):\n"
        << "    \"\"\"The multipliers lambda of M q'' = F + A^T lambda, shape (..., NC).\"\"\"\n"
-       << "    return _augmented(t, x, p, u)[2][..., NQ:]\n";
+       << "    return _augmented(t, x, p, u)[2][..., NQ:]\n\n\n"
+       << python_function("_constraint_derivatives", "dA/dq_k (k slowest), dc/dq, dc/dq', dc/du, flattened.",
+                          *system.constraint_derivatives, names, system, "_vector")
+       << "def jacobian(t, x, p=None, u=None):\n"
+       << "    \"\"\"(df/dx of shape (..., NX, NX), df/du of shape (..., NX, NU)): d[q''; lambda]/dy =\n"
+       << "    K^-1 (d[F; -c]/dy - (dK/dy) [q''; lambda]) with K = [M -A^T; A 0].\"\"\"\n"
+       << "    _, shape, y, k = _augmented(t, x, p, u)\n"
+       << "    d, e = _derivatives(t, x, p, u), _constraint_derivatives(t, x, p, u)\n"
+       << "    d, e = np.broadcast_to(d, shape + d.shape[-1:]), np.broadcast_to(e, shape + e.shape[-1:])\n"
+       << "    qdd, lam = y[..., :NQ], y[..., NQ:]\n"
+       << "    n3, n2, m2 = NQ ** 3, NQ * NQ, NC * NQ * NQ\n"
+       << "    dmass = d[..., :n3].reshape(shape + (NQ, NQ, NQ))\n"
+       << "    da = e[..., :m2].reshape(shape + (NQ, NC, NQ))\n"
+       << "    top = np.concatenate([d[..., n3:n3 + n2].reshape(shape + (NQ, NQ))\n"
+       << "                          - np.einsum(\"...kij,...j->...ik\", dmass, qdd)\n"
+       << "                          + np.einsum(\"...kri,...r->...ik\", da, lam),\n"
+       << "                          d[..., n3 + n2:n3 + 2 * n2].reshape(shape + (NQ, NQ)),\n"
+       << "                          d[..., n3 + 2 * n2:].reshape(shape + (NQ, NU))], axis=-1)\n"
+       << "    bottom = np.concatenate([-e[..., m2:m2 + NC * NQ].reshape(shape + (NC, NQ))\n"
+       << "                             - np.einsum(\"...krj,...j->...rk\", da, qdd),\n"
+       << "                             -e[..., m2 + NC * NQ:m2 + 2 * NC * NQ].reshape(shape + (NC, NQ)),\n"
+       << "                             -e[..., m2 + 2 * NC * NQ:].reshape(shape + (NC, NU))], axis=-1)\n"
+       << "    z = np.linalg.solve(k, np.concatenate([top, bottom], axis=-2))\n"
+       << "    dfdx = np.zeros(shape + (NX, NX))\n"
+       << "    dfdx[..., :NQ, NQ:] = np.eye(NQ)\n    dfdx[..., NQ:, :] = z[..., :NQ, :NX]\n"
+       << "    dfdu = np.zeros(shape + (NX, NU))\n    dfdu[..., NQ:, :] = z[..., :NQ, NX:]\n"
+       << "    return dfdx, dfdu\n";
     return py.str();
 }
 
@@ -128,12 +154,12 @@ std::vector<exported_file> export_python(const model& scene, const exported_syst
                               "What the motion conserves, shape (..., len(CONSERVED)), named in CONSERVED: the\n"
                               "    energy function where L does not depend on t, then each cyclic coordinate's momentum.",
                               *system.conserved, names, system, "_vector");
+    py << python_function("_derivatives", "dM/dq_k (k slowest), dF/dq, dF/dq', dF/du, flattened.",
+                          system.derivatives, names, system, "_vector");
     if (system.constraint_parts)
         py << constrained_functions(system, names, quoted_list(system.constraint_names));
     else
-        py << python_function("_derivatives", "dM/dq_k (k slowest), dF/dq, dF/dq', dF/du, flattened.",
-                              system.derivatives, names, system, "_vector")
-           << "def rhs(t, x, p=None, u=None):\n"
+        py << "def rhs(t, x, p=None, u=None):\n"
        << "    \"\"\"dx/dt = f(t, x, u, p), shape (..., NX); numpy.linalg.LinAlgError where M is singular.\"\"\"\n"
        << "    t, x, p, u, shape = _arguments(t, x, p, u)\n"
        << "    both = _mass_and_forcing(t, x, p, u)\n"

@@ -177,7 +177,6 @@ int main(int argc, char **argv)
     double h = until / steps, t = 0;
     for (i = 0; i < NAME_NP; ++i) p[i] = NAME_default_p[i];
     for (i = 0; i < NX && i + 3 < argc; ++i) x[i] = atof(argv[i + 3]);
-#ifndef CONSTRAINED
     /* The Jacobian at the start against central differences of the right-hand side. */
     input(0.0, u);
     NAME_jacobian(0.0, x, u, p, dfdx, dfdu);
@@ -192,9 +191,6 @@ int main(int argc, char **argv)
             if (d > worst) worst = d;
         }
     }
-#else
-    (void)dfdx; (void)dfdu; (void)u; (void)j;
-#endif
     for (s = 0; s < steps; ++s, t = s * h) {
         f(t, x, k1);
         for (i = 0; i < NX; ++i) y[i] = x[i] + 0.5 * h * k1[i];
@@ -396,7 +392,7 @@ TEST_CASE("export: a scene without an equilibrium is exported without the linear
     CHECK(text.find("_linear(") == std::string::npos);
 }
 
-TEST_CASE("export: the rolling coin's constrained C code reproduces simulate", "[export][cc]")
+TEST_CASE("export: the rolling coin's constrained C code reproduces simulate and its Jacobian", "[export][cc]")
 {
     const exported_case coin{examples + "rolling_coin.lag", 1, "", "", ""};
     const reference expected = simulate(coin);
@@ -411,7 +407,7 @@ TEST_CASE("export: the rolling coin's constrained C code reproduces simulate", "
     check_against(expected, read_numbers(run_shell(folder + "/coin 1 5000 " + numbers(expected.start, " "))));
 }
 
-TEST_CASE("export: the rolling coin's Python module reproduces simulate and the multipliers", "[export][scipy]")
+TEST_CASE("export: the rolling coin's Python module reproduces simulate, the multipliers and the Jacobian", "[export][scipy]")
 {
     const exported_case coin{examples + "rolling_coin.lag", 1, "", "", ""};
     const reference expected = simulate(coin);
@@ -432,12 +428,19 @@ TEST_CASE("export: the rolling coin's Python module reproduces simulate and the 
         << "engine = [float(sympy.sympify(lambdas[c].replace('^', '**'), locals=names).subs(at)) for c in m.CONSTRAINTS]\n"
         << "ours = m.multipliers(0.0, x0)\n"
         << "worst = max(abs(a - b) / max(1.0, abs(b)) for a, b in zip(ours, engine))\n"
+        // the constrained Jacobian against central differences of rhs
+        << "dfdx, dfdu = m.jacobian(0.0, x0)\n"
+        << "for j in range(m.NX):\n    e = 1e-6 * max(1.0, abs(x0[j]))\n"
+        << "    up, down = x0.copy(), x0.copy()\n    up[j] += e\n    down[j] -= e\n"
+        << "    fd = (m.rhs(0.0, up) - m.rhs(0.0, down)) / (2 * e)\n"
+        << "    worst = max(worst, np.max(np.abs(fd - dfdx[:, j])) / max(1.0, np.max(np.abs(dfdx[:, j]))))\n"
+        << "batch = np.stack([x0, x0])\nassert np.allclose(m.jacobian(0.0, batch)[0][1], dfdx, rtol=1e-12, atol=1e-12)\n"
         << "drift = np.max(np.abs(m.constraints(1.0, run.y[:, -1])))\n"
         << "print(' '.join(repr(v) for v in run.y[:, -1]), repr(max(worst, drift)))\n";
     check_against(expected, read_numbers(run_shell("/usr/bin/python3 " + folder + "/check.py")));
 }
 
-TEST_CASE("export: the rolling coin's Octave functions reproduce simulate", "[export][octave]")
+TEST_CASE("export: the rolling coin's Octave functions reproduce simulate and the Jacobian", "[export][octave]")
 {
     const exported_case coin{examples + "rolling_coin.lag", 1, "", "", ""};
     const reference expected = simulate(coin);
@@ -449,7 +452,12 @@ TEST_CASE("export: the rolling coin's Octave functions reproduce simulate", "[ex
         << "[t, X] = ode45(@(t, x) rolling_coin_rhs(t, x, p), [0 1], x0, opts);\n"
         << "lambda = rolling_coin_multipliers(0, x0, p);\n"
         << "g = rolling_coin_constraints(1, X(end, :)', p);\n"
-        << "printf('%.17g ', X(end, :));\nprintf('%.17g\\n', max(abs(g)));\n";
+        << "[dfdx, dfdu] = rolling_coin_jacobian(0, x0, p);\nworst = max(abs(g));\n"
+        << "for j = 1:numel(x0)\n  e = 1e-6 * max(1, abs(x0(j)));\n  up = x0; down = x0;\n"
+        << "  up(j) += e; down(j) -= e;\n"
+        << "  fd = (rolling_coin_rhs(0, up, p) - rolling_coin_rhs(0, down, p)) / (2 * e);\n"
+        << "  worst = max(worst, max(abs(fd - dfdx(:, j))) / max(1, max(abs(dfdx(:, j)))));\nend\n"
+        << "printf('%.17g ', X(end, :));\nprintf('%.17g\\n', worst);\n";
     check_against(expected,
                   read_numbers(run_shell("cd " + folder + " && octave-cli --no-gui --quiet check.m 2>&1")));
 }
