@@ -210,6 +210,17 @@ std::optional<Eigen::MatrixXd> damping_reference(const model& scene, const GiNaC
     return c;
 }
 
+/// The linearization's equilibrium at `parameters`: the entries that are real numbers there
+/// (fewer than n where one is not).
+std::vector<double> equilibrium_at(const linearization_result& linear, const GiNaC::exmap& parameters)
+{
+    std::vector<double> q0;
+    for (const ex& x : linear.at)
+        if (std::optional<double> v = real_at(x, parameters))
+            q0.push_back(*v);
+    return q0;
+}
+
 /// C from the statements beside the equilibrium q0 (both sides averaged), to O(offset²): a damper's length may vanish at q0 itself.
 std::optional<Eigen::MatrixXd> damping_beside(const model& scene, const GiNaC::exmap& parameters,
                                               const std::vector<double>& q0)
@@ -243,10 +254,7 @@ std::vector<verification_entry> verify_damping(const model& scene, const lineari
     const std::size_t n = scene.coordinates.size();
     int used = 0;
     for (const GiNaC::exmap& parameters : parameter_points(scene)) {
-        std::vector<double> q0;
-        for (const ex& x : linear.at)
-            if (std::optional<double> v = real_at(x, parameters))
-                q0.push_back(*v);
+        const std::vector<double> q0 = equilibrium_at(linear, parameters);
         std::optional<Eigen::MatrixXd> symbolic = matrix_at(damping.damping, parameters);
         std::optional<Eigen::MatrixXd> mass = matrix_at(linear.kinetic, parameters);
         std::optional<Eigen::MatrixXd> stiffness = matrix_at(linear.potential, parameters);
@@ -361,10 +369,7 @@ std::vector<verification_entry> verify_linear_system(const model& scene, const l
     const std::size_t n = scene.coordinates.size();
     int used = 0;
     for (const GiNaC::exmap& parameters : parameter_points(scene)) {
-        std::vector<double> q0;
-        for (const ex& x : linear.at)
-            if (std::optional<double> v = real_at(x, parameters))
-                q0.push_back(*v);
+        const std::vector<double> q0 = equilibrium_at(linear, parameters);
         std::optional<Eigen::MatrixXd> a = matrix_at(system.a, parameters), b = matrix_at(system.b, parameters);
         std::optional<Eigen::MatrixXd> mass = matrix_at(linear.kinetic, parameters);
         std::optional<Eigen::MatrixXd> stiffness = matrix_at(linear.potential, parameters);
