@@ -3,6 +3,7 @@
  *  The `lagrange` command: turns arguments into library calls, prints, and maps
  *  errors to exit codes (0 success, 1 computation not possible, 2 bad input or usage). */
 #include "engine/analysis.h"
+#include "engine/animation_plan.h"
 #include "engine/readiness.h"
 #include "ensemble/settings.h"
 #include "output/document.h"
@@ -578,7 +579,6 @@ int animate_command(const animate_options& options, const lagrange::budget_limit
     if (!lagrange::known_animation_view(options.view))
         throw usage_error("--view takes xy, xz or 3d, not `" + options.view + "`");
     lagrange::model scene = load_scene(options.scene_path, options.values, options.initial, budget.max_seconds);
-    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::equations}, budget);
     lagrange::animation_settings settings;
     settings.fps = options.fps;
     settings.until = options.until;
@@ -591,7 +591,7 @@ int animate_command(const animate_options& options, const lagrange::budget_limit
     if (video) {
         lagrange::write_animation_video(options.output, {}, view); // says why before the work
     }
-    const lagrange::animation_frames frames = lagrange::compute_animation(scene, *result.equations, settings);
+    const lagrange::animation_frames frames = lagrange::animate_scene(scene, settings, budget);
     write_output(options.output, lagrange::animation_html(frames, view, plot_title(scene)));
     return exit_ok;
 }

@@ -2,8 +2,8 @@
 /** @file animation_output.h
  *  An animation (numeric/animation.h) as one self-contained HTML page: the frames embedded
  *  as JSON, drawn on a canvas by a small script (discs sized by mass, rods, springs as coils,
- *  the pivot, trails, a clock and the energy drift), with play and pause, a time slider,
- *  speed and view controls. No network: nothing is loaded from elsewhere. `#t=2.5` in the
+ *  the pivot, trails, a clock and the energy drift; a free body by Poinsot's construction),
+ *  with play and pause, a time slider, speed and view controls. No network: nothing is loaded from elsewhere. `#t=2.5` in the
  *  address opens the page paused at t = 2.5. */
 #pragma once
 
