@@ -587,12 +587,16 @@ int animate_command(const animate_options& options, const lagrange::budget_limit
     else if (scene.simulation && scene.simulation->tolerance)
         settings.tolerance = lagrange::real_value(*scene.simulation->tolerance, "the scene's tolerance");
     settings.native = !options.interpret;
-    lagrange::animation_view view{options.speed, options.trail, options.view};
+    lagrange::animation_view view{options.speed, options.trail, options.view, options.fps};
     if (video) {
-        lagrange::write_animation_video(options.output, {}, view); // says why before the work
+        lagrange::check_video_encoder(options.output); // says why before the work
+        settings.fps = options.fps / options.speed;     // one frame of the run per frame of the video
     }
     const lagrange::animation_frames frames = lagrange::animate_scene(scene, settings, budget);
-    write_output(options.output, lagrange::animation_html(frames, view, plot_title(scene)));
+    if (video)
+        lagrange::write_animation_video(options.output, frames, view);
+    else
+        write_output(options.output, lagrange::animation_html(frames, view, plot_title(scene)));
     return exit_ok;
 }
 
@@ -885,10 +889,10 @@ int run(int argc, char** argv)
 
     animate_options animate_options;
     CLI::App* animate = app.add_subcommand(
-        "animate", "the motion as a self-contained HTML player (docs/pictures.md)");
+        "animate", "the motion as a self-contained HTML player or a video (docs/pictures.md)");
     animate->add_option("SCENE", animate_options.scene_path, "the scene file (`-` for standard input)")->required();
     animate->add_option("-o,--output", animate_options.output, "FILE.html (or .mp4, .gif: with ffmpeg)")->required();
-    animate->add_option("--fps", animate_options.fps, "frames per second of simulated time")
+    animate->add_option("--fps", animate_options.fps, "HTML: frames per unit of simulated time; videos: frames per second of video")
         ->check(positive_number & CLI::Range(0.1, 1000.0))
         ->capture_default_str();
     animate->add_option("--speed", animate_options.speed, "simulated time per second of playing")

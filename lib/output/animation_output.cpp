@@ -6,7 +6,6 @@
 
 #include "core/number_text.h"
 #include "core/errors.h"
-#include "system/external.h"
 
 #include <nlohmann/json.hpp>
 
@@ -236,15 +235,6 @@ const char* const player_script = R"JS(
 )JS";
 
 } // namespace
-
-void write_animation_video(const std::string& path, const animation_frames&, const animation_view&)
-{
-    if (!program_available("ffmpeg"))
-        throw computation_error("ffmpeg is not installed (Debian package ffmpeg), so `" + path +
-                                "` cannot be encoded: install it, or write the self-contained player with -o FILE.html");
-    throw computation_error("encoding `" + path + "` is not implemented in this version: write the self-contained "
-                            "player with -o FILE.html");
-}
 
 bool known_animation_view(const std::string& view)
 {
