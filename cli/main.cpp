@@ -3,7 +3,7 @@
  *  The `lagrange` command: turns arguments into library calls, prints, and maps
  *  errors to exit codes (0 success, 1 computation not possible, 2 bad input or usage). */
 #include "engine/analysis.h"
-#include "engine/animation_plan.h"
+#include "engine/pictures.h"
 #include "engine/readiness.h"
 #include "ensemble/settings.h"
 #include "output/document.h"
@@ -472,13 +472,6 @@ int poincare_command(const poincare_options& options, const lagrange::budget_lim
     }
     lagrange::model scene = load_scene(options.scene_path, options.values, {}, budget.max_seconds);
     const lagrange::poincare_section section = lagrange::parse_poincare_section(options.section, scene);
-    // The equilibria give the energy's minimum; a scene whose equilibria are not found still has a section.
-    lagrange::analysis result;
-    try {
-        result = lagrange::analyze(scene, {lagrange::product::equations, lagrange::product::equilibrium}, budget);
-    } catch (const lagrange::computation_error&) {
-        result = lagrange::analyze(scene, {lagrange::product::equations}, budget);
-    }
     lagrange::poincare_settings settings;
     settings.energy = options.energy;
     settings.orbits = options.orbits;
@@ -491,8 +484,7 @@ int poincare_command(const poincare_options& options, const lagrange::budget_lim
     settings.native = !options.interpret;
     lagrange::poincare_result section_result;
     try {
-        section_result = lagrange::compute_poincare(scene, *result.equations,
-                                                    result.equilibria ? &*result.equilibria : nullptr, section, settings);
+        section_result = lagrange::poincare_scene(scene, section, settings, budget);
     } catch (const lagrange::poincare_request_error& error) {
         throw usage_error(error.what());
     }

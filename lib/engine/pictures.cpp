@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-/** @file animation_plan.cpp
- *  The stages behind `lagrange animate` (see animation_plan.h). */
-#include "engine/animation_plan.h"
+/** @file pictures.cpp
+ *  The stages behind `animate` and `poincare` (see pictures.h). */
+#include "engine/pictures.h"
 
 #include "engine/analysis.h"
 #include "numeric/free_body_motion.h"
@@ -20,6 +20,19 @@ animation_frames animate_scene(const model& scene, const animation_settings& set
     }
     const analysis result = analyze(scene, {product::equations}, limits);
     return compute_animation(scene, *result.equations, settings);
+}
+
+poincare_result poincare_scene(const model& scene, const poincare_section& section, const poincare_settings& settings,
+                               const budget_limits& limits)
+{
+    analysis result;
+    try {
+        result = analyze(scene, {product::equations, product::equilibrium}, limits);
+    } catch (const computation_error&) {
+        result = analyze(scene, {product::equations}, limits);
+    }
+    return compute_poincare(scene, *result.equations, result.equilibria ? &*result.equilibria : nullptr, section,
+                            settings);
 }
 
 } // namespace lagrange
