@@ -303,8 +303,18 @@ TEST_CASE("cli: the player opens paused at #t=2.5 with the bobs where the simula
                 CHECK(std::abs(world[m][k].get<double>() - expected[m][k]) <= 1e-7);
         screens[t == 1.0] = attribute(dom, "data-screen");
     }
-    // Two moments, two pictures: the bobs are drawn at other pixels.
+    // Two moments, two pictures: the bobs are drawn at other pixels, and the screenshots differ.
     CHECK(screens[0] != screens[1]);
+    std::array<std::string, 2> shots;
+    for (std::size_t k = 0; k < 2; ++k) {
+        const std::string png = temporary_file("shot" + std::to_string(k) + ".png", "");
+        command_output("timeout 120 chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=1000 "
+                       "--window-size=700,700 --screenshot=" + png + " 'file://" + html + (k ? "#t=1" : "#t=2.5") +
+                       "' 2>/dev/null");
+        shots[k] = read_file(png);
+        REQUIRE(shots[k].compare(1, 3, "PNG") == 0);
+    }
+    CHECK(shots[0] != shots[1]);
     // Without a time in the address it plays: after 1.5 s (virtual time) the clock has moved.
     const std::string playing = chromium_dom("file://" + html, 1500);
     const double t = std::stod(attribute(playing, "data-time"));
