@@ -9,6 +9,7 @@
 #include "engine/analysis.h"
 #include "engine/pictures.h"
 #include "output/document.h"
+#include "output/animation_output.h"
 #include "output/export_code.h"
 #include "output/poincare_output.h"
 #include "scene/lower.h"
@@ -432,6 +433,34 @@ PYBIND11_MODULE(_lagrange, m)
         py::arg("max_seconds") = lagrange::budget_limits{}.max_seconds,
         "The Poincaré section of `lagrange poincare` as JSON: its CSV, coordinates, summary, and why "
         "there are no crossings (or \"\").");
+
+    m.def(
+        "animate",
+        [](const lagrange::model& loaded, const std::vector<std::string>& values, const std::vector<std::string>& initial,
+           std::optional<double> until, double fps, double tolerance, bool native, double speed, double trail,
+           const std::string& view) {
+            if (!lagrange::known_animation_view(view))
+                throw py::value_error("view must be \"xy\", \"xz\" or \"3d\", not \"" + view + "\"");
+            return run_in_child([&] {
+                lagrange::model scene = loaded;
+                if (!values.empty())
+                    scene.values.clear();
+                for (const std::string& v : values)
+                    lagrange::add_values(scene, v, "values=");
+                for (const std::string& v : initial)
+                    lagrange::add_initial(scene, v, "initial=");
+                lagrange::animation_settings settings;
+                settings.fps = fps;
+                settings.until = until;
+                settings.tolerance = tolerance;
+                settings.native = native;
+                const lagrange::animation_frames frames = lagrange::animate_scene(scene, settings, {});
+                return lagrange::animation_html(frames, {speed, trail, view}, scene.title.empty() ? scene.file : scene.title);
+            });
+        },
+        py::arg("model"), py::arg("values"), py::arg("initial"), py::arg("until"), py::arg("fps"), py::arg("tolerance"),
+        py::arg("native"), py::arg("speed"), py::arg("trail"), py::arg("view"),
+        "The self-contained HTML player of `lagrange animate`, as a string.");
 
     py::class_<lagrange::poincare_settings>(m, "PoincareSettings", "lagrange::poincare_settings")
         .def(py::init<>())

@@ -352,6 +352,25 @@ class Scene:
         out = json.loads(_lagrange.poincare(self._model, section, _values_lines(values), settings, **limits))
         return PoincareSection(out)
 
+    def animate(self, until=None, fps=30, speed=1, trail=0, view="", values=None, initial=None, tolerance=1e-9,
+                native=True):
+        """The self-contained HTML player of ``lagrange animate -o FILE.html`` (docs/pictures.md):
+        an :class:`Animation`, which Jupyter shows as the player and ``.save(path)`` writes.
+        ``until`` (default: the scene's `simulate until`), ``fps`` frames per unit of simulated
+        time, ``speed``, ``trail``, ``view`` ("xy", "xz", "3d"; "": by the scene), ``values``,
+        ``initial`` and ``tolerance`` as for :meth:`simulate`. A free body is drawn by Poinsot's
+        construction."""
+        _check_settings({"until": until, "tolerance": tolerance})
+        for name, value in (("fps", fps), ("speed", speed), ("trail", trail)):
+            if isinstance(value, bool) or not isinstance(value, (int, float, numpy.integer, numpy.floating)) \
+                    or not numpy.isfinite(value) or value < 0 or (value == 0 and name != "trail"):
+                raise ValueError(f"{name} must be a {'non-negative' if name == 'trail' else 'positive'} finite "
+                                 f"number (got {value!r})")
+        html = _lagrange.animate(self._model, _values_lines(values), _initial_lines(initial, self.coordinates),
+                                 None if until is None else float(until), float(fps), float(tolerance), bool(native),
+                                 float(speed), float(trail), view)
+        return Animation(html)
+
     def inertia(self):
         """Per body: ``tensor`` (SymPy Matrix), ``principal`` moments and ``mass``."""
         doc, c = self._parts("inertia", ["inertia"])
@@ -478,6 +497,26 @@ class Simulation(Result):
         for name, drift in (self._parts.get("invariants") or {}).items():
             lines.append(r"\text{" + _text(name) + "} &= " + f"{drift:.3g}")
         return "$$\\begin{aligned}" + " \\\\ ".join(lines) + "\\end{aligned}$$"
+
+
+class Animation:
+    """The HTML player of an animation: ``.html`` (one self-contained page), shown by Jupyter
+    in an isolated frame (``_repr_html_``), written by ``.save(path)``."""
+
+    def __init__(self, html):
+        self.html = html
+
+    def save(self, path):
+        with open(os.fspath(path), "w", encoding="utf-8") as f:
+            f.write(self.html)
+
+    def _repr_html_(self):
+        import html as _html
+        return ('<iframe style="width: 700px; height: 720px; border: none" sandbox="allow-scripts" srcdoc="'
+                + _html.escape(self.html, quote=True) + '"></iframe>')
+
+    def __repr__(self):
+        return f"Animation({len(self.html)} bytes of HTML)"
 
 
 class PoincareSection:

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """scene.poincare(): the command line's Poincaré section as numpy arrays, the same numbers
 as `lagrange poincare`'s CSV (compared by value), the same for 1 and 2 threads, the energy
-kept at every crossing (H written out here), and its errors."""
+kept at every crossing (H written out here), and its errors; scene.animate(): the command
+line's player."""
 import os
 import subprocess
 
@@ -64,3 +65,20 @@ def test_poincare_errors(henon_heiles):
     none = henon_heiles.poincare("x = 1.2", 1 / 12, orbits=2)
     assert len(none) == 0
     assert "lies outside the energy surface" in none.no_crossings
+
+
+@pytest.mark.skipif(not os.access(CLI, os.X_OK), reason="needs the lagrange command (LAGRANGE_CLI, set by ctest)")
+def test_animate_gives_the_command_lines_player(tmp_path):
+    """scene.animate(): the page of `lagrange animate -o FILE.html`, byte for byte, which
+    Jupyter shows in a sandboxed frame; a free body's page carries Poinsot's construction."""
+    path = os.path.normpath(os.path.join(HERE, "..", "..", "examples", "double_pendulum.lag"))
+    animation = lagrange.Scene.from_file(path).animate(until=3, fps=10, trail=1)
+    page = tmp_path / "player.html"
+    subprocess.run([CLI, "animate", path, "--until", "3", "--fps", "10", "--trail", "1", "-o", str(page)], check=True)
+    assert animation.html == page.read_text(encoding="utf-8")
+    shown = animation._repr_html_()
+    assert shown.startswith("<iframe") and 'sandbox="allow-scripts"' in shown and "lagrangePlayer" in shown
+    free = os.path.normpath(os.path.join(HERE, "..", "..", "examples", "free_asymmetric_top.lag"))
+    assert '"poinsot":{' in lagrange.Scene.from_file(free).animate(until=2).html
+    with pytest.raises(ValueError, match="view must be"):
+        lagrange.Scene.from_file(path).animate(view="yz")
