@@ -67,17 +67,25 @@ struct run_request {
 /// engine is whole and its mutex free (pthread_atfork in the module's init).
 std::mutex engine;
 
+/// `loaded` with the `values` points and initial values given from Python. Values replace the
+/// scene's `values` lines (the command line's add to them).
+lagrange::model with_values(const lagrange::model& loaded, const std::vector<std::string>& values,
+                            const std::vector<std::string>& initial = {})
+{
+    lagrange::model scene = loaded;
+    if (!values.empty())
+        scene.values.clear();
+    for (const std::string& v : values)
+        lagrange::add_values(scene, v, "values=");
+    for (const std::string& v : initial)
+        lagrange::add_initial(scene, v, "initial=");
+    return scene;
+}
+
 /// One run of the engine (in the child process of run_in_child).
 std::string run(const lagrange::model& loaded, const run_request& request, const std::string& format, bool timings)
 {
-    lagrange::model scene = loaded;
-    // Values given from Python replace the scene's `values` lines (the command line's add to them).
-    if (!request.values.empty())
-        scene.values.clear();
-    for (const std::string& v : request.values)
-        lagrange::add_values(scene, v, "values=");
-    for (const std::string& v : request.initial)
-        lagrange::add_initial(scene, v, "initial=");
+    lagrange::model scene = with_values(loaded, request.values, request.initial);
     std::set<lagrange::product> wanted;
     for (const std::string& name : request.want) {
         std::set<lagrange::product> one = lagrange::parse_want_list(name);
@@ -357,11 +365,7 @@ PYBIND11_MODULE(_lagrange, m)
                     throw py::value_error("name must be an identifier that is no keyword of C, Python or Octave, "
                                           "not \"" + name + "\"");
                 return run_in_child([&] {
-                    lagrange::model copy = scene;
-                    if (!values.empty())
-                        copy.values.clear();
-                    for (const std::string& v : values)
-                        lagrange::add_values(copy, v, "values=");
+                    const lagrange::model copy = with_values(scene, values);
                     std::vector<std::pair<std::string, std::string>> files;
                     std::string written;
                     for (const lagrange::exported_file& file :
@@ -408,11 +412,7 @@ PYBIND11_MODULE(_lagrange, m)
         [](const lagrange::model& loaded, const std::string& section_text, const std::vector<std::string>& values,
            const lagrange::poincare_settings& settings, std::size_t max_terms, double max_seconds) {
             return run_in_child([&] {
-                lagrange::model scene = loaded;
-                if (!values.empty())
-                    scene.values.clear();
-                for (const std::string& v : values)
-                    lagrange::add_values(scene, v, "values=");
+                const lagrange::model scene = with_values(loaded, values);
                 lagrange::budget_limits limits;
                 limits.max_terms = max_terms;
                 limits.max_seconds = max_seconds;
@@ -442,13 +442,7 @@ PYBIND11_MODULE(_lagrange, m)
             if (!lagrange::known_animation_view(view))
                 throw py::value_error("view must be \"xy\", \"xz\" or \"3d\", not \"" + view + "\"");
             return run_in_child([&] {
-                lagrange::model scene = loaded;
-                if (!values.empty())
-                    scene.values.clear();
-                for (const std::string& v : values)
-                    lagrange::add_values(scene, v, "values=");
-                for (const std::string& v : initial)
-                    lagrange::add_initial(scene, v, "initial=");
+                const lagrange::model scene = with_values(loaded, values, initial);
                 lagrange::animation_settings settings;
                 settings.fps = fps;
                 settings.until = until;
