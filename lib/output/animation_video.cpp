@@ -287,10 +287,11 @@ void check_video_encoder(const std::string& path)
 #endif
 }
 
-void write_animation_video(const std::string& path, const animation_frames& frames, const animation_view& view)
+void write_animation_video(const std::string& path, [[maybe_unused]] const animation_frames& frames,
+                           const animation_view& view)
 {
     check_video_encoder(path);
-    const bool gif = ends_with(path, ".gif");
+    [[maybe_unused]] const bool gif = ends_with(path, ".gif");
     if (!gif && !ends_with(path, ".mp4"))
         throw std::invalid_argument("a video is written as .mp4 or .gif, not `" + path + "`");
     if (!(view.fps > 0) || !std::isfinite(view.fps))
