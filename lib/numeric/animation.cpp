@@ -3,6 +3,8 @@
  *  An animation's frames (see animation.h). */
 #include "numeric/animation.h"
 
+#include "core/number_text.h"
+
 #include "numeric/compiled_motion.h"
 #include "numeric/ode.h"
 #include "numeric/values.h"
@@ -23,16 +25,24 @@ std::vector<GiNaC::ex> three(const std::vector<GiNaC::ex>& r)
     return out;
 }
 
-/// The animation's length: --until, or the scene's `simulate until`.
+/// The animation's length: --until, or the scene's `simulate until`; at most a million frames,
+/// which the page or the video could not hold anyway.
 double animation_length(const model& scene, const animation_settings& settings)
 {
     if (!(settings.fps > 0) || !std::isfinite(settings.fps))
         throw std::invalid_argument("the frame rate must be positive");
+    double until = 0;
     if (settings.until)
-        return *settings.until;
-    if (scene.simulation)
-        return real_value(scene.simulation->until, "the scene's `simulate until`");
-    throw computation_error("give the length of the animation with --until T (the scene has no `simulate until`)");
+        until = *settings.until;
+    else if (scene.simulation)
+        until = real_value(scene.simulation->until, "the scene's `simulate until`");
+    else
+        throw computation_error("give the length of the animation with --until T (the scene has no `simulate until`)");
+    constexpr double most_frames = 1e6;
+    if (!(until * settings.fps < most_frames))
+        throw computation_error("the animation would have " + shortest(std::floor(until * settings.fps) + 1) +
+                                " frames, more than a million: shorten it (--until), or lower --fps (or raise --speed)");
+    return until;
 }
 
 } // namespace

@@ -157,6 +157,10 @@ TEST_CASE("cli: animate says when ffmpeg is missing, and refuses an extension no
     CHECK_THAT(other.err, Catch::Contains("takes a file ending in .html, .mp4 or .gif"));
     cli_result view = run_cli("animate " + scene + " --view yz -o " + folder + "/out.html");
     CHECK(view.exit_code == 2);
+    // More frames than a page or a video holds: a message, before any integration.
+    cli_result endless = run_cli("animate " + scene + " --until 1e9 -o " + folder + "/out.html");
+    CHECK(endless.exit_code == 1);
+    CHECK_THAT(endless.err, Catch::Contains("more than a million: shorten it (--until)"));
 }
 
 TEST_CASE("cli: phase draws the pendulum's portrait with its separatrix, and refuses an unknown coordinate",
@@ -270,11 +274,14 @@ TEST_CASE("cli: animate encodes MP4 and GIF at real time with the bob where the 
     cli_result animated = run_cli("animate " + scene + " --fps 10 --speed 2 --trail 1 -o " + gif, "", 120);
     REQUIRE(animated.exit_code == 0);
     const std::string gif_probe = command_output("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                                                 "stream=width,height,nb_read_frames,codec_name -of "
-                                                 "default=noprint_wrappers=1 " + gif);
+                                                 "stream=width,height,nb_read_frames,codec_name -show_entries "
+                                                 "format=duration -of default=noprint_wrappers=1 " + gif);
     CHECK_THAT(gif_probe, Catch::Contains("codec_name=gif"));
     CHECK_THAT(gif_probe, Catch::Contains("width=640"));
     CHECK_THAT(gif_probe, Catch::Contains("nb_read_frames=16"));
+    double gif_duration = 0;
+    REQUIRE(std::sscanf(gif_probe.substr(gif_probe.find("duration=")).c_str(), "duration=%lf", &gif_duration) == 1);
+    CHECK(std::abs(gif_duration - 1.6) <= 0.05); // GIF delays are in hundredths of a second
 }
 
 TEST_CASE("cli: the player opens paused at #t=2.5 with the bobs where the simulation has them, and plays",
