@@ -4,7 +4,8 @@
 # lagrange in Release mode in ./build. Used by example.sh and test.sh.
 #   LAGRANGE_WITH_LATEX=1  also installs pdflatex (the tests compile LaTeX output)
 #   LAGRANGE_WITH_EXPORT_TOOLS=1  also installs SciPy and Octave (the tests run exported code)
-#   LAGRANGE_WITH_MEDIA=1  also installs ffmpeg and Chromium (videos; the tests decode them and open the player)
+#   LAGRANGE_WITH_MEDIA=1  also installs ffmpeg and Chromium (videos; the tests decode them and open the
+#     player) and matplotlib (the peer of bench/animate.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -38,7 +39,7 @@ fi
 # `lagrange animate -o FILE.mp4|gif` encodes with ffmpeg; the tests decode with ffprobe and open
 # the HTML player in headless Chromium.
 if [ "${LAGRANGE_WITH_MEDIA:-0}" = 1 ]; then
-  packages+=(ffmpeg chromium)
+  packages+=(ffmpeg chromium python3-matplotlib)
 fi
 if [ "${LAGRANGE_WITH_FUZZ:-0}" = 1 ]; then
   packages+=(clang libclang-rt-14-dev)
