@@ -7,6 +7,7 @@
 #include "engine/analysis.h"
 #include "numeric/poinsot.h"
 #include "helpers/scene_helpers.h"
+#include "helpers/free_box.h"
 
 #include <catch2/catch.hpp>
 
@@ -19,11 +20,8 @@ using lagrange_test::load;
 
 namespace {
 
-// A box with edges a, b, c along x, y, z: I1 = M(b² + c²)/12, I2 = M(a² + c²)/12, I3 = M(a² + b²)/12.
-const std::string box_scene = "parameters M a b c\nbody X box(a, b, c) mass M\nomega X (w1, w2, w3)\n"
-                              "values M = 1, a = 1, b = 2, c = 3\ninitial w1 = 0.2, w2 = 1, w3 = 0.3\n";
-const std::array<double, 3> moments{13.0 / 12, 10.0 / 12, 5.0 / 12};
-const std::array<double, 3> omega0{0.2, 1, 0.3};
+const std::array<double, 3>& moments = lagrange_test::free_box_moments;
+const std::array<double, 3>& omega0 = lagrange_test::free_box_omega0;
 
 using vector3 = std::array<double, 3>;
 
@@ -60,7 +58,7 @@ vector3 material_velocity(const lagrange::poinsot_motion& m, std::size_t f, cons
 TEST_CASE("poinsot: the inertia ellipsoid of a free box rolls without slipping on the invariable plane",
           "[poinsot]")
 {
-    lagrange::model scene = load(box_scene);
+    lagrange::model scene = load(lagrange_test::free_box_scene);
     lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::euler});
     REQUIRE(a.euler);
     REQUIRE(a.euler->size() == 1);
