@@ -3,7 +3,8 @@
  *  Poinsot's construction of a free asymmetric box: the contact point lies on the inertia
  *  ellipsoid and on the invariable plane at √(2T)/|L| (T and L written out by hand), the
  *  ellipsoid's normal there is L, L stays fixed in space, and the body's material point at
- *  the contact has zero velocity (the orientation differentiated by finite differences). */
+ *  the contact has zero velocity (the orientation differentiated by finite differences); a
+ *  symmetric body's herpolhode is the circle its constant |ω| gives. */
 #include "engine/analysis.h"
 #include "numeric/poinsot.h"
 #include "helpers/scene_helpers.h"
@@ -128,4 +129,27 @@ TEST_CASE("poinsot: a body under torque has no construction", "[poinsot]")
     e.body = "X";
     e.torque_free = false;
     REQUIRE_THROWS_AS(lagrange::compute_poinsot(e, {}), lagrange::computation_error);
+}
+
+TEST_CASE("poinsot: a symmetric body's herpolhode is a circle about the foot of the centre", "[poinsot]")
+{
+    // I = (1, 1, 2), ω(0) = (0.3, 0, 1): |ω| is constant, so the contact point ρ = Rω/√(2T) keeps
+    // its distance √(|ω|²/(2T) − d²) from the plane's point nearest the centre (d = √(2T)/|L|).
+    lagrange::model scene = load("parameters M A C\nbody D inertia (A, A, C) mass M\nomega D (p, q, r)\n"
+                                 "values M = 1, A = 1, C = 2\ninitial p = 0.3, q = 0, r = 1\n");
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::euler});
+    REQUIRE(a.euler);
+    lagrange::poinsot_settings settings;
+    settings.until = 30;
+    settings.step = 0.05;
+    const lagrange::poinsot_motion m = lagrange::compute_poinsot(a.euler->front(), settings);
+    const double two_t = 1 * 0.09 + 2 * 1.0, l = std::sqrt(0.09 + 4.0), d = std::sqrt(two_t) / l;
+    const double radius = std::sqrt((0.09 + 1.0) / two_t - d * d);
+    // The polhode's period: the transverse ω turns at (C − A) r / A = 1.
+    CHECK_THAT(m.period, WithinRel(2 * M_PI, 1e-12));
+    double worst = 0;
+    for (const vector3& c : m.contact)
+        worst = std::max(worst, std::abs(std::hypot(c[0], c[1]) - radius));
+    CHECK(worst <= 1e-9);
+    CHECK(radius > 0.05);
 }
