@@ -3,6 +3,7 @@
  *  The `lagrange` command: turns arguments into library calls, prints, and maps
  *  errors to exit codes (0 success, 1 computation not possible, 2 bad input or usage). */
 #include "engine/analysis.h"
+#include "engine/pictures.h"
 #include "engine/readiness.h"
 #include "ensemble/settings.h"
 #include "output/document.h"
@@ -471,13 +472,6 @@ int poincare_command(const poincare_options& options, const lagrange::budget_lim
     }
     lagrange::model scene = load_scene(options.scene_path, options.values, {}, budget.max_seconds);
     const lagrange::poincare_section section = lagrange::parse_poincare_section(options.section, scene);
-    // The equilibria give the energy's minimum; a scene whose equilibria are not found still has a section.
-    lagrange::analysis result;
-    try {
-        result = lagrange::analyze(scene, {lagrange::product::equations, lagrange::product::equilibrium}, budget);
-    } catch (const lagrange::computation_error&) {
-        result = lagrange::analyze(scene, {lagrange::product::equations}, budget);
-    }
     lagrange::poincare_settings settings;
     settings.energy = options.energy;
     settings.orbits = options.orbits;
@@ -490,8 +484,7 @@ int poincare_command(const poincare_options& options, const lagrange::budget_lim
     settings.native = !options.interpret;
     lagrange::poincare_result section_result;
     try {
-        section_result = lagrange::compute_poincare(scene, *result.equations,
-                                                    result.equilibria ? &*result.equilibria : nullptr, section, settings);
+        section_result = lagrange::poincare_scene(scene, section, settings, budget);
     } catch (const lagrange::poincare_request_error& error) {
         throw usage_error(error.what());
     }
@@ -578,7 +571,6 @@ int animate_command(const animate_options& options, const lagrange::budget_limit
     if (!lagrange::known_animation_view(options.view))
         throw usage_error("--view takes xy, xz or 3d, not `" + options.view + "`");
     lagrange::model scene = load_scene(options.scene_path, options.values, options.initial, budget.max_seconds);
-    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::equations}, budget);
     lagrange::animation_settings settings;
     settings.fps = options.fps;
     settings.until = options.until;
@@ -587,12 +579,16 @@ int animate_command(const animate_options& options, const lagrange::budget_limit
     else if (scene.simulation && scene.simulation->tolerance)
         settings.tolerance = lagrange::real_value(*scene.simulation->tolerance, "the scene's tolerance");
     settings.native = !options.interpret;
-    lagrange::animation_view view{options.speed, options.trail, options.view};
+    lagrange::animation_view view{options.speed, options.trail, options.view, options.fps};
     if (video) {
-        lagrange::write_animation_video(options.output, {}, view); // says why before the work
+        lagrange::check_video_encoder(options.output); // says why before the work
+        settings.fps = options.fps / options.speed;     // one frame of the run per frame of the video
     }
-    const lagrange::animation_frames frames = lagrange::compute_animation(scene, *result.equations, settings);
-    write_output(options.output, lagrange::animation_html(frames, view, plot_title(scene)));
+    const lagrange::animation_frames frames = lagrange::animate_scene(scene, settings, budget);
+    if (video)
+        lagrange::write_animation_video(options.output, frames, view);
+    else
+        write_output(options.output, lagrange::animation_html(frames, view, plot_title(scene)));
     return exit_ok;
 }
 
@@ -886,10 +882,10 @@ int run(int argc, char** argv)
 
     animate_options animate_options;
     CLI::App* animate = app.add_subcommand(
-        "animate", "the motion as a self-contained HTML player (docs/pictures.md)");
+        "animate", "the motion as a self-contained HTML player or a video (docs/pictures.md)");
     animate->add_option("SCENE", animate_options.scene_path, "the scene file (`-` for standard input)")->required();
     animate->add_option("-o,--output", animate_options.output, "FILE.html (or .mp4, .gif: with ffmpeg)")->required();
-    animate->add_option("--fps", animate_options.fps, "frames per second of simulated time")
+    animate->add_option("--fps", animate_options.fps, "HTML: frames per unit of simulated time; videos: frames per second of video")
         ->check(positive_number & CLI::Range(0.1, 1000.0))
         ->capture_default_str();
     animate->add_option("--speed", animate_options.speed, "simulated time per second of playing")

@@ -7,13 +7,17 @@
 #include "core/errors.h"
 #include "core/model.h"
 #include "engine/analysis.h"
+#include "engine/pictures.h"
 #include "output/document.h"
+#include "output/animation_output.h"
 #include "output/export_code.h"
+#include "output/poincare_output.h"
 #include "scene/lower.h"
 #include "scene/source.h"
 #include "system/files.h"
 #include "system/signals.h"
 
+#include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -27,6 +31,7 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -62,17 +67,25 @@ struct run_request {
 /// engine is whole and its mutex free (pthread_atfork in the module's init).
 std::mutex engine;
 
+/// `loaded` with the `values` points and initial values given from Python. Values replace the
+/// scene's `values` lines (the command line's add to them).
+lagrange::model with_values(const lagrange::model& loaded, const std::vector<std::string>& values,
+                            const std::vector<std::string>& initial = {})
+{
+    lagrange::model scene = loaded;
+    if (!values.empty())
+        scene.values.clear();
+    for (const std::string& v : values)
+        lagrange::add_values(scene, v, "values=");
+    for (const std::string& v : initial)
+        lagrange::add_initial(scene, v, "initial=");
+    return scene;
+}
+
 /// One run of the engine (in the child process of run_in_child).
 std::string run(const lagrange::model& loaded, const run_request& request, const std::string& format, bool timings)
 {
-    lagrange::model scene = loaded;
-    // Values given from Python replace the scene's `values` lines (the command line's add to them).
-    if (!request.values.empty())
-        scene.values.clear();
-    for (const std::string& v : request.values)
-        lagrange::add_values(scene, v, "values=");
-    for (const std::string& v : request.initial)
-        lagrange::add_initial(scene, v, "initial=");
+    lagrange::model scene = with_values(loaded, request.values, request.initial);
     std::set<lagrange::product> wanted;
     for (const std::string& name : request.want) {
         std::set<lagrange::product> one = lagrange::parse_want_list(name);
@@ -165,6 +178,9 @@ std::string outcome_of(const std::function<std::string()>& work)
             put_field(out, f);
     } catch (const lagrange::computation_error& error) {
         put_field(out, "ComputationError");
+        put_field(out, error.what());
+    } catch (const std::invalid_argument& error) {
+        put_field(out, "ValueError"); // a request that cannot be met (a Poincaré energy below the minimum)
         put_field(out, error.what());
     } catch (const std::exception& error) {
         put_field(out, "OSError"); // lagrange::file_error, and what else a run may meet
@@ -300,6 +316,8 @@ std::string run_in_child(const std::function<std::string()>& work)
         raise("ComputationError", py::make_tuple(fields[1]));
     else if (kind == "OSError" && fields.size() == 2)
         PyErr_SetString(PyExc_OSError, fields[1].c_str());
+    else if (kind == "ValueError" && fields.size() == 2)
+        PyErr_SetString(PyExc_ValueError, fields[1].c_str());
     else
         throw lagrange::computation_error("the engine's process sent an unreadable result");
     throw py::error_already_set();
@@ -347,11 +365,7 @@ PYBIND11_MODULE(_lagrange, m)
                     throw py::value_error("name must be an identifier that is no keyword of C, Python or Octave, "
                                           "not \"" + name + "\"");
                 return run_in_child([&] {
-                    lagrange::model copy = scene;
-                    if (!values.empty())
-                        copy.values.clear();
-                    for (const std::string& v : values)
-                        lagrange::add_values(copy, v, "values=");
+                    const lagrange::model copy = with_values(scene, values);
                     std::vector<std::pair<std::string, std::string>> files;
                     std::string written;
                     for (const lagrange::exported_file& file :
@@ -392,6 +406,66 @@ PYBIND11_MODULE(_lagrange, m)
             py::arg("max_seconds") = lagrange::budget_limits{}.max_seconds, py::arg("timings") = false,
             py::arg("project_initial") = false,
             "Runs the engine and returns the document (json, text or latex) as a string.");
+
+    m.def(
+        "poincare",
+        [](const lagrange::model& loaded, const std::string& section_text, const std::vector<std::string>& values,
+           const lagrange::poincare_settings& settings, std::size_t max_terms, double max_seconds) {
+            return run_in_child([&] {
+                const lagrange::model scene = with_values(loaded, values);
+                lagrange::budget_limits limits;
+                limits.max_terms = max_terms;
+                limits.max_seconds = max_seconds;
+                const lagrange::poincare_section section = lagrange::parse_poincare_section(section_text, scene);
+                const lagrange::poincare_result result = lagrange::poincare_scene(scene, section, settings, limits);
+                // The command line's CSV (shortest round-trip numbers) and its summary.
+                std::ostringstream csv;
+                lagrange::write_poincare_csv(csv, result);
+                nlohmann::json out{{"csv", csv.str()},
+                                   {"coordinates", result.coordinates},
+                                   {"no_crossings", result.no_crossings},
+                                   {"summary", lagrange::poincare_summary_text(result)}};
+                return out.dump();
+            });
+        },
+        py::arg("model"), py::arg("section"), py::arg("values"), py::arg("settings"),
+        py::arg("max_terms") = lagrange::budget_limits{}.max_terms,
+        py::arg("max_seconds") = lagrange::budget_limits{}.max_seconds,
+        "The Poincaré section of `lagrange poincare` as JSON: its CSV, coordinates, summary, and why "
+        "there are no crossings (or \"\").");
+
+    m.def(
+        "animate",
+        [](const lagrange::model& loaded, const std::vector<std::string>& values, const std::vector<std::string>& initial,
+           std::optional<double> until, double fps, double tolerance, bool native, double speed, double trail,
+           const std::string& view) {
+            if (!lagrange::known_animation_view(view))
+                throw py::value_error("view must be \"xy\", \"xz\" or \"3d\", not \"" + view + "\"");
+            return run_in_child([&] {
+                const lagrange::model scene = with_values(loaded, values, initial);
+                lagrange::animation_settings settings;
+                settings.fps = fps;
+                settings.until = until;
+                settings.tolerance = tolerance;
+                settings.native = native;
+                const lagrange::animation_frames frames = lagrange::animate_scene(scene, settings, {});
+                return lagrange::animation_html(frames, {speed, trail, view}, scene.title.empty() ? scene.file : scene.title);
+            });
+        },
+        py::arg("model"), py::arg("values"), py::arg("initial"), py::arg("until"), py::arg("fps"), py::arg("tolerance"),
+        py::arg("native"), py::arg("speed"), py::arg("trail"), py::arg("view"),
+        "The self-contained HTML player of `lagrange animate`, as a string.");
+
+    py::class_<lagrange::poincare_settings>(m, "PoincareSettings", "lagrange::poincare_settings")
+        .def(py::init<>())
+        .def_readwrite("energy", &lagrange::poincare_settings::energy)
+        .def_readwrite("orbits", &lagrange::poincare_settings::orbits)
+        .def_readwrite("crossings", &lagrange::poincare_settings::crossings)
+        .def_readwrite("until", &lagrange::poincare_settings::until)
+        .def_readwrite("tolerance", &lagrange::poincare_settings::tolerance)
+        .def_readwrite("seed", &lagrange::poincare_settings::seed)
+        .def_readwrite("threads", &lagrange::poincare_settings::threads)
+        .def_readwrite("native", &lagrange::poincare_settings::native);
 
     m.def(
         "load",

@@ -51,6 +51,11 @@ dp="$root/tests/scenes/ensemble_double_pendulum.lag"
   -o "$folder/double_pendulum_section.png" 2>/dev/null
 "$lagrange" phase "$dp" --coordinate theta -o "$folder/double_pendulum_phase.svg" 2>/dev/null
 "$lagrange" animate "$examples/double_pendulum.lag" --trail 2 -o "$folder/double_pendulum.html"
+# Videos need ffmpeg (LAGRANGE_WITH_MEDIA=1 scripts/setup.sh): without it they are left out.
+if command -v ffmpeg >/dev/null; then
+  "$lagrange" animate "$examples/free_asymmetric_top.lag" --until 12 --fps 15 -o "$folder/free_asymmetric_top_poinsot.gif"
+  "$lagrange" animate "$examples/double_pendulum.lag" --until 10 --trail 2 --fps 15 -o "$folder/double_pendulum.gif"
+fi
 
 fail() { echo "error: $1" >&2; exit 1; }
 for pdf in double_pendulum_report bodies_report free_asymmetric_top_report; do
@@ -66,5 +71,10 @@ for png in ensemble_flip_map henon_heiles_section_12 henon_heiles_section_8 doub
   [ "$(head -c 4 "$folder/$png.png" | tail -c 3)" = PNG ] || fail "no PNG drawn into $folder/$png.png"
 done
 grep -q 'lagrangePlayer' "$folder/double_pendulum.html" || fail "no player written into $folder/double_pendulum.html"
+if command -v ffmpeg >/dev/null; then
+  for gif in free_asymmetric_top_poinsot double_pendulum; do
+    head -c 6 "$folder/$gif.gif" | grep -q 'GIF89a' || fail "no GIF encoded into $folder/$gif.gif"
+  done
+fi
 echo "wrote into $folder:"
-(cd "$folder" && ls -1 -- *.pdf *.svg *.png *.html)
+(cd "$folder" && ls -1 -- *.pdf *.svg *.png *.html; ls -1 -- *.gif 2>/dev/null || true)

@@ -4,6 +4,8 @@
 # lagrange in Release mode in ./build. Used by example.sh and test.sh.
 #   LAGRANGE_WITH_LATEX=1  also installs pdflatex (the tests compile LaTeX output)
 #   LAGRANGE_WITH_EXPORT_TOOLS=1  also installs SciPy and Octave (the tests run exported code)
+#   LAGRANGE_WITH_MEDIA=1  also installs ffmpeg and Chromium (videos; the tests decode them and open the
+#     player) and matplotlib (the peer of bench/animate.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -19,6 +21,8 @@ packages+=(zlib1g-dev)
 packages+=(python3-dev pybind11-dev python3-pybind11 python3-numpy python3-sympy python3-pytest python3-nbclient python3-ipykernel)
 # gnuplot draws the figures of `lagrange report` and `--plot` (without it they are left out)
 packages+=(gnuplot-nox)
+# cairo draws the frames of `lagrange animate -o FILE.mp4|gif` (optional in CMake)
+packages+=(libcairo2-dev)
 # The manual page: help2man writes it from `lagrange --help` at build time; groff checks it (ctest man_page)
 packages+=(help2man groff-base)
 # Open MPI: `mpirun -np R lagrange ensemble ...` across processes and machines (optional in CMake)
@@ -32,6 +36,11 @@ if [ "${LAGRANGE_WITH_EXPORT_TOOLS:-0}" = 1 ]; then
   packages+=(python3-scipy octave)
 fi
 # fuzz/run.sh: clang and its libFuzzer/sanitizer runtimes; bench/run.sh: GNU time (peak memory).
+# `lagrange animate -o FILE.mp4|gif` encodes with ffmpeg; the tests decode with ffprobe and open
+# the HTML player in headless Chromium.
+if [ "${LAGRANGE_WITH_MEDIA:-0}" = 1 ]; then
+  packages+=(ffmpeg chromium python3-matplotlib)
+fi
 if [ "${LAGRANGE_WITH_FUZZ:-0}" = 1 ]; then
   packages+=(clang libclang-rt-14-dev)
 fi

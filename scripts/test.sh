@@ -4,6 +4,6 @@
 # and run the whole test suite with ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-LAGRANGE_WITH_LATEX=1 LAGRANGE_WITH_EXPORT_TOOLS=1 scripts/setup.sh
+LAGRANGE_WITH_LATEX=1 LAGRANGE_WITH_EXPORT_TOOLS=1 LAGRANGE_WITH_MEDIA=1 scripts/setup.sh
 cd build
 ctest --output-on-failure -j "$(nproc)" "$@"

@@ -203,9 +203,13 @@ euler_result derive_euler(const rigid_body& body, const inertia_result& inertia,
     for (int i = 0; i < 3; ++i)
         poinsot.ellipsoid_axes[i] = std::sqrt(two_t / moments[i]);
     poinsot.plane_distance = two_t / std::sqrt(l2);
+    poinsot.moments = moments;
+    poinsot.initial = w0;
     constexpr int polhode_points = 64;
     if (!axis) {
         result.elliptic = elliptic_motion(moments, w0);
+        if (result.elliptic)
+            poinsot.period = result.elliptic->period;
         if (result.elliptic)
             for (int n = 0; n < polhode_points; ++n)
                 poinsot.polhode.push_back(result.elliptic->evaluate(result.elliptic->period * n / polhode_points));
@@ -213,6 +217,7 @@ euler_result derive_euler(const rigid_body& body, const inertia_result& inertia,
         const std::size_t a = *axis, b = (a + 1) % 3, c = (a + 2) % 3;
         const double omega_p = (moments[a] - moments[b]) * w0[a] / moments[b];
         const double period = omega_p != 0 ? 2 * M_PI / std::abs(omega_p) : 0;
+        poinsot.period = period;
         for (int n = 0; n < polhode_points && period > 0; ++n) {
             const double angle = omega_p * period * n / polhode_points;
             std::array<double, 3> p{};

@@ -61,6 +61,9 @@ struct euler_result {
         std::array<double, 3> ellipsoid_axes{}; ///< semi-axes of ωᵀ I ω = 2T: √(2T/I_i)
         double plane_distance = 0;              ///< 2T/|L|: the invariable plane's distance from the centre
         std::vector<std::array<double, 3>> polhode; ///< ω(t) over one period
+        std::array<double, 3> moments{};        ///< I1 I2 I3 at the values (body order)
+        std::array<double, 3> initial{};        ///< ω(0) in the body axes
+        double period = 0;                      ///< of the polhode (0: ω is constant)
     };
     std::optional<poinsot_construction> poinsot;
 

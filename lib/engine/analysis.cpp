@@ -231,6 +231,16 @@ const std::vector<stage_definition>& stage_table()
                  if (c.scene.bodies[i].omega)
                      c.result.euler->push_back(
                          derive_euler(c.scene.bodies[i], c.result.inertia->at(i), c.scene.initial, values));
+             // Poinsot's construction in space over three periods of the polhode (the report's figure).
+             c.result.poinsot.emplace();
+             for (const euler_result& e : *c.result.euler)
+                 if (e.torque_free && e.poinsot) {
+                     try {
+                         c.result.poinsot->push_back(compute_poinsot(e, {}));
+                     } catch (const computation_error& error) {
+                         c.result.notes.push_back("Poinsot's construction of body " + e.body + ": " + error.what());
+                     }
+                 }
          }, "", ""},
         // Every product of a scene with coordinates shows its Lagrangian.
         {stage_id::lagrangian, "lagrangian", {}, every_product(), {}, has_coordinates,

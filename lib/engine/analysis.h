@@ -27,6 +27,7 @@
 #include "numeric/floquet.h"
 #include "numeric/linear_response.h"
 #include "numeric/point_modes.h"
+#include "numeric/poinsot.h"
 #include "mechanics/time_dependence.h"
 #include "numeric/simulation.h"
 #include "numeric/virial.h"
@@ -61,6 +62,7 @@ struct analysis {
     std::optional<std::vector<numeric_modes>> numeric;
     std::optional<std::vector<inertia_result>> inertia; ///< one per body, in scene order
     std::optional<std::vector<euler_result>> euler;     ///< one per free body (with `omega`)
+    std::optional<std::vector<poinsot_motion>> poinsot; ///< one per torque-free body with numbers, in space
     std::optional<std::vector<top_result>> tops;        ///< bodies turned by three coordinates (heavy tops)
     std::optional<simulation_result> simulation;
     std::optional<workprecision_result> workprecision;

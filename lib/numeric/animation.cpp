@@ -3,6 +3,8 @@
  *  An animation's frames (see animation.h). */
 #include "numeric/animation.h"
 
+#include "core/number_text.h"
+
 #include "numeric/compiled_motion.h"
 #include "numeric/ode.h"
 #include "numeric/values.h"
@@ -23,15 +25,10 @@ std::vector<GiNaC::ex> three(const std::vector<GiNaC::ex>& r)
     return out;
 }
 
-} // namespace
-
-animation_frames compute_animation(const model& scene, const equations_of_motion& equations,
-                                   const animation_settings& settings)
+/// The animation's length: --until, or the scene's `simulate until`; at most a million frames,
+/// which the page or the video could not hold anyway.
+double animation_length(const model& scene, const animation_settings& settings)
 {
-    if (scene.points.empty())
-        throw computation_error("the scene has no points to animate (rigid bodies are not drawn yet)");
-    if (equations.constraints)
-        throw computation_error("animations of scenes with constraints are not implemented");
     if (!(settings.fps > 0) || !std::isfinite(settings.fps))
         throw std::invalid_argument("the frame rate must be positive");
     double until = 0;
@@ -41,6 +38,47 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
         until = real_value(scene.simulation->until, "the scene's `simulate until`");
     else
         throw computation_error("give the length of the animation with --until T (the scene has no `simulate until`)");
+    constexpr double most_frames = 1e6;
+    if (!(until * settings.fps < most_frames))
+        throw computation_error("the animation would have " + shortest(std::floor(until * settings.fps) + 1) +
+                                " frames, more than a million: shorten it (--until), or lower --fps (or raise --speed)");
+    return until;
+}
+
+} // namespace
+
+animation_frames compute_body_animation(const model& scene, const euler_result& body,
+                                        const animation_settings& settings)
+{
+    poinsot_settings construction;
+    construction.until = animation_length(scene, settings);
+    construction.step = 1 / settings.fps;
+    construction.tolerance = std::max(settings.tolerance / 12, 1e-15); // per step ÷12, as simulate's DOP853
+    animation_frames frames;
+    frames.poinsot = compute_poinsot(body, construction);
+    const poinsot_motion& m = *frames.poinsot;
+    frames.dimensions = 3;
+    frames.step = construction.step;
+    frames.times = m.times;
+    frames.method = m.method;
+    frames.steps = m.steps;
+    for (const auto& w : m.omega) {
+        double two_t = 0;
+        for (std::size_t k = 0; k < 3; ++k)
+            two_t += m.moments[k] * w[k] * w[k];
+        frames.energy_drift.push_back((0.5 * two_t - m.energy) / m.energy);
+    }
+    return frames;
+}
+
+animation_frames compute_animation(const model& scene, const equations_of_motion& equations,
+                                   const animation_settings& settings)
+{
+    if (scene.points.empty())
+        throw computation_error("the scene has no points to animate (rigid bodies are drawn only when free: by Poinsot's construction)");
+    if (equations.constraints)
+        throw computation_error("animations of scenes with constraints are not implemented");
+    const double until = animation_length(scene, settings);
     const std::map<std::string, GiNaC::ex> values = merged_values(scene);
 
     animation_frames frames;

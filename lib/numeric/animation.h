@@ -4,10 +4,12 @@
  *  DOP853, read at evenly spaced times from its dense output, and turned into what is drawn:
  *  the points (with their masses), the ends of the springs, the fixed pivot, and the rods —
  *  pairs of these whose distance the motion keeps constant (a pendulum's string, a shared
- *  body). The writers (output/animation_output.h) only draw what is here. */
+ *  body). A free body's frames are Poinsot's construction (numeric/poinsot.h). The writers
+ *  (output/animation_output.h) only draw what is here. */
 #pragma once
 
 #include "mechanics/equations_of_motion.h"
+#include "numeric/poinsot.h"
 #include "core/model.h"
 
 #include <cstddef>
@@ -42,6 +44,8 @@ struct animation_frames {
     std::vector<double> times;
     std::vector<double> positions;  ///< frame after frame: each marker's (x, y, z)
     std::vector<double> energy_drift; ///< (h − h₀)/scale at each frame (empty: h is not conserved)
+    /// A free body's frames: Poinsot's construction (then there are no markers).
+    std::optional<poinsot_motion> poinsot;
     std::string method;             ///< the integrator's name
     std::size_t steps = 0;
     const double* at(std::size_t frame, std::size_t marker) const
@@ -54,5 +58,11 @@ struct animation_frames {
 /// end time; the integration's own errors pass through.
 animation_frames compute_animation(const model& scene, const equations_of_motion& equations,
                                    const animation_settings& settings);
+
+/// The frames of a torque-free body (`body`, the scene's `euler` result): Poinsot's
+/// construction over the animation's length, and T's drift. Throws computation_error as
+/// compute_poinsot does, or when the length is not given.
+animation_frames compute_body_animation(const model& scene, const euler_result& body,
+                                        const animation_settings& settings);
 
 } // namespace lagrange

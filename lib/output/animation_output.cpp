@@ -6,7 +6,6 @@
 
 #include "core/number_text.h"
 #include "core/errors.h"
-#include "system/external.h"
 
 #include <nlohmann/json.hpp>
 
@@ -40,7 +39,7 @@ const char* const player_script = R"JS(
   const slider = document.getElementById("time"), button = document.getElementById("play");
   const speedBox = document.getElementById("speed"), viewBox = document.getElementById("view");
   const clock = document.getElementById("clock");
-  const M = D.markers.length, F = D.times.length, T = D.times[F - 1];
+  const M = D.markers.length, F = D.times.length, T = D.times[F - 1], P = D.poinsot || null;
   let t = 0, playing = false, last = null, speed = D.speed, view = D.view, yaw = 0.6, pitch = 0.35;
   slider.max = T; slider.step = D.step / 4;
   speedBox.value = String(speed);
@@ -51,6 +50,21 @@ const char* const player_script = R"JS(
     const a = (f * M + m) * 3, b = ((f + 1) * M + m) * 3, p = D.positions;
     if (F < 2) return [p[m * 3], p[m * 3 + 1], p[m * 3 + 2]];
     return [p[a] + u * (p[b] - p[a]), p[a + 1] + u * (p[b + 1] - p[a + 1]), p[a + 2] + u * (p[b + 2] - p[a + 2])];
+  }
+  // Frame data of n numbers per frame (a free body's rotation or contact point) at time t, linearly.
+  function between(data, n, time) {
+    const s = Math.min(Math.max(time / D.step, 0), F - 1), f = Math.min(Math.floor(s), Math.max(F - 2, 0)), u = F < 2 ? 0 : s - f;
+    const out = [];
+    for (let k = 0; k < n; ++k) out.push(data[f * n + k] + (F < 2 ? 0 : u * (data[(f + 1) * n + k] - data[f * n + k])));
+    return out;
+  }
+  function turn(R, v) { return [R[0] * v[0] + R[1] * v[1] + R[2] * v[2], R[3] * v[0] + R[4] * v[1] + R[5] * v[2], R[6] * v[0] + R[7] * v[1] + R[8] * v[2]]; }
+  // Poinsot's construction: the plane's half width covers the ellipsoid and the herpolhode.
+  let planeHalf = 0;
+  if (P) {
+    planeHalf = Math.max(...P.semi_axes);
+    for (let f = 0; f < F; ++f) planeHalf = Math.max(planeHalf, Math.abs(P.contact[3 * f]), Math.abs(P.contact[3 * f + 1]));
+    planeHalf *= 1.2;
   }
   function project(r) {
     if (view === "xz") return [r[0], r[2]];
@@ -64,7 +78,15 @@ const char* const player_script = R"JS(
   let box;
   function fit() {
     let lo = [Infinity, Infinity], hi = [-Infinity, -Infinity];
-    for (let f = 0; f < F; ++f)
+    if (P) {
+      const r = Math.max(...P.semi_axes);
+      for (const s of [-1, 1]) for (const u of [-1, 1]) for (const z of [-r, r, -P.distance]) {
+        const q = project(z === -P.distance ? [s * planeHalf, u * planeHalf, z] : [s * r, u * r, z]);
+        lo = [Math.min(lo[0], q[0]), Math.min(lo[1], q[1])];
+        hi = [Math.max(hi[0], q[0]), Math.max(hi[1], q[1])];
+      }
+    }
+    for (let f = 0; f < F && !P; ++f)
       for (let m = 0; m < M; ++m) {
         if (!D.markers[m].name) continue;
         const q = project(position(m, f * D.step));
@@ -90,8 +112,65 @@ const char* const player_script = R"JS(
     }
     g.lineTo(b[0], b[1]); g.stroke();
   }
+  function polyline(points, colour, width) {
+    g.strokeStyle = colour; g.lineWidth = width; g.beginPath();
+    points.forEach((r, k) => { const q = screen(r); k ? g.lineTo(q[0], q[1]) : g.moveTo(q[0], q[1]); });
+    g.stroke();
+  }
+  // The invariable plane (grid), the herpolhode on it, the inertia ellipsoid turned by R(t)
+  // (meridians and parallels) with the polhode on it, the body axes, and ω through the contact.
+  function drawPoinsot() {
+    const R = between(P.rotation, 9, t), c = between(P.contact, 3, t), d = P.distance, h = planeHalf, a = P.semi_axes;
+    for (let k = -4; k <= 4; ++k) {
+      polyline([[k * h / 4, -h, -d], [k * h / 4, h, -d]], "#ddd", 1);
+      polyline([[-h, k * h / 4, -d], [h, k * h / 4, -d]], "#ddd", 1);
+    }
+    const path = [];
+    for (let f = 0; f < F && f * D.step <= t; ++f) path.push([P.contact[3 * f], P.contact[3 * f + 1], P.contact[3 * f + 2]]);
+    path.push(c);
+    polyline(path, "#1f77b4", 2);
+    const surface = (u, v) => turn(R, [a[0] * Math.cos(u) * Math.cos(v), a[1] * Math.sin(u) * Math.cos(v), a[2] * Math.sin(v)]);
+    for (let m = 0; m < 6; ++m) {
+      const u = m * Math.PI / 6, line = [];
+      for (let k = 0; k <= 48; ++k) line.push(surface(u, k * 2 * Math.PI / 48));
+      polyline(line, "#aaa", 1);
+    }
+    for (let n = -2; n <= 2; ++n) {
+      const v = n * Math.PI / 6, line = [];
+      for (let k = 0; k <= 48; ++k) line.push(surface(k * 2 * Math.PI / 48, v));
+      polyline(line, "#aaa", 1);
+    }
+    const polhode = [];
+    for (let k = 0; k < P.polhode.length; k += 3) polhode.push(turn(R, P.polhode.slice(k, k + 3)));
+    polyline(polhode, "#d62728", 2.5);
+    ["#9467bd", "#8c564b", "#17becf"].forEach((colour, k) => {
+      const e = [0, 0, 0]; e[k] = a[k];
+      polyline([turn(R, e.map(x => -x)), turn(R, e)], colour, 1.5);
+    });
+    polyline([[0, 0, 0], c], "#ff7f0e", 2.5);
+    const q = screen(c);
+    g.fillStyle = "#ff7f0e"; g.beginPath(); g.arc(q[0], q[1], 5, 0, 2 * Math.PI); g.fill();
+    g.fillStyle = "#333"; g.font = "13px sans-serif";
+    g.fillText("inertia ellipsoid of " + P.body + ", polhode (red), herpolhode (blue), ω (orange)", 10, 18);
+    return c;
+  }
+  // The state the page shows, for tests and links: time, playing, and where things are drawn.
+  function publish(world) {
+    canvas.dataset.time = String(t);
+    canvas.dataset.playing = String(playing);
+    canvas.dataset.world = JSON.stringify(world);
+    canvas.dataset.screen = JSON.stringify(world.map(r => screen(r).map(x => Math.round(x * 100) / 100)));
+  }
   function draw() {
     g.clearRect(0, 0, canvas.width, canvas.height);
+    const f0 = Math.min(Math.round(t / D.step), F - 1);
+    if (P) {
+      const c = drawPoinsot();
+      clock.textContent = "t = " + t.toFixed(2) + (D.drift.length ? "   energy drift " + D.drift[f0].toExponential(1) : "");
+      slider.value = t;
+      publish([c]);
+      return;
+    }
     const at = [];
     for (let m = 0; m < M; ++m) at.push(screen(position(m, t)));
     if (D.trail > 0) {
@@ -118,17 +197,23 @@ const char* const player_script = R"JS(
     const f = Math.min(Math.round(t / D.step), F - 1);
     clock.textContent = "t = " + t.toFixed(2) + (D.drift.length ? "   energy drift " + D.drift[f].toExponential(1) : "");
     slider.value = t;
+    const world = [];
+    for (let m = 0; m < M; ++m) world.push(position(m, t));
+    publish(world);
   }
-  function frame(now) {
+  // Timers, not requestAnimationFrame: a headless browser (the test) runs timers on virtual
+  // time but draws no animation frames.
+  function frame() {
     if (!playing) return;
+    const now = performance.now();
     if (last !== null) t += (now - last) / 1000 * speed;
     last = now;
     if (t >= T) { t = T; playing = false; button.textContent = "play"; }
     draw();
-    if (playing) requestAnimationFrame(frame);
+    if (playing) setTimeout(frame, 1000 / 60);
   }
-  function play() { if (t >= T) t = 0; playing = true; last = null; button.textContent = "pause"; requestAnimationFrame(frame); }
-  function pause() { playing = false; button.textContent = "play"; }
+  function play() { if (t >= T) t = 0; playing = true; last = null; button.textContent = "pause"; frame(); }
+  function pause() { playing = false; button.textContent = "play"; canvas.dataset.playing = "false"; }
   function setTime(time) { t = Math.min(Math.max(Number(time), 0), T); draw(); }
   button.onclick = () => (playing ? pause() : play());
   slider.oninput = () => { pause(); setTime(slider.value); };
@@ -150,15 +235,6 @@ const char* const player_script = R"JS(
 )JS";
 
 } // namespace
-
-void write_animation_video(const std::string& path, const animation_frames&, const animation_view&)
-{
-    if (!program_available("ffmpeg"))
-        throw computation_error("ffmpeg is not installed (Debian package ffmpeg), so `" + path +
-                                "` cannot be encoded: install it, or write the self-contained player with -o FILE.html");
-    throw computation_error("encoding `" + path + "` is not implemented in this version: write the self-contained "
-                            "player with -o FILE.html");
-}
 
 bool known_animation_view(const std::string& view)
 {
@@ -191,7 +267,28 @@ std::string animation_html(const animation_frames& frames, const animation_view&
     data << "],\"drift\":[";
     for (std::size_t f = 0; f < frames.energy_drift.size(); ++f)
         data << (f ? "," : "") << shortest(frames.energy_drift[f]);
-    data << "],\"method\":" << nlohmann::json(frames.method).dump() << "}";
+    data << "]";
+    if (frames.poinsot) {
+        const poinsot_motion& p = *frames.poinsot;
+        auto triples = [&](const char* name, const auto& rows) {
+            data << ",\"" << name << "\":[";
+            bool first = true;
+            for (const auto& row : rows)
+                for (double x : row) {
+                    data << (first ? "" : ",") << shortest(x);
+                    first = false;
+                }
+            data << "]";
+        };
+        data << ",\"poinsot\":{\"body\":" << nlohmann::json(p.body).dump() << ",\"semi_axes\":[" << shortest(p.semi_axes[0])
+             << "," << shortest(p.semi_axes[1]) << "," << shortest(p.semi_axes[2])
+             << "],\"distance\":" << shortest(p.plane_distance);
+        triples("rotation", p.rotation);
+        triples("contact", p.contact);
+        triples("polhode", p.polhode);
+        data << "}";
+    }
+    data << ",\"method\":" << nlohmann::json(frames.method).dump() << "}";
 
     std::ostringstream out;
     out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << html_escape(title)

@@ -268,6 +268,61 @@ void polhode_figure(report_writer& w, const euler_result& e, const std::string& 
                  "$\\boldsymbol{\\omega}^{T}\\mathbf{I}\\boldsymbol{\\omega} = 2T$.");
 }
 
+/// The seed's Figure 8: Poinsot's construction in space at t = 0 — the inertia ellipsoid
+/// ρᵀIρ = 1 turned to its orientation then, resting on the invariable plane, the polhode on it,
+/// ω through the point of contact, and the herpolhode the contact traces on the plane.
+void poinsot_figure(report_writer& w, const poinsot_motion& m, const std::string& tag)
+{
+    if (m.rotation.empty() || m.polhode.empty())
+        return;
+    const auto& R = m.rotation.front();
+    const auto& a = m.semi_axes;
+    auto triple = [](const std::array<double, 3>& r) {
+        return gnuplot_number(r[0]) + " " + gnuplot_number(r[1]) + " " + gnuplot_number(r[2]) + "\n";
+    };
+    double half = std::max({a[0], a[1], a[2]});
+    for (const auto& c : m.contact)
+        half = std::max({half, std::abs(c[0]), std::abs(c[1])});
+    half *= 1.15;
+    const std::string z = gnuplot_number(-m.plane_distance), h = gnuplot_number(half);
+    std::string script = "set parametric\nset view equal xyz\nset view 68, 32, 1.25\nset ticslevel 0\n"
+                         "set urange [0:2*pi]\nset vrange [-pi/2:pi/2]\nset isosamples 19, 11\nunset xtics\nunset ytics\n"
+                         "unset ztics\nunset border\nset key at screen 0.99, 0.98 right top\n";
+    script += "$plane << EOD\n";
+    for (int k = -4; k <= 4; ++k) {
+        const std::string s = gnuplot_number(k * half / 4);
+        script += "-" + h + " " + s + " " + z + "\n" + h + " " + s + " " + z + "\n\n\n" + s + " -" + h + " " + z + "\n" +
+                  s + " " + h + " " + z + "\n\n\n";
+    }
+    script += "EOD\n$polhode << EOD\n";
+    for (const auto& b : m.polhode)
+        script += triple({R[0] * b[0] + R[1] * b[1] + R[2] * b[2], R[3] * b[0] + R[4] * b[1] + R[5] * b[2],
+                          R[6] * b[0] + R[7] * b[1] + R[8] * b[2]});
+    script += "EOD\n$herpolhode << EOD\n";
+    for (const auto& c : m.contact)
+        script += triple(c);
+    script += "EOD\n$omega << EOD\n0 0 0\n" + triple(m.contact.front()) + "EOD\n";
+    // The ellipsoid's surface: body point (a cos u cos v, b sin u cos v, c sin v) turned by R(0).
+    std::string surface;
+    for (int i = 0; i < 3; ++i)
+        surface += std::string(i ? ", " : "") + gnuplot_number(R[3 * i] * a[0]) + "*cos(u)*cos(v) + " +
+                   gnuplot_number(R[3 * i + 1] * a[1]) + "*sin(u)*cos(v) + " + gnuplot_number(R[3 * i + 2] * a[2]) +
+                   "*sin(v)";
+    script += "splot " + surface + " with lines lc rgb '#c8c8c8' title 'inertia ellipsoid', "
+              "$plane using 1:2:3 with lines lc rgb '#9ab0d0' title 'invariable plane', "
+              "$herpolhode using 1:2:3 with lines lw 2 lc rgb '#1f4e9c' title 'herpolhode', "
+              "$polhode using 1:2:3 with lines lw 2.5 lc rgb '#c00000' title 'polhode', "
+              "$omega using 1:2:3 with lines lw 2.5 lc rgb '#e07000' title 'ω'\n";
+    w.figure(tag + "poinsot", script, 13, 11,
+             "Poinsot's construction for body " + body_title(m.body) +
+                 ": the inertia ellipsoid $\\boldsymbol{\\rho}^{T}\\mathbf{I}\\boldsymbol{\\rho} = 1$ at $t = 0$, "
+                 "touching the invariable plane (normal to $\\mathbf{L}$, at $\\sqrt{2T}/|\\mathbf{L}| = " +
+                 report_writer::number(m.plane_distance, 6) +
+                 "$ from the centre) at $\\boldsymbol{\\rho} = \\boldsymbol{\\omega}/\\sqrt{2T}$; the polhode on the "
+                 "ellipsoid and the herpolhode it rolls out on the plane over $t \\le " +
+                 report_writer::number(m.times.back(), 4) + "$.");
+}
+
 /// ω(t) of the elliptic solution over one period.
 void omega_figure(report_writer& w, const euler_result& e, const std::string& tag)
 {
@@ -396,6 +451,17 @@ void write_body_euler(report_writer& w, const euler_result& e)
             .text(" from the centre. The curve ").latex("$\\boldsymbol{\\omega}(t)$")
             .text(" traces on the ellipsoid is the polhode.\n");
         polhode_figure(w, e, tag);
+        if (w.result().poinsot)
+            for (const poinsot_motion& m : *w.result().poinsot)
+                if (m.body == e.body) {
+                    w.text("The ellipsoid ").latex("$\\boldsymbol{\\rho}^{T}\\mathbf{I}\\boldsymbol{\\rho} = 1$")
+                        .text(" of ").latex("$\\boldsymbol{\\rho} = \\boldsymbol{\\omega}/\\sqrt{2T}$")
+                        .text(", fixed in the body, turns with it and rolls without slipping on the invariable plane: "
+                              "the point of contact lies on the instantaneous axis, so it is at rest. Euler's "
+                              "equations and the orientation integrated together (" + m.method + ", " +
+                              std::to_string(m.steps) + " steps) draw it in space.\n");
+                    poinsot_figure(w, m, tag);
+                }
     }
     if (e.stability.size() == 3) {
         w.text("Steady rotation about each principal axis, perturbed slightly:");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file external.cpp
- *  Private folders and posix_spawnp for cc, gnuplot and pdflatex. */
+ *  Private folders and posix_spawnp for cc, gnuplot, pdflatex and ffmpeg. */
 #include "system/external.h"
 
 #include "core/errors.h"
@@ -9,9 +9,12 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <poll.h>
+#include <pthread.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sstream>
@@ -101,9 +104,33 @@ bool program_available(const std::string& program)
     return false;
 }
 
-program_result run_program(const std::vector<std::string>& arguments, const std::string& directory,
-                           const std::string& log_name, const std::vector<std::string>& environment,
-                           double timeout_seconds)
+namespace {
+
+/// Writes all of `bytes` to the non-blocking `fd` before `deadline`; false when the reader has
+/// gone (EPIPE: SIGPIPE is blocked in this thread meanwhile) or the deadline passed.
+bool write_before(int fd, const char* bytes, std::size_t size, std::chrono::steady_clock::time_point deadline)
+{
+    while (size > 0) {
+        const ssize_t written = write(fd, bytes, size);
+        if (written > 0) {
+            bytes += written;
+            size -= static_cast<std::size_t>(written);
+            continue;
+        }
+        if (written < 0 && errno != EAGAIN && errno != EINTR)
+            return false;
+        if (std::chrono::steady_clock::now() > deadline)
+            return false;
+        pollfd wait{fd, POLLOUT, 0};
+        poll(&wait, 1, 50);
+    }
+    return true;
+}
+
+/// run_program, with standard input from a pipe that `feed` writes into when it is given.
+program_result spawn_and_wait(const std::vector<std::string>& arguments, const std::string& directory,
+                              const std::string& log_name, const std::vector<std::string>& environment,
+                              double timeout_seconds, const program_feed* feed)
 {
     program_result result;
     if (arguments.empty())
@@ -132,11 +159,24 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
     // posix_spawnp, not fork: no copy of this process's page tables (which a large process
     // may not get under strict overcommit), the working folder and the redirections as
     // file actions in the child (addchdir_np: glibc ≥ 2.29).
+    int pipe_ends[2] = {-1, -1};
+    if (feed && pipe2(pipe_ends, O_CLOEXEC) != 0)
+        return result;
+    struct pipe_closer {
+        int* ends;
+        ~pipe_closer()
+        {
+            for (int k = 0; k < 2; ++k)
+                if (ends[k] >= 0)
+                    close(ends[k]);
+        }
+    } closer{pipe_ends};
     posix_spawn_file_actions_t actions;
     if (posix_spawn_file_actions_init(&actions) != 0)
         return result;
     bool prepared = posix_spawn_file_actions_addchdir_np(&actions, directory.c_str()) == 0 &&
-                    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0) == 0 &&
+                    (feed ? posix_spawn_file_actions_adddup2(&actions, pipe_ends[0], 0) == 0
+                          : posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0) == 0) &&
                     posix_spawn_file_actions_addopen(&actions, 1, log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
                                                      0600) == 0 &&
                     posix_spawn_file_actions_adddup2(&actions, 1, 2) == 0;
@@ -161,6 +201,34 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                         std::chrono::duration<double>(timeout_seconds));
     int status = 0;
+    if (feed) {
+        close(pipe_ends[0]);
+        pipe_ends[0] = -1;
+        fcntl(pipe_ends[1], F_SETFL, fcntl(pipe_ends[1], F_GETFL) | O_NONBLOCK);
+        // SIGPIPE held off while writing: a reader that has gone is EPIPE, not the end of this process.
+        sigset_t pipe_signal, old_mask;
+        sigemptyset(&pipe_signal);
+        sigaddset(&pipe_signal, SIGPIPE);
+        pthread_sigmask(SIG_BLOCK, &pipe_signal, &old_mask);
+        const int fd = pipe_ends[1];
+        std::exception_ptr failure;
+        try {
+            (*feed)([&](const char* bytes, std::size_t size) { return write_before(fd, bytes, size, deadline); });
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        close(pipe_ends[1]);
+        pipe_ends[1] = -1;
+        const timespec no_wait{0, 0};
+        while (sigtimedwait(&pipe_signal, nullptr, &no_wait) == SIGPIPE) {
+        }
+        pthread_sigmask(SIG_SETMASK, &old_mask, nullptr);
+        if (failure) {
+            kill(-child, SIGKILL);
+            waitpid(child, &status, 0);
+            std::rethrow_exception(failure);
+        }
+    }
     for (;;) {
         pid_t done = waitpid(child, &status, WNOHANG);
         if (done == child)
@@ -180,6 +248,21 @@ program_result run_program(const std::vector<std::string>& arguments, const std:
     else if (WIFSIGNALED(status))
         result.signal = WTERMSIG(status);
     return result;
+}
+
+} // namespace
+
+program_result run_program(const std::vector<std::string>& arguments, const std::string& directory,
+                           const std::string& log_name, const std::vector<std::string>& environment,
+                           double timeout_seconds)
+{
+    return spawn_and_wait(arguments, directory, log_name, environment, timeout_seconds, nullptr);
+}
+
+program_result run_program_fed(const std::vector<std::string>& arguments, const std::string& directory,
+                               const std::string& log_name, const program_feed& feed, double timeout_seconds)
+{
+    return spawn_and_wait(arguments, directory, log_name, {}, timeout_seconds, &feed);
 }
 
 } // namespace lagrange

@@ -9,6 +9,8 @@
 #include "core/errors.h"
 #include "system/signals.h"
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,5 +68,14 @@ struct program_result {
 program_result run_program(const std::vector<std::string>& arguments, const std::string& directory,
                            const std::string& log_name, const std::vector<std::string>& environment = {},
                            double timeout_seconds = 120);
+
+/// What feeds a program's standard input: called once with a writer, which writes bytes into
+/// the pipe and returns false once the program has stopped reading (or the timeout passed).
+using program_feed = std::function<void(const std::function<bool(const char* bytes, std::size_t size)>& write)>;
+
+/// run_program with standard input from a pipe that `feed` writes (frames to ffmpeg), then
+/// closes; the timeout counts from the start, writing included.
+program_result run_program_fed(const std::vector<std::string>& arguments, const std::string& directory,
+                               const std::string& log_name, const program_feed& feed, double timeout_seconds = 120);
 
 } // namespace lagrange

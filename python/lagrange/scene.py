@@ -318,6 +318,59 @@ class Scene:
         doc, c = self._parts("virial", ["virial"], values, settings, initial=initial)
         return Result("virial", c.value(doc["virial"]), doc["virial"])
 
+    def poincare(self, section, energy, orbits=50, crossings=100, until=1000, tolerance=1e-9, seed=1, threads=0,
+                 values=None, native=True, max_terms=None, max_seconds=None):
+        """The Poincaré section of ``lagrange poincare`` (docs/pictures.md): ``section`` as
+        ``--section`` (``"x = 0, x' > 0"``), at the energy ``energy``, over ``orbits`` orbits of
+        at most ``crossings`` crossings and ``until`` time each; the same numbers as the command
+        line's CSV for the same arguments, for any ``threads``. Returns a :class:`PoincareSection`
+        of numpy arrays: ``orbit``, ``t``, ``q`` and ``q_dot`` (a column per coordinate, in
+        ``coordinates``' order), ``no_crossings`` (why there are none, or "") and ``summary``.
+        An unknown coordinate in ``section`` raises SceneError; an energy below the minimum of
+        the energy, ValueError."""
+        _check_settings({"until": until, "tolerance": tolerance, "max_terms": max_terms, "max_seconds": max_seconds})
+        if not isinstance(section, str):
+            raise TypeError("section must be a string such as \"x = 0, x' > 0\"")
+        for name, value in (("orbits", orbits), ("crossings", crossings), ("seed", seed), ("threads", threads)):
+            if isinstance(value, bool) or not isinstance(value, (int, numpy.integer)) or value < (name in ("orbits", "crossings")):
+                raise ValueError(f"{name} must be a {'positive' if name in ('orbits', 'crossings') else 'non-negative'} "
+                                 f"integer (got {value!r})")
+        if isinstance(energy, bool) or not isinstance(energy, (int, float, numpy.integer, numpy.floating)) \
+                or not numpy.isfinite(energy):
+            raise ValueError(f"energy must be a finite number (got {energy!r})")
+        settings = _lagrange.PoincareSettings()
+        settings.energy = float(energy)
+        settings.orbits = int(orbits)
+        settings.crossings = int(crossings)
+        settings.until = float(until)
+        settings.tolerance = float(tolerance)
+        settings.seed = int(seed)
+        settings.threads = int(threads)
+        settings.native = bool(native)
+        limits = {name: value for name, value in (("max_terms", max_terms), ("max_seconds", max_seconds))
+                  if value is not None}
+        out = json.loads(_lagrange.poincare(self._model, section, _values_lines(values), settings, **limits))
+        return PoincareSection(out)
+
+    def animate(self, until=None, fps=30, speed=1, trail=0, view="", values=None, initial=None, tolerance=1e-9,
+                native=True):
+        """The self-contained HTML player of ``lagrange animate -o FILE.html`` (docs/pictures.md):
+        an :class:`Animation`, which Jupyter shows as the player and ``.save(path)`` writes.
+        ``until`` (default: the scene's `simulate until`), ``fps`` frames per unit of simulated
+        time, ``speed``, ``trail``, ``view`` ("xy", "xz", "3d"; "": by the scene), ``values``,
+        ``initial`` and ``tolerance`` as for :meth:`simulate`. A free body is drawn by Poinsot's
+        construction."""
+        _check_settings({"until": until, "tolerance": tolerance})
+        for name, value in (("fps", fps), ("speed", speed), ("trail", trail)):
+            if isinstance(value, bool) or not isinstance(value, (int, float, numpy.integer, numpy.floating)) \
+                    or not numpy.isfinite(value) or value < 0 or (value == 0 and name != "trail"):
+                raise ValueError(f"{name} must be a {'non-negative' if name == 'trail' else 'positive'} finite "
+                                 f"number (got {value!r})")
+        html = _lagrange.animate(self._model, _values_lines(values), _initial_lines(initial, self.coordinates),
+                                 None if until is None else float(until), float(fps), float(tolerance), bool(native),
+                                 float(speed), float(trail), view)
+        return Animation(html)
+
     def inertia(self):
         """Per body: ``tensor`` (SymPy Matrix), ``principal`` moments and ``mass``."""
         doc, c = self._parts("inertia", ["inertia"])
@@ -444,6 +497,52 @@ class Simulation(Result):
         for name, drift in (self._parts.get("invariants") or {}).items():
             lines.append(r"\text{" + _text(name) + "} &= " + f"{drift:.3g}")
         return "$$\\begin{aligned}" + " \\\\ ".join(lines) + "\\end{aligned}$$"
+
+
+class Animation:
+    """The HTML player of an animation: ``.html`` (one self-contained page), shown by Jupyter
+    in an isolated frame (``_repr_html_``), written by ``.save(path)``."""
+
+    def __init__(self, html):
+        self.html = html
+
+    def save(self, path):
+        with open(os.fspath(path), "w", encoding="utf-8") as f:
+            f.write(self.html)
+
+    def _repr_html_(self):
+        import html as _html
+        return ('<iframe style="width: 700px; height: 720px; border: none" sandbox="allow-scripts" srcdoc="'
+                + _html.escape(self.html, quote=True) + '"></iframe>')
+
+    def __repr__(self):
+        return f"Animation({len(self.html)} bytes of HTML)"
+
+
+class PoincareSection:
+    """The crossings of a Poincaré section: ``orbit`` (int), ``t``, ``q`` and ``q_dot``
+    (numpy arrays, one row per crossing, orbit by orbit, as the command line's CSV),
+    ``coordinates``, ``no_crossings`` (why there are none, or "") and ``summary`` (the
+    command line's summary)."""
+
+    def __init__(self, out):
+        self.coordinates = list(out["coordinates"])
+        self.no_crossings = out["no_crossings"]
+        self.summary = out["summary"]
+        self.csv = out["csv"]
+        n = len(self.coordinates)
+        rows = [line.split(",") for line in self.csv.splitlines()[1:] if line]
+        table = numpy.array([[float(x) for x in row] for row in rows], dtype=float).reshape(len(rows), 2 + 2 * n)
+        self.orbit = table[:, 0].astype(int)
+        self.t = table[:, 1]
+        self.q = table[:, 2:2 + n]
+        self.q_dot = table[:, 2 + n:]
+
+    def __len__(self):
+        return len(self.t)
+
+    def __repr__(self):
+        return f"PoincareSection({len(self)} crossings of {len(set(self.orbit.tolist()))} orbits, {self.coordinates})"
 
 
 class VerificationResult(dict):

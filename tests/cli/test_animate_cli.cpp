@@ -1,13 +1,21 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_animate_cli.cpp
  *  `lagrange animate`: the HTML player's embedded frames against the simulation, its rods
- *  and controls, the error without ffmpeg, and an extension nothing writes. */
+ *  and controls, the error without ffmpeg, and an extension nothing writes; a free body's
+ *  Poinsot construction in the player; MP4 and GIF decoded by ffprobe and ffmpeg (frame
+ *  count, duration, size, and the bob's pixels where the trajectory puts it); the player
+ *  opened in headless Chromium at #t=2.5 (paused there, the bobs drawn where the simulation
+ *  has them) and playing. */
 #include "helpers/cli_runner.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -30,6 +38,57 @@ nlohmann::json page_data(const std::string& html)
     REQUIRE(begin != std::string::npos);
     const std::size_t end = html.find("</script>", begin);
     return nlohmann::json::parse(html.substr(begin + open.size(), end - begin - open.size()));
+}
+
+constexpr double length = 1.5;
+
+/// What a shell command prints on standard output.
+std::string command_output(const std::string& command)
+{
+    std::string out;
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    char buffer[4096];
+    std::size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0)
+        out.append(buffer, n);
+    pclose(pipe);
+    return out;
+}
+
+/// θ and φ at time t from `lagrange simulate --csv` (its rows at every 0.1).
+std::array<double, 2> simulated_angles(const std::string& csv_path, double t)
+{
+    std::istringstream rows(read_file(csv_path));
+    std::string line;
+    std::getline(rows, line);
+    while (std::getline(rows, line)) {
+        double time, theta, phi;
+        REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf", &time, &theta, &phi) == 3);
+        if (std::abs(time - t) < 1e-9)
+            return {theta, phi};
+    }
+    FAIL("no row at t = " << t);
+    return {};
+}
+
+/// The value of the attribute `name="…"` in `dom` (empty when absent), with &quot; undone.
+std::string attribute(const std::string& dom, const std::string& name)
+{
+    const std::size_t begin = dom.find(name + "=\"");
+    if (begin == std::string::npos)
+        return "";
+    const std::size_t from = begin + name.size() + 2, end = dom.find('"', from);
+    std::string value = dom.substr(from, end - from);
+    for (std::size_t k; (k = value.find("&quot;")) != std::string::npos;)
+        value.replace(k, 6, "\"");
+    return value;
+}
+
+std::string chromium_dom(const std::string& url, int budget_ms)
+{
+    return command_output("timeout 120 chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=" +
+                          std::to_string(budget_ms) + " --dump-dom '" + url + "' 2>/dev/null");
 }
 
 } // namespace
@@ -98,6 +157,10 @@ TEST_CASE("cli: animate says when ffmpeg is missing, and refuses an extension no
     CHECK_THAT(other.err, Catch::Contains("takes a file ending in .html, .mp4 or .gif"));
     cli_result view = run_cli("animate " + scene + " --view yz -o " + folder + "/out.html");
     CHECK(view.exit_code == 2);
+    // More frames than a page or a video holds: a message, before any integration.
+    cli_result endless = run_cli("animate " + scene + " --until 1e9 -o " + folder + "/out.html");
+    CHECK(endless.exit_code == 1);
+    CHECK_THAT(endless.err, Catch::Contains("more than a million: shorten it (--until)"));
 }
 
 TEST_CASE("cli: phase draws the pendulum's portrait with its separatrix, and refuses an unknown coordinate",
@@ -116,4 +179,153 @@ TEST_CASE("cli: phase draws the pendulum's portrait with its separatrix, and ref
     cli_result unknown = run_cli("phase " + scene + " --coordinate psi -o " + svg);
     CHECK(unknown.exit_code == 2);
     CHECK_THAT(unknown.err, Catch::Contains("--coordinate:1:1: error: `psi` is not a coordinate"));
+}
+
+TEST_CASE("cli: animate draws a free body by Poinsot's construction", "[cli][animate]")
+{
+    const std::string scene = temporary_file(
+        "free_box.lag", "parameters M a b c\nbody X box(a, b, c) mass M\nomega X (w1, w2, w3)\n"
+                        "values M = 1, a = 1, b = 2, c = 3\ninitial w1 = 0.2, w2 = 1, w3 = 0.3\nsimulate until 5\n");
+    const std::string html = temporary_file("free_box.html", "");
+    cli_result drawn = run_cli("animate " + scene + " --fps 10 -o " + html, "", 60);
+    REQUIRE(drawn.exit_code == 0);
+    const nlohmann::json data = page_data(read_file(html));
+    CHECK(data["view"] == "3d");
+    REQUIRE(data["times"].size() == 51);
+    const auto& p = data["poinsot"];
+    REQUIRE(p["rotation"].size() == 51 * 9);
+    REQUIRE(p["contact"].size() == 51 * 3);
+    // The contact point stays on the plane z = −√(2T)/|L| (T, L from ω(0) by hand).
+    const std::array<double, 3> I{13.0 / 12, 10.0 / 12, 5.0 / 12}, w0{0.2, 1, 0.3};
+    double two_t = 0, l2 = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        two_t += I[k] * w0[k] * w0[k];
+        l2 += I[k] * I[k] * w0[k] * w0[k];
+    }
+    const double distance = std::sqrt(two_t / l2);
+    CHECK(std::abs(p["distance"].get<double>() - distance) <= 1e-14);
+    for (std::size_t f = 0; f < 51; ++f)
+        CHECK(std::abs(p["contact"][3 * f + 2].get<double>() + distance) <= 1e-9);
+    for (const auto& d : data["drift"])
+        CHECK(std::abs(d.get<double>()) <= 1e-9);
+}
+
+TEST_CASE("cli: animate encodes MP4 and GIF at real time with the bob where the trajectory says",
+          "[cli][animate][ffmpeg]")
+{
+    const std::string scene = temporary_file("video.lag", scene_text);
+    const std::string mp4 = temporary_file("video.mp4", ""), gif = temporary_file("video.gif", "");
+    const std::string html = temporary_file("video.html", "");
+    // 10 frames per second of video, at twice real time: a frame every 0.2 of simulated time.
+    cli_result encoded = run_cli("animate " + scene + " --fps 10 --speed 2 -o " + mp4, "", 120);
+    REQUIRE(encoded.exit_code == 0);
+    const std::string probe =
+        command_output("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                       "stream=width,height,nb_read_frames,codec_name -show_entries format=duration -of "
+                       "default=noprint_wrappers=1 " + mp4);
+    CHECK_THAT(probe, Catch::Contains("codec_name=h264"));
+    CHECK_THAT(probe, Catch::Contains("width=640"));
+    CHECK_THAT(probe, Catch::Contains("height=480"));
+    CHECK_THAT(probe, Catch::Contains("nb_read_frames=16")); // t = 0, 0.2, …, 3
+    double duration = 0;
+    REQUIRE(std::sscanf(probe.substr(probe.find("duration=")).c_str(), "duration=%lf", &duration) == 1);
+    CHECK(std::abs(duration - 1.6) <= 0.05);
+
+    // Frame 8 (t = 1.6) decoded to RGB: the lower bob's disc is where the simulation puts it,
+    // in the picture's framing (every marker at every frame fits 80% of the smaller side).
+    const std::string rgb = temporary_file("frame.rgb", "");
+    REQUIRE(std::system(("ffmpeg -v error -y -i " + mp4 + " -vf 'select=eq(n\\,8)' -frames:v 1 -f rawvideo -pix_fmt rgb24 " +
+                         rgb).c_str()) == 0);
+    const std::string pixels = read_file(rgb);
+    REQUIRE(pixels.size() == 640u * 480u * 3u);
+    REQUIRE(run_cli("animate " + scene + " --fps 5 -o " + html, "", 60).exit_code == 0);
+    const nlohmann::json data = page_data(read_file(html));
+    REQUIRE(data["times"].size() == 16);
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (std::size_t f = 0; f < 16; ++f)
+        for (std::size_t m = 0; m < 3; ++m)
+            for (std::size_t k = 0; k < 2; ++k) {
+                const double x = data["positions"][(f * 3 + m) * 3 + k];
+                lo[k] = std::min(lo[k], x);
+                hi[k] = std::max(hi[k], x);
+            }
+    const double scale = 0.8 * 480 / std::max(hi[0] - lo[0], hi[1] - lo[1]);
+    const std::string csv = temporary_file("video.csv", "");
+    REQUIRE(run_cli("simulate " + scene + " --csv " + csv, "", 60).exit_code == 0);
+    const auto [theta, phi] = simulated_angles(csv, 1.6);
+    const double x = length * std::sin(theta) + length * std::sin(phi), y = -length * std::cos(theta) - length * std::cos(phi);
+    const double column = 320 + (x - (lo[0] + hi[0]) / 2) * scale, row = 240 - (y - (lo[1] + hi[1]) / 2) * scale;
+    // The centre of the red pixels (the bobs' colour, #d62728) within 25 pixels of there.
+    double sum_c = 0, sum_r = 0, count = 0;
+    for (int r = 0; r < 480; ++r)
+        for (int c = 0; c < 640; ++c) {
+            if (std::hypot(c - column, r - row) > 25)
+                continue;
+            const auto* px = reinterpret_cast<const unsigned char*>(pixels.data()) + (r * 640 + c) * 3;
+            if (px[0] > 180 && px[1] < 90 && px[2] < 90) {
+                sum_c += c;
+                sum_r += r;
+                ++count;
+            }
+        }
+    REQUIRE(count >= 100); // a disc of radius 20 has about 1,250 pixels
+    CHECK(std::hypot(sum_c / count - column, sum_r / count - row) <= 3);
+
+    cli_result animated = run_cli("animate " + scene + " --fps 10 --speed 2 --trail 1 -o " + gif, "", 120);
+    REQUIRE(animated.exit_code == 0);
+    const std::string gif_probe = command_output("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                                                 "stream=width,height,nb_read_frames,codec_name -show_entries "
+                                                 "format=duration -of default=noprint_wrappers=1 " + gif);
+    CHECK_THAT(gif_probe, Catch::Contains("codec_name=gif"));
+    CHECK_THAT(gif_probe, Catch::Contains("width=640"));
+    CHECK_THAT(gif_probe, Catch::Contains("nb_read_frames=16"));
+    double gif_duration = 0;
+    REQUIRE(std::sscanf(gif_probe.substr(gif_probe.find("duration=")).c_str(), "duration=%lf", &gif_duration) == 1);
+    CHECK(std::abs(gif_duration - 1.6) <= 0.05); // GIF delays are in hundredths of a second
+}
+
+TEST_CASE("cli: the player opens paused at #t=2.5 with the bobs where the simulation has them, and plays",
+          "[cli][animate][chromium]")
+{
+    const std::string scene = temporary_file("browser.lag", scene_text);
+    const std::string html = temporary_file("browser.html", ""), csv = temporary_file("browser.csv", "");
+    REQUIRE(run_cli("animate " + scene + " --fps 10 -o " + html, "", 60).exit_code == 0);
+    REQUIRE(run_cli("simulate " + scene + " --csv " + csv, "", 60).exit_code == 0);
+    std::array<std::string, 2> screens;
+    for (double t : {2.5, 1.0}) {
+        std::ostringstream url;
+        url << "file://" << html << "#t=" << t;
+        const std::string dom = chromium_dom(url.str(), 1000);
+        REQUIRE(dom.find("id=\"stage\"") != std::string::npos);
+        CHECK(std::stod(attribute(dom, "data-time")) == t);
+        CHECK(attribute(dom, "data-playing") == "false");
+        const nlohmann::json world = nlohmann::json::parse(attribute(dom, "data-world"));
+        REQUIRE(world.size() == 3); // upper, lower, the pivot
+        const auto [theta, phi] = simulated_angles(csv, t);
+        const double expected[2][2] = {{length * std::sin(theta), -length * std::cos(theta)},
+                                       {length * std::sin(theta) + length * std::sin(phi),
+                                        -length * std::cos(theta) - length * std::cos(phi)}};
+        for (std::size_t m = 0; m < 2; ++m)
+            for (std::size_t k = 0; k < 2; ++k)
+                CHECK(std::abs(world[m][k].get<double>() - expected[m][k]) <= 1e-7);
+        screens[t == 1.0] = attribute(dom, "data-screen");
+    }
+    // Two moments, two pictures: the bobs are drawn at other pixels, and the screenshots differ.
+    CHECK(screens[0] != screens[1]);
+    std::array<std::string, 2> shots;
+    for (std::size_t k = 0; k < 2; ++k) {
+        const std::string png = temporary_file("shot" + std::to_string(k) + ".png", "");
+        command_output("timeout 120 chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=1000 "
+                       "--window-size=700,700 --screenshot=" + png + " 'file://" + html + (k ? "#t=1" : "#t=2.5") +
+                       "' 2>/dev/null");
+        shots[k] = read_file(png);
+        REQUIRE(shots[k].compare(1, 3, "PNG") == 0);
+    }
+    CHECK(shots[0] != shots[1]);
+    // Without a time in the address it plays: after 1.5 s (virtual time) the clock has moved.
+    const std::string playing = chromium_dom("file://" + html, 1500);
+    const double t = std::stod(attribute(playing, "data-time"));
+    CHECK(t >= 1.0);
+    CHECK(t <= 2.0);
+    CHECK(attribute(playing, "data-playing") == "true");
 }

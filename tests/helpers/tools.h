@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file tools.h
- *  The external tools some tests need (a C compiler, gnuplot, pdflatex). A test case that
- *  needs one is tagged with the tool's name ([cc], [gnuplot], [pdflatex]); ctest runs those
- *  cases as a test of their own, `tests_FOLDER --requires TOOL "[TOOL]"`, which the runner
- *  (main.cpp) reports as skipped (exit 77) when the tool is absent. A tool that is present
+ *  The external tools some tests need (a C compiler, gnuplot, pdflatex, ffmpeg, Chromium). A
+ *  test case that needs one is tagged with the tool's name ([cc], [gnuplot], [pdflatex],
+ *  [ffmpeg], [chromium]); ctest runs those cases as a test of their own, `tests_FOLDER
+ *  --requires TOOL "[TOOL]"`, which the runner (main.cpp) reports as skipped (exit 77) when
+ *  the tool is absent. A tool that is present
  *  but fails makes its tests fail, with the tool's message. */
 #pragma once
 
@@ -13,7 +14,7 @@
 namespace lagrange_test {
 
 /// The tools a test can require, by tag name.
-inline constexpr const char* known_tools[] = {"cc", "gnuplot", "pdflatex", "root", "octave", "scipy"};
+inline constexpr const char* known_tools[] = {"cc", "gnuplot", "pdflatex", "root", "octave", "scipy", "ffmpeg", "chromium"};
 
 /// Whether `tool` is installed: for "cc" the compiler the engine uses ($LAGRANGE_CC, else
 /// `cc`), for "root" whether the tests run as root (owners and device nodes), for "octave"

@@ -11,6 +11,7 @@
 #include "numeric/free_body_motion.h"
 #include "numeric/simulation.h"
 #include "helpers/scene_helpers.h"
+#include "helpers/free_box.h"
 
 #include <catch2/catch.hpp>
 
@@ -23,10 +24,8 @@ using lagrange_test::load;
 
 namespace {
 
-// A box with edges a, b, c along x, y, z: I1 = M(b² + c²)/12, I2 = M(a² + c²)/12, I3 = M(a² + b²)/12.
-const std::string asymmetric = "parameters M a b c\nbody X box(a, b, c) mass M\nomega X (w1, w2, w3)\n"
-                               "values M = 1, a = 1, b = 2, c = 3\ninitial w1 = 0.2, w2 = 1, w3 = 0.3\n";
-const std::array<double, 3> box_moments{13.0 / 12, 10.0 / 12, 5.0 / 12};
+const std::string& asymmetric = lagrange_test::free_box_scene;
+const std::array<double, 3>& box_moments = lagrange_test::free_box_moments;
 
 /// Euler's equations written out by hand (principal axes, no torque).
 std::array<double, 3> euler_rates(const std::array<double, 3>& I, const std::array<double, 3>& w)

@@ -496,6 +496,16 @@ TEST_CASE("report: the free asymmetric top's elliptic solution, stability and po
     CHECK(std::count(names.begin(), names.end(), "dp-body-X-polhode.pdf") == 1);
     CHECK(std::count(names.begin(), names.end(), "dp-body-X-omega.pdf") == 1);
     CHECK(contains(latex, "{dp-body-X-polhode}"));
+    // Poinsot's figure (the seed's Figure 8): the ellipsoid on the plane at √(2T)/|L|, T and L from ω(0) by hand.
+    CHECK(std::count(names.begin(), names.end(), "dp-body-X-poinsot.pdf") == 1);
+    CHECK(contains(latex, "{dp-body-X-poinsot}"));
+    REQUIRE(result.poinsot);
+    REQUIRE(result.poinsot->size() == 1);
+    const std::array<double, 3> I{13.0 / 12, 10.0 / 12, 5.0 / 12}, w0{0.2, 1, 0.3};
+    const double two_t = I[0] * w0[0] * w0[0] + I[1] * w0[1] * w0[1] + I[2] * w0[2] * w0[2];
+    const double l = std::sqrt(I[0] * I[0] * w0[0] * w0[0] + I[1] * I[1] * w0[1] * w0[1] + I[2] * I[2] * w0[2] * w0[2]);
+    CHECK_THAT(result.poinsot->front().plane_distance, Catch::Matchers::WithinRel(std::sqrt(two_t) / l, 1e-13));
+    CHECK(contains(latex, "\\sqrt{2T}/|\\mathbf{L}| = " + lagrange::report_writer::number(std::sqrt(two_t) / l, 6)));
     // byte-identical from run to run, figures included
     auto again = report_of("free_asymmetric_top.lag");
     CHECK(again->document.latex == latex);
