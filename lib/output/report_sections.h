@@ -14,7 +14,7 @@ namespace lagrange {
 /// The figure of the mode shapes, with a sentence on which mode is in phase (mode_figures.cpp).
 void write_mode_figures(report_writer& w);
 
-/// The rigid-body sections (bodies_report.cpp): each inertia component as the
+/// The rigid-body sections (bodies.cpp, with inertia.cpp, tops.cpp, euler.cpp): each inertia component as the
 /// integral it comes from, the tensor, L and T; the heavy top; Euler's
 /// equations, the torque-free solution, conserved quantities, stability, polhode.
 void write_body_sections(report_writer& w);
