@@ -5,6 +5,7 @@
 
 #include "numeric/ode.h"
 #include "core/errors.h"
+#include "core/number_text.h"
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
@@ -19,8 +20,8 @@ poinsot_motion compute_poinsot(const euler_result& body, const poinsot_settings&
     if (!body.torque_free || !body.poinsot)
         throw computation_error("Poinsot's construction of body `" + body.body +
                                 "` needs a torque-free body with numbers for its moments and a nonzero initial ω");
-    if (!(settings.step > 0) || !std::isfinite(settings.step))
-        throw std::invalid_argument("the time between frames must be positive");
+    if (!(settings.step >= 0) || !std::isfinite(settings.step))
+        throw std::invalid_argument("the time between frames must be positive (or 0: a 600th of the run)");
     const auto& p = *body.poinsot;
     poinsot_motion out;
     out.body = body.body;
@@ -62,12 +63,16 @@ poinsot_motion compute_poinsot(const euler_result& body, const poinsot_settings&
     double until = settings.until;
     if (!(until > 0))
         until = p.period > 0 ? 3 * p.period : 10;
+    const double step = settings.step > 0 ? settings.step : until / 600;
+    if (!std::isfinite(until) || !(until / step < 1e7))
+        throw computation_error("Poinsot's construction of body `" + body.body + "` over " + shortest(until) +
+                                " time units every " + shortest(step) + " would have more than 10 million frames");
     integration_options options;
     options.until = until;
     options.tolerance = settings.tolerance;
-    const std::size_t count = static_cast<std::size_t>(std::floor(until / settings.step + 1e-9)) + 1;
+    const std::size_t count = static_cast<std::size_t>(std::floor(until / step + 1e-9)) + 1;
     for (std::size_t f = 0; f < count; ++f)
-        options.times.push_back(std::min(until, static_cast<double>(f) * settings.step));
+        options.times.push_back(std::min(until, static_cast<double>(f) * step));
     if (options.times.back() < until)
         options.times.push_back(until);
     const trajectory run = integrate(system, ode_method::dop853, x0, options);

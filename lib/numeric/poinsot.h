@@ -23,7 +23,7 @@ namespace lagrange {
 
 struct poinsot_settings {
     double until = 0;        ///< length of the run (0: three periods of the polhode, or 10 if it has none)
-    double step = 1.0 / 30;  ///< time between frames
+    double step = 0;         ///< time between frames (0: a 600th of the run)
     double tolerance = 1e-11; ///< DOP853's relative tolerance per step
 };
 
@@ -45,7 +45,8 @@ struct poinsot_motion {
 };
 
 /// The construction for `body` (an `euler` result that carries `poinsot`: torque-free, at
-/// numbers, with ω(0) ≠ 0). Throws computation_error otherwise; integration errors pass through.
+/// numbers, with ω(0) ≠ 0). Throws computation_error otherwise, and for more than 10 million
+/// frames; integration errors pass through.
 poinsot_motion compute_poinsot(const euler_result& body, const poinsot_settings& settings);
 
 } // namespace lagrange
