@@ -545,7 +545,7 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
         if (points.empty() && n > 1) // e.g. roots of ρ² + z²: try each coordinate axis
             points = axis_equilibria(scene, branch_gradient);
         // V as written, where it is the potential: ½ f² keeps its square there
-        const ex written = vanishes(lagrangian.potential_built - lagrangian.potential) ? lagrangian.potential_built
+        const ex written = vanishes_identically(lagrangian.potential_built - lagrangian.potential) ? lagrangian.potential_built
                                                                                       : lagrangian.potential;
         for (const std::vector<ex>& point : points) {
             // a set of equilibria (Størmer's V = ½ f²): one point stands for the whole set

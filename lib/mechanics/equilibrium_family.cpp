@@ -10,6 +10,7 @@
 #include "algebra/budget.h"
 #include "algebra/calculus.h"
 #include "algebra/sign.h"
+#include "algebra/sorted_terms.h"
 
 namespace lagrange {
 
@@ -104,7 +105,10 @@ std::optional<equilibrium_family> family_through(const model& scene, const ex& p
     if (!regular)
         return std::nullopt;
     equilibrium_family family;
-    family.relation = tidy(square->f.normal().numer());
+    // f's numerator, of the sign whose sorted text comes first (normal() picks a sign by
+    // GiNaC's hash order, which changes from process to process)
+    const ex numerator = tidy(square->f.normal().numer()), negated = tidy(-numerator);
+    family.relation = message_text(negated) < message_text(numerator) ? negated : numerator;
     family.dimension = scene.coordinates.size() - 1;
     family.across = *sign;
     family.potential = square->v0;

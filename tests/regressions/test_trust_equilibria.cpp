@@ -51,8 +51,13 @@ TEST_CASE("trust: Størmer's effective potential has a curve of equilibria, not 
     // V = ½ f², f = C/ρ − ρ/r³: V = 0 on the curve C r³ = ρ², i.e. ρ = cos³λ / C,
     // z = cos²λ sin λ / C in the latitude λ; across it ∂²V = (∂f)², C⁶ along ρ at (1/C, 0).
     // Beside it ∇f = 0 at z = 0, ρ = 2/C, a saddle of V.
-    const model scene = lagrange_test::load(lagrange_test::read_file(std::string(LAGRANGE_SOURCE_DIR) +
-                                                                     "/tests/scenes/stormer.lag"));
+    const model scene = lagrange_test::load(R"(
+parameters C
+coordinates rho z
+T = 1/2*rho'^2 + 1/2*z'^2
+V = 1/2*(C/rho - rho/(rho^2 + z^2)^(3/2))^2
+values C = 0.7
+)");
     analysis a = analyze(scene, {product::equilibrium, product::numeric});
     REQUIRE(a.equilibria);
     REQUIRE(a.equilibria->family);
@@ -90,4 +95,26 @@ TEST_CASE("trust: Størmer's effective potential has a curve of equilibria, not 
     REQUIRE(omega.size() == 2);
     CHECK(std::abs(omega[0]) <= 1e-12);
     CHECK(omega[1] == Approx(std::pow(c, 3)).epsilon(1e-12));
+}
+
+TEST_CASE("trust: Størmer's curve in his variables is C r = cos² λ", "[trust][equilibrium]")
+{
+    const model scene = lagrange_test::load(lagrange_test::read_file(std::string(LAGRANGE_SOURCE_DIR) +
+                                                                     "/tests/scenes/stormer.lag"));
+    analysis a = analyze(scene, {product::equilibrium});
+    REQUIRE(a.equilibria);
+    REQUIRE(a.equilibria->family);
+    CHECK(a.equilibria->family->across == 1);
+    const GiNaC::ex r = lagrange_test::symbol_of(scene, "r"), lat = lagrange_test::symbol_of(scene, "lat"),
+                    C = lagrange_test::symbol_of(scene, "C");
+    const double c = 0.7;
+    for (double latitude : {-1.0, 0.0, 0.4, 1.3}) {
+        INFO("latitude " << latitude << ", relation " << a.equilibria->family->relation);
+        const double on_curve = std::pow(std::cos(latitude), 2) / c;
+        const double on = lagrange_test::value_at(a.equilibria->family->relation, {{C, c}, {r, on_curve}, {lat, latitude}});
+        const double off =
+            lagrange_test::value_at(a.equilibria->family->relation, {{C, c}, {r, 1.2 * on_curve}, {lat, latitude}});
+        CHECK(std::abs(on) <= 1e-13 * std::abs(off));
+        CHECK(off != 0);
+    }
 }
