@@ -8,10 +8,12 @@
 #include "algebra/expression.h"
 #include "algebra/factor.h"
 #include "algebra/harmonic.h"
+#include "algebra/canonical_order.h"
 #include "algebra/pythagorean.h"
 
 #include <cln/integer.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -359,14 +361,61 @@ GiNaC::ex collect_compact(const harmonic_polynomial& p, const GiNaC::lst& variab
     return collect_compact(to_ex(p), variables, angles);
 }
 
+namespace {
+
+/// The bases of odd half-integer powers in e (the ρ² + z² of (ρ² + z²)^(3/2) and of its
+/// square root), in canonical order.
+exvector half_power_bases(const ex& e)
+{
+    exvector bases;
+    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+        if (!GiNaC::is_a<GiNaC::power>(*i))
+            continue;
+        const ex k = i->op(1);
+        if (!k.info(GiNaC::info_flags::rational) || k.info(GiNaC::info_flags::integer) ||
+            !(2 * k).info(GiNaC::info_flags::integer) || i->op(0).info(GiNaC::info_flags::numeric))
+            continue;
+        if (std::none_of(bases.begin(), bases.end(), [&](const ex& b) { return b.is_equal(i->op(0)); }))
+            bases.push_back(i->op(0));
+    }
+    std::sort(bases.begin(), bases.end(), canonical_less);
+    return bases;
+}
+
+/// f(e) with each half power b^(k/2) written as s^k of one symbol s = √b while f runs.
+/// GiNaC's normal() takes b^(3/2) and b^(1/2) as unrelated atoms and, by hash order, keeps
+/// one form or the other, so the result changed from run to run; through s it is one.
+template <typename F>
+ex through_square_roots(const ex& e, F f)
+{
+    const exvector bases = half_power_bases(e);
+    if (bases.empty())
+        return f(e);
+    ex x = e;
+    GiNaC::exmap back;
+    for (std::size_t k = 0; k < bases.size(); ++k) {
+        const GiNaC::realsymbol root("sqrt_" + std::to_string(k));
+        x = x.subs(GiNaC::pow(bases[k], GiNaC::wild(0)) == GiNaC::pow(root, 2 * GiNaC::wild(0)));
+        back[root] = GiNaC::sqrt(bases[k]);
+    }
+    return f(x).subs(back);
+}
+
+} // namespace
+
 // Sines of parameter angles (th0) are atoms of the canonical form: sin² th0 + cos² th0 = 1
 // is applied after it, where it shortens a sum, and again after the grouping, which can
 // gather such a sum into one coefficient.
-GiNaC::ex simplifier::canonical(const GiNaC::ex& e) const { return pythagorean(trig_canonical(e, angles)); }
+GiNaC::ex simplifier::canonical(const GiNaC::ex& e) const
+{
+    return through_square_roots(e, [&](const ex& x) { return pythagorean(trig_canonical(x, angles)); });
+}
 
 GiNaC::ex simplifier::compact(const GiNaC::ex& canonical_form) const
 {
-    return pythagorean(collect_compact(rewrite(canonical_form, rules), variables, angles));
+    return through_square_roots(canonical_form, [&](const ex& x) {
+        return pythagorean(collect_compact(rewrite(x, rules), variables, angles));
+    });
 }
 
 GiNaC::ex simplifier::compact(const harmonic_polynomial& canonical_form) const

@@ -542,7 +542,17 @@ equilibria_result find_equilibria(const model& scene, const lagrangian_result& l
         } else {
             points = solve_several(scene, branch_gradient, kind_at);
         }
+        if (points.empty() && n > 1) // e.g. roots of ρ² + z²: try each coordinate axis
+            points = axis_equilibria(scene, branch_gradient);
+        // V as written, where it is the potential: ½ f² keeps its square there
+        const ex written = vanishes_identically(lagrangian.potential_built - lagrangian.potential) ? lagrangian.potential_built
+                                                                                      : lagrangian.potential;
         for (const std::vector<ex>& point : points) {
+            // a set of equilibria (Størmer's V = ½ f²): one point stands for the whole set
+            if (result.family && on_family(scene, *result.family, point))
+                continue;
+            if (!result.family)
+                result.family = family_through(scene, written, point);
             bool kept = true;
             for (std::size_t i = 0; i < n && kept; ++i)
                 kept = !branch[i] || sign_of(point[i]) == std::optional<int>(1);

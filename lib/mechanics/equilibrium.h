@@ -7,11 +7,13 @@
 
 #include "algebra/simplify.h"
 #include "core/model.h"
+#include "mechanics/equilibrium_family.h"
 #include "mechanics/lagrangian.h"
 
 #include <ginac/ginac.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,9 @@ struct equilibria_result {
     std::vector<equilibrium_point> points; ///< every equilibrium found (or the one given)
     std::size_t chosen = 0;                ///< the one to linearize about (the stable one by default)
     bool given = false;                    ///< from the scene's `equilibrium` line
+    /// A set of equilibria that are not isolated (f = 0 of V = c·f²); `points` then holds
+    /// one point of it (the one linearized about where chosen) and the equilibria off it.
+    std::optional<equilibrium_family> family;
 };
 
 /// The `equilibrium` line if there is one (checked: ∂V/∂q = 0 there, else

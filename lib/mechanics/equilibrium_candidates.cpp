@@ -152,8 +152,10 @@ std::optional<std::vector<ex>> point_with_angles(const model& scene, const std::
             continue;
         if (!reduced.info(GiNaC::info_flags::polynomial))
             reduced = reduced.normal().numer().expand(); // zeros of a rational function: of its numerator
+        // degree() throws on a non-polynomial in the unknowns (a root of ρ² + z² left in the numerator)
+        linear = linear && reduced.is_polynomial(unknowns);
         for (const ex& u : unknowns)
-            linear = linear && reduced.degree(u) <= 1 && !inside_function(reduced, u);
+            linear = linear && !inside_function(reduced, u) && reduced.degree(u) <= 1;
         equations.append(reduced == 0);
     }
     std::vector<ex> point(n, 0);

@@ -148,6 +148,17 @@ bool shows_gyroscopic(const analysis& result)
                                   l.gyroscopic.cols() == l.kinetic.cols());
 }
 
+/// A set of equilibria in words: its relation, V on it, and its stability across it.
+std::string family_text(const equilibrium_family& family, syntax s)
+{
+    const bool latex = s == syntax::latex;
+    const std::string math = latex ? "$" : "";
+    return std::string(family.dimension == 1 ? "a curve" : "a set of dimension " + std::to_string(family.dimension)) +
+           " of equilibria, " + math + print(family.relation, s) + " = 0" + math + ", where " + math + "V = " +
+           print(family.potential, s) + math + " is " + (family.across > 0 ? "least" : "greatest") + ": " +
+           (family.across > 0 ? "stable" : "unstable") + " across it, neutral along it";
+}
+
 } // namespace
 
 void write_oscillations_text(std::ostream& out, const analysis& result)
@@ -161,6 +172,8 @@ void write_oscillations_text(std::ostream& out, const analysis& result)
             out << "  " << position_text(scene, p.position, s) << ": " << to_string(p.kind)
                 << (k == result.equilibria->chosen && result.linearization ? "  (linearized about)" : "") << '\n';
         }
+        if (result.equilibria->family)
+            out << "  " << family_text(*result.equilibria->family, s) << '\n';
     }
     if (result.linearization) {
         const linearization_result& l = *result.linearization;
@@ -262,6 +275,8 @@ void write_oscillations_latex(std::ostream& out, const analysis& result)
         out << "\\subsection*{Equilibria}\n\\begin{itemize}\n";
         for (const equilibrium_point& p : result.equilibria->points)
             out << "\\item $" << position_text(scene, p.position, s) << "$: " << to_string(p.kind) << "\n";
+        if (result.equilibria->family)
+            out << "\\item " << family_text(*result.equilibria->family, s) << "\n";
         out << "\\end{itemize}\n";
     }
     if (result.linearization) {
@@ -384,6 +399,11 @@ void write_oscillations_json(nlohmann::ordered_json& doc, const analysis& result
         for (const equilibrium_point& p : e.points)
             all.push_back({{"position", position_json(p)}, {"stability", to_string(p.kind)}});
         doc["equilibria"] = all;
+        if (e.family)
+            doc["equilibrium_set"] = {{"relation", print(e.family->relation, syntax::plain)},
+                                      {"dimension", e.family->dimension},
+                                      {"potential", print(e.family->potential, syntax::plain)},
+                                      {"stability_across", e.family->across > 0 ? "stable" : "unstable"}};
     }
     if (result.linearization) {
         doc["T"] = matrix_json(result.linearization->kinetic);

@@ -19,6 +19,7 @@
 #include <complex>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -263,4 +264,93 @@ TEST_CASE("corpus: the damped characteristic polynomial vanishes at the numeric 
         ++compared;
     }
     CHECK(compared >= 3);
+}
+
+namespace {
+
+/// The numbers of a CSV line.
+std::vector<double> csv_numbers(const std::string& line)
+{
+    std::vector<double> numbers;
+    std::size_t start = 0;
+    while (start <= line.size()) {
+        const std::size_t comma = std::min(line.find(',', start), line.size());
+        numbers.push_back(std::stod(line.substr(start, comma - start)));
+        start = comma + 1;
+    }
+    return numbers;
+}
+
+} // namespace
+
+TEST_CASE("corpus: an ensemble's final state at one point is `simulate`'s at the same values",
+          "[corpus][ensemble]")
+{
+    // Two routes to one run: the ensemble's integrator, measure and CSV, against `simulate`
+    // and its JSON, at one grid point that moves a parameter and the first coordinate off the
+    // scene's own values. Both target a relative error of `tolerance`.
+    const double tolerance = 1e-9;
+    int compared = 0;
+    for (const std::string& path : corpus()) {
+        INFO(path);
+        const model scene = lagrange_test::load(lagrange_test::read_file(path));
+        if (!scene.simulation || !scene.constraints.empty() || scene.coordinates.empty() || !scene.inputs.empty())
+            continue;
+        const std::map<std::string, GiNaC::ex> values = merged_values(scene);
+        std::string grid, simulate_values, initial;
+        for (const parameter& p : scene.parameters)
+            if (values.count(p.name)) {
+                std::optional<double> value = real_at(values.at(p.name), {});
+                if (!value)
+                    continue;
+                const std::string moved = exact_text(*value * 1.0625);
+                grid = p.name + "=" + moved + ".." + moved + ":1, ";
+                simulate_values = " --values " + p.name + "=" + moved;
+                break;
+            }
+        const std::string& q = scene.coordinates.front().name;
+        const std::string start = "0.25";
+        grid += q + "=" + start + ".." + start + ":1";
+        initial = " --initial " + q + "=" + start;
+        const std::string common = " --until 1 --tolerance " + exact_text(tolerance);
+        lagrange_test::cli_result ensemble =
+            lagrange_test::run_cli("ensemble " + path + " --grid \"" + grid + "\" --threads 1" + common + simulate_values);
+        if (ensemble.exit_code == 1 && ensemble.err.find("not supported") != std::string::npos)
+            continue; // a free body's Euler equations: no ensemble of them yet
+        INFO(ensemble.err);
+        REQUIRE(ensemble.exit_code == 0);
+        lagrange_test::cli_result simulate =
+            lagrange_test::run_cli("simulate " + path + common + simulate_values + initial + " --format json");
+        INFO(simulate.err);
+        REQUIRE(simulate.exit_code == 0);
+        // the CSV's columns `final_q`, `final_q_dot` against the simulation's states `q`, `q_dot`
+        const std::string& csv = ensemble.out;
+        const std::size_t header_end = csv.find('\n');
+        REQUIRE(header_end != std::string::npos);
+        std::vector<std::string> columns;
+        std::stringstream header(csv.substr(0, header_end));
+        for (std::string column; std::getline(header, column, ',');)
+            columns.push_back(column);
+        std::string row = csv.substr(header_end + 1);
+        row = row.substr(0, row.find('\n'));
+        const std::vector<double> numbers = csv_numbers(row);
+        REQUIRE(numbers.size() == columns.size());
+        const nlohmann::json run = nlohmann::json::parse(simulate.out).at("simulation");
+        CHECK(run.at("t").back().get<double>() == 1.0);
+        const std::size_t n = scene.coordinates.size();
+        std::size_t k = 0;
+        for (std::size_t c = 0; c < columns.size(); ++c) {
+            if (columns[c].rfind("final_", 0) != 0)
+                continue;
+            const std::string name = columns[c].substr(6);
+            INFO(name);
+            REQUIRE(run.at("states").contains(name));
+            const double expected = run.at("states").at(name).back().get<double>(), got = numbers[c];
+            CHECK(std::abs(got - expected) <= tolerance * std::max(1.0, std::abs(expected)));
+            ++k;
+        }
+        CHECK(k == 2 * n);
+        ++compared;
+    }
+    CHECK(compared >= 10);
 }
