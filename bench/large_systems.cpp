@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/** @file large_systems.cpp
+ *  Benchmark: the planar N-link chain (tests/helpers/chain_scene.h) at the sizes where the
+ *  compiled equations meet their limits. Per N: the time to derive and build the programs,
+ *  the first-run C compile (no cache), and the nanoseconds of one q̈(q, q̇) through
+ *  compiled_motion::rhs (native), beside a hand-written O(N) recursion for the same chain
+ *  (the rod tensions solved along the chain, a tridiagonal system), measured in the same run
+ *  on the same states, with their largest relative difference.
+ *    large_systems N [calls]          one table row
+ *    large_systems --scene N          the chain with values, an initial state and `simulate`
+ *  bench/large_systems.sh runs it for N = 2 … 50 beside the whole `simulate` command. */
+#include "engine/analysis.h"
+#include "helpers/chain_scene.h"
+#include "numeric/compiled_motion.h"
+#include "scene/lower.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using clock_type = std::chrono::steady_clock;
+
+double seconds_since(clock_type::time_point start)
+{
+    return std::chrono::duration<double>(clock_type::now() - start).count();
+}
+
+/// The chain's parameter values: link k has mass 1 + k/10 and length 1 − k/100.
+double mass(int k) { return 1 + 0.1 * k; }
+double length(int k) { return 1 - 0.01 * k; }
+constexpr double gravity = 9.81;
+
+std::string scene_with_values(int links)
+{
+    std::string values = "values g = 9.81", initial = "initial";
+    char number[64];
+    for (int k = 1; k <= links; ++k) {
+        std::snprintf(number, sizeof number, ", m%d = %g, l%d = %g", k, mass(k), k, length(k));
+        values += number;
+        std::snprintf(number, sizeof number, "%s q%d = %g", k > 1 ? "," : "", k, 0.3 * (k % 2 ? -1 : 1) / k);
+        initial += number;
+    }
+    return lagrange_test::chain_scene(links) + values + "\n" + initial + "\nsimulate until 5\n";
+}
+
+/// The chain's q̈ by the rod tensions: with e_k = (sin q_k, −cos q_k) the direction of rod k,
+/// m_k a_k = −T_k e_k + T_{k+1} e_{k+1} + m_k g, and each rod keeps its length,
+/// (a_k − a_{k−1})·e_k = −l_k q̇_k², a tridiagonal system in T (solved by Thomas' algorithm);
+/// then l_k q̈_k = (a_k − a_{k−1})·e_k'. O(N): one sine and cosine per link.
+struct tension_chain {
+    int n;
+    std::vector<double> inverse_mass, length;
+    mutable std::vector<double> sine, cosine, c, s, lower, diagonal, upper, rhs, tension;
+
+    explicit tension_chain(int links)
+        : n(links), inverse_mass(links), length(links), sine(links), cosine(links), c(links), s(links), lower(links),
+          diagonal(links), upper(links), rhs(links), tension(links + 1)
+    {
+        for (int k = 0; k < n; ++k) {
+            inverse_mass[k] = 1 / mass(k + 1);
+            length[k] = ::length(k + 1);
+        }
+    }
+
+    __attribute__((noinline)) void operator()(const double* x, double* dxdt) const
+    {
+        const double* q = x;
+        const double* v = x + n;
+        for (int k = 0; k < n; ++k) {
+            sine[k] = std::sin(q[k]);
+            cosine[k] = std::cos(q[k]);
+        }
+        // C_k = e_k·e_{k+1} = cos(q_k − q_{k+1}), S_k = e_{k+1}·e_k' = sin(q_{k+1} − q_k)
+        for (int k = 0; k + 1 < n; ++k) {
+            c[k] = cosine[k] * cosine[k + 1] + sine[k] * sine[k + 1];
+            s[k] = sine[k + 1] * cosine[k] - cosine[k + 1] * sine[k];
+        }
+        for (int k = 0; k < n; ++k) {
+            lower[k] = k > 0 ? inverse_mass[k - 1] * c[k - 1] : 0;
+            diagonal[k] = -(inverse_mass[k] + (k > 0 ? inverse_mass[k - 1] : 0));
+            upper[k] = k + 1 < n ? inverse_mass[k] * c[k] : 0;
+            rhs[k] = -length[k] * v[k] * v[k] - (k == 0 ? gravity * cosine[0] : 0);
+        }
+        // Thomas' algorithm (the system is diagonally dominant).
+        for (int k = 1; k < n; ++k) {
+            double w = lower[k] / diagonal[k - 1];
+            diagonal[k] -= w * upper[k - 1];
+            rhs[k] -= w * rhs[k - 1];
+        }
+        tension[n] = 0;
+        for (int k = n - 1; k >= 0; --k)
+            tension[k] = (rhs[k] - upper[k] * tension[k + 1]) / diagonal[k];
+        for (int k = 0; k < n; ++k) {
+            double along = k + 1 < n ? inverse_mass[k] * tension[k + 1] * s[k] : 0;
+            double before = k > 0 ? inverse_mass[k - 1] * tension[k - 1] * s[k - 1] : gravity * sine[0];
+            dxdt[k] = v[k];
+            dxdt[n + k] = (along - before) / length[k];
+        }
+    }
+};
+
+template <class F>
+double nanoseconds_per_call(F&& f, long calls)
+{
+    double best = 1e300;
+    for (int run = 0; run < 5; ++run) {
+        auto start = clock_type::now();
+        f(calls);
+        best = std::min(best, seconds_since(start) * 1e9 / static_cast<double>(calls));
+    }
+    return best;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc == 3 && std::string(argv[1]) == "--scene") {
+        std::fputs(scene_with_values(std::atoi(argv[2])).c_str(), stdout);
+        return 0;
+    }
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: large_systems N [calls] | --scene N\n");
+        return 2;
+    }
+    const int n = std::atoi(argv[1]);
+    const long calls = argc > 2 ? std::atol(argv[2]) : std::max(2000L, 4'000'000L / (n * n));
+    setenv("LAGRANGE_CACHE", "0", 1); // the first run's compile, every time
+
+    auto start = clock_type::now();
+    lagrange::model scene = lagrange::load_model(lagrange::source_text("chain.lag", scene_with_values(n)));
+    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::equations});
+    lagrange::compiled_motion motion(scene, *result.equations, lagrange::first_value_point(scene));
+    const double derive_seconds = seconds_since(start);
+    start = clock_type::now();
+    std::string why;
+    const bool native = motion.compile_native(lagrange::native_limits{600}, &why);
+    const double compile_seconds = seconds_since(start);
+
+    // Random states (seeded), the same for both right-hand sides.
+    const std::size_t d = 2 * static_cast<std::size_t>(n);
+    constexpr int states = 64;
+    std::mt19937_64 random(39);
+    std::uniform_real_distribution<double> angle(-1.5, 1.5), rate(-2, 2);
+    std::vector<double> x(states * d);
+    for (int j = 0; j < states; ++j)
+        for (std::size_t i = 0; i < d; ++i)
+            x[j * d + i] = i < d / 2 ? angle(random) : rate(random);
+    tension_chain hand(n);
+    std::vector<double> ours(d), theirs(d);
+    double difference = 0;
+    for (int j = 0; j < states; ++j) {
+        motion.rhs(0, &x[j * d], ours.data());
+        hand(&x[j * d], theirs.data());
+        double size = 0, gap = 0;
+        for (std::size_t i = 0; i < d; ++i) {
+            size = std::max(size, std::abs(theirs[i]));
+            gap = std::max(gap, std::abs(ours[i] - theirs[i]));
+        }
+        difference = std::max(difference, gap / size);
+    }
+    volatile double sink = 0;
+    auto timed = [&](auto evaluate) {
+        return nanoseconds_per_call(
+            [&](long count) {
+                for (long k = 0; k < count; ++k) {
+                    evaluate(&x[(k % states) * d], ours.data());
+                    sink = sink + ours[d - 1];
+                }
+            },
+            calls);
+    };
+    const double hand_ns = timed([&](const double* state, double* out) { hand(state, out); });
+    const double ours_ns = timed([&](const double* state, double* out) { motion.rhs(0, state, out); });
+    std::printf("%d %.4f %.3f %s %.1f %.1f %.2f %.1e %zu\n", n, derive_seconds, compile_seconds,
+                native ? "native" : "interpreted", ours_ns, hand_ns, ours_ns / hand_ns, difference,
+                motion.instructions());
+    if (!native)
+        std::fprintf(stderr, "N = %d: %s\n", n, why.c_str());
+    return difference < 1e-9 ? 0 : 1;
+}
