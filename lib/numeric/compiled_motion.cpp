@@ -196,6 +196,16 @@ bool compiled_motion::compile_native(const native_limits& limits, std::string* w
     return native_.compile(rhs_program_, jacobian_program_, limits, why);
 }
 
+bool compiled_motion::compile_native_rhs(const native_limits& limits, std::string* why)
+{
+    return native_.compile(rhs_program_, limits, why);
+}
+
+bool compiled_motion::compile_native_jacobian(const native_limits& limits, std::string* why)
+{
+    return native_.compile_jacobian(jacobian_program_, limits, why);
+}
+
 double compiled_motion::energy(const double* x) const
 {
     std::vector<double> symbols(1 + 2 * n_, 0.0);

@@ -51,6 +51,10 @@ public:
     /// Compiles M, f and the Jacobian's parts to machine code (see native_code.h);
     /// false, and the interpreter stays in use, when no C compiler is available.
     bool compile_native(const native_limits& limits = {}, std::string* why = nullptr);
+    /// M and f only, what explicit methods evaluate (the Jacobian's program is several
+    /// times larger, and so is its compile); compile_native_jacobian() adds the rest.
+    bool compile_native_rhs(const native_limits& limits = {}, std::string* why = nullptr);
+    bool compile_native_jacobian(const native_limits& limits = {}, std::string* why = nullptr);
     bool native() const { return static_cast<bool>(native_); }
 
     /// The system for the integrators: rhs, Jacobian, and the energy as an invariant

@@ -262,17 +262,28 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     return module; // the folder and its files go; the loaded library stays mapped
 }
 
-bool native_rhs::compile(const expression_program& rhs_program, const expression_program& jacobian_program,
-                         const native_limits& limits, std::string* why)
+bool native_rhs::compile(const expression_program& rhs_program, const native_limits& limits, std::string* why)
 {
     if (module)
         return true;
-    std::shared_ptr<native_module> compiled = native_module::compile({&rhs_program, &jacobian_program}, limits, why);
+    std::shared_ptr<native_module> compiled = native_module::compile({&rhs_program}, limits, why);
     if (!compiled)
         return false;
     module = std::move(compiled);
     rhs = module->get(0);
-    jacobian = module->get(1);
+    return true;
+}
+
+bool native_rhs::compile_jacobian(const expression_program& jacobian_program, const native_limits& limits,
+                                  std::string* why)
+{
+    if (jacobian_module)
+        return true;
+    std::shared_ptr<native_module> compiled = native_module::compile({&jacobian_program}, limits, why);
+    if (!compiled)
+        return false;
+    jacobian_module = std::move(compiled);
+    jacobian = jacobian_module->get(0);
     return true;
 }
 

@@ -475,3 +475,33 @@ TEST_CASE("dop853: a mass matrix that stops being positive definite is the same 
     system.compiled.reset();
     CHECK(message(system) == interpreted);
 }
+
+TEST_CASE("compiled_motion: the right-hand side compiles alone, the Jacobian when asked", "[simulation][native][cc]")
+{
+    // Explicit methods wait only for the right-hand side's compile; both compiled parts give
+    // the interpreter's numbers (to rounding: SLEEF's sines may differ from libm's by an ulp).
+    lagrange::model scene = load(lagrange_test::chain_scene(3) + "values g = 9.81, m1 = 1, l1 = 1.2, m2 = 0.5, "
+                                                                 "l2 = 0.8, m3 = 2, l3 = 1.1\n");
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    lagrange::compiled_motion interpreted(scene, *a.equations, lagrange::first_value_point(scene));
+    lagrange::compiled_motion native(scene, *a.equations, lagrange::first_value_point(scene));
+    std::string why;
+    const bool compiled = native.compile_native_rhs({}, &why);
+    INFO(why);
+    REQUIRE(compiled);
+    CHECK(native.native());
+    std::vector<double> x{0.4, -1.1, 0.7, -0.3, 0.9, 0.2}, f(6), g(6), j(36), k(36);
+    auto agree = [&] {
+        interpreted.rhs(0, x.data(), f.data());
+        native.rhs(0, x.data(), g.data());
+        interpreted.jacobian(0, x.data(), j.data());
+        native.jacobian(0, x.data(), k.data());
+        for (int i = 0; i < 6; ++i)
+            CHECK_THAT(g[i], WithinAbs(f[i], 1e-14 * (1 + std::abs(f[i]))));
+        for (int i = 0; i < 36; ++i)
+            CHECK_THAT(k[i], WithinAbs(j[i], 1e-13 * (1 + std::abs(j[i]))));
+    };
+    agree(); // the Jacobian still interpreted
+    REQUIRE(native.compile_native_jacobian({}, &why));
+    agree();
+}
