@@ -3,6 +3,7 @@
  *  Equations of motion compiled to straight-line code and solved per evaluation. */
 #include "numeric/compiled_motion.h"
 
+#include "algebra/budget.h"
 #include "algebra/calculus.h"
 #include "numeric/mass_matrix.h"
 #include "numeric/values.h"
@@ -23,6 +24,31 @@ std::vector<GiNaC::ex> state_symbols(const model& scene)
     return symbols;
 }
 
+namespace {
+
+std::size_t nodes(const GiNaC::ex& e)
+{
+    std::size_t count = 1;
+    for (const GiNaC::ex& operand : e)
+        count += nodes(operand);
+    return count;
+}
+
+/// f expanded when that is smaller. The derived forcing keeps terms that cancel apart, as
+/// q̇1·(… + c·sin(q1 − q2)·q̇2) − c·sin(q1 − q2)·q̇1·q̇2: expanded, a 20-link chain's forcing
+/// compiles to 2.3 times fewer instructions. A product of sums that would multiply out
+/// (expanded_terms beyond the nodes written) stays as it is.
+GiNaC::ex cancelled(const GiNaC::ex& f)
+{
+    const std::size_t written = nodes(f);
+    if (expanded_terms(f, 2 * written) >= 2 * written)
+        return f;
+    GiNaC::ex expanded = f.expand();
+    return nodes(expanded) < written ? expanded : f;
+}
+
+} // namespace
+
 motion_expressions motion_at_values(const model& scene, const equations_of_motion& equations,
                                     const std::map<std::string, GiNaC::ex>& values)
 {
@@ -33,7 +59,7 @@ motion_expressions motion_at_values(const model& scene, const equations_of_motio
             motion.mass[i * n + j] =
                 j < i ? motion.mass[j * n + i]
                       : at_values(equations.mass(static_cast<unsigned>(i), static_cast<unsigned>(j)), scene, values);
-        motion.force[i] = at_values(equations.forcing[i], scene, values);
+        motion.force[i] = cancelled(at_values(equations.forcing[i], scene, values));
     }
     return motion;
 }

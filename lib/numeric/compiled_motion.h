@@ -86,7 +86,7 @@ private:
 std::vector<GiNaC::ex> state_symbols(const model& scene);
 
 /// M q̈ = f at the parameter values: M row-major (symmetric, each entry substituted once)
-/// and f.
+/// and f (expanded where that makes it smaller: its cancelling terms gone).
 struct motion_expressions {
     std::vector<GiNaC::ex> mass, force;
 };
