@@ -7,10 +7,12 @@
  *  compiled_motion::rhs (native), beside a hand-written O(N) recursion for the same chain
  *  (the rod tensions solved along the chain, a tridiagonal system), measured in the same run
  *  on the same states, with their largest relative difference.
- *    large_systems N [calls]          one table row
+ *    large_systems N [calls [FORM]]   one table row; FORM: automatic, expanded or single_angles
+ *                                     (lagrange::motion_form)
  *    large_systems --scene N          the chain with values, an initial state and `simulate`
  *  bench/large_systems.sh runs it for N = 2 … 50 beside the whole `simulate` command. */
 #include "engine/analysis.h"
+#include "helpers/chain_recursion.h"
 #include "helpers/chain_scene.h"
 #include "numeric/compiled_motion.h"
 #include "scene/lower.h"
@@ -52,62 +54,6 @@ std::string scene_with_values(int links)
     return lagrange_test::chain_scene(links) + values + "\n" + initial + "\nsimulate until 5\n";
 }
 
-/// The chain's q̈ by the rod tensions: with e_k = (sin q_k, −cos q_k) the direction of rod k,
-/// m_k a_k = −T_k e_k + T_{k+1} e_{k+1} + m_k g, and each rod keeps its length,
-/// (a_k − a_{k−1})·e_k = −l_k q̇_k², a tridiagonal system in T (solved by Thomas' algorithm);
-/// then l_k q̈_k = (a_k − a_{k−1})·e_k'. O(N): one sine and cosine per link.
-struct tension_chain {
-    int n;
-    std::vector<double> inverse_mass, length;
-    mutable std::vector<double> sine, cosine, c, s, lower, diagonal, upper, rhs, tension;
-
-    explicit tension_chain(int links)
-        : n(links), inverse_mass(links), length(links), sine(links), cosine(links), c(links), s(links), lower(links),
-          diagonal(links), upper(links), rhs(links), tension(links + 1)
-    {
-        for (int k = 0; k < n; ++k) {
-            inverse_mass[k] = 1 / mass(k + 1);
-            length[k] = ::length(k + 1);
-        }
-    }
-
-    __attribute__((noinline)) void operator()(const double* x, double* dxdt) const
-    {
-        const double* q = x;
-        const double* v = x + n;
-        for (int k = 0; k < n; ++k) {
-            sine[k] = std::sin(q[k]);
-            cosine[k] = std::cos(q[k]);
-        }
-        // C_k = e_k·e_{k+1} = cos(q_k − q_{k+1}), S_k = e_{k+1}·e_k' = sin(q_{k+1} − q_k)
-        for (int k = 0; k + 1 < n; ++k) {
-            c[k] = cosine[k] * cosine[k + 1] + sine[k] * sine[k + 1];
-            s[k] = sine[k + 1] * cosine[k] - cosine[k + 1] * sine[k];
-        }
-        for (int k = 0; k < n; ++k) {
-            lower[k] = k > 0 ? inverse_mass[k - 1] * c[k - 1] : 0;
-            diagonal[k] = -(inverse_mass[k] + (k > 0 ? inverse_mass[k - 1] : 0));
-            upper[k] = k + 1 < n ? inverse_mass[k] * c[k] : 0;
-            rhs[k] = -length[k] * v[k] * v[k] - (k == 0 ? gravity * cosine[0] : 0);
-        }
-        // Thomas' algorithm (the system is diagonally dominant).
-        for (int k = 1; k < n; ++k) {
-            double w = lower[k] / diagonal[k - 1];
-            diagonal[k] -= w * upper[k - 1];
-            rhs[k] -= w * rhs[k - 1];
-        }
-        tension[n] = 0;
-        for (int k = n - 1; k >= 0; --k)
-            tension[k] = (rhs[k] - upper[k] * tension[k + 1]) / diagonal[k];
-        for (int k = 0; k < n; ++k) {
-            double along = k + 1 < n ? inverse_mass[k] * tension[k + 1] * s[k] : 0;
-            double before = k > 0 ? inverse_mass[k - 1] * tension[k - 1] * s[k - 1] : gravity * sine[0];
-            dxdt[k] = v[k];
-            dxdt[n + k] = (along - before) / length[k];
-        }
-    }
-};
-
 /// The best of 7 runs of `calls` calls of each of `a` and `b`, their runs taken in turn, so
 /// that both see the same load of a busy machine.
 template <class A, class B>
@@ -139,12 +85,16 @@ int main(int argc, char** argv)
     }
     const int n = std::atoi(argv[1]);
     const long calls = argc > 2 && std::atol(argv[2]) > 0 ? std::atol(argv[2]) : std::max(2000L, 4'000'000L / (n * n));
+    const std::string form_name = argc > 3 ? argv[3] : "automatic";
+    const lagrange::motion_form form = form_name == "expanded"        ? lagrange::motion_form::expanded
+                                       : form_name == "single_angles" ? lagrange::motion_form::single_angles
+                                                                      : lagrange::motion_form::automatic;
     setenv("LAGRANGE_CACHE", "0", 1); // the first run's compile, every time
 
     auto start = clock_type::now();
     lagrange::model scene = lagrange::load_model(lagrange::source_text("chain.lag", scene_with_values(n)));
     lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::equations});
-    lagrange::compiled_motion motion(scene, *result.equations, lagrange::first_value_point(scene));
+    lagrange::compiled_motion motion(scene, *result.equations, lagrange::first_value_point(scene), form);
     const double derive_seconds = seconds_since(start);
     start = clock_type::now();
     std::string why;
@@ -160,7 +110,12 @@ int main(int argc, char** argv)
     for (int j = 0; j < states; ++j)
         for (std::size_t i = 0; i < d; ++i)
             x[j * d + i] = i < d / 2 ? angle(random) : rate(random);
-    tension_chain hand(n);
+    std::vector<double> masses, lengths;
+    for (int k = 1; k <= n; ++k) {
+        masses.push_back(mass(k));
+        lengths.push_back(length(k));
+    }
+    const lagrange_test::tension_chain hand(masses, lengths, gravity);
     std::vector<double> ours(d), theirs(d);
     double difference = 0;
     for (int j = 0; j < states; ++j) {
@@ -185,9 +140,9 @@ int main(int argc, char** argv)
     const auto [hand_ns, ours_ns] =
         nanoseconds_per_call(timed([&](const double* state, double* out) { hand(state, out); }),
                              timed([&](const double* state, double* out) { motion.rhs(0, state, out); }), calls);
-    std::printf("%d %.4f %.3f %s %.1f %.1f %.2f %.1e %zu\n", n, derive_seconds, compile_seconds,
+    std::printf("%d %.4f %.3f %s %.1f %.1f %.2f %.1e %zu %s\n", n, derive_seconds, compile_seconds,
                 native ? "native" : "interpreted", ours_ns, hand_ns, ours_ns / hand_ns, difference,
-                motion.instructions());
+                motion.instructions(), motion.single_angles() ? "single_angles" : "expanded");
     if (!native)
         std::fprintf(stderr, "N = %d: %s\n", n, why.c_str());
     return difference < 1e-9 ? 0 : 1;

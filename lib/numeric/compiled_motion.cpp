@@ -7,6 +7,7 @@
 #include "algebra/calculus.h"
 #include "numeric/mass_matrix.h"
 #include "numeric/values.h"
+#include "program/angle_sums.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -80,7 +81,7 @@ std::vector<GiNaC::ex> motion_jacobian(const model& scene, const motion_expressi
 }
 
 compiled_motion::compiled_motion(const model& scene, const equations_of_motion& equations,
-                                 const std::map<std::string, GiNaC::ex>& values)
+                                 const std::map<std::string, GiNaC::ex>& values, motion_form form)
 {
     n_ = scene.coordinates.size();
     if (n_ == 0)
@@ -99,6 +100,11 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
         explicit_time_ = explicit_time_ || e.has(scene.time);
     std::vector<GiNaC::ex> rhs_outputs = motion.mass;
     rhs_outputs.insert(rhs_outputs.end(), motion.force.begin(), motion.force.end());
+    single_angles_ = form == motion_form::single_angles ||
+                     (form == motion_form::automatic && n_ >= single_angles_coordinates);
+    if (single_angles_)
+        for (GiNaC::ex& e : rhs_outputs)
+            e = expand_angle_sums(e);
     const std::vector<GiNaC::ex> jacobian_outputs = motion_jacobian(scene, motion);
 
     const GiNaC::ex energy = at_values(equations.energy, scene, values);
