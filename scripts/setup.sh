@@ -27,6 +27,8 @@ packages+=(libcairo2-dev)
 packages+=(help2man groff-base)
 # Open MPI: `mpirun -np R lagrange ensemble ...` across processes and machines (optional in CMake)
 packages+=(libopenmpi-dev openmpi-bin)
+# MuJoCo: the peer of bench/large_systems.sh (the benchmark skips it without)
+packages+=(libmujoco-dev)
 if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then
   packages+=(texlive-latex-base)
 fi

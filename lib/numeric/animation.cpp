@@ -112,7 +112,7 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
     // The motion at the frame times, from DOP853's dense output.
     compiled_motion motion(scene, equations, values);
     if (settings.native)
-        motion.compile_native();
+        motion.compile_native_rhs(); // DOP853 never calls the Jacobian
     const std::vector<double> x0 = initial_state_vector(scene, values);
     std::vector<double> start = x0;
     start.resize(motion.dimension(), 0.0);

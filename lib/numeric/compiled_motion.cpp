@@ -3,9 +3,11 @@
  *  Equations of motion compiled to straight-line code and solved per evaluation. */
 #include "numeric/compiled_motion.h"
 
+#include "algebra/budget.h"
 #include "algebra/calculus.h"
 #include "numeric/mass_matrix.h"
 #include "numeric/values.h"
+#include "program/angle_sums.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -23,6 +25,31 @@ std::vector<GiNaC::ex> state_symbols(const model& scene)
     return symbols;
 }
 
+namespace {
+
+std::size_t nodes(const GiNaC::ex& e)
+{
+    std::size_t count = 1;
+    for (const GiNaC::ex& operand : e)
+        count += nodes(operand);
+    return count;
+}
+
+/// f expanded when that is smaller. The derived forcing keeps terms that cancel apart, as
+/// q̇1·(… + c·sin(q1 − q2)·q̇2) − c·sin(q1 − q2)·q̇1·q̇2: expanded, a 20-link chain's forcing
+/// compiles to 2.3 times fewer instructions. A product of sums that would multiply out
+/// (expanded_terms beyond the nodes written) stays as it is.
+GiNaC::ex cancelled(const GiNaC::ex& f)
+{
+    const std::size_t written = nodes(f);
+    if (expanded_terms(f, 2 * written) >= 2 * written)
+        return f;
+    GiNaC::ex expanded = f.expand();
+    return nodes(expanded) < written ? expanded : f;
+}
+
+} // namespace
+
 motion_expressions motion_at_values(const model& scene, const equations_of_motion& equations,
                                     const std::map<std::string, GiNaC::ex>& values)
 {
@@ -33,7 +60,7 @@ motion_expressions motion_at_values(const model& scene, const equations_of_motio
             motion.mass[i * n + j] =
                 j < i ? motion.mass[j * n + i]
                       : at_values(equations.mass(static_cast<unsigned>(i), static_cast<unsigned>(j)), scene, values);
-        motion.force[i] = at_values(equations.forcing[i], scene, values);
+        motion.force[i] = cancelled(at_values(equations.forcing[i], scene, values));
     }
     return motion;
 }
@@ -54,7 +81,7 @@ std::vector<GiNaC::ex> motion_jacobian(const model& scene, const motion_expressi
 }
 
 compiled_motion::compiled_motion(const model& scene, const equations_of_motion& equations,
-                                 const std::map<std::string, GiNaC::ex>& values)
+                                 const std::map<std::string, GiNaC::ex>& values, motion_form form)
 {
     n_ = scene.coordinates.size();
     if (n_ == 0)
@@ -73,6 +100,11 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
         explicit_time_ = explicit_time_ || e.has(scene.time);
     std::vector<GiNaC::ex> rhs_outputs = motion.mass;
     rhs_outputs.insert(rhs_outputs.end(), motion.force.begin(), motion.force.end());
+    single_angles_ = form == motion_form::single_angles ||
+                     (form == motion_form::automatic && n_ >= single_angles_coordinates);
+    if (single_angles_)
+        for (GiNaC::ex& e : rhs_outputs)
+            e = expand_angle_sums(e);
     const std::vector<GiNaC::ex> jacobian_outputs = motion_jacobian(scene, motion);
 
     const GiNaC::ex energy = at_values(equations.energy, scene, values);
@@ -194,6 +226,16 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
 bool compiled_motion::compile_native(const native_limits& limits, std::string* why)
 {
     return native_.compile(rhs_program_, jacobian_program_, limits, why);
+}
+
+bool compiled_motion::compile_native_rhs(const native_limits& limits, std::string* why)
+{
+    return native_.compile(rhs_program_, limits, why);
+}
+
+bool compiled_motion::compile_native_jacobian(const native_limits& limits, std::string* why)
+{
+    return native_.compile_jacobian(jacobian_program_, limits, why);
 }
 
 double compiled_motion::energy(const double* x) const

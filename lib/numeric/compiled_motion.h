@@ -22,13 +22,23 @@
 
 namespace lagrange {
 
+/// The shape of the right-hand side's program. `expanded`: M and f as derived, each angle
+/// difference q_i − q_j with its own sine and cosine. `single_angles`: those written through
+/// the sines and cosines of the single angles (program/angle_sums.h), the link directions a
+/// recursion along a chain passes on: n sines and cosines instead of n², and products.
+/// `automatic`: single angles from single_angles_coordinates on.
+enum class motion_form { automatic, expanded, single_angles };
+/// Where single angles start to pay (bench/large_systems.sh, docs/benchmarks.md): chains of
+/// 2 to 4 links evaluate as fast either way, from 5 on single angles are faster.
+constexpr std::size_t single_angles_coordinates = 5;
+
 class compiled_motion {
 public:
     /// `values`: a value for every parameter that L uses (exact or floating); throws
     /// computation_error naming a parameter without one, or an expression that cannot
     /// be evaluated.
     compiled_motion(const model& scene, const equations_of_motion& equations,
-                    const std::map<std::string, GiNaC::ex>& values);
+                    const std::map<std::string, GiNaC::ex>& values, motion_form form = motion_form::automatic);
 
     std::size_t coordinates() const { return n_; }
     std::size_t dimension() const { return 2 * n_ + (accumulates_work_ ? 1 : 0); }
@@ -37,6 +47,8 @@ public:
     /// The state ends with the work W of the generalized forces (see above).
     bool accumulates_work() const { return accumulates_work_; }
     std::size_t instructions() const { return rhs_program_.instruction_count(); }
+    /// Whether the right-hand side takes single angles (see motion_form).
+    bool single_angles() const { return single_angles_; }
 
     /// dxdt = (q̇, q̈) with M q̈ = f solved by LDLᵀ; throws computation_error when M
     /// is not positive definite at x.
@@ -51,6 +63,10 @@ public:
     /// Compiles M, f and the Jacobian's parts to machine code (see native_code.h);
     /// false, and the interpreter stays in use, when no C compiler is available.
     bool compile_native(const native_limits& limits = {}, std::string* why = nullptr);
+    /// M and f only, what explicit methods evaluate (the Jacobian's program is several
+    /// times larger, and so is its compile); compile_native_jacobian() adds the rest.
+    bool compile_native_rhs(const native_limits& limits = {}, std::string* why = nullptr);
+    bool compile_native_jacobian(const native_limits& limits = {}, std::string* why = nullptr);
     bool native() const { return static_cast<bool>(native_); }
 
     /// The system for the integrators: rhs, Jacobian, and the energy as an invariant
@@ -66,6 +82,7 @@ private:
     bool conservative_ = true;
     bool explicit_time_ = false;          ///< t appears in M or f at the parameter values
     bool accumulates_work_ = false;
+    bool single_angles_ = false;
     expression_program rhs_program_;      ///< M (row-major, n²) then f (n)
     expression_program power_program_;    ///< Σ Q_i q̇_i, then its derivatives by q and q̇ (2n)
     expression_program jacobian_program_; ///< ∂M/∂q_k (n³), ∂f/∂q (n²), ∂f/∂q̇ (n²)
@@ -82,7 +99,7 @@ private:
 std::vector<GiNaC::ex> state_symbols(const model& scene);
 
 /// M q̈ = f at the parameter values: M row-major (symmetric, each entry substituted once)
-/// and f.
+/// and f (expanded where that makes it smaller: its cancelling terms gone).
 struct motion_expressions {
     std::vector<GiNaC::ex> mass, force;
 };

@@ -205,7 +205,7 @@ prepared_motion prepare(const model& scene, const equations_of_motion& equations
     p.motion = std::make_unique<compiled_motion>(scene, equations, p.values);
     if (!settings.native)
         p.evaluation = "interpreted (as asked)";
-    else if (std::string why; !p.motion->compile_native(native_limits{settings.compile_seconds}, &why))
+    else if (std::string why; !p.motion->compile_native_rhs(native_limits{settings.compile_seconds}, &why))
         p.evaluation = "interpreted: " + why;
     p.x0 = initial_state_vector(scene, p.values);
     if (p.motion->accumulates_work())
@@ -310,6 +310,13 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         result.choice = "as asked";
     }
     result.method = to_string(method);
+    // The implicit methods (and BDF as a reference) evaluate the Jacobian on every Newton
+    // iteration: compiled then too. The explicit ones never do, so their run waits only for
+    // the right-hand side's compile.
+    const bool implicit = method == ode_method::bdf || method == ode_method::implicit_midpoint;
+    if (implicit && prepared.motion && prepared.motion->native())
+        if (std::string why; !prepared.motion->compile_native_jacobian(native_limits{settings.compile_seconds}, &why))
+            result.evaluation = "native right-hand side, interpreted Jacobian: " + why;
 
     integration_options options;
     options.until = until;
@@ -506,6 +513,10 @@ workprecision_result scene_work_precision(const model& scene, const equations_of
                                           const simulation_settings& settings)
 {
     prepared_motion prepared = prepare(scene, equations, equilibrium, settings);
+    // Every method runs, the implicit ones with the Jacobian.
+    if (prepared.motion->native())
+        if (std::string why; !prepared.motion->compile_native_jacobian(native_limits{settings.compile_seconds}, &why))
+            prepared.evaluation = "native right-hand side, interpreted Jacobian: " + why;
     workprecision_result result = work_precision(prepared.system, prepared.x0, prepared.until,
                                                  prepared.motion->coordinates(), prepared.frequencies, {},
                                                  settings.max_seconds / 6, settings.progress);

@@ -262,18 +262,33 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     return module; // the folder and its files go; the loaded library stays mapped
 }
 
-bool native_rhs::compile(const expression_program& rhs_program, const expression_program& jacobian_program,
-                         const native_limits& limits, std::string* why)
+namespace {
+
+/// Compiles `program` into `module` once, and sets `entry` to its function.
+bool compile_once(const expression_program& program, std::shared_ptr<native_module>& module,
+                  native_module::function& entry, const native_limits& limits, std::string* why)
 {
     if (module)
         return true;
-    std::shared_ptr<native_module> compiled = native_module::compile({&rhs_program, &jacobian_program}, limits, why);
+    std::shared_ptr<native_module> compiled = native_module::compile({&program}, limits, why);
     if (!compiled)
         return false;
     module = std::move(compiled);
-    rhs = module->get(0);
-    jacobian = module->get(1);
+    entry = module->get(0);
     return true;
+}
+
+} // namespace
+
+bool native_rhs::compile(const expression_program& rhs_program, const native_limits& limits, std::string* why)
+{
+    return compile_once(rhs_program, module, rhs, limits, why);
+}
+
+bool native_rhs::compile_jacobian(const expression_program& jacobian_program, const native_limits& limits,
+                                  std::string* why)
+{
+    return compile_once(jacobian_program, jacobian_module, jacobian, limits, why);
 }
 
 native_module::~native_module()

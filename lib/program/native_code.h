@@ -54,16 +54,27 @@ private:
     std::vector<function> functions_;
 };
 
-/// A right-hand side and its Jacobian compiled together, as the motion classes use
-/// them; both null (the interpreter runs) until compile() succeeds.
+/// A right-hand side and its Jacobian as the motion classes use them, each in a module of its
+/// own: the Jacobian's program is the larger (∂M/∂q alone has n³ entries; its compile took 8
+/// times the right-hand side's for a 20-link chain) and explicit methods never call it. Both
+/// null (the interpreter runs) until compiled.
 struct native_rhs {
-    std::shared_ptr<native_module> module;
+    std::shared_ptr<native_module> module;          ///< the right-hand side's
+    std::shared_ptr<native_module> jacobian_module; ///< the Jacobian's
     native_module::function rhs = nullptr;
     native_module::function jacobian = nullptr;
 
-    /// Compiles both programs once; false when they cannot be (nothing changes; `why` says why).
+    /// Compiles the right-hand side once; false when it cannot be (nothing changes; `why` says why).
+    bool compile(const expression_program& rhs_program, const native_limits& limits = {}, std::string* why = nullptr);
+    /// Compiles the Jacobian once, likewise.
+    bool compile_jacobian(const expression_program& jacobian_program, const native_limits& limits = {},
+                          std::string* why = nullptr);
+    /// Both; false when either cannot be (then the one that could stays compiled).
     bool compile(const expression_program& rhs_program, const expression_program& jacobian_program,
-                 const native_limits& limits = {}, std::string* why = nullptr);
+                 const native_limits& limits = {}, std::string* why = nullptr)
+    {
+        return compile(rhs_program, limits, why) && compile_jacobian(jacobian_program, limits, why);
+    }
     explicit operator bool() const { return static_cast<bool>(module); }
 };
 

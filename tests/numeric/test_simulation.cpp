@@ -331,6 +331,27 @@ TEST_CASE("workprecision: against a reference, rkf78 measured at its own step en
     CHECK(rkf78 == 2);
 }
 
+namespace {
+
+/// The right-hand side and Jacobian of `native` give those of `interpreted` at x (to rounding:
+/// SLEEF's sines may differ from libm's by an ulp).
+void check_same_numbers(const lagrange::compiled_motion& interpreted, const lagrange::compiled_motion& native,
+                        const std::vector<double>& x)
+{
+    const std::size_t d = x.size();
+    std::vector<double> f(d), g(d), j(d * d), k(d * d);
+    interpreted.rhs(0, x.data(), f.data());
+    native.rhs(0, x.data(), g.data());
+    interpreted.jacobian(0, x.data(), j.data());
+    native.jacobian(0, x.data(), k.data());
+    for (std::size_t i = 0; i < d; ++i)
+        CHECK_THAT(g[i], WithinAbs(f[i], 1e-14 * (1 + std::abs(f[i]))));
+    for (std::size_t i = 0; i < d * d; ++i)
+        CHECK_THAT(k[i], WithinAbs(j[i], 1e-13 * (1 + std::abs(j[i]))));
+}
+
+} // namespace
+
 TEST_CASE("compiled_motion: native code agrees with the interpreter and leaves no files", "[simulation][native][cc]")
 {
     lagrange::model scene = load(double_pendulum + "values M = 2, m = 0.7, l = 1.3, g = 9.81\n");
@@ -366,15 +387,7 @@ TEST_CASE("compiled_motion: native code agrees with the interpreter and leaves n
     REQUIRE(compiled);
     CHECK(native.native());
     CHECK(leftovers() == before);
-    std::vector<double> x{0.4, -1.1, 0.7, -0.3}, f(4), g(4), j(16), k(16);
-    interpreted.rhs(0, x.data(), f.data());
-    native.rhs(0, x.data(), g.data());
-    interpreted.jacobian(0, x.data(), j.data());
-    native.jacobian(0, x.data(), k.data());
-    for (int i = 0; i < 4; ++i)
-        CHECK_THAT(g[i], WithinAbs(f[i], 1e-14 * (1 + std::abs(f[i]))));
-    for (int i = 0; i < 16; ++i)
-        CHECK_THAT(k[i], WithinAbs(j[i], 1e-13 * (1 + std::abs(j[i]))));
+    check_same_numbers(interpreted, native, {0.4, -1.1, 0.7, -0.3});
 }
 
 TEST_CASE("dop853: the compiled right-hand side gives the numbers of the system's rhs", "[simulation][dop853][native][cc]")
@@ -474,4 +487,24 @@ TEST_CASE("dop853: a mass matrix that stops being positive definite is the same 
     CHECK(message(system) == interpreted);
     system.compiled.reset();
     CHECK(message(system) == interpreted);
+}
+
+TEST_CASE("compiled_motion: the right-hand side compiles alone, the Jacobian when asked", "[simulation][native][cc]")
+{
+    // Explicit methods wait only for the right-hand side's compile; both compiled parts give
+    // the interpreter's numbers.
+    lagrange::model scene = load(lagrange_test::chain_scene(3) + "values g = 9.81, m1 = 1, l1 = 1.2, m2 = 0.5, "
+                                                                 "l2 = 0.8, m3 = 2, l3 = 1.1\n");
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    lagrange::compiled_motion interpreted(scene, *a.equations, lagrange::first_value_point(scene));
+    lagrange::compiled_motion native(scene, *a.equations, lagrange::first_value_point(scene));
+    std::string why;
+    const bool compiled = native.compile_native_rhs({}, &why);
+    INFO(why);
+    REQUIRE(compiled);
+    CHECK(native.native());
+    const std::vector<double> x{0.4, -1.1, 0.7, -0.3, 0.9, 0.2};
+    check_same_numbers(interpreted, native, x); // the Jacobian still interpreted
+    REQUIRE(native.compile_native_jacobian({}, &why));
+    check_same_numbers(interpreted, native, x);
 }
