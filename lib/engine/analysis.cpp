@@ -70,7 +70,7 @@ struct stage_context {
 
 /// The stages, in the order they run (the rows of stage_table(), in the same order).
 enum class stage_id {
-    inertia, euler, lagrangian, equations, multipliers, elimination, top, time, equilibrium, linearization,
+    inertia, euler, lagrangian, equations, multipliers, contact, elimination, top, time, equilibrium, linearization,
     characteristic, modes, asymptotic, damping, numeric, critical, state_space, operating_point, critical_operating,
     transfer, floquet,
     conserved, hamiltonian, reduced, steady, simulation, workprecision, virial, verification
@@ -249,6 +249,11 @@ const std::vector<stage_definition>& stage_table()
              c.result.multipliers = derive_multipliers(c.scene, c.result.equations->mass, c.result.equations->forcing,
                                                        *c.result.equations->constraints, c.simplifier_for_scene());
          }, "", "multipliers"},
+        // The ground's force on each rolling wheel, from the multipliers.
+        {stage_id::contact, "contact", {product::contact}, {}, {stage_id::multipliers}, has_coordinates,
+         [](stage_context& c) {
+             c.result.contact = derive_contact_forces(c.scene, *c.result.multipliers, c.simplifier_for_scene());
+         }, "", "contact forces"},
         // Which constraints can be solved for a coordinate (shown with the constraints), and
         // the equations of the coordinates kept when `eliminated` is asked for.
         {stage_id::elimination, "elimination", {product::eliminated}, {product::equations, product::multipliers}, {stage_id::equations},

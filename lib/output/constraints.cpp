@@ -110,6 +110,12 @@ void write_constraints_text(std::ostream& out, const analysis& result)
     }
     for (const std::string& point : result.multipliers->unattributed)
         out << "  " << point << ": its coordinates also move other points or bodies, so the force is not split\n";
+    if (!result.contact)
+        return;
+    out << "\nContact forces (the ground's force on each rolling wheel at its contact point, scene axes)\n";
+    for (const contact_force& f : result.contact->contacts)
+        out << "  " << f.body << " at " << vector_text(f.point, s) << ":\n    F = " << vector_text(f.force, s)
+            << '\n';
 }
 
 void write_constraints_latex(std::ostream& out, const analysis& result)
@@ -157,6 +163,13 @@ void write_constraints_latex(std::ostream& out, const analysis& result)
         for (const constraint_point_force& f : m.forces)
             out << latex_text("Force of " + m.name + " on " + f.point + ":") << "\n"
                 << latex_equation("F", {vector_text(f.force, s)}, "");
+    if (!result.contact)
+        return;
+    out << "\\subsection*{Contact forces}\n"
+        << latex_text("The ground's force on each rolling wheel at its contact point, in the scene's axes.") << "\n";
+    for (const contact_force& f : result.contact->contacts)
+        out << latex_text(f.body + " at") << "\n"
+            << latex_equation("P", {vector_text(f.point, s)}, "") << latex_equation("F", {vector_text(f.force, s)}, "");
 }
 
 void write_constraints_json(nlohmann::ordered_json& doc, const analysis& result)
@@ -208,6 +221,18 @@ void write_constraints_json(nlohmann::ordered_json& doc, const analysis& result)
     }
     doc["multipliers"] = multipliers;
     doc["constraint_forces"] = forces;
+    if (!result.contact)
+        return;
+    const auto components = [&](const std::vector<GiNaC::ex>& v) {
+        nlohmann::ordered_json list = nlohmann::ordered_json::array();
+        for (const GiNaC::ex& x : v)
+            list.push_back(print(x, syntax::plain, velocity_order(scene)));
+        return list;
+    };
+    nlohmann::ordered_json contacts = nlohmann::ordered_json::object();
+    for (const contact_force& f : result.contact->contacts)
+        contacts[f.body] = {{"point", components(f.point)}, {"force", components(f.force)}};
+    doc["contact_forces"] = contacts;
 }
 
 // ---- the report's section ----
