@@ -241,6 +241,12 @@ const std::vector<stage_definition>& stage_table()
          [](stage_context& c) {
              c.result.equations = derive_equations_of_motion(c.scene, *c.result.lagrangian, c.simplifier_for_scene(),
                                                              c.wants(product::equations));
+             // too large to print: asked for, an error; in a default run, a note beside the rest
+             if (const std::string& why = c.result.equations->too_large_to_print; !why.empty()) {
+                 if (!c.by_default)
+                     throw computation_error(why);
+                 c.result.notes.push_back(why);
+             }
          }, "", "equations"},
         {stage_id::multipliers, "multipliers", {product::multipliers}, {}, {stage_id::equations}, has_coordinates,
          [](stage_context& c) {
