@@ -37,7 +37,7 @@ contact_result derive_contact_forces(const model& scene, const multipliers_resul
         contact_force entry;
         entry.body = wheel.body;
         for (const GiNaC::ex& p : wheel.point)
-            entry.point.push_back(simplify_ratio(p.normal(), simplify));
+            entry.point.push_back(simplify_ratio(p, simplify).normal());
         for (unsigned i = 0; i < 3; ++i) {
             GiNaC::ex sum = 0;
             std::size_t terms = 0;
