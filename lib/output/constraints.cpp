@@ -169,7 +169,8 @@ void write_constraints_latex(std::ostream& out, const analysis& result)
         << latex_text("The ground's force on each rolling wheel at its contact point, in the scene's axes.") << "\n";
     for (const contact_force& f : result.contact->contacts)
         out << latex_text(f.body + " at") << "\n"
-            << latex_equation("P", {vector_text(f.point, s)}, "") << latex_equation("F", {vector_text(f.force, s)}, "");
+            << latex_equation("P", {vector_text(f.point, s)}, "")
+            << latex_equation("F", {vector_text(f.force, s)}, "");
 }
 
 void write_constraints_json(nlohmann::ordered_json& doc, const analysis& result)

@@ -34,7 +34,7 @@ bool tool_available(const std::string& tool)
     if (tool == "scipy") // Debian's python3-scipy, for the interpreter the Python tests use
         return access("/usr/bin/python3", X_OK) == 0 &&
                std::system("/usr/bin/python3 -c 'import scipy.integrate' >/dev/null 2>&1") == 0;
-    if (tool == "sympy") // Debian's python3-sympy, as the scipy tests use it
+    if (tool == "python_sympy") // Debian's python3-sympy, as the scipy tests use it
         return access("/usr/bin/python3", X_OK) == 0 &&
                std::system("/usr/bin/python3 -c 'import sympy.physics.mechanics' >/dev/null 2>&1") == 0;
     const std::string program = tool == "cc" ? configured_compiler() : tool;

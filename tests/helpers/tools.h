@@ -13,11 +13,12 @@
 namespace lagrange_test {
 
 /// The tools a test can require, by tag name.
-inline constexpr const char* known_tools[] = {"cc", "gnuplot", "pdflatex", "root", "octave", "scipy", "sympy"};
+inline constexpr const char* known_tools[] = {"cc",     "gnuplot", "pdflatex",    "root",
+                                              "octave", "scipy",   "python_sympy"};
 
 /// Whether `tool` is installed: for "cc" the compiler the engine uses ($LAGRANGE_CC, else
 /// `cc`), for "root" whether the tests run as root (owners and device nodes), for "octave"
-/// octave-cli, for "scipy" whether /usr/bin/python3 imports scipy.integrate, for "sympy"
+/// octave-cli, for "scipy" whether /usr/bin/python3 imports scipy.integrate, for "python_sympy"
 /// whether it imports sympy.physics.mechanics, for the others
 /// the program of that name on $PATH. Throws std::invalid_argument
 /// for a name that is not in known_tools.
