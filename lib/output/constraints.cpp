@@ -284,6 +284,20 @@ void write_constraints_section(report_writer& w)
     for (std::size_t k = 0; k < result.multipliers->constraints.size(); ++k)
         w.display_terms(report_writer::name(scene.constraints[k].multiplier.get_name()),
                         print_terms(result.multipliers->constraints[k].multiplier, syntax::latex, velocity_order(scene)));
+    if (result.contact) {
+        w.latex("\n\\subsection*{Contact forces}\n");
+        w.text("Each constraint of a rolling wheel holds its contact point ").latex("$P$").text(" along a vector ")
+            .latex("$e_k$").text(" (its velocity form is ").latex("$e_k \\cdot v_P$")
+            .text("), so its generalized force is that of the force ").latex("$\\lambda_k e_k$")
+            .text(" at ").latex("$P$").text(", and the ground's force on the wheel there, in the scene's axes, is ")
+            .latex("$F = \\sum_k \\lambda_k e_k$").text(":");
+        w.latex("\n");
+        for (const contact_force& f : result.contact->contacts)
+            for (std::size_t r = 0; r < f.force.size(); ++r)
+                w.display_terms("F^{\\mathrm{" + latex_text(f.body) + "}}_{" +
+                                    std::string(1, static_cast<char>('x' + r)) + "}",
+                                print_terms(f.force[r], syntax::latex, velocity_order(scene)));
+    }
     bool any = false;
     for (const constraint_multiplier& m : result.multipliers->constraints)
         any = any || !m.forces.empty();
