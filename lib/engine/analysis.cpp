@@ -251,7 +251,9 @@ const std::vector<stage_definition>& stage_table()
         {stage_id::multipliers, "multipliers", {product::multipliers}, {}, {stage_id::equations}, has_coordinates,
          [](stage_context& c) {
              if (c.scene.constraints.empty())
-                 throw computation_error("`multipliers` needs a constraint (`constraint NAME: lhs = rhs`)");
+                 throw computation_error(c.wants(product::multipliers)
+                                             ? "`multipliers` needs a constraint (`constraint NAME: lhs = rhs`)"
+                                             : "`contact` needs a wheel rolling on the ground (`rolls W on ground`)");
              c.result.multipliers = derive_multipliers(c.scene, c.result.equations->mass, c.result.equations->forcing,
                                                        *c.result.equations->constraints, c.simplifier_for_scene());
          }, "", "multipliers"},

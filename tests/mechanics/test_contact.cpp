@@ -144,9 +144,12 @@ TEST_CASE("contact: a height held by the coordinates, and no rolling wheel, are 
     CHECK_THROWS_AS(analyze(built_in, {product::contact}), computation_error);
     CHECK_THROWS_WITH(analyze(built_in, {product::contact}),
                       Catch::Matchers::Contains("height of D above the ground holds by its coordinates"));
-    model unrolled = load("parameters m g\ncoordinates x y\npoint P mass m at (x, y)\ngravity g along (0, -1)\n"
-                          "constraint c: x = y\n");
-    CHECK_THROWS_AS(analyze(unrolled, {product::contact}), computation_error);
-    CHECK_THROWS_WITH(analyze(unrolled, {product::contact}),
-                      Catch::Matchers::Contains("`contact` needs a wheel rolling on the ground"));
+    // Constrained or not, a scene without a `rolls` line has no contact to give.
+    for (const char* constraint : {"constraint c: x = y\n", ""}) {
+        model unrolled = load(std::string("parameters m g\ncoordinates x y\npoint P mass m at (x, y)\n"
+                                          "gravity g along (0, -1)\n") + constraint);
+        CHECK_THROWS_AS(analyze(unrolled, {product::contact}), computation_error);
+        CHECK_THROWS_WITH(analyze(unrolled, {product::contact}),
+                          Catch::Matchers::Contains("`contact` needs a wheel rolling on the ground"));
+    }
 }
