@@ -241,12 +241,9 @@ const std::vector<stage_definition>& stage_table()
          [](stage_context& c) {
              c.result.equations = derive_equations_of_motion(c.scene, *c.result.lagrangian, c.simplifier_for_scene(),
                                                              c.wants(product::equations));
-             // too large to print: asked for, an error; in a default run, a note beside the rest
-             if (const std::string& why = c.result.equations->too_large_to_print; !why.empty()) {
-                 if (!c.by_default)
-                     throw computation_error(why);
+             // too large to print: a note beside the rest (analyze() refuses them when asked for)
+             if (const std::string& why = c.result.equations->too_large_to_print; !why.empty())
                  c.result.notes.push_back(why);
-             }
          }, "", "equations"},
         {stage_id::multipliers, "multipliers", {product::multipliers}, {}, {stage_id::equations}, has_coordinates,
          [](stage_context& c) {
@@ -702,8 +699,11 @@ bool computed_any(const analysis& result)
 
 } // namespace
 
-analysis analyze(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
-                 const simulation_settings& simulation)
+namespace {
+
+/// analyze() but for equations too large to print, which `export` does not print.
+analysis analyze_unprinted(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
+                           const simulation_settings& simulation)
 {
     std::optional<budget_exceeded> exceeded;
     simulation_settings settings = simulation; // the C compiler runs within the time budget too
@@ -711,6 +711,18 @@ analysis analyze(const model& scene, const std::set<product>& wanted, const budg
     analysis result = run_stages(scene, wanted, limits, settings, exceeded);
     if (exceeded && !computed_any(result))
         throw *exceeded;
+    return result;
+}
+
+} // namespace
+
+analysis analyze(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
+                 const simulation_settings& simulation)
+{
+    analysis result = analyze_unprinted(scene, wanted, limits, simulation);
+    const std::set<product>& asked = !wanted.empty() ? wanted : scene.wanted;
+    if (asked.count(product::equations) && result.equations && !result.equations->too_large_to_print.empty())
+        throw computation_error(result.equations->too_large_to_print);
     return result;
 }
 
@@ -723,10 +735,10 @@ analysis analyze_for_export(const model& scene, const budget_limits& limits)
 {
     if (scene.constraints.empty() && !scene.steady)
         try {
-            return analyze(scene, {product::equations, product::linearization}, limits);
+            return analyze_unprinted(scene, {product::equations, product::linearization}, limits, {});
         } catch (const computation_error&) { // budget_exceeded too: then without the linearization
         }
-    return analyze(scene, {product::equations}, limits);
+    return analyze_unprinted(scene, {product::equations}, limits, {});
 }
 
 point_modes numeric_modes_path(const analysis& result)

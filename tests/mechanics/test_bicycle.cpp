@@ -154,6 +154,12 @@ TEST_CASE("bicycle: its printed equations are refused early, naming the yaw equa
                           Catch::Matchers::Contains("`state_space` or `critical`"));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     CHECK(seconds < 2 * 10 * lagrange_test::time_scale());
+    // `export` prints no equations: it gets M and f all the same.
+    const analysis exported = analyze_for_export(scene);
+    REQUIRE(exported.equations);
+    CHECK_FALSE(exported.equations->residuals);
+    CHECK(exported.equations->mass.rows() == 8);
+    CHECK(exported.equations->forcing.size() == 8);
     // Small scenes print as before: the 30-link chain's largest equation has 930 terms.
     CHECK(printed_equation_terms >= 930);
 }
