@@ -102,6 +102,21 @@ struct constraint {
     source_location where;               ///< the constraint's name
 };
 
+/// `rolls W on ground`: the constraints that hold W's contact point P, each with the vector
+/// e_k along which it holds P (its velocity form is e_k·v_P: the vertical for `W_contact`, a
+/// horizontal for `W_roll_x`), so that the ground's force on W at P is Σ_k λ_k e_k (the
+/// `contact` product): that force's generalized force is Σ_k λ_k e_k·∂v_P/∂q̇ = Aᵀλ.
+struct rolling_contact {
+    std::string body;
+    std::vector<GiNaC::ex> point;                   ///< the contact point p(q), scene frame
+    std::vector<std::string> constraints;           ///< the constraints' names, in the order made
+    std::vector<std::vector<GiNaC::ex>> directions; ///< e_k of each (3 components)
+    /// The wheel's height holds by the coordinates themselves (no `W_contact`): the normal
+    /// force does no virtual work in them, so it is no multiplier.
+    bool normal_by_construction = false;
+    source_location where; ///< the body's name in the statement
+};
+
 /// A rigid body (§2 of the spec). Its inertia is derived later (bodies/inertia.h);
 /// the model keeps what the scene said.
 struct rigid_body {
@@ -266,6 +281,7 @@ struct model {
     std::vector<point_force> point_forces;
     std::vector<input_signal> inputs;
     std::vector<constraint> constraints; ///< in the order written
+    std::vector<rolling_contact> contacts; ///< one per `rolls` line, in the order written
 
     std::optional<std::vector<GiNaC::ex>> equilibrium; ///< one value per coordinate
     std::optional<steady_motion_request> steady; ///< an `equilibrium` line that names a rate

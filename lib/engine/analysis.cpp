@@ -70,7 +70,7 @@ struct stage_context {
 
 /// The stages, in the order they run (the rows of stage_table(), in the same order).
 enum class stage_id {
-    inertia, euler, lagrangian, equations, multipliers, elimination, top, time, equilibrium, linearization,
+    inertia, euler, lagrangian, equations, multipliers, contact, elimination, top, time, equilibrium, linearization,
     characteristic, modes, asymptotic, damping, numeric, critical, state_space, operating_point, critical_operating,
     transfer, floquet,
     conserved, hamiltonian, reduced, steady, simulation, workprecision, virial, verification
@@ -251,14 +251,24 @@ const std::vector<stage_definition>& stage_table()
          [](stage_context& c) {
              c.result.equations = derive_equations_of_motion(c.scene, *c.result.lagrangian, c.simplifier_for_scene(),
                                                              c.wants(product::equations));
+             // too large to print: a note beside the rest (analyze() refuses them when asked for)
+             if (const std::string& why = c.result.equations->too_large_to_print; !why.empty())
+                 c.result.notes.push_back(why);
          }, "", "equations"},
         {stage_id::multipliers, "multipliers", {product::multipliers}, {}, {stage_id::equations}, has_coordinates,
          [](stage_context& c) {
              if (c.scene.constraints.empty())
-                 throw computation_error("`multipliers` needs a constraint (`constraint NAME: lhs = rhs`)");
+                 throw computation_error(c.wants(product::multipliers)
+                                             ? "`multipliers` needs a constraint (`constraint NAME: lhs = rhs`)"
+                                             : "`contact` needs a wheel rolling on the ground (`rolls W on ground`)");
              c.result.multipliers = derive_multipliers(c.scene, c.result.equations->mass, c.result.equations->forcing,
                                                        *c.result.equations->constraints, c.simplifier_for_scene());
          }, "", "multipliers"},
+        // The ground's force on each rolling wheel, from the multipliers.
+        {stage_id::contact, "contact", {product::contact}, {}, {stage_id::multipliers}, has_coordinates,
+         [](stage_context& c) {
+             c.result.contact = derive_contact_forces(c.scene, *c.result.multipliers, c.simplifier_for_scene());
+         }, "", "contact forces"},
         // Which constraints can be solved for a coordinate (shown with the constraints), and
         // the equations of the coordinates kept when `eliminated` is asked for.
         {stage_id::elimination, "elimination", {product::eliminated}, {product::equations, product::multipliers}, {stage_id::equations},
@@ -700,8 +710,11 @@ bool computed_any(const analysis& result)
 
 } // namespace
 
-analysis analyze(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
-                 const simulation_settings& simulation)
+namespace {
+
+/// analyze() but for equations too large to print, which `export` does not print.
+analysis analyze_unprinted(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
+                           const simulation_settings& simulation)
 {
     std::optional<budget_exceeded> exceeded;
     simulation_settings settings = simulation; // the C compiler runs within the time budget too
@@ -709,6 +722,18 @@ analysis analyze(const model& scene, const std::set<product>& wanted, const budg
     analysis result = run_stages(scene, wanted, limits, settings, exceeded);
     if (exceeded && !computed_any(result))
         throw *exceeded;
+    return result;
+}
+
+} // namespace
+
+analysis analyze(const model& scene, const std::set<product>& wanted, const budget_limits& limits,
+                 const simulation_settings& simulation)
+{
+    analysis result = analyze_unprinted(scene, wanted, limits, simulation);
+    const std::set<product>& asked = !wanted.empty() ? wanted : scene.wanted;
+    if (asked.count(product::equations) && result.equations && !result.equations->too_large_to_print.empty())
+        throw computation_error(result.equations->too_large_to_print);
     return result;
 }
 
@@ -727,10 +752,10 @@ analysis analyze_for_export(const model& scene, const budget_limits& limits)
         try {
             std::set<product> linear = wanted;
             linear.insert(product::linearization);
-            return analyze(scene, linear, limits);
+            return analyze_unprinted(scene, linear, limits, {});
         } catch (const computation_error&) { // budget_exceeded too: then without the linearization
         }
-    return analyze(scene, wanted, limits);
+    return analyze_unprinted(scene, wanted, limits, {});
 }
 
 point_modes numeric_modes_path(const analysis& result)

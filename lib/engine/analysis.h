@@ -9,6 +9,7 @@
 #include "mechanics/lagrangian.h"
 #include "mechanics/asymptotic.h"
 #include "mechanics/elimination.h"
+#include "mechanics/contact.h"
 #include "mechanics/constrained_linearization.h"
 #include "mechanics/damping.h"
 #include "mechanics/equilibrium.h"
@@ -79,6 +80,7 @@ struct analysis {
     std::optional<reduced_result> reduced;         ///< Routh's reduction of the cyclic coordinates
     std::optional<steady_motion_result> steady;    ///< the `equilibrium` line's steady motion, reduced
     std::optional<multipliers_result> multipliers; ///< constraint multipliers and forces (scenes with constraints)
+    std::optional<contact_result> contact;         ///< the ground's force on each rolling wheel
     /// The constraints that can be solved for a coordinate, and the reduced equations when asked for.
     std::optional<elimination_result> elimination;
     /// Small oscillations with constraints: `linearization` is then in the independent coordinates.

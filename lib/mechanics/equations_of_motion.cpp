@@ -44,6 +44,19 @@ bool is_harmonic_polynomial(const GiNaC::ex& e, const model& scene)
     return false;
 }
 
+/// Throws when the equation of `c`, expanded in canonical form, has too many terms to print.
+void check_printable(const coordinate& c, std::size_t terms)
+{
+    if (terms > printed_equation_terms)
+        throw equations_too_large(
+            "the equations of motion are too large to print: the equation of `" + c.name + "` has " +
+            std::to_string(terms) + " terms expanded (more than " + std::to_string(printed_equation_terms) +
+            "), too large to read; ask for what they are for instead: `state_space` or `critical` (the "
+            "equations linearized about a point)");
+}
+
+std::size_t term_count(const GiNaC::ex& e) { return GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1; }
+
 } // namespace
 
 std::vector<GiNaC::ex> derive_equations(const model& scene, const lagrangian_result& lagrangian,
@@ -65,16 +78,21 @@ std::vector<GiNaC::ex> derive_equations(const model& scene, const lagrangian_res
             harmonic_polynomial equation =
                 h.derivative(*space.index_of(c.velocity)).total_derivative(harmonic->rates, harmonic->time);
             equation -= h.derivative(*space.index_of(c.position));
+            check_printable(c, equation.size());
             expanded.push_back(std::move(equation));
         }
         return simplify.compact(expanded);
     }
     bool stays_canonical = is_harmonic_polynomial(l, scene);
+    std::vector<GiNaC::ex> canonical_forms;
     for (const coordinate& c : scene.coordinates) {
         GiNaC::ex momentum = differentiate(l, c.velocity);
         GiNaC::ex equation = time_derivative(momentum, scene) - differentiate(l, c.position);
-        equations.push_back(simplify.compact(stays_canonical ? equation.expand() : simplify.canonical(equation)));
+        canonical_forms.push_back(stays_canonical ? equation.expand() : simplify.canonical(equation));
+        check_printable(c, term_count(canonical_forms.back()));
     }
+    for (const GiNaC::ex& form : canonical_forms)
+        equations.push_back(simplify.compact(form));
     return equations;
 }
 
@@ -125,7 +143,12 @@ equations_of_motion derive_equations_of_motion(const model& scene, const lagrang
     if (!scene.constraints.empty())
         result.constraints = derive_constraint_equations(scene);
     if (printed) {
-        result.residuals = derive_equations(scene, lagrangian, simplify);
+        try {
+            result.residuals = derive_equations(scene, lagrangian, simplify);
+        } catch (const equations_too_large& error) {
+            result.too_large_to_print = error.what();
+            return result;
+        }
         if (result.forces.any)
             for (std::size_t i = 0; i < n; ++i)
                 (*result.residuals)[i] = simplify((*result.residuals)[i] - result.forces.total[i]);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "algebra/simplify.h"
+#include "core/errors.h"
 #include "core/model.h"
 #include "mechanics/constraints.h"
 #include "mechanics/forces.h"
@@ -13,7 +14,9 @@
 
 #include <ginac/ginac.h>
 
+#include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace lagrange {
@@ -45,16 +48,33 @@ struct equations_of_motion {
     std::optional<std::vector<GiNaC::ex>> residuals;
     /// The residuals as 𝓜(q) q̈ + f = 0, when they are linear in the accelerations.
     std::optional<acceleration_form> grouped;
+    /// Why the residuals were asked for and not printed (too large to read: the whole Whipple
+    /// bicycle's); empty when they were not asked for or are set.
+    std::string too_large_to_print;
+};
+
+/// The most terms an equation may have, expanded in canonical form, to be printed: beyond it
+/// an equation is pages of text that nobody reads, and compacting it (the rules' matcher over
+/// the whole sum) takes longer than the time budget. The 30-link chain's largest has 930 terms,
+/// the whole bicycle's yaw equation 2143.
+inline constexpr std::size_t printed_equation_terms = 1000;
+
+/// An equation of motion with more than printed_equation_terms terms, asked to be printed.
+class equations_too_large : public computation_error {
+public:
+    using computation_error::computation_error;
 };
 
 /// M, f, the momenta and the energy function of L (unsimplified: what the compiled
 /// right-hand side evaluates), and with `printed` also the simplified residuals and
-/// their grouping by accelerations.
+/// their grouping by accelerations, unless an equation has more than printed_equation_terms
+/// terms (then `too_large_to_print` says so, and what to ask for instead).
 equations_of_motion derive_equations_of_motion(const model& scene, const lagrangian_result& lagrangian,
                                                const simplifier& simplify, bool printed);
 
 /// The Euler–Lagrange equations d/dt(∂L/∂q̇) − ∂L/∂q, one per coordinate, each
-/// meaning `expr = 0`, simplified and grouped by accelerations and velocities.
+/// meaning `expr = 0`, simplified and grouped by accelerations and velocities. Throws
+/// equations_too_large, before compacting, when one has more than printed_equation_terms terms.
 std::vector<GiNaC::ex> derive_equations(const model& scene, const lagrangian_result& lagrangian,
                                         const simplifier& simplify);
 

@@ -110,6 +110,12 @@ void write_constraints_text(std::ostream& out, const analysis& result)
     }
     for (const std::string& point : result.multipliers->unattributed)
         out << "  " << point << ": its coordinates also move other points or bodies, so the force is not split\n";
+    if (!result.contact)
+        return;
+    out << "\nContact forces (the ground's force on each rolling wheel at its contact point, scene axes)\n";
+    for (const contact_force& f : result.contact->contacts)
+        out << "  " << f.body << " at " << vector_text(f.point, s) << ":\n    F = " << vector_text(f.force, s)
+            << '\n';
 }
 
 void write_constraints_latex(std::ostream& out, const analysis& result)
@@ -157,6 +163,14 @@ void write_constraints_latex(std::ostream& out, const analysis& result)
         for (const constraint_point_force& f : m.forces)
             out << latex_text("Force of " + m.name + " on " + f.point + ":") << "\n"
                 << latex_equation("F", {vector_text(f.force, s)}, "");
+    if (!result.contact)
+        return;
+    out << "\\subsection*{Contact forces}\n"
+        << latex_text("The ground's force on each rolling wheel at its contact point, in the scene's axes.") << "\n";
+    for (const contact_force& f : result.contact->contacts)
+        out << latex_text(f.body + " at") << "\n"
+            << latex_equation("P", {vector_text(f.point, s)}, "")
+            << latex_equation("F", {vector_text(f.force, s)}, "");
 }
 
 void write_constraints_json(nlohmann::ordered_json& doc, const analysis& result)
@@ -208,6 +222,18 @@ void write_constraints_json(nlohmann::ordered_json& doc, const analysis& result)
     }
     doc["multipliers"] = multipliers;
     doc["constraint_forces"] = forces;
+    if (!result.contact)
+        return;
+    const auto components = [&](const std::vector<GiNaC::ex>& v) {
+        nlohmann::ordered_json list = nlohmann::ordered_json::array();
+        for (const GiNaC::ex& x : v)
+            list.push_back(print(x, syntax::plain, velocity_order(scene)));
+        return list;
+    };
+    nlohmann::ordered_json contacts = nlohmann::ordered_json::object();
+    for (const contact_force& f : result.contact->contacts)
+        contacts[f.body] = {{"point", components(f.point)}, {"force", components(f.force)}};
+    doc["contact_forces"] = contacts;
 }
 
 // ---- the report's section ----
@@ -258,6 +284,20 @@ void write_constraints_section(report_writer& w)
     for (std::size_t k = 0; k < result.multipliers->constraints.size(); ++k)
         w.display_terms(report_writer::name(scene.constraints[k].multiplier.get_name()),
                         print_terms(result.multipliers->constraints[k].multiplier, syntax::latex, velocity_order(scene)));
+    if (result.contact) {
+        w.latex("\n\\subsection*{Contact forces}\n");
+        w.text("Each constraint of a rolling wheel holds its contact point ").latex("$P$").text(" along a vector ")
+            .latex("$e_k$").text(" (its velocity form is ").latex("$e_k \\cdot v_P$")
+            .text("), so its generalized force is that of the force ").latex("$\\lambda_k e_k$")
+            .text(" at ").latex("$P$").text(", and the ground's force on the wheel there, in the scene's axes, is ")
+            .latex("$F = \\sum_k \\lambda_k e_k$").text(":");
+        w.latex("\n");
+        for (const contact_force& f : result.contact->contacts)
+            for (std::size_t r = 0; r < f.force.size(); ++r)
+                w.display_terms("F^{\\mathrm{" + latex_text(f.body) + "}}_{" +
+                                    std::string(1, static_cast<char>('x' + r)) + "}",
+                                print_terms(f.force[r], syntax::latex, velocity_order(scene)));
+    }
     bool any = false;
     for (const constraint_multiplier& m : result.multipliers->constraints)
         any = any || !m.forces.empty();

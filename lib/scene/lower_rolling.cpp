@@ -101,9 +101,13 @@ std::vector<std::pair<char, vector3>> horizontal_directions(const vector3& up)
     return directions;
 }
 
-} // namespace
+/// A `rolls` statement lowered: its constraints, and its contact for the `contact` product.
+struct rolled {
+    std::vector<constraint> constraints;
+    rolling_contact contact;
+};
 
-std::vector<constraint> rolling_constraints(const model& scene, const rolling_request& request)
+rolled lower_rolls(const model& scene, const rolling_request& request)
 {
     const std::string& name = request.body.name;
     const rigid_body* found = body_named(scene, name);
@@ -171,15 +175,31 @@ std::vector<constraint> rolling_constraints(const model& scene, const rolling_re
     for (unsigned i = 0; i < 3; ++i)
         slip[i] = time_derivative(centre[i], scene) + spin[i];
 
-    std::vector<constraint> result;
+    rolled result;
+    result.contact.body = name;
+    result.contact.where = request.body.where;
+    for (unsigned i = 0; i < 3; ++i)
+        result.contact.point.push_back(centre[i] + offset[i]);
+    const auto add = [&](const std::string& constraint_name, const ex& f, const vector3& along) {
+        result.constraints.push_back(classify_constraint({constraint_name, request.body.where}, f,
+                                                         request.body.where, scene));
+        result.contact.constraints.push_back(constraint_name);
+        result.contact.directions.push_back({along[0], along[1], along[2]});
+    };
     const ex height = dot(up, centre) - radius * root;
-    if (!vanishes_identically(height, scene))
-        result.push_back(classify_constraint({name + "_contact", request.body.where}, height, request.body.where,
-                                             scene));
+    result.contact.normal_by_construction = vanishes_identically(height, scene);
+    if (!result.contact.normal_by_construction)
+        add(name + "_contact", height, up);
     for (const auto& [letter, e] : horizontal_directions(up))
-        result.push_back(classify_constraint({name + "_roll_" + std::string(1, letter), request.body.where},
-                                             dot(e, slip), request.body.where, scene));
+        add(name + "_roll_" + std::string(1, letter), dot(e, slip), e);
     return result;
+}
+
+} // namespace
+
+std::vector<constraint> rolling_constraints(const model& scene, const rolling_request& request)
+{
+    return lower_rolls(scene, request).constraints;
 }
 
 void add_rolling_constraints(model& scene, const rolling_request& request, const std::vector<rolling_request>& all,
@@ -197,7 +217,8 @@ void add_rolling_constraints(model& scene, const rolling_request& request, const
         if (GiNaC::is_a<GiNaC::numeric>(number) && !GiNaC::ex_to<GiNaC::numeric>(number).is_positive())
             throw scene_error(request.where, "the radius of a rolling rim must be positive");
     }
-    for (constraint& c : rolling_constraints(scene, request)) {
+    rolled lowered = lower_rolls(scene, request);
+    for (constraint& c : lowered.constraints) {
         for (const constraint& other : scene.constraints)
             if (other.name == c.name)
                 throw scene_error(request.body.where, "`rolls` names its constraint " + quote(c.name) +
@@ -208,6 +229,7 @@ void add_rolling_constraints(model& scene, const rolling_request& request, const
                                                       "`, which is already declared");
         scene.constraints.push_back(std::move(c));
     }
+    scene.contacts.push_back(std::move(lowered.contact));
 }
 
 } // namespace lagrange

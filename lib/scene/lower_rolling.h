@@ -40,7 +40,8 @@ struct rolling_request {
 /// statement when the scene has no gravity.
 std::vector<constraint> rolling_constraints(const model& scene, const rolling_request& request);
 
-/// Appends the constraints of `request` to the scene's, after checking the statement
+/// Appends the constraints of `request` to the scene's, and its contact (the vectors the
+/// constraints hold the contact point along) to the scene's `contacts`, after checking the statement
 /// (`all`: every `rolls` line, for a body that rolls twice; a radius not positive) and the
 /// names it makes: a constraint already declared, or a multiplier `lambda_NAME` that
 /// `declared` says is taken.

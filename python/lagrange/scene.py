@@ -420,6 +420,15 @@ class Scene:
             parts["constraint_forces"] = c.value(doc["constraint_forces"])
         return Result("multipliers", parts, doc)
 
+    def contact(self):
+        """The ground's force on each rolling wheel at its contact point (``rolls W on
+        ground``): ``.contact_forces`` ``{body: {"point": [...], "force": [...]}}`` in the
+        scene's axes, and the ``.multipliers`` it is built from."""
+        doc, c = self._parts("contact", ["contact_forces", "multipliers"])
+        return Result("contact", {"contact_forces": c.value(doc["contact_forces"]),
+                                  "multipliers": ExprDict({k: c.value(v) for k, v in doc["multipliers"].items()})},
+                      doc)
+
     def eliminated(self):
         """The equations of the coordinates kept after eliminating solvable constraints."""
         doc, c = self._parts("eliminated", ["eliminated"])

@@ -23,4 +23,16 @@ double value_at(const GiNaC::ex& e, const GiNaC::exmap& point)
     return n.to_double();
 }
 
+void check_matrix(const GiNaC::matrix& got, const std::vector<std::vector<GiNaC::ex>>& expected)
+{
+    REQUIRE(got.rows() == expected.size());
+    for (unsigned i = 0; i < got.rows(); ++i) {
+        REQUIRE(got.cols() == expected[i].size());
+        for (unsigned j = 0; j < got.cols(); ++j) {
+            INFO("entry (" << i << ", " << j << "): " << got(i, j) << " against " << expected[i][j]);
+            CHECK(same(got(i, j), expected[i][j]));
+        }
+    }
+}
+
 } // namespace lagrange_test

@@ -5,6 +5,8 @@
 
 #include <ginac/ginac.h>
 
+#include <vector>
+
 namespace lagrange_test {
 
 /// True if a − b is zero: its expansion, or failing that its normal form, vanishes.
@@ -12,5 +14,8 @@ bool same(const GiNaC::ex& a, const GiNaC::ex& b);
 
 /// The real value of `e` at a numeric `point` (REQUIREs a real number).
 double value_at(const GiNaC::ex& e, const GiNaC::exmap& point);
+
+/// CHECKs each entry of `got` to be the same as `expected`'s (REQUIREs the shape).
+void check_matrix(const GiNaC::matrix& got, const std::vector<std::vector<GiNaC::ex>>& expected);
 
 } // namespace lagrange_test

@@ -5,7 +5,10 @@
 
 #include "system/external.h"
 
+#include <catch2/catch.hpp>
+
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <iterator>
 #include <stdexcept>
@@ -31,6 +34,9 @@ bool tool_available(const std::string& tool)
     if (tool == "scipy") // Debian's python3-scipy, for the interpreter the Python tests use
         return access("/usr/bin/python3", X_OK) == 0 &&
                std::system("/usr/bin/python3 -c 'import scipy.integrate' >/dev/null 2>&1") == 0;
+    if (tool == "python_sympy") // Debian's python3-sympy, as the scipy tests use it
+        return access("/usr/bin/python3", X_OK) == 0 &&
+               std::system("/usr/bin/python3 -c 'import sympy.physics.mechanics' >/dev/null 2>&1") == 0;
     const std::string program = tool == "cc" ? configured_compiler() : tool;
     if (program.find('/') != std::string::npos)
         return access(program.c_str(), X_OK) == 0;
@@ -50,6 +56,18 @@ compiler_override::~compiler_override()
         setenv("LAGRANGE_CC", old_->c_str(), 1);
     else
         unsetenv("LAGRANGE_CC");
+}
+
+std::string run_shell(const std::string& command)
+{
+    std::string out;
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe);
+    char buffer[4096];
+    for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+        out.append(buffer, n);
+    CHECK(pclose(pipe) == 0);
+    return out;
 }
 
 bool cpu_has_avx2_and_fma()

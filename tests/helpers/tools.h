@@ -14,11 +14,13 @@
 namespace lagrange_test {
 
 /// The tools a test can require, by tag name.
-inline constexpr const char* known_tools[] = {"cc", "gnuplot", "pdflatex", "root", "octave", "scipy", "ffmpeg", "chromium"};
+inline constexpr const char* known_tools[] = {"cc",     "gnuplot", "pdflatex", "root",    "octave",
+                                              "scipy",  "ffmpeg",  "chromium", "python_sympy"};
 
 /// Whether `tool` is installed: for "cc" the compiler the engine uses ($LAGRANGE_CC, else
 /// `cc`), for "root" whether the tests run as root (owners and device nodes), for "octave"
-/// octave-cli, for "scipy" whether /usr/bin/python3 imports scipy.integrate, for the others
+/// octave-cli, for "scipy" whether /usr/bin/python3 imports scipy.integrate, for "python_sympy"
+/// whether it imports sympy.physics.mechanics, for the others
 /// the program of that name on $PATH. Throws std::invalid_argument
 /// for a name that is not in known_tools.
 bool tool_available(const std::string& tool);
@@ -38,6 +40,9 @@ public:
 private:
     std::optional<std::string> old_;
 };
+
+/// The standard output of `command`, run by the shell; the test fails when it exits non-zero.
+std::string run_shell(const std::string& command);
 
 /// Whether this CPU has AVX2 and FMA (then the engine's native code uses SLEEF).
 bool cpu_has_avx2_and_fma();

@@ -248,3 +248,20 @@ spring k between P3 and (1, -2) rest 1/2
         }
     }
 }
+
+TEST_CASE("equations: an equation too large to read is not printed, M and f still are", "[equations]")
+{
+    // The 34-link chain's largest equation has 1190 terms expanded, over printed_equation_terms;
+    // the 30-link chain's (930) prints.
+    model scene = load(lagrange_test::chain_scene(34));
+    const simplifier simplify = make_simplifier(scene);
+    const lagrangian_result lagrangian = derive_lagrangian(scene, simplify);
+    const equations_of_motion eom = derive_equations_of_motion(scene, lagrangian, simplify, true);
+    CHECK_FALSE(eom.residuals);
+    CHECK(eom.too_large_to_print.find("terms expanded (more than 1000)") != std::string::npos);
+    CHECK(eom.mass.rows() == 34);
+    CHECK(eom.forcing.size() == 34);
+    CHECK_THROWS_AS(derive_equations(scene, lagrangian, simplify), equations_too_large);
+    // Not asked to print: nothing to refuse.
+    CHECK(derive_equations_of_motion(scene, lagrangian, simplify, false).too_large_to_print.empty());
+}

@@ -22,6 +22,7 @@
 #include <sstream>
 
 using namespace lagrange;
+using lagrange_test::check_matrix;
 using lagrange_test::load;
 using lagrange_test::same;
 using lagrange_test::symbol_of;
@@ -34,18 +35,6 @@ std::string scene_file(const std::string& name)
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
-}
-
-void check_matrix(const GiNaC::matrix& got, const std::vector<std::vector<GiNaC::ex>>& expected)
-{
-    REQUIRE(got.rows() == expected.size());
-    for (unsigned i = 0; i < got.rows(); ++i) {
-        REQUIRE(got.cols() == expected[i].size());
-        for (unsigned j = 0; j < got.cols(); ++j) {
-            INFO("entry (" << i << ", " << j << "): " << got(i, j) << " against " << expected[i][j]);
-            CHECK(same(got(i, j), expected[i][j]));
-        }
-    }
 }
 
 const char* cartesian_at(const char* point)

@@ -221,18 +221,6 @@ std::string replace_all(std::string text, const std::string& from, const std::st
     return text;
 }
 
-std::string run_shell(const std::string& command)
-{
-    std::string out;
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe);
-    char buffer[4096];
-    for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;)
-        out.append(buffer, n);
-    CHECK(pclose(pipe) == 0);
-    return out;
-}
-
 } // namespace
 
 TEST_CASE("export: the C code compiles warning-free and reproduces simulate", "[export][cc]")

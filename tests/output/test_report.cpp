@@ -281,6 +281,21 @@ TEST_CASE("report: a scene with LaTeX's special characters, Unicode and long lin
     CHECK(widest_overfull_box(log) <= 10.0);
 }
 
+TEST_CASE("report: a rolling wheel's contact force has its subsection", "[report]")
+{
+    // The upright disc of test_contact.cpp: the force F = Σ λ_k e_k, one display per axis.
+    std::string scene = temporary_file("contact.lag", "parameters m g r I J\ncoordinates q1 q2 q3 x y z\n"
+                                                      "body D inertia (I, J, I) mass m at (x, y, z) orientation "
+                                                      "rotations(z q1, x q2, y q3)\ngravity g along (0, 0, 1)\n"
+                                                      "rolls D on ground radius r axis y\nwant contact\n");
+    cli_result r = run_cli("report " + scene + " -o -");
+    REQUIRE(r.exit_code == 0);
+    CHECK(contains(r.out, "\\subsection*{Contact forces}"));
+    CHECK(contains(r.out, "$F = \\sum_k \\lambda_k e_k$"));
+    for (const char* axis : {"x", "y", "z"})
+        CHECK(contains(r.out, std::string("F^{\\mathrm{D}}_{") + axis + "}"));
+}
+
 TEST_CASE("report: a closed form too long to read is named, not printed", "[report]")
 {
     // (A cubic's roots in many parameters run to megabytes of LaTeX, which TeX

@@ -79,6 +79,19 @@ def test_multiplier_is_the_tension(example):
     assert same(forces["P1"][1], solution[lam]) and same(forces["P1"][0], 0)
 
 
+# ---- contact: SymPy's rolling disc of test_aux_dep, its height a coordinate ------------------
+def test_contact_force_of_the_rolling_disc():
+    scene = lagrange.Scene.from_text(
+        "parameters m g r I J\ncoordinates q1 q2 q3 x y z\n"
+        "body D inertia (I, J, I) mass m at (x, y, z) orientation rotations(z q1, x q2, y q3)\n"
+        "gravity g along (0, 0, 1)\nrolls D on ground radius r axis y\n", "disc.lag")
+    force = scene.contact().contact_forces["D"]["force"]
+    # Upright, rolling straight at spin rate w along heading q1: the ground carries the weight
+    # (z is down), as Newton's law for the centre, which does not accelerate, says.
+    upright = {S("q2"): 0, S("q1_dot"): 0, S("q2_dot"): 0, S("q3_dot"): S("w"), S("z"): -S("r")}
+    assert [sympy.simplify(f.subs(upright)) for f in force] == [0, 0, -S("m") * S("g")]
+
+
 # ---- damping, state space, transfer: the damped driven oscillator -----------------------
 k, b, s = sympy.symbols("k b s")
 
