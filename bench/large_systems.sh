@@ -14,6 +14,7 @@ sizes=("$@")
 [ ${#sizes[@]} -gt 0 ] || sizes=(2 5 10 20 50)
 build=${LAGRANGE_BUILD:-build}
 [ -x "$build/bench/large_systems" ] && [ -x "$build/lagrange" ] || scripts/setup.sh
+[ -f /usr/include/mujoco/mujoco.h ] || LAGRANGE_WITH_MUJOCO=1 LAGRANGE_SETUP_ONLY=1 scripts/setup.sh || true
 lagrange=$PWD/$build/lagrange
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -27,8 +27,6 @@ packages+=(libcairo2-dev)
 packages+=(help2man groff-base)
 # Open MPI: `mpirun -np R lagrange ensemble ...` across processes and machines (optional in CMake)
 packages+=(libopenmpi-dev openmpi-bin)
-# MuJoCo: the peer of bench/large_systems.sh (the benchmark skips it without)
-packages+=(libmujoco-dev)
 if [ "${LAGRANGE_WITH_LATEX:-0}" = 1 ]; then
   packages+=(texlive-latex-base)
 fi
@@ -37,17 +35,21 @@ fi
 if [ "${LAGRANGE_WITH_EXPORT_TOOLS:-0}" = 1 ]; then
   packages+=(python3-scipy octave)
 fi
-# fuzz/run.sh: clang and its libFuzzer/sanitizer runtimes; bench/run.sh: GNU time (peak memory).
 # `lagrange animate -o FILE.mp4|gif` encodes with ffmpeg; the tests decode with ffprobe and open
 # the HTML player in headless Chromium.
 if [ "${LAGRANGE_WITH_MEDIA:-0}" = 1 ]; then
   packages+=(ffmpeg chromium python3-matplotlib)
 fi
+# fuzz/run.sh: clang and its libFuzzer/sanitizer runtimes; bench/run.sh: GNU time (peak memory);
+# bench/large_systems.sh: MuJoCo, its peer (the benchmark skips it without).
 if [ "${LAGRANGE_WITH_FUZZ:-0}" = 1 ]; then
   packages+=(clang libclang-rt-14-dev)
 fi
 if [ "${LAGRANGE_WITH_TIME:-0}" = 1 ]; then
   packages+=(time)
+fi
+if [ "${LAGRANGE_WITH_MUJOCO:-0}" = 1 ]; then
+  packages+=(libmujoco-dev)
 fi
 
 missing=()
