@@ -302,7 +302,12 @@ class Scene:
             else:
                 parts[k] = c.value(v, k)
         parts["y"] = numpy.column_stack(list(parts["states"].values())) if parts.get("states") else numpy.zeros((0, 0))
-        return Simulation("simulation", parts, s)
+        run = Simulation("simulation", parts, s)
+        # run.animate(): the player of this run (its scene, values, initial state, span, tolerance)
+        run._scene_animate = lambda **player: self.animate(
+            until=float(parts["t"][-1]), values=values, initial=initial,
+            tolerance=float(s.get("tolerance", 1e-9)), native=native, **player)
+        return run
 
     def workprecision(self, values=None, initial=None, **settings):
         """Error against run time of every method over a ladder of tolerances (``values``,
@@ -496,6 +501,11 @@ class Scene:
 
 class Simulation(Result):
     """A simulation: ``t``, ``states``, ``y`` and the JSON `simulation` object's other parts."""
+
+    def animate(self, fps=30, speed=1, trail=0, view=""):
+        """The HTML player of this run (an :class:`Animation`, as :meth:`Scene.animate` gives
+        it): the same scene, ``values``, ``initial`` state, end time and tolerance."""
+        return self._scene_animate(fps=fps, speed=speed, trail=trail, view=view)
 
     def _repr_latex_(self):
         t = self._parts.get("t")

@@ -82,3 +82,14 @@ def test_animate_gives_the_command_lines_player(tmp_path):
     assert '"poinsot":{' in lagrange.Scene.from_file(free).animate(until=2).html
     with pytest.raises(ValueError, match="view must be"):
         lagrange.Scene.from_file(path).animate(view="yz")
+
+
+def test_a_runs_animate_is_the_scenes_player_of_that_run():
+    """run.animate() on a simulation: the player of the same run, as scene.animate() gives it."""
+    path = os.path.normpath(os.path.join(HERE, "..", "..", "examples", "double_pendulum.lag"))
+    scene = lagrange.Scene.from_file(path)
+    run = scene.simulate(until=2, tolerance=1e-8, initial={"theta": 0.4})
+    animation = run.animate(fps=10)
+    assert type(animation).__name__ == "Animation"
+    assert animation.html == scene.animate(until=2, fps=10, tolerance=1e-8, initial={"theta": 0.4}).html
+    assert animation.html != scene.animate(until=2, fps=10, tolerance=1e-8).html
