@@ -225,6 +225,37 @@ void run_point(const point_rhs& f_in, const ensemble_measure& measure, const ens
 
 } // namespace
 
+const std::vector<measure_definition>& measures()
+{
+    using tangent = measure_definition::tangent_vectors;
+    static const std::vector<measure_definition> table = {
+        {ensemble_measure::kind::final_state, "final", false, tangent::none, false,
+         [](const model& scene) {
+             std::vector<std::string> columns;
+             for (const coordinate& c : scene.coordinates)
+                 columns.push_back("final_" + c.name);
+             for (const coordinate& c : scene.coordinates)
+                 columns.push_back("final_" + c.name + "_dot");
+             return columns;
+         }},
+        {ensemble_measure::kind::flip_time, "flip_time", true, tangent::none, false,
+         [](const model&) { return std::vector<std::string>{"flip_time"}; }},
+        {ensemble_measure::kind::max_lyapunov, "max_lyapunov", false, tangent::one, false,
+         [](const model&) { return std::vector<std::string>{"max_lyapunov"}; }},
+        {ensemble_measure::kind::floquet_stable, "floquet_stable", false, tangent::all, true,
+         [](const model&) { return std::vector<std::string>{"floquet_stable", "max_multiplier"}; }},
+    };
+    return table;
+}
+
+const measure_definition& definition_of(ensemble_measure::kind what)
+{
+    const measure_definition& definition = measures().at(static_cast<std::size_t>(what));
+    if (definition.what != what) // the rows are in the order of the kind enum
+        throw std::logic_error(std::string("the measures table is out of order at `") + definition.name + "`");
+    return definition;
+}
+
 ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion& equations,
                                    std::vector<ensemble_axis> axes, const ensemble_measure& measure,
                                    const ensemble_settings& settings, const time_dependence_result* time)
@@ -256,20 +287,9 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
     sample_every_ = std::max<std::size_t>(1, std::min<std::size_t>(61, points_ / 100));
     for (const ensemble_axis& a : axes_)
         columns_.push_back(a.name);
-    switch (measure_.what) {
-    case ensemble_measure::kind::final_state:
-        for (const coordinate& c : scene.coordinates)
-            columns_.push_back("final_" + c.name);
-        for (const coordinate& c : scene.coordinates)
-            columns_.push_back("final_" + c.name + "_dot");
-        break;
-    case ensemble_measure::kind::flip_time: columns_.push_back("flip_time"); break;
-    case ensemble_measure::kind::max_lyapunov: columns_.push_back("max_lyapunov"); break;
-    case ensemble_measure::kind::floquet_stable:
-        columns_.push_back("floquet_stable");
-        columns_.push_back("max_multiplier");
-        break;
-    }
+    const measure_definition& definition = definition_of(measure_.what);
+    for (const std::string& column : definition.columns(scene))
+        columns_.push_back(column);
 
     // The gridded parameters stay symbols (after q, q̇ and t); the others take their values.
     std::map<std::string, GiNaC::ex> values = merged_values(scene);
@@ -287,8 +307,7 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
     const motion_expressions motion = motion_at_values(scene, equations, values);
     std::vector<GiNaC::ex> rhs_outputs = motion.mass;
     rhs_outputs.insert(rhs_outputs.end(), motion.force.begin(), motion.force.end());
-    const bool tangents = measure_.what == ensemble_measure::kind::max_lyapunov ||
-                          measure_.what == ensemble_measure::kind::floquet_stable;
+    const bool tangents = definition.tangents != measure_definition::tangent_vectors::none;
     if (tangents)
         jacobian_outputs = motion_jacobian(scene, motion);
     // The scene's initial state (zeros where not given), possibly in the gridded parameters.
@@ -303,7 +322,7 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
             }
             initial_outputs.push_back(value);
         }
-    if (measure_.what == ensemble_measure::kind::floquet_stable)
+    if (definition.one_period)
         floquet_setup(scene, equations, time, values, parameter_symbols, initial_outputs);
     try {
         rhs_program_ = expression_program(rhs_outputs, symbols);
@@ -422,14 +441,17 @@ ensemble_problem::run_result ensemble_problem::integrate(const double* x_start, 
     std::size_t tangents = 0;
     std::vector<double> x0(x_start, x_start + 2 * n);
     double until = settings_.until;
-    if (measure_.what == ensemble_measure::kind::max_lyapunov) {
+    const measure_definition& definition = definition_of(measure_.what);
+    if (definition.tangents == measure_definition::tangent_vectors::one) {
         tangents = 1; // the tangent vector starts along (1, 1, …, 1), normalized
         x0.resize(4 * n, 1 / std::sqrt(static_cast<double>(2 * n)));
-    } else if (measure_.what == ensemble_measure::kind::floquet_stable) {
+    } else if (definition.tangents == measure_definition::tangent_vectors::all) {
         tangents = 2 * n; // the identity's columns
         x0.resize(2 * n * (1 + 2 * n), 0.0);
         for (std::size_t k = 0; k < 2 * n; ++k)
             x0[2 * n * (1 + k) + k] = 1;
+    }
+    if (definition.one_period) {
         double frequency = 0;
         frequency_program_.run(work.parameters.data(), work.scratch, &frequency);
         until = period_factor_ / std::abs(frequency);

@@ -55,8 +55,23 @@ struct ensemble_measure {
     double renormalize_every = 1;
 };
 
-/// Parses `final`, `flip_time`, `flip_time:NAME`, `max_lyapunov` or `floquet_stable`; throws scene_error
-/// located in the pseudo-file `--measure`.
+/// What a measure is, one row per kind (measures(), in the order of the kind enum): its name in
+/// `--measure`, whether it takes a coordinate (`flip_time:NAME`), the tangent vectors its runs
+/// carry beside the state, whether each run lasts one period of the drive (and so needs the
+/// `floquet` stage's point), and its columns after the grid's.
+struct measure_definition {
+    ensemble_measure::kind what;
+    const char* name;
+    bool takes_coordinate;
+    enum class tangent_vectors { none, one, all } tangents; ///< all: the 2n columns of the monodromy matrix
+    bool one_period;
+    std::vector<std::string> (*columns)(const model& scene);
+};
+const std::vector<measure_definition>& measures();
+const measure_definition& definition_of(ensemble_measure::kind what);
+
+/// Parses a measure's name (measures()), with `:NAME` where it takes a coordinate; throws
+/// scene_error located in the pseudo-file `--measure`.
 ensemble_measure parse_ensemble_measure(const std::string& text, const model& scene);
 
 struct ensemble_settings {

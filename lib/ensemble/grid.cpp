@@ -173,19 +173,24 @@ ensemble_measure parse_ensemble_measure(const std::string& text, const model& sc
     ensemble_measure measure;
     std::size_t colon = text.find(':');
     std::string head = text.substr(0, colon);
-    if (head == "final" || head == "max_lyapunov" || head == "floquet_stable") {
-        if (colon != std::string::npos)
-            bad_option("--measure", text, colon, "`" + head + "` takes no argument");
-        measure.what = head == "final"          ? ensemble_measure::kind::final_state
-                       : head == "max_lyapunov" ? ensemble_measure::kind::max_lyapunov
-                                                : ensemble_measure::kind::floquet_stable;
-        return measure;
+    const measure_definition* found = nullptr;
+    std::vector<std::string> names;
+    for (const measure_definition& m : measures()) {
+        if (head == m.name)
+            found = &m;
+        names.push_back(m.name);
+        if (m.takes_coordinate)
+            names.push_back(std::string(m.name) + ":COORDINATE");
     }
-    if (head != "flip_time")
-        bad_option("--measure", text, 0,
-                   "unknown measure `" + head +
-                       "`: use final, flip_time, flip_time:COORDINATE, max_lyapunov or floquet_stable");
-    measure.what = ensemble_measure::kind::flip_time;
+    if (!found) {
+        std::string use;
+        for (std::size_t k = 0; k < names.size(); ++k)
+            use += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
+        bad_option("--measure", text, 0, "unknown measure `" + head + "`: use " + use);
+    }
+    measure.what = found->what;
+    if (!found->takes_coordinate && colon != std::string::npos)
+        bad_option("--measure", text, colon, "`" + head + "` takes no argument");
     if (colon == std::string::npos)
         return measure;
     std::string name = text.substr(colon + 1);

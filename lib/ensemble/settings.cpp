@@ -17,7 +17,7 @@ ensemble_settings ensemble_settings_for(const model& scene, const ensemble_measu
     simulation_settings asked; // the span is read as `simulate` reads it: one rule for both
     asked.until = request.until;
     asked.tolerance = request.tolerance;
-    if (!asked.until && measure.what == ensemble_measure::kind::floquet_stable)
+    if (!asked.until && definition_of(measure.what).one_period)
         asked.until = 1; // each run lasts one period of the drive
     if (!asked.until && !scene.simulation)
         throw ensemble_request_error("give the end time of every run with --until T (the scene has no `simulate until`)");
@@ -41,7 +41,7 @@ ensemble_settings ensemble_settings_for(const model& scene, const ensemble_measu
 std::set<product> ensemble_products(const ensemble_measure& measure)
 {
     std::set<product> wanted{product::equations};
-    if (measure.what == ensemble_measure::kind::floquet_stable)
+    if (definition_of(measure.what).one_period)
         wanted.insert(product::floquet);
     return wanted;
 }
