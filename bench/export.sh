@@ -3,7 +3,8 @@
 # The exported code's speed beside its peers, in one run on this machine:
 # - C: one call of the exported double pendulum's double_pendulum_rhs (compiled -O2, as the
 #   engine compiles its own) against the engine's compiled right-hand side, measured by
-#   bench/motion_rhs in the same run ("compiled_motion (native)");
+#   bench/motion_rhs in the same run ("compiled_motion (native)"); the same for the 10-link
+#   chain against bench/large_systems;
 # - Python: one call of the exported module's rhs on a state (NumPy) against SymPy's path for
 #   the same equations: LagrangesMethod's mass matrix and forcing lambdified to NumPy, then
 #   numpy.linalg.solve (as the SymPy documentation's examples integrate them).
@@ -67,6 +68,23 @@ echo "C right-hand side of the double pendulum, per call:"
 echo "  exported C        ${exported_c} ns"
 echo "  engine (native)   ${engine_c} ns"
 "$python" -c "print('  ratio exported/engine  %.2f' % ($exported_c / $engine_c))"
+
+# The 10-link chain: the exported chain10_rhs against the engine's compiled q'' of the same chain
+# (bench/large_systems, which also times it against a hand-written O(N) recursion).
+[ -x "$build/bench/large_systems" ] || cmake --build "$build" --target large_systems >&2
+"$build/bench/large_systems" --scene 10 >"$work/chain10.lag"
+"$build/lagrange" export "$work/chain10.lag" --to c -o "$work" >/dev/null
+sed -e 's/double_pendulum/chain10/g' -e 's/double x\[4\] = {0.3, -0.2, 0.1, 0.4}, dxdt\[4\]/double x[chain10_NX], dxdt[chain10_NX]/' \
+    -e 's/    int r;/    int r, i;\n    for (i = 0; i < chain10_NX; ++i)\n        x[i] = 0.3 - 0.05 * i;/' \
+    "$work/harness.c" >"$work/chain_harness.c"
+"$cc" -std=c99 -O2 -fno-math-errno -ffp-contract=off -c "$work/chain10.c" -o "$work/chain10.o"
+"$cc" -std=c99 -O2 -o "$work/chain_harness" "$work/chain_harness.c" "$work/chain10.o" -I"$work" -lm
+exported_chain=$("$work/chain_harness" 1000000 "$runs" | cut -d' ' -f1)
+engine_chain=$("$build/bench/large_systems" 10 | cut -d' ' -f5)
+echo "C right-hand side of the 10-link chain, per call:"
+echo "  exported C        ${exported_chain} ns"
+echo "  engine (native)   ${engine_chain} ns"
+"$python" -c "print('  ratio exported/engine  %.2f' % ($exported_chain / $engine_chain))"
 
 OPENBLAS_NUM_THREADS=1 "$python" - "$work" "$runs" <<'PY'
 import sys, timeit
