@@ -3,6 +3,8 @@
  *  The programs behind exported code (see exported_system.h). */
 #include "numeric/exported_system.h"
 
+#include "program/angle_sums.h"
+
 #include "numeric/compiled_motion.h"
 #include "algebra/calculus.h"
 #include "core/errors.h"
@@ -84,6 +86,15 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
     for (const GiNaC::ex& f : equations.forcing)
         for (const input_signal& u : scene.inputs)
             derivatives.push_back(differentiate(f, u.symbol));
+    // Large systems: M and F through the sines and cosines of the single angles, the form the
+    // engine measured faster from single_angles_coordinates on (numeric/compiled_motion.h).
+    std::vector<GiNaC::ex> forcing = equations.forcing;
+    if (n >= single_angles_coordinates) {
+        for (GiNaC::ex& e : mass)
+            e = expand_angle_sums(e);
+        for (GiNaC::ex& e : forcing)
+            e = expand_angle_sums(e);
+    }
     std::vector<GiNaC::ex> constraint_parts, constraint_derivatives;
     if (equations.constraints) {
         const constraint_equations& c = *equations.constraints;
@@ -111,9 +122,9 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
     try {
         out.mass = expression_program(mass, symbols);
         std::vector<GiNaC::ex> both = mass;
-        both.insert(both.end(), equations.forcing.begin(), equations.forcing.end());
+        both.insert(both.end(), forcing.begin(), forcing.end());
         out.mass_and_forcing = expression_program(both, symbols);
-        out.forcing = expression_program(equations.forcing, symbols);
+        out.forcing = expression_program(forcing, symbols);
         out.energy = expression_program({equations.energy}, symbols);
         out.derivatives = expression_program(derivatives, symbols);
         if (!constraint_parts.empty()) {
