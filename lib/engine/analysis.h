@@ -30,6 +30,7 @@
 #include "numeric/point_modes.h"
 #include "numeric/poinsot.h"
 #include "mechanics/time_dependence.h"
+#include "numeric/phase_portrait.h"
 #include "numeric/simulation.h"
 #include "numeric/virial.h"
 #include "verify/verify.h"
@@ -88,6 +89,8 @@ struct analysis {
     /// `state_space` about an operating point (constraints, or a `linearize about` line): then
     /// `state_space` holds its A and B in the independent states.
     std::optional<operating_linearization> operating;
+    /// The report's phase portrait of a scene of one coordinate (engine/pictures.h).
+    std::optional<phase_portrait> phase;
     // The products with a result of their own (core/products.inc): `std::optional<result> id`.
 #define LAGRANGE_PRODUCT(id, name, scope, by_default)
 #define LAGRANGE_OWN_PRODUCT(id, name, scope, by_default, result) std::optional<result> id;

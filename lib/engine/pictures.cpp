@@ -22,6 +22,17 @@ animation_frames animate_scene(const model& scene, const animation_settings& set
     return compute_animation(scene, *result.equations, settings);
 }
 
+void add_phase_portrait(const model& scene, analysis& result)
+{
+    if (scene.coordinates.size() != 1 || !result.equations)
+        return;
+    try {
+        result.phase = compute_phase_portrait(scene, *result.equations,
+                                              result.equilibria ? &*result.equilibria : nullptr, phase_settings{});
+    } catch (const computation_error&) { // no conserved energy, or a parameter without a value: no picture
+    }
+}
+
 poincare_result poincare_scene(const model& scene, const poincare_section& section, const poincare_settings& settings,
                                const budget_limits& limits)
 {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "algebra/budget.h"
+#include "engine/analysis.h"
 #include "ensemble/poincare.h"
 #include "numeric/animation.h"
 #include "core/model.h"
@@ -16,6 +17,11 @@ namespace lagrange {
 /// torque-free body's Poinsot construction from the `euler` stage; otherwise the points'
 /// motion from the `equations` stage. Throws computation_error when neither can be drawn.
 animation_frames animate_scene(const model& scene, const animation_settings& settings, const budget_limits& limits);
+
+/// Adds to `result` (of `scene`, with its equations) the phase portrait that the report draws
+/// for a scene of one coordinate, where one can be drawn: no constraints or forces, an L that
+/// does not depend on t, and numbers for the parameters. Otherwise `result` stays as it is.
+void add_phase_portrait(const model& scene, analysis& result);
 
 /// The section of `scene` at `settings`: the `equations` stage, and the `equilibrium` stage
 /// where it succeeds (it gives the energy's minimum and the well the orbits start in; a scene

@@ -16,6 +16,10 @@ namespace lagrange {
 /// extension, computation_error without gnuplot.
 void plot_phase_portrait(const std::string& path, const phase_portrait& portrait, const std::string& title);
 
+/// The gnuplot commands that draw it (its data inline), titled `TITLE: phase portrait of q`
+/// (untitled for an empty title).
+std::string phase_plot_script(const phase_portrait& portrait, const std::string& title);
+
 /// `q,q_dot,energy`, one line per grid point, velocity rows after one another.
 void write_phase_csv(std::ostream& out, const phase_portrait& portrait);
 

@@ -654,6 +654,7 @@ const std::vector<report_section>& report_sections()
 #include "core/products.inc"
 #undef LAGRANGE_OWN_PRODUCT
 #undef LAGRANGE_PRODUCT
+        {"phase portrait", [](const analysis& r) { return r.phase.has_value(); }, write_phase_section},
         {"symmetries",
          [](const analysis& r) {
              return r.conserved.has_value() || r.hamiltonian.has_value() || r.steady.has_value() ||

@@ -58,6 +58,10 @@ void write_constraints_section(report_writer& w);
 #undef LAGRANGE_OWN_PRODUCT
 #undef LAGRANGE_PRODUCT
 
+/// The phase portrait of a scene of one coordinate (phase_output.cpp): the level curves of
+/// the energy, with the separatrices.
+void write_phase_section(report_writer& w);
+
 /// The parameter values of a numeric point as LaTeX, "m = 1,\ k = 4" (the numeric sections'
 /// subsection titles).
 std::string values_latex(const numeric_modes& point);

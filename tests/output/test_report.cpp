@@ -7,6 +7,7 @@
 #include "helpers/cli_runner.h"
 
 #include "engine/analysis.h"
+#include "engine/pictures.h"
 #include "output/latex_blocks.h"
 #include "output/print.h"
 #include "output/report.h"
@@ -709,4 +710,31 @@ TEST_CASE("report: linearization with constraints gives A and the residual", "[r
     CHECK(contains(r.out, "F(x_0, u_0) &= (0,\\ 0,\\ w,\\ r w,\\ 0,\\ 0,\\ 0,\\ 0)"));
     CHECK(contains(r.out, "a steady motion, not an equilibrium"));
     CHECK(!contains(r.out, "Linearized at the equilibrium"));
+}
+
+TEST_CASE("report: a scene of one coordinate gets its phase portrait with the separatrices", "[report][gnuplot]")
+{
+    // The bead on the rotating hoop below the critical rate (w² = 4 < g/R): h = ½mR²q̇² + V with
+    // V = mgR(1 − cos q) − ½mR²w² sin²q, least (0) at the bottom, and the separatrix through
+    // the top q = ±π at h = 2mgR.
+    std::unique_ptr<built_report> hoop = report_of("rotating_hoop.lag");
+    lagrange::add_phase_portrait(hoop->scene, hoop->result);
+    REQUIRE(hoop->result.phase);
+    const lagrange::phase_portrait& p = *hoop->result.phase;
+    CHECK(std::abs(p.minimum) < 1e-12);
+    REQUIRE(p.separatrices.size() == 1);
+    CHECK(std::abs(p.separatrices[0] - 2 * 9.81) < 1e-9);
+    REQUIRE_FALSE(p.unstable.empty());
+    for (double q : p.unstable)
+        CHECK(std::abs(std::abs(q) - M_PI) < 1e-9);
+    lagrange::report_options options;
+    options.figure_prefix = "hoop-";
+    const lagrange::report_document document = lagrange::build_report(hoop->result, hoop->source, options);
+    CHECK(document.latex.find("\\section{Phase portrait}") != std::string::npos);
+    CHECK(std::any_of(document.figures.begin(), document.figures.end(),
+                      [](const lagrange::report_file& f) { return f.name == "hoop-phase.pdf"; }));
+    // Two coordinates: no phase portrait.
+    std::unique_ptr<built_report> pendulum = report_of("double_pendulum.lag");
+    lagrange::add_phase_portrait(pendulum->scene, pendulum->result);
+    CHECK_FALSE(pendulum->result.phase);
 }
