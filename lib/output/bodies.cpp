@@ -13,14 +13,6 @@
 
 namespace lagrange {
 
-std::string join(const std::vector<std::string>& parts, const std::string& separator)
-{
-    std::string out;
-    for (std::size_t i = 0; i < parts.size(); ++i)
-        out += (i ? separator : "") + parts[i];
-    return out;
-}
-
 std::vector<std::string> printed(const std::vector<GiNaC::ex>& v, syntax s, const term_order& order)
 {
     std::vector<std::string> out;

@@ -6,6 +6,7 @@
  *  (bodies_output.h, write_body_sections) and holds what they share. Internal to output/. */
 #pragma once
 
+#include "output/format.h"
 #include "output/print.h"
 #include "output/report_sections.h"
 
@@ -35,8 +36,6 @@ void write_tops_latex(std::ostream& out, const analysis& result);
 void write_tops_json(nlohmann::ordered_json& doc, const analysis& result);
 void write_tops_section(report_writer& w);
 
-/// The parts joined by `separator`.
-std::string join(const std::vector<std::string>& parts, const std::string& separator);
 /// Each expression printed in syntax `s`.
 std::vector<std::string> printed(const std::vector<GiNaC::ex>& v, syntax s, const term_order& order = {});
 /// Each expression as a JSON string (plain syntax).

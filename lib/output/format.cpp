@@ -52,4 +52,12 @@ std::string printable(const std::string& text)
     return out;
 }
 
+std::string join(const std::vector<std::string>& parts, const std::string& separator)
+{
+    std::string out;
+    for (std::size_t i = 0; i < parts.size(); ++i)
+        out += (i ? separator : "") + parts[i];
+    return out;
+}
+
 } // namespace lagrange

@@ -25,6 +25,9 @@ std::string complex_number(std::complex<double> z, const std::function<std::stri
 std::string conjugate_pair(std::complex<double> z, const std::function<std::string(double)>& number,
                            const std::string& plus_minus, const std::string& unit);
 
+/// The parts joined by `separator`.
+std::string join(const std::vector<std::string>& parts, const std::string& separator);
+
 /// A parameter point as a JSON object {"m": 1, "l": 2}, in the point's order.
 nlohmann::ordered_json values_json(const std::vector<std::pair<std::string, double>>& values);
 

@@ -45,14 +45,6 @@ std::vector<std::string> input_names(const model& scene, syntax how)
     return names;
 }
 
-std::string joined(const std::vector<std::string>& parts)
-{
-    std::string out;
-    for (const std::string& p : parts)
-        out += (out.empty() ? "" : ", ") + p;
-    return out;
-}
-
 void matrix_text(std::ostream& out, const std::string& label, const GiNaC::matrix& m, const std::string& indent)
 {
     out << indent << label << " =";
@@ -136,7 +128,7 @@ void operating_point_text(std::ostream& out, const model& scene, const operating
             coordinates.push_back(print(scene.coordinates[i].position, how));
         for (std::size_t i : point.speeds)
             speeds.push_back(print(scene.coordinates[i].velocity, how));
-        out << "  independent coordinates " << joined(coordinates) << ", speeds " << joined(speeds)
+        out << "  independent coordinates " << join(coordinates, ", ") << ", speeds " << join(speeds, ", ")
             << (point.chosen ? " (chosen: the dependent ones are the best-conditioned pivots of the constraint "
                                "Jacobians there)"
                              : " (the `independent` line)")
@@ -145,7 +137,7 @@ void operating_point_text(std::ostream& out, const model& scene, const operating
     std::vector<std::string> residual;
     for (const GiNaC::ex& e : point.residual)
         residual.push_back(print(e, how));
-    out << "  residual F(x₀, u₀) = (" << joined(residual) << ")\n";
+    out << "  residual F(x₀, u₀) = (" << join(residual, ", ") << ")\n";
     using kind = operating_linearization::kind;
     if (point.point_kind == kind::equilibrium) {
         out << "  F(x₀, u₀) = 0: the point is an equilibrium\n";
@@ -155,7 +147,7 @@ void operating_point_text(std::ostream& out, const model& scene, const operating
         std::vector<std::string> moving;
         for (std::size_t i : point.moving)
             moving.push_back(print(scene.coordinates[i].position, how));
-        out << "  not an equilibrium: a steady motion (every acceleration is 0; " << joined(moving)
+        out << "  not an equilibrium: a steady motion (every acceleration is 0; " << join(moving, ", ")
             << " move at constant rates). "
             << (point.moving_cyclic ? "They enter no equation, so A and B hold all along the motion: δx = x − x₀(t) "
                                       "with x₀(t) = x₀ + F t obeys δẋ = A δx + B δu\n"
@@ -234,7 +226,7 @@ void write_linear_system_text(std::ostream& out, const analysis& result)
             operating_point_text(out, scene, *result.operating);
         } else
             out << "\nState space (ẋ = A x + B u at the equilibrium)\n";
-        out << "  x = (" << joined(state_names(result, how)) << "),  u = (" << joined(input_names(scene, how))
+        out << "  x = (" << join(state_names(result, how), ", ") << "),  u = (" << join(input_names(scene, how), ", ")
             << ")\n";
         matrix_text(out, "A", ss.a, "  ");
         if (result.operating && !result.operating->characteristic_left_out.empty())
@@ -298,7 +290,8 @@ void write_linear_system_latex(std::ostream& out, const analysis& result)
             << (result.operating ? "linearized about the operating point (see the text output for its residual)"
                                  : "at the equilibrium")
             << ", with $x = ("
-            << joined(state_names(result, how)) << ")$ and $u = (" << joined(input_names(scene, how)) << ")$:\n";
+            << join(state_names(result, how), ", ") << ")$ and $u = (" << join(input_names(scene, how), ", ")
+            << ")$:\n";
         const std::string a = latex_matrix(ss.a);
         if (a.size() > largest_typeset_matrix)
             out << "$A$ is too large to typeset (" << a.size() << " characters of \\LaTeX); the text and JSON "

@@ -126,13 +126,7 @@ void write_tops_section(report_writer& w)
         w.display("V_{\\mathrm{eff}}(" + theta + ")", top.effective_potential);
         w.text("Near the upright position,");
         w.display_terms("V_{\\mathrm{eff}}", {"\\text{const} + \\left(" +
-                                                  [&] {
-                                                      std::string joined;
-                                                      for (const std::string& t :
-                                                           print_terms(top.curvature, syntax::latex, order))
-                                                          joined += (joined.empty() ? "" : " ") + t;
-                                                      return joined;
-                                                  }() +
+                                                  join(print_terms(top.curvature, syntax::latex, order), " ") +
                                                   "\\right)" + theta + "^{2} + O(" + theta + "^{4})"});
         w.text("so the sleeping top is stable when the curvature is positive, that is when");
         w.display_rows({{"", print_terms(top.condition, syntax::latex, order), " > 0."}});
