@@ -646,7 +646,7 @@ int report_scene(const run_options& options, const lagrange::budget_limits& budg
     lagrange::source_text source = read_scene(options.scene_path, budget.max_seconds);
     lagrange::model scene = load_scene(source, options.values, options.initial);
     lagrange::analysis result = analyze_wanted(scene, options.want, budget, options.project_initial);
-    lagrange::add_phase_portrait(scene, result);
+    result.phase = lagrange::report_phase_portrait(scene, result);
     lagrange::report_options report;
     // Figures go beside the .tex file, named after it (letters, digits and `-` only).
     std::size_t slash = path.rfind('/');

@@ -22,14 +22,15 @@ animation_frames animate_scene(const model& scene, const animation_settings& set
     return compute_animation(scene, *result.equations, settings);
 }
 
-void add_phase_portrait(const model& scene, analysis& result)
+std::optional<phase_portrait> report_phase_portrait(const model& scene, const analysis& result)
 {
     if (scene.coordinates.size() != 1 || !result.equations)
-        return;
+        return std::nullopt;
     try {
-        result.phase = compute_phase_portrait(scene, *result.equations,
-                                              result.equilibria ? &*result.equilibria : nullptr, phase_settings{});
+        return compute_phase_portrait(scene, *result.equations, result.equilibria ? &*result.equilibria : nullptr,
+                                      phase_settings{});
     } catch (const computation_error&) { // no conserved energy, or a parameter without a value: no picture
+        return std::nullopt;
     }
 }
 

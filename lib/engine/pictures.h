@@ -18,10 +18,10 @@ namespace lagrange {
 /// motion from the `equations` stage. Throws computation_error when neither can be drawn.
 animation_frames animate_scene(const model& scene, const animation_settings& settings, const budget_limits& limits);
 
-/// Adds to `result` (of `scene`, with its equations) the phase portrait that the report draws
-/// for a scene of one coordinate, where one can be drawn: no constraints or forces, an L that
-/// does not depend on t, and numbers for the parameters. Otherwise `result` stays as it is.
-void add_phase_portrait(const model& scene, analysis& result);
+/// The phase portrait that the report draws for a scene of one coordinate (from `result`, its
+/// analysis with the equations), where one can be drawn: no constraints or forces, an L that
+/// does not depend on t, and numbers for the parameters; otherwise none.
+std::optional<phase_portrait> report_phase_portrait(const model& scene, const analysis& result);
 
 /// The section of `scene` at `settings`: the `equations` stage, and the `equilibrium` stage
 /// where it succeeds (it gives the energy's minimum and the well the orbits start in; a scene

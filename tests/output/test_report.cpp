@@ -718,7 +718,7 @@ TEST_CASE("report: a scene of one coordinate gets its phase portrait with the se
     // V = mgR(1 − cos q) − ½mR²w² sin²q, least (0) at the bottom, and the separatrix through
     // the top q = ±π at h = 2mgR.
     std::unique_ptr<built_report> hoop = report_of("rotating_hoop.lag");
-    lagrange::add_phase_portrait(hoop->scene, hoop->result);
+    hoop->result.phase = lagrange::report_phase_portrait(hoop->scene, hoop->result);
     REQUIRE(hoop->result.phase);
     const lagrange::phase_portrait& p = *hoop->result.phase;
     CHECK(std::abs(p.minimum) < 1e-12);
@@ -735,6 +735,5 @@ TEST_CASE("report: a scene of one coordinate gets its phase portrait with the se
                       [](const lagrange::report_file& f) { return f.name == "hoop-phase.pdf"; }));
     // Two coordinates: no phase portrait.
     std::unique_ptr<built_report> pendulum = report_of("double_pendulum.lag");
-    lagrange::add_phase_portrait(pendulum->scene, pendulum->result);
-    CHECK_FALSE(pendulum->result.phase);
+    CHECK_FALSE(lagrange::report_phase_portrait(pendulum->scene, pendulum->result));
 }
