@@ -14,13 +14,23 @@ namespace lagrange {
 
 namespace {
 
+/// sin and cos of one term, through −term where its coefficient is negative (GiNaC keeps
+/// sin(−q) as written), so that q and −q share one sine and cosine.
+std::pair<GiNaC::ex, GiNaC::ex> sine_cosine(const GiNaC::ex& term)
+{
+    const GiNaC::ex coefficient = GiNaC::is_a<GiNaC::mul>(term) ? term.op(term.nops() - 1) : term;
+    if (GiNaC::is_a<GiNaC::numeric>(coefficient) && GiNaC::ex_to<GiNaC::numeric>(coefficient).is_negative())
+        return {-GiNaC::sin(-term), GiNaC::cos(-term)};
+    return {GiNaC::sin(term), GiNaC::cos(term)};
+}
+
 /// sin and cos of a sum of `terms` (sorted), from index `first` on.
 std::pair<GiNaC::ex, GiNaC::ex> sine_cosine(const std::vector<GiNaC::ex>& terms, std::size_t first)
 {
     if (first + 1 == terms.size())
-        return {GiNaC::sin(terms[first]), GiNaC::cos(terms[first])};
+        return sine_cosine(terms[first]);
     const auto [sine_rest, cosine_rest] = sine_cosine(terms, first + 1);
-    const GiNaC::ex sine = GiNaC::sin(terms[first]), cosine = GiNaC::cos(terms[first]);
+    const auto [sine, cosine] = sine_cosine(terms[first]);
     return {sine * cosine_rest + cosine * sine_rest, cosine * cosine_rest - sine * sine_rest};
 }
 
