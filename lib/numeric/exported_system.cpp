@@ -86,15 +86,14 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
     for (const GiNaC::ex& f : equations.forcing)
         for (const input_signal& u : scene.inputs)
             derivatives.push_back(differentiate(f, u.symbol));
-    // Large systems: M and F through the sines and cosines of the single angles, the form the
-    // engine measured faster from single_angles_coordinates on (numeric/compiled_motion.h).
-    std::vector<GiNaC::ex> forcing = equations.forcing;
-    if (n >= single_angles_coordinates) {
-        for (GiNaC::ex& e : mass)
-            e = expand_angle_sums(e);
-        for (GiNaC::ex& e : forcing)
-            e = expand_angle_sums(e);
-    }
+    // M and F as the engine compiles them: F without its cancelling terms, and both through the
+    // sines and cosines of the single angles, fewer sines and cosines, each dearer than the
+    // products that replace them (docs/benchmarks.md, "Exported code").
+    std::vector<GiNaC::ex> forcing;
+    for (const GiNaC::ex& f : equations.forcing)
+        forcing.push_back(expand_angle_sums(cancelled(f)));
+    for (GiNaC::ex& e : mass)
+        e = expand_angle_sums(e);
     std::vector<GiNaC::ex> constraint_parts, constraint_derivatives;
     if (equations.constraints) {
         const constraint_equations& c = *equations.constraints;
