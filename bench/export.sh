@@ -68,6 +68,15 @@ echo "C right-hand side of the double pendulum, per call:"
 echo "  exported C        ${exported_c} ns"
 echo "  engine (native)   ${engine_c} ns"
 "$python" -c "print('  ratio exported/engine  %.2f' % ($exported_c / $engine_c))"
+# Where the engine compiles its own code with AVX2 and FMA (for SLEEF's sines), the exported
+# file compiled with the same flags.
+if grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; then
+    "$cc" -std=c99 -O2 -mavx2 -mfma -fno-math-errno -ffp-contract=off -c "$work/double_pendulum.c" -o "$work/dp_avx2.o"
+    "$cc" -std=c99 -O2 -o "$work/harness_avx2" "$work/harness.c" "$work/dp_avx2.o" -I"$work" -lm
+    exported_avx2=$("$work/harness_avx2" 10000000 "$runs" | cut -d' ' -f1)
+    echo "  exported C, -mavx2 -mfma as the engine  ${exported_avx2} ns"
+    "$python" -c "print('  ratio exported/engine  %.2f' % ($exported_avx2 / $engine_c))"
+fi
 
 # The 10-link chain: the exported chain10_rhs against the engine's compiled q'' of the same chain
 # (bench/large_systems, which also times it against a hand-written O(N) recursion).

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file export_c.cpp
  *  The C target of `lagrange export`: NAME.h and NAME.c (C99, nothing beyond <math.h>). The small
- *  LDLᵀ solve is written out here because the target promises no other dependency. */
+ *  LDLᵀ solve and the sines and cosines are written out here because the target promises no other
+ *  dependency. */
 #include "output/export_program.h"
 
 #include <optional>
@@ -13,6 +14,60 @@
 namespace lagrange::export_detail {
 
 namespace {
+
+/// Sines and cosines written out, because the target holds to <math.h> and libm's calls were
+/// most of a right-hand side's time: inlined, one argument's sine and cosine share their work
+/// and several arguments overlap. fdlibm's reduction by π/2 in four parts (each product exact
+/// for |x| ≤ 8e5) and its kernel polynomials on [−π/4, π/4], in Estrin's order; within 2 ulp
+/// of the exact values there, libm's sin and cos beyond (and for NaN and infinities).
+constexpr const char* sincos_source = R"(/* sin(x) and cos(x) together, within 2 ulp for |x| <= 8e5 (fdlibm's reduction and
+   kernels, inlined so that one argument's pair shares the work); libm's beyond. */
+static inline void lagrange_sincos(double x, double *s, double *c)
+{
+    union { double d; uint64_t u; } shifted, ps, pc, so, co;
+    double q, r, z, z2, z4, ss, cs;
+    uint64_t swap;
+    shifted.d = x * 6.36619772367581382433e-01 + 0x1.8p52; /* its low bits: round(2x/pi) */
+    q = shifted.d - 0x1.8p52;
+    r = (((x - q * 1.57079632673412561417e+00) - q * 6.07710050630396597660e-11) - q * 2.02226624871116645580e-21)
+        - q * 8.47842766036889956997e-32;
+    z = r * r;
+    z2 = z * z;
+    z4 = z2 * z2;
+    ss = (-1.66666666666666324348e-01 + z * 8.33333333332248946124e-03)
+         + z2 * (-1.98412698298579493134e-04 + z * 2.75573137070700676789e-06)
+         + z4 * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10);
+    cs = (4.16666666666666019037e-02 + z * -1.38888888888741095749e-03)
+         + z2 * (2.48015872894767294178e-05 + z * -2.75573143513906633035e-07)
+         + z4 * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11);
+    ps.d = r + (r * z) * ss;
+    pc.d = (1.0 - 0.5 * z) + z2 * cs;
+    swap = (uint64_t)0 - (shifted.u & 1); /* odd quadrants swap sine and cosine */
+    so.u = ((ps.u & ~swap) | (pc.u & swap)) ^ ((shifted.u & 2) << 62);
+    co.u = ((pc.u & ~swap) | (ps.u & swap)) ^ (((shifted.u + 1) & 2) << 62);
+    *s = x == 0.0 ? x : so.d; /* sin(-0) = -0 */
+    *c = co.d;
+    if (!(fabs(x) <= 8.0e5)) {
+        *s = sin(x);
+        *c = cos(x);
+    }
+}
+
+static inline double lagrange_sin(double x)
+{
+    double s, c;
+    lagrange_sincos(x, &s, &c);
+    return s;
+}
+
+static inline double lagrange_cos(double x)
+{
+    double s, c;
+    lagrange_sincos(x, &s, &c);
+    return c;
+}
+
+)";
 
 /// The body of a C function that evaluates `program` into out[]: the symbols' aliases, the
 /// program, the stores; arguments it does not read are cast to void.
@@ -231,7 +286,7 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
     std::ostringstream c;
     const std::string nq = name + "_NQ";
     c << "/* " << name << ".c: see " << name << ".h.\n" << provenance(scene, system, names, version, " * ") << " */\n"
-      << "#include \"" << name << ".h\"\n\n#include <math.h>\n#include <stddef.h>\n\n"
+      << "#include \"" << name << ".h\"\n\n#include <math.h>\n#include <stddef.h>\n#include <stdint.h>\n\n"
       << "const double " << name << "_default_p[" << name << "_NP > 0 ? " << name << "_NP : 1] = {"
       << (system.defaults.empty() ? "0.0" : number_list(system.defaults, "NAN")) << "};\n"
       << "const char *const " << name << "_state_names[" << name << "_NX] = {";
@@ -248,17 +303,24 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
         c << "};\n";
     }
     c << "\n";
-    bool powers = false;
-    for (const expression_program* program : {&system.mass, &system.forcing, &system.mass_and_forcing,
-                                              &system.derivatives, &system.energy})
-        for (const instruction& i : program->code())
-            powers = powers || i.op == instruction::code::integer_power;
-    for (const std::optional<expression_program>* program :
-         {&system.linear, &system.constraint_parts, &system.constraint_derivatives, &system.conserved})
-        if (*program)
-            for (const instruction& i : (*program)->code())
-                powers = powers || i.op == instruction::code::integer_power;
-    if (powers) // only when used: an unused static function is a warning
+    // Helpers only where used: an unused static function is a warning.
+    auto uses = [&](instruction::code op) {
+        bool found = false;
+        for (const expression_program* program : {&system.mass, &system.forcing, &system.mass_and_forcing,
+                                                  &system.derivatives, &system.energy})
+            for (const instruction& i : program->code())
+                found = found || i.op == op;
+        for (const std::optional<expression_program>* program :
+             {&system.linear, &system.constraint_parts, &system.constraint_derivatives, &system.conserved})
+            if (*program)
+                for (const instruction& i : (*program)->code())
+                    found = found || i.op == op;
+        return found;
+    };
+    const bool powers = uses(instruction::code::integer_power);
+    if (uses(instruction::code::sine) || uses(instruction::code::cosine))
+        c << sincos_source;
+    if (powers)
         c << "static double lagrange_ipow(double a, int n)\n{\n    double r = 1.0;\n    int k = n < 0 ? -n : n;\n"
           << "    for (; k > 0; --k)\n        r *= a;\n    return n < 0 ? 1.0 / r : r;\n}\n\n";
     // LDLᵀ without square roots, as the engine's own solve (numeric/mass_matrix.h).
@@ -284,7 +346,7 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
       << c_body(system.mass, names, system, "M") << "}\n\n";
     c << "void " << name << "_forcing" << args << ", double *F)\n{\n"
       << c_body(system.forcing, names, system, "F") << "}\n\n";
-    c << "static void lagrange_mass_and_forcing" << args << ", double *out)\n{\n"
+    c << "static inline void lagrange_mass_and_forcing" << args << ", double *out)\n{\n"
       << c_body(system.mass_and_forcing, names, system, "out") << "}\n\n";
     c << "static void lagrange_derivatives" << args << ", double *out)\n{\n"
       << c_body(system.derivatives, names, system, "out") << "}\n\n";

@@ -25,8 +25,11 @@ const std::set<std::string>& keywords(dialect d)
         "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum", "extern",
         "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return", "short",
         "signed", "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void", "volatile",
-        "while", "_Bool", "_Complex", "_Imaginary", "sin", "cos", "sqrt", "exp", "log", "pow", "NAN", "INFINITY",
-        "HUGE_VAL", "main"};
+        "while", "_Bool", "_Complex", "_Imaginary", "sin", "cos", "sqrt", "exp", "log", "pow", "fabs", "NAN",
+        "INFINITY", "HUGE_VAL", "main", "uint64_t", "lagrange_augmented", "lagrange_augmented_system",
+        "lagrange_constraint_derivatives", "lagrange_constraint_parts", "lagrange_cos", "lagrange_derivatives",
+        "lagrange_factor", "lagrange_ipow", "lagrange_linear", "lagrange_lu_solve", "lagrange_mass_and_forcing",
+        "lagrange_sin", "lagrange_sincos", "lagrange_solve"};
     static const std::set<std::string> python = {
         "False", "None", "True", "and", "as", "assert", "async", "await", "break", "class", "continue", "def",
         "del", "elif", "else", "except", "finally", "for", "from", "global", "if", "import", "in", "is", "lambda",
@@ -127,8 +130,12 @@ std::vector<std::string> write_program(const expression_program& program, dialec
             value = d == dialect::c ? "pow(" + a + ", " + float_decimal(i.value) + ")"
                                     : a + (d == dialect::python ? " ** " : " ^ ") + "(" + float_decimal(i.value) + ")";
             break;
-        case op::sine: value = (d == dialect::python ? "np.sin(" : "sin(") + a + ")"; break;
-        case op::cosine: value = (d == dialect::python ? "np.cos(" : "cos(") + a + ")"; break;
+        case op::sine:
+            value = (d == dialect::python ? "np.sin(" : d == dialect::c ? "lagrange_sin(" : "sin(") + a + ")";
+            break;
+        case op::cosine:
+            value = (d == dialect::python ? "np.cos(" : d == dialect::c ? "lagrange_cos(" : "cos(") + a + ")";
+            break;
         case op::exponential: value = (d == dialect::python ? "np.exp(" : "exp(") + a + ")"; break;
         case op::logarithm: value = (d == dialect::python ? "np.log(" : "log(") + a + ")"; break;
         }

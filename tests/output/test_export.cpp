@@ -584,3 +584,61 @@ TEST_CASE("export: a driven or damped scene exports no conserved quantities", "[
     CHECK(module.find("CONSERVED") == std::string::npos);
     CHECK(module.find("def conserved") == std::string::npos);
 }
+
+TEST_CASE("export: the C sines and cosines are within 2 ulp of long double libm", "[export][cc]")
+{
+    // The exported file's own lagrange_sincos (it is static: the check includes the .c file),
+    // against sinl and cosl rounded to double, on arguments where reductions go wrong: next to
+    // multiples of pi/2, tiny, large, beyond the inlined range, and not finite.
+    const std::string folder = folder_for("c-sincos");
+    REQUIRE(run_cli("export " + examples + "double_pendulum.lag --to c -o " + folder).exit_code == 0);
+    std::ofstream(folder + "/sincos.c") << R"(#include "double_pendulum.c"
+#include <stdio.h>
+static double ulps(double got, long double exact)
+{
+    const double e = (double)exact;
+    if (got == e)
+        return 0.0;
+    return fabs(got - e) / (nextafter(fabs(e), INFINITY) - fabs(e));
+}
+int main(void)
+{
+    double worst = 0.0, s, c;
+    unsigned long long seed = 12345;
+    long i;
+    for (i = 0; i < 4000000; ++i) {
+        double x, u;
+        seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+        u = (double)(seed >> 11) / 9007199254740992.0 - 0.5;
+        switch (i % 5) {
+        case 0: x = 20.0 * u; break;
+        case 1: x = 1.6e6 * u; break;
+        case 2: x = nextafter((double)(long)(u * 4e5) * 1.5707963267948966, i % 2 ? INFINITY : -INFINITY); break;
+        case 3: x = 1e-6 * u; break;
+        default: x = 1e12 * u; break;
+        }
+        lagrange_sincos(x, &s, &c);
+        if (ulps(s, sinl((long double)x)) > worst) worst = ulps(s, sinl((long double)x));
+        if (ulps(c, cosl((long double)x)) > worst) worst = ulps(c, cosl((long double)x));
+    }
+    printf("%.3f", worst);
+    lagrange_sincos(-0.0, &s, &c);
+    printf(" %d %d", signbit(s) != 0 && s == 0.0, c == 1.0);
+    lagrange_sincos(NAN, &s, &c);
+    printf(" %d", isnan(s) && isnan(c));
+    lagrange_sincos(INFINITY, &s, &c);
+    printf(" %d\n", isnan(s) && isnan(c));
+    return 0;
+}
+)";
+    const std::string cc = configured_compiler();
+    const std::vector<double> r = read_numbers(run_shell("cd " + folder + " && " + cc +
+                                                          " -std=c99 -O2 -o sincos sincos.c -lm 2>&1 && ./sincos"));
+    REQUIRE(r.size() == 5);
+    CHECK(r[0] <= 2.0);
+    CHECK(r[1] == 1.0); // sin(-0) = -0
+    CHECK(r[2] == 1.0); // cos(-0) = 1
+    CHECK(r[3] == 1.0); // NaN in, NaN out
+    CHECK(r[4] == 1.0); // and for an infinity
+
+}
