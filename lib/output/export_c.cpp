@@ -16,12 +16,12 @@ namespace lagrange::export_detail {
 namespace {
 
 /// Sines and cosines written out, because the target holds to <math.h> and libm's calls were
-/// most of a right-hand side's time: inlined, one argument's sine and cosine share their work
-/// and several arguments overlap. fdlibm's reduction by π/2 in four parts (each product exact
+/// most of a right-hand side's time: one call gives an argument's sine and cosine (see
+/// write_program), and inlined, several arguments overlap. fdlibm's reduction by π/2 in four parts (each product exact
 /// for |x| ≤ 8e5) and its kernel polynomials on [−π/4, π/4], in Estrin's order; within 2 ulp
 /// of the exact values there, libm's sin and cos beyond (and for NaN and infinities).
 constexpr const char* sincos_source = R"(/* sin(x) and cos(x) together, within 2 ulp for |x| <= 8e5 (fdlibm's reduction and
-   kernels, inlined so that one argument's pair shares the work); libm's beyond. */
+   kernels); libm's beyond. */
 static inline void lagrange_sincos(double x, double *s, double *c)
 {
     union { double d; uint64_t u; } shifted, ps, pc, so, co;
@@ -51,20 +51,6 @@ static inline void lagrange_sincos(double x, double *s, double *c)
         *s = sin(x);
         *c = cos(x);
     }
-}
-
-static inline double lagrange_sin(double x)
-{
-    double s, c;
-    lagrange_sincos(x, &s, &c);
-    return s;
-}
-
-static inline double lagrange_cos(double x)
-{
-    double s, c;
-    lagrange_sincos(x, &s, &c);
-    return c;
 }
 
 )";

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -27,9 +28,9 @@ const std::set<std::string>& keywords(dialect d)
         "signed", "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void", "volatile",
         "while", "_Bool", "_Complex", "_Imaginary", "sin", "cos", "sqrt", "exp", "log", "pow", "fabs", "NAN",
         "INFINITY", "HUGE_VAL", "main", "uint64_t", "lagrange_augmented", "lagrange_augmented_system",
-        "lagrange_constraint_derivatives", "lagrange_constraint_parts", "lagrange_cos", "lagrange_derivatives",
+        "lagrange_constraint_derivatives", "lagrange_constraint_parts", "lagrange_derivatives",
         "lagrange_factor", "lagrange_ipow", "lagrange_linear", "lagrange_lu_solve", "lagrange_mass_and_forcing",
-        "lagrange_sin", "lagrange_sincos", "lagrange_solve"};
+        "lagrange_sincos", "lagrange_solve"};
     static const std::set<std::string> python = {
         "False", "None", "True", "and", "as", "assert", "async", "await", "break", "class", "continue", "def",
         "del", "elif", "else", "except", "finally", "for", "from", "global", "if", "import", "in", "is", "lambda",
@@ -106,8 +107,26 @@ std::vector<std::string> write_program(const expression_program& program, dialec
     std::vector<std::string> slot(code.size());
     const char* end = d == dialect::python ? "\n" : ";\n";
     const char* declare = d == dialect::c ? "const double " : "";
+    // In C an argument's sine and cosine come from one lagrange_sincos call, at the first of
+    // the two: the instructions' indices, or past the program's end for one not taken.
+    std::map<int, std::pair<std::size_t, std::size_t>> pairs; // argument slot → (sine, cosine)
+    if (d == dialect::c)
+        for (std::size_t k = 0; k < code.size(); ++k)
+            if (code[k].op == op::sine || code[k].op == op::cosine) {
+                auto [at, fresh] = pairs.try_emplace(code[k].first, code.size() + k, code.size() + k);
+                (code[k].op == op::sine ? at->second.first : at->second.second) = k;
+            }
     for (std::size_t k = 0; k < code.size(); ++k) {
         const instruction& i = code[k];
+        if (d == dialect::c && (i.op == op::sine || i.op == op::cosine)) {
+            const auto [sine, cosine] = pairs.at(i.first);
+            slot[k] = names.temporary + std::to_string(k);
+            if (k == std::min(sine, cosine))
+                lines << indent << "double " << names.temporary << sine << ", " << names.temporary << cosine << ";\n"
+                      << indent << "lagrange_sincos(" << slot[static_cast<std::size_t>(i.first)] << ", &"
+                      << names.temporary << sine << ", &" << names.temporary << cosine << ");\n";
+            continue;
+        }
         const std::string a = i.op == op::constant || i.op == op::symbol ? "" : slot[static_cast<std::size_t>(i.first)];
         const std::string b = i.op == op::add || i.op == op::mul ? slot[static_cast<std::size_t>(i.second)] : "";
         std::string value;
@@ -130,12 +149,8 @@ std::vector<std::string> write_program(const expression_program& program, dialec
             value = d == dialect::c ? "pow(" + a + ", " + float_decimal(i.value) + ")"
                                     : a + (d == dialect::python ? " ** " : " ^ ") + "(" + float_decimal(i.value) + ")";
             break;
-        case op::sine:
-            value = (d == dialect::python ? "np.sin(" : d == dialect::c ? "lagrange_sin(" : "sin(") + a + ")";
-            break;
-        case op::cosine:
-            value = (d == dialect::python ? "np.cos(" : d == dialect::c ? "lagrange_cos(" : "cos(") + a + ")";
-            break;
+        case op::sine: value = (d == dialect::python ? "np.sin(" : "sin(") + a + ")"; break;
+        case op::cosine: value = (d == dialect::python ? "np.cos(" : "cos(") + a + ")"; break;
         case op::exponential: value = (d == dialect::python ? "np.exp(" : "exp(") + a + ")"; break;
         case op::logarithm: value = (d == dialect::python ? "np.log(" : "log(") + a + ")"; break;
         }
