@@ -29,8 +29,15 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 /// Builds the instruction list, one slot per distinct subexpression.
 class compiler {
 public:
-    compiler(const std::vector<GiNaC::ex>& symbols, std::vector<instruction>& code, bool& algebraic)
-        : symbols_(symbols), code_(code), algebraic_(algebraic) {}
+    compiler(const std::vector<GiNaC::ex>& symbols, const std::vector<GiNaC::ex>& invariant,
+             std::vector<instruction>& code, bool& algebraic)
+        : symbols_(symbols), code_(code), algebraic_(algebraic)
+    {
+        if (!invariant.empty())
+            for (const GiNaC::ex& s : symbols)
+                if (std::none_of(invariant.begin(), invariant.end(), [&](const GiNaC::ex& i) { return i.is_equal(s); }))
+                    variant_.push_back(s);
+    }
 
     int slot(const GiNaC::ex& e) { return value(e, false); }
 
@@ -85,14 +92,37 @@ private:
         if (negate)
             coefficient = -coefficient;
         std::stable_sort(factors.begin(), factors.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        int product = coefficient == 1 || coefficient == -1 ? -1 : constant(coefficient);
+        const bool unit = coefficient == 1 || coefficient == -1;
+        std::size_t invariant = 0;
+        for (const auto& [key, f] : factors)
+            invariant += is_invariant(f) ? 1 : 0;
+        // With a coefficient or more than one invariant factor, and some that vary: those first.
+        const bool split = invariant > (unit ? 1 : 0) && invariant < factors.size();
+        int product = unit || split ? -1 : constant(coefficient);
+        if (split) {
+            GiNaC::ex part = unit ? GiNaC::ex(1) : GiNaC::ex(coefficient);
+            for (const auto& [key, f] : factors)
+                if (is_invariant(f))
+                    part *= keys_.factor(f).negative ? -f : f;
+            product = value(part, false);
+        }
         for (const auto& [key, f] : factors) {
+            if (split && is_invariant(f))
+                continue;
             int s = factor(f);
             product = product < 0 ? s : binary(instruction::code::mul, product, s);
         }
         if (product < 0)
             product = constant(GiNaC::numeric(1));
         return coefficient == -1 ? unary(instruction::code::neg, product) : product;
+    }
+
+    /// Whether e reads symbols, and none that varies between evaluations (false when no
+    /// symbol was named invariant).
+    bool is_invariant(const GiNaC::ex& e) const
+    {
+        return !variant_.empty() &&
+               std::none_of(variant_.begin(), variant_.end(), [&](const GiNaC::ex& s) { return e.has(s); });
     }
 
     /// The slot of a factor taken with its canonical sign.
@@ -229,6 +259,7 @@ private:
     /// wrote it (lookups only, never iterated).
     std::unordered_map<std::string, int> memo_;
     canonical_keys keys_;
+    std::vector<GiNaC::ex> variant_; ///< the symbols not named invariant, when some are
 };
 
 // ---- the three arithmetics, as overloads the interpreter picks from ----
@@ -719,9 +750,10 @@ void expression_program::check_block(const double* s, std::size_t count, a_prior
                                            : a_priori_status::holds;
 }
 
-expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols)
+expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols,
+                                       const std::vector<GiNaC::ex>& invariant)
 {
-    compiler build(symbols, code_, algebraic_);
+    compiler build(symbols, invariant, code_, algebraic_);
     // The same operations in every process: see compiler::value.
     for (const GiNaC::ex& e : outputs)
         outputs_.push_back(build.slot(e));

@@ -56,11 +56,15 @@ LAGRANGE_ALWAYS_INLINE inline bool in_a_priori_range(double magnitude)
 }
 
 /// Compiled from `outputs`, a list of expressions in `symbols`; throws
-/// std::invalid_argument naming any other symbol or unsupported function.
+/// std::invalid_argument naming any other symbol or unsupported function. `invariant`
+/// names symbols that keep their value from one evaluation to the next (parameters given
+/// as arguments): a product's part in them alone is computed as one value, shared by every
+/// product with the same part, before the rest is multiplied on.
 class expression_program {
 public:
     expression_program() = default;
-    expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols);
+    expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols,
+                       const std::vector<GiNaC::ex>& invariant = {});
 
     std::size_t output_count() const { return outputs_.size(); }
     /// The instructions, in order (slot k is instruction k), and the slot of each output:
