@@ -7,9 +7,12 @@
 
 #include "numeric/compiled_motion.h"
 #include "algebra/calculus.h"
+#include "algebra/budget.h"
+#include "algebra/canonical_order.h"
 #include "core/errors.h"
 #include "numeric/values.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -46,6 +49,37 @@ std::optional<expression_program> linear_program(const model& scene, const linea
     } catch (const std::invalid_argument&) {
         return std::nullopt; // not compilable: the export goes without it
     }
+}
+
+/// e as Σ c_k(p) x_k: its expanded terms grouped by their factors that vary (x_k, in the
+/// state, t and u), and each group's parameter factors summed (c_k, a value of the parameters
+/// alone that the program computes once). As the engine's own code has it, where the values
+/// fold into one number per x_k; here a 10-link chain's forcing would otherwise multiply each
+/// mass in apart. e as it is when expanding it would more than double it.
+GiNaC::ex collected_by_state(const GiNaC::ex& e, const std::vector<GiNaC::ex>& varying)
+{
+    if (expanded_terms(e, 2 * e.nops() + 64) > 2 * e.nops() + 64)
+        return e;
+    const GiNaC::ex expanded = e.expand();
+    if (!GiNaC::is_a<GiNaC::add>(expanded))
+        return e;
+    auto varies = [&](const GiNaC::ex& f) {
+        return std::any_of(varying.begin(), varying.end(), [&](const GiNaC::ex& v) { return f.has(v); });
+    };
+    canonical_keys keys;
+    std::map<std::string, std::pair<GiNaC::ex, GiNaC::ex>> groups; // x_k's key → (x_k, c_k)
+    for (const GiNaC::ex& term : expanded) {
+        GiNaC::ex constant = 1, variable = 1;
+        for (const GiNaC::ex& f : GiNaC::is_a<GiNaC::mul>(term) ? GiNaC::exvector(term.begin(), term.end())
+                                                                 : GiNaC::exvector{term})
+            (varies(f) ? variable : constant) *= f;
+        auto [at, fresh] = groups.try_emplace(keys.key(variable), variable, 0);
+        at->second.second += constant;
+    }
+    GiNaC::ex out = 0;
+    for (const auto& [key, group] : groups)
+        out += GiNaC::collect_common_factors(group.second) * group.first;
+    return out;
 }
 
 } // namespace
@@ -89,11 +123,14 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
     // M and F as the engine compiles them: F without its cancelling terms, and both through the
     // sines and cosines of the single angles, fewer sines and cosines, each dearer than the
     // products that replace them (docs/benchmarks.md, "Exported code").
+    std::vector<GiNaC::ex> varying(symbols.begin(), symbols.begin() + static_cast<std::ptrdiff_t>(2 * n + 1));
+    for (const input_signal& u : scene.inputs)
+        varying.push_back(u.symbol);
     std::vector<GiNaC::ex> forcing;
     for (const GiNaC::ex& f : equations.forcing)
-        forcing.push_back(expand_angle_sums(cancelled(f)));
+        forcing.push_back(collected_by_state(expand_angle_sums(cancelled(f)), varying));
     for (GiNaC::ex& e : mass)
-        e = expand_angle_sums(e);
+        e = collected_by_state(expand_angle_sums(e), varying);
     std::vector<GiNaC::ex> constraint_parts, constraint_derivatives;
     if (equations.constraints) {
         const constraint_equations& c = *equations.constraints;
@@ -118,17 +155,24 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
             out.constraint_names.push_back(k.name);
         }
     }
+    // The parameters keep their values from call to call: each product's parameter factors
+    // are one value, shared, that the state is multiplied onto.
+    const std::vector<GiNaC::ex> parameters(symbols.begin() + static_cast<std::ptrdiff_t>(2 * n + 1),
+                                            symbols.begin() + static_cast<std::ptrdiff_t>(2 * n + 1 + scene.parameters.size()));
+    auto program = [&](const std::vector<GiNaC::ex>& outputs) {
+        return expression_program(outputs, symbols, parameters);
+    };
     try {
-        out.mass = expression_program(mass, symbols);
+        out.mass = program(mass);
         std::vector<GiNaC::ex> both = mass;
         both.insert(both.end(), forcing.begin(), forcing.end());
-        out.mass_and_forcing = expression_program(both, symbols);
-        out.forcing = expression_program(forcing, symbols);
-        out.energy = expression_program({equations.energy}, symbols);
-        out.derivatives = expression_program(derivatives, symbols);
+        out.mass_and_forcing = program(both);
+        out.forcing = program(forcing);
+        out.energy = program({equations.energy});
+        out.derivatives = program(derivatives);
         if (!constraint_parts.empty()) {
-            out.constraint_parts = expression_program(constraint_parts, symbols);
-            out.constraint_derivatives = expression_program(constraint_derivatives, symbols);
+            out.constraint_parts = program(constraint_parts);
+            out.constraint_derivatives = program(constraint_derivatives);
         }
     } catch (const std::invalid_argument& error) {
         throw computation_error(std::string("the equations of motion cannot be exported: ") + error.what());
@@ -146,7 +190,7 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
             out.conserved_names.push_back("p_" + scene.coordinates[conserved->cyclic[k]].name);
         }
         if (!quantities.empty())
-            out.conserved = expression_program(quantities, symbols);
+            out.conserved = program(quantities);
     }
 
     // Defaults: the first `values` line, where it gives a number (an expression in other
