@@ -309,17 +309,20 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
     if (powers)
         c << "static double lagrange_ipow(double a, int n)\n{\n    double r = 1.0;\n    int k = n < 0 ? -n : n;\n"
           << "    for (; k > 0; --k)\n        r *= a;\n    return n < 0 ? 1.0 / r : r;\n}\n\n";
-    // LDLᵀ without square roots, as the engine's own solve (numeric/mass_matrix.h).
+    // LDLᵀ without square roots, as the engine's own solve (numeric/mass_matrix.h), with row j
+    // of L D kept once instead of multiplied again for every row below it.
     if (!constrained)
         c << "/* The LDL^T factor of a (row-major, in place: L below the diagonal, D on it): 1 if a is not\n"
       << "   positive definite. */\n"
-      << "static int lagrange_factor(double *a)\n{\n    int i, j, k;\n    for (j = 0; j < " << nq << "; ++j) {\n"
-      << "        double d = a[j * " << nq << " + j];\n        for (k = 0; k < j; ++k)\n"
-      << "            d -= a[j * " << nq << " + k] * a[j * " << nq << " + k] * a[k * " << nq << " + k];\n"
+      << "static int lagrange_factor(double *a)\n{\n    double w[" << nq << "]; /* row j of L times D */\n"
+      << "    int i, j, k;\n    for (j = 0; j < " << nq << "; ++j) {\n"
+      << "        double d = a[j * " << nq << " + j];\n        for (k = 0; k < j; ++k) {\n"
+      << "            w[k] = a[j * " << nq << " + k] * a[k * " << nq << " + k];\n"
+      << "            d -= a[j * " << nq << " + k] * w[k];\n        }\n"
       << "        if (!(d > 0.0))\n            return 1;\n        a[j * " << nq << " + j] = d;\n"
       << "        for (i = j + 1; i < " << nq << "; ++i) {\n            double s = a[i * " << nq << " + j];\n"
       << "            for (k = 0; k < j; ++k)\n"
-      << "                s -= a[i * " << nq << " + k] * a[j * " << nq << " + k] * a[k * " << nq << " + k];\n"
+      << "                s -= a[i * " << nq << " + k] * w[k];\n"
       << "            a[i * " << nq << " + j] = s / d;\n        }\n    }\n    return 0;\n}\n\n"
       << "/* Solves L D L^T y = b in place, b of NQ entries. */\n"
       << "static void lagrange_solve(const double *l, double *b)\n{\n    int i, k;\n"
