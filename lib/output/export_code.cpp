@@ -114,13 +114,14 @@ std::vector<std::string> write_program(const expression_program& program, dialec
         for (std::size_t k = 0; k < code.size(); ++k)
             if (code[k].op == op::sine || code[k].op == op::cosine) {
                 auto [at, fresh] = pairs.try_emplace(code[k].first, code.size() + k, code.size() + k);
-                (code[k].op == op::sine ? at->second.first : at->second.second) = k;
+                std::size_t& first = code[k].op == op::sine ? at->second.first : at->second.second;
+                first = std::min(first, k); // a repeated one reads the first's value
             }
     for (std::size_t k = 0; k < code.size(); ++k) {
         const instruction& i = code[k];
         if (d == dialect::c && (i.op == op::sine || i.op == op::cosine)) {
             const auto [sine, cosine] = pairs.at(i.first);
-            slot[k] = names.temporary + std::to_string(k);
+            slot[k] = names.temporary + std::to_string(i.op == op::sine ? sine : cosine);
             if (k == std::min(sine, cosine))
                 lines << indent << "double " << names.temporary << sine << ", " << names.temporary << cosine << ";\n"
                       << indent << "lagrange_sincos(" << slot[static_cast<std::size_t>(i.first)] << ", &"

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -641,4 +642,33 @@ int main(void)
     CHECK(r[3] == 1.0); // NaN in, NaN out
     CHECK(r[4] == 1.0); // and for an infinity
 
+}
+
+TEST_CASE("export: every example and test scene that exports compiles warning-free as C", "[export][cc]")
+{
+    // Beyond the five equivalence cases: every scene the engine exports (the rest exit 1 with
+    // their reason), held to -Werror, so that no form of its programs writes invalid C. At -O0:
+    // the front end's errors and warnings are the point here, and the equivalence cases
+    // compile at -O2.
+    std::vector<std::string> scenes = example_scenes();
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(LAGRANGE_SOURCE_DIR) + "/tests/scenes"))
+        if (entry.path().extension() == ".lag")
+            scenes.push_back(entry.path().string());
+    std::sort(scenes.begin(), scenes.end());
+    const std::string cc = configured_compiler();
+    int exported = 0;
+    for (const std::string& scene : scenes) {
+        INFO(scene);
+        const std::string folder = folder_for("c-all-" + std::to_string(exported) + "-" +
+                                              scene.substr(scene.rfind('/') + 1, scene.size() - scene.rfind('/') - 5));
+        const cli_result r = run_cli("export " + scene + " --to c -o " + folder + " --name scene", "", 120);
+        REQUIRE((r.exit_code == 0 || r.exit_code == 1));
+        if (r.exit_code == 1)
+            continue;
+        ++exported;
+        CHECK(run_shell("cd " + folder + " && " + cc +
+                        " -std=c99 -Wall -Wextra -pedantic -Werror -O0 -c scene.c 2>&1 && echo compiled") ==
+              "compiled\n");
+    }
+    CHECK(exported >= 50);
 }
