@@ -53,9 +53,9 @@ std::optional<expression_program> linear_program(const model& scene, const linea
 
 /// e as Σ c_k(p) x_k: its expanded terms grouped by their factors that vary (x_k, in the
 /// state, t and u), and each group's parameter factors summed (c_k, a value of the parameters
-/// alone that the program computes once). As the engine's own code has it, where the values
-/// fold into one number per x_k; here a 10-link chain's forcing would otherwise multiply each
-/// mass in apart. e as it is when expanding it would more than double it.
+/// alone that the program computes once). The engine's own code has this by folding the
+/// values into one number per x_k; without it a 10-link chain's M and F multiply each mass
+/// in apart. e as it is when its expansion would have over 2·(its operands) + 64 terms.
 GiNaC::ex collected_by_state(const GiNaC::ex& e, const std::vector<GiNaC::ex>& varying)
 {
     if (expanded_terms(e, 2 * e.nops() + 64) > 2 * e.nops() + 64)
@@ -121,8 +121,8 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
         for (const input_signal& u : scene.inputs)
             derivatives.push_back(differentiate(f, u.symbol));
     // M and F as the engine compiles them: F without its cancelling terms, and both through the
-    // sines and cosines of the single angles, fewer sines and cosines, each dearer than the
-    // products that replace them (docs/benchmarks.md, "Exported code").
+    // sines and cosines of the single angles (fewer of them, each dearer than the products that
+    // replace them), then collected by their varying factors (docs/benchmarks.md, "Exported code").
     std::vector<GiNaC::ex> varying(symbols.begin(), symbols.begin() + static_cast<std::ptrdiff_t>(2 * n + 1));
     for (const input_signal& u : scene.inputs)
         varying.push_back(u.symbol);

@@ -17,9 +17,9 @@ namespace {
 
 /// Sines and cosines written out, because the target holds to <math.h> and libm's calls were
 /// most of a right-hand side's time: one call gives an argument's sine and cosine (see
-/// write_program), and inlined, several arguments overlap. fdlibm's reduction by π/2 in four parts (each product exact
-/// for |x| ≤ 8e5) and its kernel polynomials on [−π/4, π/4], in Estrin's order; within 2 ulp
-/// of the exact values there, libm's sin and cos beyond (and for NaN and infinities).
+/// write_program), and inlined, several arguments overlap. fdlibm's reduction by π/2 in four
+/// parts (each product exact for |x| ≤ 8e5) and its kernel polynomials on [−π/4, π/4], in
+/// Estrin's order: within 2 ulp there; libm's sin and cos beyond, and for NaN and infinities.
 constexpr const char* sincos_source = R"(/* sin(x) and cos(x) together, within 2 ulp for |x| <= 8e5 (fdlibm's reduction and
    kernels); libm's beyond. */
 static inline void lagrange_sincos(double x, double *s, double *c)
