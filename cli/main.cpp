@@ -443,6 +443,7 @@ int ensemble_command(const ensemble_options& options, const lagrange::budget_lim
 struct poincare_options {
     std::string scene_path;
     std::string section;
+    std::string axes;
     double energy = 0;
     std::size_t orbits = lagrange::poincare_settings{}.orbits;
     std::size_t crossings = lagrange::poincare_settings{}.crossings;
@@ -472,6 +473,9 @@ int poincare_command(const poincare_options& options, const lagrange::budget_lim
     }
     lagrange::model scene = load_scene(options.scene_path, options.values, {}, budget.max_seconds);
     const lagrange::poincare_section section = lagrange::parse_poincare_section(options.section, scene);
+    const lagrange::poincare_axes axes = options.axes.empty()
+                                             ? lagrange::default_poincare_axes(scene, section)
+                                             : lagrange::parse_poincare_axes(options.axes, scene, section);
     lagrange::poincare_settings settings;
     settings.energy = options.energy;
     settings.orbits = options.orbits;
@@ -488,6 +492,7 @@ int poincare_command(const poincare_options& options, const lagrange::budget_lim
     } catch (const lagrange::poincare_request_error& error) {
         throw usage_error(error.what());
     }
+    section_result.axes = axes;
     if (csv) {
         std::ostringstream out;
         lagrange::write_poincare_csv(out, section_result);
@@ -845,6 +850,9 @@ int run(int argc, char** argv)
     poincare->add_option("SCENE", poincare_options.scene_path, "the scene file (`-` for standard input)")->required();
     poincare->add_option("--section", poincare_options.section, "the section: \"q = level\" or \"q = level, q' > 0\"")
         ->required();
+    poincare->add_option("--axes", poincare_options.axes,
+                         "the picture's two axes: coordinates or velocities other than the section's, such as \"y, y'\" "
+                         "(default: the first other coordinate and its velocity)");
     poincare->add_option("--energy", poincare_options.energy, "the energy of every orbit")
         ->required()
         ->check(finite_number);
