@@ -413,10 +413,46 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
         if (!fixed || !turns_or_moves)
             continue;
         held[pivot] = true;
-        if (distance(0, c, pivot) > 1e-9 * frames.bodies[b].size)
+        // A rod to the centre, unless the outline already reaches the pivot (a stick hung by its end).
+        bool reaches = false;
+        for (const auto& line : frames.bodies[b].outline)
+            for (const point3& r : line)
+                reaches = reaches || std::hypot(r[0] - first[0], r[1] - first[1], r[2] - first[2]) <=
+                                         1e-6 * frames.bodies[b].size;
+        if (!reaches && distance(0, c, pivot) > 1e-9 * frames.bodies[b].size)
             frames.rods.push_back({c, pivot});
     }
     frames.markers[pivot].name = held[pivot] ? "pivot" : "";
+    // The ground: where the pivot is fixed, normal to gravity (its direction is normalized).
+    if (held[pivot] && scene.gravity) {
+        double g[3] = {0, 0, 0};
+        for (std::size_t k = 0; k < scene.gravity->direction.size() && k < 3; ++k)
+            g[k] = real_value(at_values(scene.gravity->direction[k], scene, values), "gravity's direction");
+        // u: the coordinate axis least along g, made normal to it; v = g × u.
+        std::size_t least = 0;
+        for (std::size_t k = 1; k < 3; ++k)
+            if (std::abs(g[k]) < std::abs(g[least]))
+                least = k;
+        double u[3] = {0, 0, 0};
+        u[least] = 1;
+        for (int k = 0; k < 3; ++k)
+            u[k] -= g[least] * g[k];
+        const double norm = std::hypot(u[0], u[1], u[2]);
+        animation_frames::ground_square ground;
+        for (int k = 0; k < 3; ++k)
+            ground.u[static_cast<std::size_t>(k)] = u[k] / norm;
+        ground.v = {g[1] * ground.u[2] - g[2] * ground.u[1], g[2] * ground.u[0] - g[0] * ground.u[2],
+                    g[0] * ground.u[1] - g[1] * ground.u[0]};
+        double reach = 0;
+        for (std::size_t f = 0; f < frames.times.size(); ++f)
+            for (std::size_t k = 0; k < m; ++k)
+                if (k != pivot && !frames.markers[k].name.empty())
+                    reach = std::max(reach, distance(f, k, pivot));
+        for (const auto& body : frames.bodies)
+            reach = std::max(reach, body.size);
+        ground.half_width = reach / 4;
+        frames.ground = ground;
+    }
     for (std::size_t s = 0; s < supports.size(); ++s)
         frames.markers[pivot + 1 + s].name = held[pivot + 1 + s] ? "support" : "";
     return frames;

@@ -57,6 +57,14 @@ struct animation_frames {
     std::vector<body_drawing> bodies;
     /// Frame after frame, each body's rotation R (its axes' components in the scene's), row by row.
     std::vector<double> rotations;
+    /// The ground the pivot is fixed in, when the scene has gravity and a pivot holds something:
+    /// a square through the pivot, normal to gravity (seen edge-on, a line, in a planar view).
+    struct ground_square {
+        std::array<double, 3> centre{}; ///< the pivot
+        std::array<double, 3> u{}, v{}; ///< two unit vectors in it, normal to gravity
+        double half_width = 0;          ///< a quarter of the largest distance from the pivot drawn
+    };
+    std::optional<ground_square> ground;
     std::size_t dimensions = 2;     ///< 2 when every position is planar, else 3
     double step = 0;                ///< simulated time between frames (1/fps)
     std::vector<double> times;

@@ -211,6 +211,14 @@ const char* const player_script = R"JS(
         g.lineTo(at[m][0], at[m][1]); g.stroke();
       }
     }
+    // The ground through the pivot: a grid square normal to gravity (a line seen edge-on).
+    if (D.ground) {
+      const G = D.ground, at = (a, b) => [0, 1, 2].map(k => G.centre[k] + G.half * (a * G.u[k] + b * G.v[k]));
+      for (let k = -2; k <= 2; ++k) {
+        polyline([at(k / 2, -1), at(k / 2, 1)], "#bbb", 1.5);
+        polyline([at(-1, k / 2), at(1, k / 2)], "#bbb", 1.5);
+      }
+    }
     // The bodies: outlines turned to time t, and their axes 1, 2, 3 from the centre of mass.
     const turns = rotationsAt(t);
     for (let b = 0; b < B; ++b) {
@@ -325,7 +333,15 @@ std::string animation_html(const animation_frames& frames, const animation_view&
     data << "],\"rotations\":[";
     for (std::size_t k = 0; k < frames.rotations.size(); ++k)
         data << (k ? "," : "") << shortest(frames.rotations[k]);
-    data << "],\"times\":[";
+    data << "]";
+    if (frames.ground) {
+        const auto& g = *frames.ground;
+        data << ",\"ground\":{\"centre\":[" << shortest(g.centre[0]) << "," << shortest(g.centre[1]) << ","
+             << shortest(g.centre[2]) << "],\"u\":[" << shortest(g.u[0]) << "," << shortest(g.u[1]) << ","
+             << shortest(g.u[2]) << "],\"v\":[" << shortest(g.v[0]) << "," << shortest(g.v[1]) << ","
+             << shortest(g.v[2]) << "],\"half\":" << shortest(g.half_width) << "}";
+    }
+    data << ",\"times\":[";
     for (std::size_t f = 0; f < frames.times.size(); ++f)
         data << (f ? "," : "") << shortest(frames.times[f]);
     data << "],\"positions\":[";

@@ -227,6 +227,19 @@ void draw_points(cairo_t* g, const canvas_view& v, const animation_frames& frame
             path.push_back(marker_at(frames, s, m));
         polyline(g, v, path, 0x8fbbd9, 1.5);
     }
+    if (frames.ground) {
+        // The ground through the pivot: a grid square normal to gravity (a line when seen edge-on).
+        const auto& s = *frames.ground;
+        for (int k = -2; k <= 2; ++k) {
+            auto at = [&](double a, double b) {
+                return point3{s.centre[0] + s.half_width * (a * s.u[0] + b * s.v[0]),
+                              s.centre[1] + s.half_width * (a * s.u[1] + b * s.v[1]),
+                              s.centre[2] + s.half_width * (a * s.u[2] + b * s.v[2])};
+            };
+            polyline(g, v, {at(k / 2.0, -1), at(k / 2.0, 1)}, 0xbbbbbb, 1.5);
+            polyline(g, v, {at(-1, k / 2.0), at(1, k / 2.0)}, 0xbbbbbb, 1.5);
+        }
+    }
     draw_bodies(g, v, frames, f);
     for (const auto& rod : frames.rods)
         polyline(g, v, {marker_at(frames, f, rod.a), marker_at(frames, f, rod.b)}, 0x444444, 3);

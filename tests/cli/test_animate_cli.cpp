@@ -423,6 +423,49 @@ TEST_CASE("cli: animate draws placed rigid bodies by shape and pivot, in the pag
         CHECK(std::abs(body["size"].get<double>() - 0.75) <= 1e-12);
     }
     CHECK(pair["view"] == "xy"); // the sticks stay in the plane
+    // The upper stick reaches the pivot itself: a pivot, and no rod to its centre.
+    bool pair_pivot = false;
+    for (const auto& marker : pair["markers"])
+        pair_pivot = pair_pivot || marker["name"] == "pivot";
+    CHECK(pair_pivot);
+    CHECK(pair["rods"].empty());
+    // The ground through the pivot, normal to gravity (0, -1, 0): u and v in the xz plane.
+    REQUIRE(pair.contains("ground"));
+    for (const char* axis : {"u", "v"}) {
+        CHECK(std::abs(pair["ground"][axis][1].get<double>()) <= 1e-15);
+        CHECK(std::abs(std::hypot(pair["ground"][axis][0].get<double>(), pair["ground"][axis][2].get<double>()) - 1) <=
+              1e-15);
+    }
+    CHECK(pair["ground"]["half"].get<double>() > 0);
+    // The heavy top's ground is normal to (0, 0, -1).
+    REQUIRE(data.contains("ground"));
+    CHECK(std::abs(data["ground"]["u"][2].get<double>()) <= 1e-15);
+    CHECK(std::abs(data["ground"]["v"][2].get<double>()) <= 1e-15);
+}
+
+TEST_CASE("cli: animate draws a moving support and ties the point to it", "[cli][animate]")
+{
+    // The Kapitza pendulum: the bob at (l sin φ, a cos γt − l cos φ) hangs from the support
+    // (0, a cos γt), which moves with t alone (a = 0.05, γ = 120, l = 1).
+    const std::string html = temporary_file("kapitza.html", "");
+    REQUIRE(run_cli("animate " + std::string(LAGRANGE_SOURCE_DIR) + "/examples/kapitza_pendulum.lag --values gamma=120 --until 0.5 "
+                    "--fps 40 -o " + html, "", 60).exit_code == 0);
+    const nlohmann::json data = page_data(read_file(html));
+    const std::size_t markers = data["markers"].size();
+    std::size_t support = markers;
+    for (std::size_t m = 0; m < markers; ++m)
+        if (data["markers"][m]["name"] == "support")
+            support = m;
+    REQUIRE(support < markers);
+    REQUIRE(data["rods"].size() == 1);
+    CHECK(data["rods"][0][0] == 0);
+    CHECK(data["rods"][0][1] == support);
+    for (std::size_t f = 0; f < data["times"].size(); ++f) {
+        const double t = data["times"][f];
+        CHECK(std::abs(data["positions"][(f * markers + support) * 3].get<double>()) <= 1e-15);
+        CHECK(std::abs(data["positions"][(f * markers + support) * 3 + 1].get<double>() - 0.05 * std::cos(120 * t)) <=
+              1e-12);
+    }
 }
 
 TEST_CASE("cli: animate's video draws each rod's tip and axis where the simulation's orientation puts them",
