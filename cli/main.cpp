@@ -559,6 +559,7 @@ struct animate_options {
     std::optional<double> until;
     std::optional<double> tolerance;
     bool interpret = false;
+    bool project_initial = false;
     std::vector<std::string> values;
     std::vector<std::string> initial;
 };
@@ -584,6 +585,7 @@ int animate_command(const animate_options& options, const lagrange::budget_limit
     else if (scene.simulation && scene.simulation->tolerance)
         settings.tolerance = lagrange::real_value(*scene.simulation->tolerance, "the scene's tolerance");
     settings.native = !options.interpret;
+    settings.project_initial = options.project_initial;
     lagrange::animation_view view{options.speed, options.trail, options.view, options.fps};
     if (video) {
         lagrange::check_video_encoder(options.output); // says why before the work
@@ -910,6 +912,7 @@ int run(int argc, char** argv)
         ->check(finite_number & CLI::Range(1e-14, 0.5));
     animate->add_option("--values", animate_options.values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
     animate->add_option("--initial", animate_options.initial, initial_help);
+    animate->add_flag("--project-initial", animate_options.project_initial, project_initial_help);
     animate->add_flag("--interpret", animate_options.interpret,
                       "evaluate the equations with the interpreter (default: machine code by the system's C compiler)");
 

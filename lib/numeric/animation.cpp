@@ -8,6 +8,7 @@
 #include "core/number_text.h"
 
 #include "numeric/compiled_motion.h"
+#include "numeric/constrained_motion.h"
 #include "numeric/ode.h"
 #include "numeric/values.h"
 #include "program/expression_program.h"
@@ -16,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 
 namespace lagrange {
 
@@ -225,8 +228,6 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
     if (scene.points.empty() && placed.empty())
         throw computation_error("the scene has no points or placed bodies to animate (a free body is drawn by "
                                 "Poinsot's construction)");
-    if (equations.constraints)
-        throw computation_error("animations of scenes with constraints are not implemented");
     const double until = animation_length(scene, settings);
     const std::map<std::string, GiNaC::ex> values = merged_values(scene);
 
@@ -299,22 +300,62 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
         throw computation_error(std::string("the positions cannot be compiled: ") + error.what());
     }
 
-    // The motion at the frame times, from DOP853's dense output.
-    compiled_motion motion(scene, equations, values);
-    if (settings.native)
-        motion.compile_native_rhs(); // DOP853 never calls the Jacobian
-    const std::vector<double> x0 = initial_state_vector(scene, values);
-    std::vector<double> start = x0;
-    start.resize(motion.dimension(), 0.0);
+    // The motion at the frame times: from DOP853's dense output; with constraints, as
+    // `simulate` runs them (constrained_motion.h): DOP853 from one frame to the next, the state
+    // projected back onto the constraints after each.
     const std::size_t count = static_cast<std::size_t>(std::floor(until * settings.fps + 1e-9)) + 1;
-    integration_options options;
-    options.until = until;
-    options.tolerance = std::max(settings.tolerance / 12, 1e-15); // per step ÷12, as simulate's DOP853
+    std::vector<double> times;
     for (std::size_t f = 0; f < count; ++f)
-        options.times.push_back(std::min(until, static_cast<double>(f) / settings.fps));
-    if (options.times.back() < until)
-        options.times.push_back(until);
-    const trajectory run = integrate(motion.system(), ode_method::dop853, start, options);
+        times.push_back(std::min(until, static_cast<double>(f) / settings.fps));
+    if (times.back() < until)
+        times.push_back(until);
+    const double tolerance = std::max(settings.tolerance / 12, 1e-15); // per step ÷12, as simulate's DOP853
+    trajectory run;
+    std::function<double(const double*)> energy_of;
+    if (equations.constraints) {
+        auto motion = std::make_shared<constrained_motion>(scene, equations, values);
+        std::vector<double> x = initial_state_vector(scene, values);
+        if (motion->residual(0, x.data()) > settings.tolerance) { // bad input, located as simulate does
+            std::vector<double> projected = x;
+            motion->project(0, projected.data());
+            const bool converged = motion->residual(0, projected.data()) <= settings.tolerance;
+            if (!settings.project_initial || !converged)
+                throw off_constraints(scene, *motion, x, converged ? &projected : nullptr, settings.tolerance);
+            x = projected;
+        }
+        run.method = "dop853, projected onto the constraints after each frame";
+        run.times.push_back(times[0]);
+        run.states.push_back(x);
+        for (std::size_t f = 1; f < times.size(); ++f) {
+            integration_options options;
+            options.start = times[f - 1];
+            options.until = times[f];
+            options.tolerance = tolerance;
+            options.outputs = false;
+            options.keep_states = false;
+            const trajectory piece = integrate(motion->system(), ode_method::dop853, x, options);
+            run.steps += piece.steps;
+            x = piece.final_state;
+            motion->project(times[f], x.data());
+            run.times.push_back(times[f]);
+            run.states.push_back(x);
+        }
+        if (motion->conservative())
+            energy_of = [motion](const double* state) { return motion->energy(state); };
+    } else {
+        auto motion = std::make_shared<compiled_motion>(scene, equations, values);
+        if (settings.native)
+            motion->compile_native_rhs(); // DOP853 never calls the Jacobian
+        std::vector<double> start = initial_state_vector(scene, values);
+        start.resize(motion->dimension(), 0.0);
+        integration_options options;
+        options.until = until;
+        options.tolerance = tolerance;
+        options.times = times;
+        run = integrate(motion->system(), ode_method::dop853, start, options);
+        if (motion->conservative())
+            energy_of = [motion](const double* state) { return motion->energy(state); };
+    }
     frames.method = run.method;
     frames.steps = run.steps;
     frames.times = run.times;
@@ -322,15 +363,15 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
     frames.positions.resize(run.times.size() * m * 3);
     frames.rotations.resize(run.times.size() * nb * 9);
     std::vector<double> symbols(2 * n + 1), scratch;
-    const double h0 = motion.conservative() ? motion.energy(run.states.front().data()) : 0;
+    const double h0 = energy_of ? energy_of(run.states.front().data()) : 0;
     for (std::size_t f = 0; f < run.times.size(); ++f) {
         std::copy(run.states[f].begin(), run.states[f].begin() + static_cast<long>(2 * n), symbols.begin());
         symbols[2 * n] = run.times[f];
         positions.run(symbols.data(), scratch, frames.positions.data() + f * m * 3);
         if (nb)
             rotations.run(symbols.data(), scratch, frames.rotations.data() + f * nb * 9);
-        if (motion.conservative())
-            frames.energy_drift.push_back(motion.energy(run.states[f].data()) - h0);
+        if (energy_of)
+            frames.energy_drift.push_back(energy_of(run.states[f].data()) - h0);
     }
     // Planar when nothing drawn ever leaves z = 0 (the model may keep planar points in three
     // components): no marker, and no body outline once turned.

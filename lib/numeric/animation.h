@@ -27,6 +27,9 @@ struct animation_settings {
     std::optional<double> until;    ///< overrides the scene's `simulate until`
     double tolerance = 1e-9;        ///< target of the relative error (per step ÷12, as simulate)
     bool native = true;
+    /// An initial state off the constraints is an error unless this asks to move it onto
+    /// them by least change (`--project-initial`), as for simulate.
+    bool project_initial = false;
 };
 
 struct animation_frames {
@@ -84,8 +87,10 @@ struct animation_frames {
     }
 };
 
-/// Throws computation_error for a scene with nothing to draw (no points, no placed bodies),
-/// constraints, or no end time; the integration's own errors pass through.
+/// A scene with constraints runs as `simulate` runs it: DOP853 from frame to frame, projected
+/// onto the constraints after each. Throws computation_error for a scene with nothing to draw
+/// (no points, no placed bodies), an initial state off the constraints, or no end time; the
+/// integration's own errors pass through.
 animation_frames compute_animation(const model& scene, const equations_of_motion& equations,
                                    const animation_settings& settings);
 
