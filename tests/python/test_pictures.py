@@ -108,3 +108,14 @@ def test_a_runs_animate_is_the_scenes_player_of_that_run():
     assert type(animation).__name__ == "Animation"
     assert animation.html == scene.animate(until=2, fps=10, tolerance=1e-8, initial={"theta": 0.4}).html
     assert animation.html != scene.animate(until=2, fps=10, tolerance=1e-8).html
+
+
+def test_animate_keeps_a_constraint_and_projects_only_when_asked():
+    # The Cartesian rod pendulum x² + y² = l² (l = 2), started off the circle.
+    scene = lagrange.Scene.from_text("scene \"Rod\"\nparameters m g l\ncoordinates x y\npoint P mass m at (x, y)\n"
+                           "gravity g along (0, -1)\nconstraint rod: x^2 + y^2 = l^2\nvalues m = 1, g = 9.81, l = 2\n"
+                           "initial x = 1.2, y = -1.5\n")
+    with pytest.raises(lagrange.SceneError, match="off the constraints"):
+        scene.animate(until=1, fps=10)
+    page = scene.animate(until=1, fps=10, project_initial=True)
+    assert "lagrangePlayer" in page._repr_html_()
