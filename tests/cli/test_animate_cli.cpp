@@ -383,7 +383,7 @@ framing page_framing(const nlohmann::json& data, int smaller_side)
 
 } // namespace
 
-TEST_CASE("cli: animate draws placed rigid bodies by shape and pivot, in the page's data", "[cli][animate]")
+TEST_CASE("cli: animate draws placed rigid bodies by shape and pivot in the page's data", "[cli][animate]")
 {
     // The heavy top: a body given by its inertia is drawn as the ellipsoid of the uniform solid
     // with the same moments (semi-axes sqrt(5 (I_j + I_k - I_i) / 2M)), held by a rod to the
@@ -560,7 +560,7 @@ TEST_CASE("cli: the player draws placed bodies at the simulation's pose", "[cli]
     CHECK(shots[0] != shots[1]);
 }
 
-TEST_CASE("cli: animate runs a scene with constraints as simulate does, the rod kept", "[cli][animate]")
+TEST_CASE("cli: animate runs a scene with constraints as simulate does and keeps the rod", "[cli][animate]")
 {
     // A pendulum in Cartesian coordinates held by the constraint x² + y² = l² (l = 2): every
     // frame on the circle, the rod to the pivot drawn, and the frames where `simulate` puts the bob.

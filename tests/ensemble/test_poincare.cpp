@@ -158,7 +158,7 @@ TEST_CASE("poincare: a bad --section is an error located in the option", "[ensem
     CHECK(lagrange::parse_poincare_section(" x=0.5 ", scene).direction == 0);
 }
 
-TEST_CASE("poincare: three uncoupled oscillators keep each free oscillator on its ellipse, on any number of threads",
+TEST_CASE("poincare: three uncoupled oscillators keep each free oscillator on its ellipse on any number of threads",
           "[ensemble][poincare]")
 {
     // The section x = 0, x' > 0 of three coordinates has four dimensions (y, z, y', z'); each
@@ -254,7 +254,7 @@ TEST_CASE("poincare: the starts of three oscillators fill the section's energy e
     }
 }
 
-TEST_CASE("poincare: --axes picks two of the section's quantities, and a scene of one coordinate is refused",
+TEST_CASE("poincare: --axes picks two of the section's quantities and a scene of one coordinate is refused",
           "[ensemble][poincare]")
 {
     lagrange::model scene = load(read_file(scenes + "three_oscillators.lag"));
