@@ -637,8 +637,11 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
                           (section.direction != 0 ? 0.0 : f.a(free[a], k) * f.a(k, free[b]) / f.a(k, k));
         return s;
     };
-    // The largest |v_j| in that ellipsoid: sqrt(2 (E − V) (S⁻¹)_jj).
+    // One free coordinate: the largest |v| there, sqrt(2 (E − V) / S), bounds the velocity's
+    // draw. More: the volume of the velocity ellipsoid at q, ∝ w(q) = (E − V)^(m/2) / sqrt(det S),
+    // weighs the positions' draw (its largest, over the grid, bounds it).
     region.widest.assign(n, 0.0);
+    double heaviest = 0;
     const std::size_t speed_grid =
         m == 1 ? 257 : static_cast<std::size_t>(std::ceil(std::pow(256.0, 1.0 / m))) + 1;
     std::fill(index.begin(), index.end(), 0);
@@ -653,11 +656,9 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
             region.widest[free[0]] = std::max(region.widest[free[0]], stiff > 0 ? std::sqrt(2 * room / stiff) : 0.0);
         } else if (room > 0) {
             Eigen::LLT<Eigen::MatrixXd> factor(s);
-            if (factor.info() == Eigen::Success) {
-                const Eigen::MatrixXd inverse = factor.solve(Eigen::MatrixXd::Identity(m, m));
-                for (std::size_t i = 0; i < m; ++i)
-                    region.widest[free[i]] = std::max(region.widest[free[i]], std::sqrt(2 * room * inverse(i, i)));
-            }
+            if (factor.info() == Eigen::Success)
+                heaviest = std::max(heaviest, std::pow(room, 0.5 * static_cast<double>(m)) /
+                                                  factor.matrixL().toDenseMatrix().diagonal().prod());
         }
         more = false;
         for (std::size_t i = 0; i < m && !more; ++i) {
@@ -668,7 +669,9 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
         }
     }
     for (double& w : region.widest)
-        w *= m == 1 ? 1.05 : 1.25; // the grid misses the peak between its points
+        w *= 1.05; // the grid misses the peak between its points
+    heaviest *= 1.25;
+    std::atomic<std::size_t> overweight{0}; // starts whose weight passed the bound (a bias)
 
     auto wrap = [&](std::size_t c, double value) {
         if (!periodic[c])
@@ -677,21 +680,25 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
         return reference + std::remainder(value - reference, 2 * pi);
     };
 
-    // Orbit `index`'s start: uniform over the free coordinates and velocities (q_J, q̇_J) of the
-    // box, by rejection, kept where the centre sees q and ½ q̇_Jᵀ S q̇_J ≤ E − V(q); then q̇k
-    // solves h = E with the section's sign (+ without one). Draws 2m numbers a try: the m
-    // positions, then the m velocities.
-    const std::size_t tries = 10000 * static_cast<std::size_t>(std::pow(4.0, static_cast<double>(m - 1)));
+    // Orbit `index`'s start: uniform in the free coordinates and velocities (q_J, q̇_J) over
+    // the part of the section where the centre sees q and ½ q̇_Jᵀ S q̇_J ≤ E − V(q); then q̇k
+    // solves h = E with the section's sign (+ without one). One free coordinate: (q_J, q̇_J)
+    // by rejection from the box and the speed bound, 2 numbers a try. More: q_J by rejection
+    // from the box, kept with probability w(q)/bound (the velocity ellipsoid's volume), then
+    // q̇_J uniformly in that ellipsoid — a Gaussian direction (Box–Muller) and a radius
+    // u^(1/m) — so the velocities' dimensions cost no rejection; m + 2 + 2⌈m/2⌉ numbers a try.
+    const std::size_t per_try = m == 1 ? 2 : m + 2 + 2 * ((m + 1) / 2);
+    const std::size_t tries = m == 1 ? 10000 : 100000;
     auto draw_start = [&](std::size_t index, std::vector<double>& x0, workspace& w) {
         std::vector<double> at(n), v(m);
         Eigen::VectorXd speeds(m);
-        for (std::size_t draw = 0; draw < tries * 2 * m; draw += 2 * m) {
+        for (std::size_t draw = 0; draw < tries * per_try; draw += per_try) {
             at[k] = L;
             for (std::size_t i = 0; i < m; ++i) {
                 const std::size_t j = free[i];
                 at[j] = region.low[j] + (region.high[j] - region.low[j]) * uniform(settings.seed, index, draw + i);
-                speeds(static_cast<Eigen::Index>(i)) =
-                    region.widest[j] * (2 * uniform(settings.seed, index, draw + m + i) - 1);
+                if (m == 1)
+                    speeds(0) = region.widest[j] * (2 * uniform(settings.seed, index, draw + 1) - 1);
             }
             const quadratic f = velocity_form(at, w);
             const double room = E - f.v;
@@ -701,8 +708,34 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
                 const double bound = room >= 0 && stiff > 0 ? std::sqrt(2 * room / stiff) : 0.0;
                 if (!(std::abs(speeds(0)) <= bound) || !visible(at, w))
                     continue;
-            } else if (!(room >= 0) || !(speeds.dot(stiffness(f) * speeds) <= 2 * room) || !visible(at, w)) {
-                continue;
+            } else {
+                if (!(room > 0))
+                    continue;
+                const Eigen::LLT<Eigen::MatrixXd> factor(stiffness(f));
+                if (factor.info() != Eigen::Success)
+                    continue;
+                const double weight = std::pow(room, 0.5 * static_cast<double>(m)) /
+                                      factor.matrixL().toDenseMatrix().diagonal().prod();
+                if (weight > heaviest)
+                    ++overweight;
+                if (!(uniform(settings.seed, index, draw + m) * heaviest <= weight) || !visible(at, w))
+                    continue;
+                // A point uniform in the unit m-ball: a Gaussian direction, the radius u^(1/m).
+                Eigen::VectorXd y(m);
+                for (std::size_t i = 0; i < m; i += 2) {
+                    const double u1 = uniform(settings.seed, index, draw + m + 1 + i);
+                    const double u2 = uniform(settings.seed, index, draw + m + 2 + i);
+                    const double r = std::sqrt(-2 * std::log1p(-u1)), angle = 2 * pi * u2;
+                    y(static_cast<Eigen::Index>(i)) = r * std::cos(angle);
+                    if (i + 1 < m)
+                        y(static_cast<Eigen::Index>(i + 1)) = r * std::sin(angle);
+                }
+                if (!(y.norm() > 0))
+                    continue;
+                const double radius = std::pow(uniform(settings.seed, index, draw + per_try - 1), 1.0 / static_cast<double>(m));
+                y *= radius / y.norm();
+                // ½ vᵀ S v = room |y|² for v = sqrt(2 room) L^{-T} y, S = L Lᵀ.
+                speeds = std::sqrt(2 * room) * factor.matrixU().solve(y);
             }
             // ½ a_kk q̇k² + b q̇k + c = E − V, b = A_kJ v, c = ½ vᵀ A_JJ v.
             double b = 0, c = 0;
@@ -854,6 +887,7 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
     if (error)
         std::rethrow_exception(error);
     result.threads = pool.size() + 1;
+    result.overweight_starts = overweight;
 
     // The energy at every crossing, against E.
     for (const poincare_orbit& orbit : result.orbits)

@@ -90,6 +90,9 @@ struct poincare_result {
     std::string no_crossings;
     double worst_energy_error = 0; ///< max |h − E| / energy_scale over the crossings
     std::string evaluation;        ///< "native code" or why the interpreter runs
+    /// Draws (more than two coordinates) where the velocity ellipsoid's volume passed the
+    /// bound sampled on a grid: the starts there are drawn too rarely. 0 when the bound held.
+    std::size_t overweight_starts = 0;
     std::size_t threads = 1;
     double seconds = 0;
     std::size_t crossings() const;

@@ -78,6 +78,10 @@ std::string poincare_summary_text(const poincare_result& result)
         << " of E = " << shortest(result.energy) << " (relative to "
         << (result.has_minimum ? "E minus the minimum " + shortest(result.minimum) : std::string("max(|E|, 1)"))
         << ")\n";
+    if (result.overweight_starts > 0)
+        out << "poincare: " << result.overweight_starts
+            << " draws of the starts found a velocity ellipsoid larger than its sampled bound: the starts are "
+               "not quite uniform there\n";
     if (std::size_t failed = result.failures()) {
         for (std::size_t k = 0; k < result.orbits.size(); ++k)
             if (!result.orbits[k].failure.empty()) {
