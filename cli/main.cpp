@@ -443,6 +443,7 @@ int ensemble_command(const ensemble_options& options, const lagrange::budget_lim
 struct poincare_options {
     std::string scene_path;
     std::string section;
+    std::string axes;
     double energy = 0;
     std::size_t orbits = lagrange::poincare_settings{}.orbits;
     std::size_t crossings = lagrange::poincare_settings{}.crossings;
@@ -472,6 +473,9 @@ int poincare_command(const poincare_options& options, const lagrange::budget_lim
     }
     lagrange::model scene = load_scene(options.scene_path, options.values, {}, budget.max_seconds);
     const lagrange::poincare_section section = lagrange::parse_poincare_section(options.section, scene);
+    const lagrange::poincare_axes axes = options.axes.empty()
+                                             ? lagrange::default_poincare_axes(scene, section)
+                                             : lagrange::parse_poincare_axes(options.axes, scene, section);
     lagrange::poincare_settings settings;
     settings.energy = options.energy;
     settings.orbits = options.orbits;
@@ -488,6 +492,7 @@ int poincare_command(const poincare_options& options, const lagrange::budget_lim
     } catch (const lagrange::poincare_request_error& error) {
         throw usage_error(error.what());
     }
+    section_result.axes = axes;
     if (csv) {
         std::ostringstream out;
         lagrange::write_poincare_csv(out, section_result);
@@ -554,6 +559,7 @@ struct animate_options {
     std::optional<double> until;
     std::optional<double> tolerance;
     bool interpret = false;
+    bool project_initial = false;
     std::vector<std::string> values;
     std::vector<std::string> initial;
 };
@@ -579,6 +585,7 @@ int animate_command(const animate_options& options, const lagrange::budget_limit
     else if (scene.simulation && scene.simulation->tolerance)
         settings.tolerance = lagrange::real_value(*scene.simulation->tolerance, "the scene's tolerance");
     settings.native = !options.interpret;
+    settings.project_initial = options.project_initial;
     lagrange::animation_view view{options.speed, options.trail, options.view, options.fps};
     if (video) {
         lagrange::check_video_encoder(options.output); // says why before the work
@@ -845,6 +852,9 @@ int run(int argc, char** argv)
     poincare->add_option("SCENE", poincare_options.scene_path, "the scene file (`-` for standard input)")->required();
     poincare->add_option("--section", poincare_options.section, "the section: \"q = level\" or \"q = level, q' > 0\"")
         ->required();
+    poincare->add_option("--axes", poincare_options.axes,
+                         "the picture's two axes: coordinates or velocities other than the section's, such as \"y, y'\" "
+                         "(default: the first other coordinate and its velocity)");
     poincare->add_option("--energy", poincare_options.energy, "the energy of every orbit")
         ->required()
         ->check(finite_number);
@@ -902,6 +912,7 @@ int run(int argc, char** argv)
         ->check(finite_number & CLI::Range(1e-14, 0.5));
     animate->add_option("--values", animate_options.values, "a parameter point such as a=1,b=2.5 (repeatable; later ones win)");
     animate->add_option("--initial", animate_options.initial, initial_help);
+    animate->add_flag("--project-initial", animate_options.project_initial, project_initial_help);
     animate->add_flag("--interpret", animate_options.interpret,
                       "evaluate the equations with the interpreter (default: machine code by the system's C compiler)");
 

@@ -438,7 +438,7 @@ PYBIND11_MODULE(_lagrange, m)
         "animate",
         [](const lagrange::model& loaded, const std::vector<std::string>& values, const std::vector<std::string>& initial,
            std::optional<double> until, double fps, double tolerance, bool native, double speed, double trail,
-           const std::string& view) {
+           const std::string& view, bool project_initial) {
             if (!lagrange::known_animation_view(view))
                 throw py::value_error("view must be \"xy\", \"xz\" or \"3d\", not \"" + view + "\"");
             return run_in_child([&] {
@@ -448,12 +448,13 @@ PYBIND11_MODULE(_lagrange, m)
                 settings.until = until;
                 settings.tolerance = tolerance;
                 settings.native = native;
+                settings.project_initial = project_initial;
                 const lagrange::animation_frames frames = lagrange::animate_scene(scene, settings, {});
                 return lagrange::animation_html(frames, {speed, trail, view}, scene.title.empty() ? scene.file : scene.title);
             });
         },
         py::arg("model"), py::arg("values"), py::arg("initial"), py::arg("until"), py::arg("fps"), py::arg("tolerance"),
-        py::arg("native"), py::arg("speed"), py::arg("trail"), py::arg("view"),
+        py::arg("native"), py::arg("speed"), py::arg("trail"), py::arg("view"), py::arg("project_initial") = false,
         "The self-contained HTML player of `lagrange animate`, as a string.");
 
     py::class_<lagrange::poincare_settings>(m, "PoincareSettings", "lagrange::poincare_settings")

@@ -40,21 +40,32 @@ count="${LAGRANGE_MAP_COUNT:-200}"
   --grid "theta=-3.1..3.1:$count, phi=-3.1..3.1:$count" --until 10 --measure flip_time \
   -o "$folder/ensemble_flip_map.png"
 # The pictures of motion (docs/pictures.md): Hénon–Heiles' sections at E = 1/12 and 1/8, the
-# double pendulum's section, its θ phase portrait and its player.
+# double pendulum's sections, its θ phase portrait and its player, the triple pendulum's
+# section, and the heavy top's video.
 hh="$root/tests/scenes/henon_heiles.lag"
 dp="$root/tests/scenes/ensemble_double_pendulum.lag"
 "$lagrange" poincare "$hh" --section "x = 0, x' > 0" --energy 0.0833333333333333 --orbits 60 --crossings 300 \
   -o "$folder/henon_heiles_section_12.png" 2>/dev/null
 "$lagrange" poincare "$hh" --section "x = 0, x' > 0" --energy 0.125 --orbits 60 --crossings 300 \
   -o "$folder/henon_heiles_section_8.png" 2>/dev/null
+# The double pendulum at rising energies (its minimum is -29.43), and a section of three
+# coordinates, drawn in the two of its four dimensions that --axes names.
+"$lagrange" poincare "$dp" --section "phi = 0, phi' > 0" --energy -25 --orbits 30 --crossings 150 \
+  -o "$folder/double_pendulum_section_25.png" 2>/dev/null
 "$lagrange" poincare "$dp" --section "phi = 0, phi' > 0" --energy -15 --orbits 40 --crossings 200 \
   -o "$folder/double_pendulum_section.png" 2>/dev/null
+"$lagrange" poincare "$dp" --section "phi = 0, phi' > 0" --energy -5 --orbits 30 --crossings 150 \
+  -o "$folder/double_pendulum_section_5.png" 2>/dev/null
+"$lagrange" poincare "$root/tests/scenes/triple_pendulum.lag" --values m1=1,m2=1,m3=1,l1=1,l2=1,l3=1,g=9.81 \
+  --section "theta1 = 0, theta1' > 0" --energy -50 --orbits 40 --crossings 200 --axes "theta3, theta3'" \
+  -o "$folder/triple_pendulum_section.png" 2>/dev/null
 "$lagrange" phase "$dp" --coordinate theta -o "$folder/double_pendulum_phase.svg" 2>/dev/null
 "$lagrange" animate "$examples/double_pendulum.lag" --trail 2 -o "$folder/double_pendulum.html"
 # Videos need ffmpeg (LAGRANGE_WITH_MEDIA=1 scripts/setup.sh): without it they are left out.
 if command -v ffmpeg >/dev/null; then
   "$lagrange" animate "$examples/free_asymmetric_top.lag" --until 12 --fps 15 -o "$folder/free_asymmetric_top_poinsot.gif"
   "$lagrange" animate "$examples/double_pendulum.lag" --until 10 --trail 2 --fps 15 -o "$folder/double_pendulum.gif"
+  "$lagrange" animate "$examples/heavy_top.lag" --until 4 --fps 15 -o "$folder/heavy_top.gif"
 fi
 
 fail() { echo "error: $1" >&2; exit 1; }
@@ -67,12 +78,13 @@ done
 grep -q 'resonance' "$folder/damped_driven_oscillator_bode.svg" || fail "the Bode diagram lacks its resonance peak"
 # beats.lag has two coordinates: two panels, each with its own axis label.
 grep -q 'θ' "$folder/beats.svg" && grep -q 'φ' "$folder/beats.svg" || fail "beats.svg lacks a panel per coordinate"
-for png in ensemble_flip_map henon_heiles_section_12 henon_heiles_section_8 double_pendulum_section; do
+for png in ensemble_flip_map henon_heiles_section_12 henon_heiles_section_8 double_pendulum_section \
+    double_pendulum_section_25 double_pendulum_section_5 triple_pendulum_section; do
   [ "$(head -c 4 "$folder/$png.png" | tail -c 3)" = PNG ] || fail "no PNG drawn into $folder/$png.png"
 done
 grep -q 'lagrangePlayer' "$folder/double_pendulum.html" || fail "no player written into $folder/double_pendulum.html"
 if command -v ffmpeg >/dev/null; then
-  for gif in free_asymmetric_top_poinsot double_pendulum; do
+  for gif in free_asymmetric_top_poinsot double_pendulum heavy_top; do
     head -c 6 "$folder/$gif.gif" | grep -q 'GIF89a' || fail "no GIF encoded into $folder/$gif.gif"
   done
 fi

@@ -13,6 +13,9 @@
 #include "program/expression_program.h"
 #include "program/native_code.h"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 
@@ -26,6 +29,7 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 
 namespace lagrange {
 
@@ -86,16 +90,18 @@ double uniform(std::uint64_t seed, std::size_t orbit, std::size_t draw)
     return static_cast<double>(bits >> 11) * 0x1p-53;
 }
 
-/// Per-thread scratch: the programs take the caller's.
+/// Per-thread scratch for n coordinates: the programs take the caller's.
 struct workspace {
-    std::vector<double> symbols = std::vector<double>(5), outputs = std::vector<double>(6), factor = std::vector<double>(4);
+    explicit workspace(std::size_t n) : symbols(2 * n + 1), outputs(n * n + n), factor(n * n) {}
+    std::vector<double> symbols, outputs, factor;
     std::vector<double> scratch;
 };
 
-/// The compiled scene: M and f, and the energy function, in (q1, q2, q̇1, q̇2, t).
+/// The compiled scene: M and f, and the energy function, in (q, q̇, t).
 class section_problem {
 public:
     section_problem(const model& scene, const equations_of_motion& equations, bool native)
+        : n_(scene.coordinates.size())
     {
         const std::map<std::string, GiNaC::ex> values = merged_values(scene);
         const std::vector<GiNaC::ex> symbols = state_symbols(scene);
@@ -122,11 +128,13 @@ public:
         }
     }
 
+    std::size_t coordinates() const { return n_; }
+
     /// M (row-major) then f at (t, x) into work.outputs.
     void mass_and_force(double t, const double* x, workspace& work) const
     {
-        std::copy(x, x + 4, work.symbols.begin());
-        work.symbols[4] = t;
+        std::copy(x, x + 2 * n_, work.symbols.begin());
+        work.symbols[2 * n_] = t;
         if (native_rhs_)
             native_rhs_(work.symbols.data(), work.outputs.data());
         else
@@ -135,8 +143,8 @@ public:
 
     double energy(const double* x, workspace& work) const
     {
-        std::copy(x, x + 4, work.symbols.begin());
-        work.symbols[4] = 0;
+        std::copy(x, x + 2 * n_, work.symbols.begin());
+        work.symbols[2 * n_] = 0;
         double h = 0;
         energy_.run(work.symbols.data(), work.scratch, &h);
         return h;
@@ -146,17 +154,18 @@ public:
     /// checked at a few fixed states.
     bool periodic(std::size_t c, workspace& work) const
     {
-        const double states[3][4] = {{0.3, -0.7, 0.2, 0.5}, {1.1, 0.4, -0.6, 0.1}, {-0.9, 2.3, 0.8, -1.2}};
-        for (const auto& state : states) {
-            double x[4], y[4];
-            std::copy(state, state + 4, x);
-            std::copy(state, state + 4, y);
+        for (int s = 0; s < 3; ++s) {
+            // Fixed, unremarkable states (no symmetry of the scene should hold at them by chance).
+            std::vector<double> x(2 * n_), y;
+            for (std::size_t i = 0; i < 2 * n_; ++i)
+                x[i] = 1.3 * std::sin(1.7 * (s + 1) * (i + 1) + 0.3);
+            y = x;
             y[c] += 2 * pi;
-            mass_and_force(0, x, work);
+            mass_and_force(0, x.data(), work);
             std::vector<double> a = work.outputs;
-            double ha = energy(x, work);
-            mass_and_force(0, y, work);
-            double hb = energy(y, work);
+            double ha = energy(x.data(), work);
+            mass_and_force(0, y.data(), work);
+            double hb = energy(y.data(), work);
             auto close = [](double u, double v) { return std::abs(u - v) <= 1e-9 * (1 + std::abs(u)); };
             if (!close(ha, hb))
                 return false;
@@ -168,6 +177,7 @@ public:
     }
 
 private:
+    std::size_t n_;
     expression_program rhs_, energy_;
     std::shared_ptr<native_module> module_;
     native_module::function native_rhs_ = nullptr;
@@ -182,19 +192,19 @@ struct orbit_rhs {
     workspace* work = nullptr;
     void operator()(double t, const double* x, double* dxdt) const
     {
+        const std::size_t n = problem->coordinates();
         problem->mass_and_force(t, x, *work);
-        dxdt[0] = x[2];
-        dxdt[1] = x[3];
-        if (!solve_mass_matrix(work->outputs.data(), 2, work->factor.data(), dxdt + 2))
-            throw computation_error(singular_mass_matrix_message(t, x, 4));
+        std::copy(x + n, x + 2 * n, dxdt);
+        if (!solve_mass_matrix(work->outputs.data(), n, work->factor.data(), dxdt + n))
+            throw computation_error(singular_mass_matrix_message(t, x, 2 * n));
     }
 };
 
-/// Where the orbits start: the interval [low, high] of the free coordinate on the section
-/// that the energy reaches, and how fast the free coordinate may move there.
+/// Where the orbits start: a box of the free coordinates on the section that holds the part
+/// of it the energy reaches, and a bound on each free coordinate's speed there.
 struct start_region {
-    double low = 0, high = 0;
-    double widest = 0; ///< the largest |q̇_free| allowed anywhere in [low, high] (a bound)
+    std::vector<double> low, high; ///< per coordinate (the section's own: its level)
+    std::vector<double> widest;    ///< the largest |q̇_j| allowed anywhere in the box (a bound)
 };
 
 } // namespace
@@ -247,6 +257,64 @@ poincare_section parse_poincare_section(const std::string& text, const model& sc
     return section;
 }
 
+poincare_axes parse_poincare_axes(const std::string& text, const model& scene, const poincare_section& section)
+{
+    auto bad = [&](std::size_t column, const std::string& message) {
+        scene_error error({"--axes", 1, static_cast<int>(column) + 1}, message);
+        error.attach_line_text(text);
+        throw error;
+    };
+    const std::size_t n = scene.coordinates.size();
+    std::size_t columns[2] = {0, 0};
+    std::size_t at = 0;
+    for (int axis = 0; axis < 2; ++axis) {
+        at = skip_blanks(text, at);
+        const std::size_t end = name_end(text, at);
+        if (end == at)
+            bad(at, "give the axes as two of the section's coordinates or velocities, such as `y, y'`");
+        std::string name = text.substr(at, end - at);
+        std::size_t after = end;
+        bool velocity = after < text.size() && text[after] == '\'';
+        if (velocity)
+            ++after;
+        else if (name.size() > 4 && name.compare(name.size() - 4, 4, "_dot") == 0 &&
+                 std::none_of(scene.coordinates.begin(), scene.coordinates.end(),
+                              [&](const coordinate& c) { return c.name == name; })) {
+            name.resize(name.size() - 4);
+            velocity = true;
+        }
+        std::size_t c = 0;
+        while (c < n && scene.coordinates[c].name != name)
+            ++c;
+        if (c == n) {
+            std::string list;
+            for (const coordinate& q : scene.coordinates)
+                list += (list.empty() ? "" : ", ") + q.name;
+            bad(at, "`" + name + "` is not a coordinate of the scene (its coordinates: " + list + ")");
+        }
+        if (c == section.coordinate && !velocity)
+            bad(at, "`" + name + "` is the section's coordinate: it is " + shortest(section.level) +
+                        " at every crossing; choose two of the other coordinates or the velocities");
+        columns[axis] = 1 + (velocity ? n : 0) + c;
+        at = skip_blanks(text, after);
+        if (axis == 0) {
+            if (at >= text.size() || text[at] != ',')
+                bad(at, "expected `,` and the vertical axis");
+            ++at;
+        } else if (at != text.size()) {
+            bad(at, "expected the end after two axes");
+        }
+    }
+    return {columns[0], columns[1]};
+}
+
+poincare_axes default_poincare_axes(const model& scene, const poincare_section& section)
+{
+    const std::size_t n = scene.coordinates.size();
+    const std::size_t j = section.coordinate == 0 ? 1 : 0;
+    return {1 + j, 1 + n + j};
+}
+
 std::size_t poincare_result::crossings() const
 {
     std::size_t total = 0;
@@ -274,9 +342,10 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
                                  const poincare_settings& settings)
 {
     const auto started = std::chrono::steady_clock::now();
-    if (scene.coordinates.size() != 2)
-        throw computation_error("a Poincaré section is drawn for two degrees of freedom, and the scene has " +
-                                std::to_string(scene.coordinates.size()) + " coordinates");
+    const std::size_t n = scene.coordinates.size();
+    if (n < 2)
+        throw computation_error("a Poincaré section is drawn for two or more degrees of freedom, and the scene has " +
+                                std::to_string(n) + (n == 1 ? " coordinate" : " coordinates"));
     if (equations.constraints)
         throw computation_error("Poincaré sections of scenes with constraints are not implemented");
     const std::map<std::string, GiNaC::ex> values = merged_values(scene);
@@ -291,101 +360,144 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
         result.coordinates.push_back(c.name);
     result.section = section;
     result.energy = settings.energy;
-    const std::size_t k = section.coordinate, j = 1 - k;
-    result.free = j;
+    const std::size_t k = section.coordinate;
+    std::vector<std::size_t> free; // the section's other coordinates, in order
+    for (std::size_t c = 0; c < n; ++c)
+        if (c != k)
+            free.push_back(c);
+    const std::size_t m = free.size(); // n − 1: the section has 2m dimensions
+    result.axes = default_poincare_axes(scene, section);
     const double E = settings.energy;
     const section_problem problem(scene, equations, settings.native);
     result.evaluation = problem.evaluation;
-    workspace work;
-    const bool periodic[2] = {problem.periodic(0, work), problem.periodic(1, work)};
-    auto potential_in = [&](double qk, double qj, workspace& w) {
-        double x[4] = {0, 0, 0, 0};
-        x[k] = qk, x[j] = qj;
-        return problem.energy(x, w);
+    workspace work(n);
+    std::vector<bool> periodic(n);
+    for (std::size_t c = 0; c < n; ++c)
+        periodic[c] = problem.periodic(c, work);
+    // h(q, 0): the potential part of the energy at a configuration.
+    auto potential_in = [&](const std::vector<double>& q, workspace& w) {
+        std::vector<double> x(2 * n, 0.0);
+        std::copy(q.begin(), q.end(), x.begin());
+        return problem.energy(x.data(), w);
     };
-    auto potential = [&](double qk, double qj) { return potential_in(qk, qj, work); };
+    auto potential = [&](const std::vector<double>& q) { return potential_in(q, work); };
+    auto at_text = [&](const std::vector<double>& q) {
+        std::string text;
+        for (std::size_t c = 0; c < n; ++c)
+            text += (c ? ", " : "") + scene.coordinates[c].name + " = " + shortest(q[c]);
+        return text;
+    };
 
     // The minimum of the energy: the lowest equilibrium where the potential's Hessian (by
     // central differences) is positive definite. It is also the well's centre.
-    double centre[2] = {0, 0};
+    std::vector<double> centre(n, 0.0);
     if (scene.initial)
-        for (std::size_t c = 0; c < 2; ++c) {
+        for (std::size_t c = 0; c < n; ++c) {
             auto found = scene.initial->positions.find(scene.coordinates[c].name);
             if (found != scene.initial->positions.end())
                 centre[c] = real_value(at_values(found->second, scene, values), "the initial value");
         }
     if (equilibria)
         for (const equilibrium_point& point : equilibria->points) {
-            double q[2];
+            std::vector<double> q(n);
             try {
-                for (std::size_t c = 0; c < 2; ++c)
+                for (std::size_t c = 0; c < n; ++c)
                     q[c] = real_value(at_values(point.position[c], scene, values), "an equilibrium");
             } catch (const std::exception&) {
                 continue;
             }
-            auto v = [&](double a, double b) {
-                double x[4] = {a, b, 0, 0};
-                return problem.energy(x, work);
+            auto v = [&](std::size_t a, double da, std::size_t b, double db) {
+                std::vector<double> p = q;
+                p[a] += da;
+                p[b] += db;
+                return potential(p);
             };
-            const double d0 = 1e-4 * (1 + std::abs(q[0])), d1 = 1e-4 * (1 + std::abs(q[1]));
-            const double v0 = v(q[0], q[1]);
-            const double h00 = (v(q[0] + d0, q[1]) - 2 * v0 + v(q[0] - d0, q[1])) / (d0 * d0);
-            const double h11 = (v(q[0], q[1] + d1) - 2 * v0 + v(q[0], q[1] - d1)) / (d1 * d1);
-            const double h01 = (v(q[0] + d0, q[1] + d1) - v(q[0] + d0, q[1] - d1) - v(q[0] - d0, q[1] + d1) +
-                                v(q[0] - d0, q[1] - d1)) / (4 * d0 * d1);
-            if (!(h00 > 0 && h00 * h11 - h01 * h01 > 0) || (result.has_minimum && v0 >= result.minimum))
+            std::vector<double> d(n);
+            for (std::size_t c = 0; c < n; ++c)
+                d[c] = 1e-4 * (1 + std::abs(q[c]));
+            const double v0 = potential(q);
+            Eigen::MatrixXd hessian(n, n);
+            for (std::size_t a = 0; a < n; ++a) {
+                hessian(a, a) = (v(a, d[a], a, 0) - 2 * v0 + v(a, -d[a], a, 0)) / (d[a] * d[a]);
+                for (std::size_t b = a + 1; b < n; ++b)
+                    hessian(a, b) = hessian(b, a) = (v(a, d[a], b, d[b]) - v(a, d[a], b, -d[b]) -
+                                                     v(a, -d[a], b, d[b]) + v(a, -d[a], b, -d[b])) /
+                                                    (4 * d[a] * d[b]);
+            }
+            if (hessian.llt().info() != Eigen::Success || (result.has_minimum && v0 >= result.minimum))
                 continue;
             result.has_minimum = true;
             result.minimum = v0;
-            centre[0] = q[0], centre[1] = q[1];
+            centre = q;
         }
     if (result.has_minimum && E < result.minimum)
         throw poincare_request_error("the energy " + shortest(E) + " is below the minimum of the energy, " +
-                                     shortest(result.minimum) + " at " + scene.coordinates[0].name + " = " +
-                                     shortest(centre[0]) + ", " + scene.coordinates[1].name + " = " +
-                                     shortest(centre[1]) + ": no motion has it");
+                                     shortest(result.minimum) + " at " + at_text(centre) + ": no motion has it");
     result.energy_scale = result.has_minimum && E > result.minimum ? E - result.minimum : std::max(std::abs(E), 1.0);
 
-    // The edge of {V ≤ E} along the free coordinate from y0 (where V ≤ E) in direction `way`,
-    // by doubling steps and TOMS 748; an angle's whole circle when it never leaves the set.
-    auto edge = [&](double qk, double y0, double way) {
-        auto g = [&](double y) { return potential(qk, y) - E; };
-        double inside = 0, d = 1e-3 * (1 + std::abs(y0));
+    // The edge of {V ≤ E} from p (where V ≤ E) along the direction u (free coordinates only),
+    // by doubling steps and TOMS 748; where an angle has turned by π when it never leaves the set.
+    auto edge = [&](const std::vector<double>& p, const std::vector<double>& u) {
+        auto along = [&](double s) {
+            std::vector<double> q = p;
+            for (std::size_t c = 0; c < n; ++c)
+                q[c] += s * u[c];
+            return q;
+        };
+        auto g = [&](double s) { return potential(along(s)) - E; };
+        double cap = HUGE_VAL, start = 0;
+        std::string names;
+        for (std::size_t c = 0; c < n; ++c)
+            if (u[c] != 0) {
+                if (periodic[c])
+                    cap = std::min(cap, pi / std::abs(u[c]));
+                start += p[c] * u[c];
+                names += (names.empty() ? "`" : ", `") + scene.coordinates[c].name + "`";
+            }
+        double inside = 0, d = 1e-3 * (1 + std::abs(start));
         for (;;) {
-            if (periodic[j] && d >= pi)
-                d = pi;
-            double value = g(y0 + way * d);
+            if (d >= cap)
+                d = cap;
+            double value = g(d);
             if (value > 0) {
                 boost::uintmax_t iterations = 100;
-                auto root = boost::math::tools::toms748_solve(
-                    [&](double s) { return g(y0 + way * s); }, inside, d, g(y0 + way * inside), value,
-                    boost::math::tools::eps_tolerance<double>(50), iterations);
-                return y0 + way * root.first; // inside the set
+                auto root = boost::math::tools::toms748_solve(g, inside, d, g(inside), value,
+                                                              boost::math::tools::eps_tolerance<double>(50), iterations);
+                return along(root.first); // inside the set
             }
-            if (periodic[j] && d >= pi)
-                return y0 + way * pi;
+            if (d >= cap)
+                return along(cap);
             inside = d;
             d *= 2;
             if (d > 1e6)
-                throw computation_error("the energy surface is unbounded along `" + scene.coordinates[j].name +
-                                        "` on the section: the orbits would escape");
+                throw computation_error("the energy surface is unbounded along " + names +
+                                        " on the section: the orbits would escape");
         }
+    };
+    auto axis = [&](std::size_t c, double sign) {
+        std::vector<double> u(n, 0.0);
+        u[c] = sign;
+        return u;
     };
     auto outside = [&](std::string why) {
         result.no_crossings = std::move(why);
         result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         return result;
     };
-    // The well's extent along the free coordinate through its centre, widened by half, is
+    // The well's extent along each free coordinate through its centre, widened by half, is
     // where the section's lowest point is looked for.
-    double window_low = centre[j] - pi, window_high = centre[j] + pi;
-    if (potential(centre[k], centre[j]) <= E) {
-        const double a = edge(centre[k], centre[j], -1), b = edge(centre[k], centre[j], 1);
-        window_low = centre[j] - 1.5 * (centre[j] - a);
-        window_high = centre[j] + 1.5 * (b - centre[j]);
+    std::vector<double> window_low(n), window_high(n);
+    const bool centre_inside = potential(centre) <= E;
+    for (std::size_t j : free) {
+        window_low[j] = centre[j] - pi, window_high[j] = centre[j] + pi;
+        if (!centre_inside)
+            continue;
+        const double a = edge(centre, axis(j, -1))[j], b = edge(centre, axis(j, 1))[j];
+        window_low[j] = centre[j] - 1.5 * (centre[j] - a);
+        window_high[j] = centre[j] + 1.5 * (b - centre[j]);
         if (periodic[j]) {
-            window_low = std::max(window_low, centre[j] - pi);
-            window_high = std::min(window_high, centre[j] + pi);
+            window_low[j] = std::max(window_low[j], centre[j] - pi);
+            window_high[j] = std::min(window_high[j], centre[j] + pi);
         }
     }
     const double L = section.level;
@@ -393,183 +505,356 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
     // region, where orbits escape): the segment from the well's centre to it must stay in the
     // set (the wells of interest are star-shaped about their minimum). Angles take the copy
     // of the point nearest the centre.
-    auto visible = [&](double qk, double qj, workspace& w) {
-        double target[2];
-        target[k] = qk, target[j] = qj;
-        for (std::size_t c = 0; c < 2; ++c)
+    auto visible = [&](const std::vector<double>& q, workspace& w) {
+        std::vector<double> target = q, between(n);
+        for (std::size_t c = 0; c < n; ++c)
             if (periodic[c])
                 target[c] = centre[c] + std::remainder(target[c] - centre[c], 2 * pi);
         for (int s = 1; s <= 64; ++s) {
             const double u = s / 64.0;
-            if (potential_in(centre[k] + u * (target[k] - centre[k]), centre[j] + u * (target[j] - centre[j]), w) > E)
+            for (std::size_t c = 0; c < n; ++c)
+                between[c] = centre[c] + u * (target[c] - centre[c]);
+            if (potential_in(between, w) > E)
                 return false;
         }
         return true;
     };
-    // The section's lowest point in the window that the centre sees.
-    double lowest_y = 0, lowest_v = HUGE_VAL;
-    for (int s = 0; s <= 400; ++s) {
-        const double y = window_low + (window_high - window_low) * s / 400;
-        const double v = potential(L, y);
-        if (v < lowest_v && v <= E && visible(L, y, work))
-            lowest_y = y, lowest_v = v;
+    // The section's lowest point in the window that the centre sees: on a grid of about 400
+    // points (401 on a line), then refined by Brent's method one coordinate at a time within
+    // a grid spacing (once for one free coordinate, three sweeps for more).
+    const std::size_t grid = m == 1 ? 401 : static_cast<std::size_t>(std::ceil(std::pow(400.0, 1.0 / m))) + 1;
+    std::vector<double> lowest(n), q(n);
+    q[k] = lowest[k] = L;
+    double lowest_v = HUGE_VAL;
+    std::vector<std::size_t> index(m, 0);
+    for (bool more = true; more;) {
+        for (std::size_t i = 0; i < m; ++i)
+            q[free[i]] = window_low[free[i]] + (window_high[free[i]] - window_low[free[i]]) * index[i] / (grid - 1);
+        const double v = potential(q);
+        if (v < lowest_v && v <= E && visible(q, work))
+            lowest = q, lowest_v = v;
+        more = false;
+        for (std::size_t i = 0; i < m && !more; ++i) {
+            if (++index[i] < grid)
+                more = true;
+            else
+                index[i] = 0;
+        }
     }
     const std::string& qk_name = scene.coordinates[k].name;
     if (lowest_v > E)
         return outside("the section " + qk_name + " = " + shortest(L) + " lies outside the energy surface h = " +
-                       shortest(E) + " around the well at " + scene.coordinates[0].name + " = " + shortest(centre[0]) +
-                       ", " + scene.coordinates[1].name + " = " + shortest(centre[1]) +
+                       shortest(E) + " around the well at " + at_text(centre) +
                        ": no orbit of that energy there reaches it");
-    const auto lowest = boost::math::tools::brent_find_minima(
-        [&](double y) { return potential(L, y); }, std::max(window_low, lowest_y - (window_high - window_low) / 400),
-        std::min(window_high, lowest_y + (window_high - window_low) / 400), 40);
-    start_region region;
-    region.low = edge(L, lowest.first, -1);
-    region.high = edge(L, lowest.first, 1);
+    const std::vector<double> grid_lowest = lowest;
+    for (int sweep = 0; sweep < (m == 1 ? 1 : 3); ++sweep)
+        for (std::size_t j : free) {
+            const double spacing = (window_high[j] - window_low[j]) / (grid - 1);
+            std::vector<double> p = lowest;
+            const auto best = boost::math::tools::brent_find_minima(
+                [&](double y) {
+                    p[j] = y;
+                    return potential(p);
+                },
+                std::max(window_low[j], grid_lowest[j] - spacing), std::min(window_high[j], grid_lowest[j] + spacing),
+                40);
+            lowest[j] = best.first;
+        }
 
-    // The velocities at (L, y): h = ½ (a_kk q̇k² + 2 a_kj q̇k q̇j + a_jj q̇j²) + V, from h at unit velocities.
-    struct quadratic {
-        double v = 0, kk = 0, kj = 0, jj = 0;
+    // The box: the edges of the section's part {V ≤ E} from its lowest point, along each free
+    // coordinate both ways and, with more than one, along the 2^m diagonals (scaled by the
+    // window), widened by a quarter of its width on each side (the region need not be a box:
+    // the starts are drawn by rejection, and only a box too small would bias them).
+    start_region region;
+    region.low.assign(n, L), region.high.assign(n, L);
+    auto include = [&](const std::vector<double>& p) {
+        for (std::size_t j : free) {
+            region.low[j] = std::min(region.low[j], p[j]);
+            region.high[j] = std::max(region.high[j], p[j]);
+        }
     };
-    auto velocity_form = [&](double y, workspace& w) {
+    for (std::size_t j : free)
+        region.low[j] = region.high[j] = lowest[j];
+    for (std::size_t j : free)
+        for (double sign : {-1.0, 1.0})
+            include(edge(lowest, axis(j, sign)));
+    if (m > 1) {
+        for (std::size_t signs = 0; signs < (std::size_t{1} << m); ++signs) {
+            std::vector<double> u(n, 0.0);
+            double norm = 0;
+            for (std::size_t i = 0; i < m; ++i) {
+                const double width = window_high[free[i]] - window_low[free[i]];
+                u[free[i]] = (signs >> i & 1 ? -1 : 1) * width;
+                norm += width * width;
+            }
+            for (double& c : u)
+                c /= std::sqrt(norm);
+            include(edge(lowest, u));
+        }
+        for (std::size_t j : free) {
+            const double widen = (region.high[j] - region.low[j]) / 4;
+            region.low[j] -= widen, region.high[j] += widen;
+            if (periodic[j]) {
+                region.low[j] = std::max(region.low[j], lowest[j] - pi);
+                region.high[j] = std::min(region.high[j], lowest[j] + pi);
+            }
+        }
+    }
+
+    // The velocities at q: h = ½ q̇ᵀ A(q) q̇ + V(q), A from h at unit velocities and their sums.
+    struct quadratic {
+        double v = 0;
+        Eigen::MatrixXd a;
+    };
+    auto velocity_form = [&](const std::vector<double>& at, workspace& w) {
         quadratic form;
-        double x[4] = {0, 0, 0, 0};
-        x[k] = L, x[j] = y;
-        form.v = problem.energy(x, w);
-        x[2 + k] = 1;
-        form.kk = 2 * (problem.energy(x, w) - form.v);
-        x[2 + j] = 1;
-        const double both = 2 * (problem.energy(x, w) - form.v);
-        x[2 + k] = 0;
-        form.jj = 2 * (problem.energy(x, w) - form.v);
-        form.kj = (both - form.kk - form.jj) / 2;
+        std::vector<double> x(2 * n, 0.0);
+        std::copy(at.begin(), at.end(), x.begin());
+        form.v = problem.energy(x.data(), w);
+        form.a.resize(n, n);
+        for (std::size_t a = 0; a < n; ++a) {
+            x[n + a] = 1;
+            form.a(a, a) = 2 * (problem.energy(x.data(), w) - form.v);
+            x[n + a] = 0;
+        }
+        for (std::size_t a = 0; a < n; ++a)
+            for (std::size_t b = a + 1; b < n; ++b) {
+                x[n + a] = x[n + b] = 1;
+                const double both = 2 * (problem.energy(x.data(), w) - form.v);
+                x[n + a] = x[n + b] = 0;
+                form.a(a, b) = form.a(b, a) = (both - form.a(a, a) - form.a(b, b)) / 2;
+            }
         return form;
     };
-    // How fast the free coordinate may move at y: with a direction, q̇k must keep its sign,
-    // so q̇j² ≤ 2(E − V)/a_jj; else any q̇k, so q̇j² ≤ 2(E − V)/(a_jj − a_kj²/a_kk).
-    auto widest_at = [&](const quadratic& f) {
+    // The free velocities v allowed at q: with a direction, q̇k must keep its sign, so
+    // ½ vᵀ A_JJ v ≤ E − V (then q̇k = 0 leaves room, and a root of each sign exists); else any
+    // q̇k, so ½ vᵀ S v ≤ E − V with S = A_JJ − A_Jk A_kJ / a_kk (q̇k at its best).
+    auto stiffness = [&](const quadratic& f) {
+        Eigen::MatrixXd s(m, m);
+        for (std::size_t a = 0; a < m; ++a)
+            for (std::size_t b = 0; b < m; ++b)
+                s(a, b) = f.a(free[a], free[b]) -
+                          (section.direction != 0 ? 0.0 : f.a(free[a], k) * f.a(k, free[b]) / f.a(k, k));
+        return s;
+    };
+    // One free coordinate: the largest |v| there, sqrt(2 (E − V) / S), bounds the velocity's
+    // draw. More: the volume of the velocity ellipsoid at q, ∝ w(q) = (E − V)^(m/2) / sqrt(det S),
+    // weighs the positions' draw (its largest, over the grid, bounds it).
+    region.widest.assign(n, 0.0);
+    double heaviest = 0;
+    const std::size_t speed_grid =
+        m == 1 ? 257 : static_cast<std::size_t>(std::ceil(std::pow(256.0, 1.0 / m))) + 1;
+    std::fill(index.begin(), index.end(), 0);
+    for (bool more = true; more;) {
+        for (std::size_t i = 0; i < m; ++i)
+            q[free[i]] = region.low[free[i]] + (region.high[free[i]] - region.low[free[i]]) * index[i] / (speed_grid - 1);
+        const quadratic f = velocity_form(q, work);
         const double room = std::max(0.0, E - f.v);
-        const double stiffness = section.direction != 0 ? f.jj : f.jj - f.kj * f.kj / f.kk;
-        return stiffness > 0 ? std::sqrt(2 * room / stiffness) : 0.0;
-    };
-    for (int s = 0; s <= 256; ++s)
-        region.widest = std::max(region.widest,
-                                 widest_at(velocity_form(region.low + (region.high - region.low) * s / 256, work)));
-    region.widest *= 1.05;
+        const Eigen::MatrixXd s = stiffness(f);
+        if (m == 1) {
+            const double stiff = s(0, 0);
+            region.widest[free[0]] = std::max(region.widest[free[0]], stiff > 0 ? std::sqrt(2 * room / stiff) : 0.0);
+        } else if (room > 0) {
+            Eigen::LLT<Eigen::MatrixXd> factor(s);
+            if (factor.info() == Eigen::Success)
+                heaviest = std::max(heaviest, std::pow(room, 0.5 * static_cast<double>(m)) /
+                                                  factor.matrixL().toDenseMatrix().diagonal().prod());
+        }
+        more = false;
+        for (std::size_t i = 0; i < m && !more; ++i) {
+            if (++index[i] < speed_grid)
+                more = true;
+            else
+                index[i] = 0;
+        }
+    }
+    for (double& w : region.widest)
+        w *= 1.05; // the grid misses the peak between its points
+    heaviest *= 1.25;
+    std::atomic<std::size_t> overweight{0}; // starts whose weight passed the bound (a bias)
 
-    auto wrap = [&](std::size_t c, double q) {
+    auto wrap = [&](std::size_t c, double value) {
         if (!periodic[c])
-            return q;
+            return value;
         const double reference = c == k ? L : centre[c];
-        return reference + std::remainder(q - reference, 2 * pi);
+        return reference + std::remainder(value - reference, 2 * pi);
     };
 
-    // One orbit: its start drawn uniformly over the region (by rejection), then integrated and cut.
+    // Orbit `index`'s start: uniform in the free coordinates and velocities (q_J, q̇_J) over
+    // the part of the section where the centre sees q and ½ q̇_Jᵀ S q̇_J ≤ E − V(q); then q̇k
+    // solves h = E with the section's sign (+ without one). One free coordinate: (q_J, q̇_J)
+    // by rejection from the box and the speed bound, 2 numbers a try. More: q_J by rejection
+    // from the box, kept with probability w(q)/bound (the velocity ellipsoid's volume), then
+    // q̇_J uniformly in that ellipsoid — a Gaussian direction (Box–Muller) and a radius
+    // u^(1/m) — so the velocities' dimensions cost no rejection; m + 2 + 2⌈m/2⌉ numbers a try.
+    const std::size_t per_try = m == 1 ? 2 : m + 2 + 2 * ((m + 1) / 2);
+    const std::size_t tries = m == 1 ? 10000 : 100000;
+    auto draw_start = [&](std::size_t index, std::vector<double>& x0, workspace& w) {
+        std::vector<double> at(n), v(m);
+        Eigen::VectorXd speeds(m);
+        for (std::size_t draw = 0; draw < tries * per_try; draw += per_try) {
+            at[k] = L;
+            for (std::size_t i = 0; i < m; ++i) {
+                const std::size_t j = free[i];
+                at[j] = region.low[j] + (region.high[j] - region.low[j]) * uniform(settings.seed, index, draw + i);
+                if (m == 1)
+                    speeds(0) = region.widest[j] * (2 * uniform(settings.seed, index, draw + 1) - 1);
+            }
+            const quadratic f = velocity_form(at, w);
+            const double room = E - f.v;
+            if (m == 1) {
+                // One free coordinate: |v| against the bound itself (as sqrt(2 room / s)).
+                const double stiff = stiffness(f)(0, 0);
+                const double bound = room >= 0 && stiff > 0 ? std::sqrt(2 * room / stiff) : 0.0;
+                if (!(std::abs(speeds(0)) <= bound) || !visible(at, w))
+                    continue;
+            } else {
+                if (!(room > 0))
+                    continue;
+                const Eigen::LLT<Eigen::MatrixXd> factor(stiffness(f));
+                if (factor.info() != Eigen::Success)
+                    continue;
+                const double weight = std::pow(room, 0.5 * static_cast<double>(m)) /
+                                      factor.matrixL().toDenseMatrix().diagonal().prod();
+                if (weight > heaviest)
+                    ++overweight;
+                if (!(uniform(settings.seed, index, draw + m) * heaviest <= weight) || !visible(at, w))
+                    continue;
+                // A point uniform in the unit m-ball: a Gaussian direction, the radius u^(1/m).
+                Eigen::VectorXd y(m);
+                for (std::size_t i = 0; i < m; i += 2) {
+                    const double u1 = uniform(settings.seed, index, draw + m + 1 + i);
+                    const double u2 = uniform(settings.seed, index, draw + m + 2 + i);
+                    const double r = std::sqrt(-2 * std::log1p(-u1)), angle = 2 * pi * u2;
+                    y(static_cast<Eigen::Index>(i)) = r * std::cos(angle);
+                    if (i + 1 < m)
+                        y(static_cast<Eigen::Index>(i + 1)) = r * std::sin(angle);
+                }
+                if (!(y.norm() > 0))
+                    continue;
+                const double radius = std::pow(uniform(settings.seed, index, draw + per_try - 1), 1.0 / static_cast<double>(m));
+                y *= radius / y.norm();
+                // ½ vᵀ S v = room |y|² for v = sqrt(2 room) L^{-T} y, S = L Lᵀ.
+                speeds = std::sqrt(2 * room) * factor.matrixU().solve(y);
+            }
+            // ½ a_kk q̇k² + b q̇k + c = E − V, b = A_kJ v, c = ½ vᵀ A_JJ v.
+            double b = 0, c = 0;
+            for (std::size_t i = 0; i < m; ++i) {
+                b += f.a(k, free[i]) * speeds(static_cast<Eigen::Index>(i));
+                for (std::size_t i2 = 0; i2 < m; ++i2)
+                    c += 0.5 * f.a(free[i], free[i2]) * speeds(static_cast<Eigen::Index>(i)) *
+                         speeds(static_cast<Eigen::Index>(i2));
+            }
+            const double discriminant = std::max(0.0, b * b - 2 * f.a(k, k) * (c - room));
+            std::fill(x0.begin(), x0.end(), 0.0);
+            std::copy(at.begin(), at.end(), x0.begin());
+            for (std::size_t i = 0; i < m; ++i)
+                x0[n + free[i]] = speeds(static_cast<Eigen::Index>(i));
+            x0[n + k] = (-b + (section.direction < 0 ? -1 : 1) * std::sqrt(discriminant)) / f.a(k, k);
+            return true;
+        }
+        return false;
+    };
+
+    // One orbit: drawn, then integrated by DOP853 (a fixed dimension for two coordinates, as
+    // the ensembles' common case) and cut.
+    auto integrate_orbit = [&](auto dimension, const std::vector<double>& x0, poincare_orbit& orbit, workspace& w) {
+        constexpr int Dim = decltype(dimension)::value;
+        std::size_t count = 1;
+        orbit_rhs f{&problem, &w};
+        auto record = [&](double t, const double* x) {
+            orbit.points.push_back(t);
+            for (std::size_t c = 0; c < n; ++c)
+                orbit.points.push_back(wrap(c, x[c]));
+            orbit.points.insert(orbit.points.end(), x + n, x + 2 * n);
+        };
+        record(0, x0.data());
+        dop853_stepper<Dim> stepper(2 * n, std::max(settings.tolerance / 12, 1e-15)); // per step ÷12, as simulate
+        stepper.start(f, 0.0, x0.data(), settings.until);
+        std::vector<double> before(2 * n), at(2 * n);
+        struct crossing {
+            double t;
+            std::vector<double> x;
+        };
+        std::vector<crossing> found_now;
+        while (count < settings.crossings && stepper.time() < settings.until) {
+            const double t0 = stepper.time();
+            std::copy(stepper.state(), stepper.state() + 2 * n, before.begin());
+            if (!stepper.step(f, settings.until))
+                throw computation_error("the step size of dop853 collapsed at t = " + message_number(t0));
+            if (++orbit.steps > settings.max_steps)
+                throw computation_error("the orbit took more than " + std::to_string(settings.max_steps) + " steps");
+            const double t1 = stepper.time();
+            const double* after = stepper.state();
+            // The copies of the level the step may have met: for an angle, those next to both ends.
+            double levels[2] = {L, L};
+            if (periodic[k]) {
+                levels[0] = L + 2 * pi * std::round((before[k] - L) / (2 * pi));
+                levels[1] = L + 2 * pi * std::round((after[k] - L) / (2 * pi));
+            }
+            found_now.clear();
+            for (int copy = 0; copy < (levels[1] != levels[0] ? 2 : 1); ++copy) {
+                const double level = levels[copy];
+                std::vector<double> times{t0, t1}, sides{before[k] - level, after[k] - level};
+                // Both ends on one side, moving towards the level at the start and away at the
+                // end: the orbit may have dipped through and back; look inside the step.
+                if (sides[0] * sides[1] > 0 && sides[0] * before[n + k] < 0 && sides[1] * after[n + k] > 0) {
+                    times.assign(1, t0);
+                    sides.assign(1, sides[0]);
+                    for (int s = 1; s < 8; ++s) {
+                        const double t = t0 + (t1 - t0) * s / 8;
+                        stepper.interpolate(f, t, at.data());
+                        times.push_back(t);
+                        sides.push_back(at[k] - level);
+                    }
+                    times.push_back(t1);
+                    sides.push_back(after[k] - level);
+                }
+                for (std::size_t s = 0; s + 1 < times.size(); ++s) {
+                    const bool up = sides[s] < 0 && sides[s + 1] >= 0, down = sides[s] > 0 && sides[s + 1] <= 0;
+                    if (!(up && section.direction >= 0) && !(down && section.direction <= 0))
+                        continue;
+                    crossing c{times[s + 1], std::vector<double>(2 * n)};
+                    if (sides[s + 1] != 0) {
+                        // The root of q_k(t) − level on the dense output, to the rounding of t.
+                        boost::uintmax_t iterations = 200;
+                        auto side = [&](double t) {
+                            stepper.interpolate(f, t, at.data());
+                            return at[k] - level;
+                        };
+                        auto root = boost::math::tools::toms748_solve(side, times[s], times[s + 1], sides[s],
+                                                                      sides[s + 1],
+                                                                      boost::math::tools::eps_tolerance<double>(53),
+                                                                      iterations);
+                        c.t = root.first + (root.second - root.first) / 2;
+                    }
+                    if (c.t == t1)
+                        std::copy(after, after + 2 * n, c.x.begin());
+                    else
+                        stepper.interpolate(f, c.t, c.x.data());
+                    found_now.push_back(std::move(c));
+                }
+            }
+            std::sort(found_now.begin(), found_now.end(), [](const crossing& a, const crossing& b) { return a.t < b.t; });
+            for (const crossing& c : found_now)
+                if (count < settings.crossings) {
+                    record(c.t, c.x.data());
+                    ++count;
+                }
+        }
+    };
     auto run_orbit = [&](std::size_t index, workspace& w) {
         poincare_orbit orbit;
-        double x0[4] = {0, 0, 0, 0};
-        bool found = false;
-        for (std::size_t draw = 0; draw < 20000 && !found; draw += 2) {
-            const double y = region.low + (region.high - region.low) * uniform(settings.seed, index, draw);
-            const double v = region.widest * (2 * uniform(settings.seed, index, draw + 1) - 1);
-            const quadratic f = velocity_form(y, w);
-            if (!(std::abs(v) <= widest_at(f)) || !visible(L, y, w))
-                continue;
-            const double discriminant = std::max(0.0, 2 * f.kk * (E - f.v) - (f.kk * f.jj - f.kj * f.kj) * v * v);
-            x0[k] = L, x0[j] = y, x0[2 + j] = v;
-            x0[2 + k] = (-f.kj * v + (section.direction < 0 ? -1 : 1) * std::sqrt(discriminant)) / f.kk;
-            found = true;
-        }
-        if (!found) {
+        std::vector<double> x0(2 * n);
+        if (!draw_start(index, x0, w)) {
             orbit.failure = "no start on the energy surface was drawn";
             return orbit;
         }
-        auto record = [&](double t, const double* x) {
-            orbit.points.push_back(t);
-            for (std::size_t c = 0; c < 2; ++c)
-                orbit.points.push_back(wrap(c, x[c]));
-            orbit.points.push_back(x[2]);
-            orbit.points.push_back(x[3]);
-        };
-        record(0, x0);
-        std::size_t count = 1;
-        orbit_rhs f{&problem, &w};
-        dop853_stepper<4> stepper(4, std::max(settings.tolerance / 12, 1e-15)); // per step ÷12, as simulate
         try {
-            stepper.start(f, 0.0, x0, settings.until);
-            double before[4], at[4];
-            struct crossing {
-                double t;
-                double x[4];
-            };
-            std::vector<crossing> found_now;
-            while (count < settings.crossings && stepper.time() < settings.until) {
-                const double t0 = stepper.time();
-                std::copy(stepper.state(), stepper.state() + 4, before);
-                if (!stepper.step(f, settings.until))
-                    throw computation_error("the step size of dop853 collapsed at t = " + message_number(t0));
-                if (++orbit.steps > settings.max_steps)
-                    throw computation_error("the orbit took more than " + std::to_string(settings.max_steps) + " steps");
-                const double t1 = stepper.time();
-                const double* after = stepper.state();
-                // The copies of the level the step may have met: for an angle, those next to both ends.
-                double levels[2] = {L, L};
-                if (periodic[k]) {
-                    levels[0] = L + 2 * pi * std::round((before[k] - L) / (2 * pi));
-                    levels[1] = L + 2 * pi * std::round((after[k] - L) / (2 * pi));
-                }
-                found_now.clear();
-                for (int m = 0; m < (levels[1] != levels[0] ? 2 : 1); ++m) {
-                    const double level = levels[m];
-                    std::vector<double> times{t0, t1}, sides{before[k] - level, after[k] - level};
-                    // Both ends on one side, moving towards the level at the start and away at the
-                    // end: the orbit may have dipped through and back; look inside the step.
-                    if (sides[0] * sides[1] > 0 && sides[0] * before[2 + k] < 0 && sides[1] * after[2 + k] > 0) {
-                        times.assign(1, t0);
-                        sides.assign(1, sides[0]);
-                        for (int s = 1; s < 8; ++s) {
-                            const double t = t0 + (t1 - t0) * s / 8;
-                            stepper.interpolate(f, t, at);
-                            times.push_back(t);
-                            sides.push_back(at[k] - level);
-                        }
-                        times.push_back(t1);
-                        sides.push_back(after[k] - level);
-                    }
-                    for (std::size_t s = 0; s + 1 < times.size(); ++s) {
-                        const bool up = sides[s] < 0 && sides[s + 1] >= 0, down = sides[s] > 0 && sides[s + 1] <= 0;
-                        if (!(up && section.direction >= 0) && !(down && section.direction <= 0))
-                            continue;
-                        crossing c;
-                        if (sides[s + 1] == 0) {
-                            c.t = times[s + 1];
-                        } else {
-                            // The root of q_k(t) − level on the dense output, to the rounding of t.
-                            boost::uintmax_t iterations = 200;
-                            auto side = [&](double t) {
-                                stepper.interpolate(f, t, at);
-                                return at[k] - level;
-                            };
-                            auto root = boost::math::tools::toms748_solve(
-                                side, times[s], times[s + 1], sides[s], sides[s + 1],
-                                boost::math::tools::eps_tolerance<double>(53), iterations);
-                            c.t = root.first + (root.second - root.first) / 2;
-                        }
-                        if (c.t == t1)
-                            std::copy(after, after + 4, c.x);
-                        else
-                            stepper.interpolate(f, c.t, c.x);
-                        found_now.push_back(c);
-                    }
-                }
-                std::sort(found_now.begin(), found_now.end(),
-                          [](const crossing& a, const crossing& b) { return a.t < b.t; });
-                for (const crossing& c : found_now)
-                    if (count < settings.crossings) {
-                        record(c.t, c.x);
-                        ++count;
-                    }
-            }
+            if (n == 2)
+                integrate_orbit(std::integral_constant<int, 4>{}, x0, orbit, w);
+            else
+                integrate_orbit(std::integral_constant<int, 0>{}, x0, orbit, w);
         } catch (const computation_error& error) {
             orbit.failure = error.what();
         }
@@ -583,7 +868,7 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
     std::mutex error_mutex;
     auto worker = [&] {
         try {
-            workspace w;
+            workspace w(n);
             for (std::size_t index = next++; index < settings.orbits; index = next++)
                 result.orbits[index] = run_orbit(index, w);
         } catch (...) {
@@ -602,6 +887,7 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
     if (error)
         std::rethrow_exception(error);
     result.threads = pool.size() + 1;
+    result.overweight_starts = overweight;
 
     // The energy at every crossing, against E.
     for (const poincare_orbit& orbit : result.orbits)

@@ -164,8 +164,6 @@ ode_system constrained_motion::system() const
     return s;
 }
 
-namespace {
-
 /// The bad input of an initial state `given` off the constraints: located at the written
 /// value that the projection (`projected`, null when it did not converge) moves most, else
 /// at the `initial` line, else at the `simulate` line; it names each constraint missed and
@@ -220,7 +218,6 @@ scene_error off_constraints(const model& scene, const constrained_motion& motion
     return error;
 }
 
-} // namespace
 
 simulation_result simulate_constrained(const model& scene, const equations_of_motion& equations,
                                        const simulation_settings& settings)

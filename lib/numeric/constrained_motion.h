@@ -12,6 +12,7 @@
 #include "program/expression_program.h"
 #include "numeric/ode.h"
 #include "numeric/simulation.h"
+#include "core/errors.h"
 #include "core/model.h"
 
 #include <map>
@@ -53,6 +54,12 @@ private:
     expression_program energy_;
     mutable std::vector<double> scratch_, symbols_, outputs_;
 };
+
+/// The bad input of an initial state `given` off the constraints: located at the written
+/// value that the projection (`projected`, null when it did not converge) moves most, naming
+/// each constraint missed and suggesting the projected state (simulate and animate throw it).
+scene_error off_constraints(const model& scene, const constrained_motion& motion, const std::vector<double>& given,
+                            const std::vector<double>* projected, double tolerance);
 
 /// Simulates a scene with constraints (see above). An initial state off the constraints
 /// (by more than the tolerance) is a scene_error at the value the least-change projection

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file animation_output.cpp
  *  The animation's HTML page (see animation_output.h). The player is written here, in plain
- *  JavaScript on a 2-D canvas: it draws a few discs, lines and coils, which needs no library. */
+ *  JavaScript on a 2-D canvas: it draws a few discs, lines, coils and bodies' wire outlines,
+ *  which needs no library. */
 #include "output/animation_output.h"
 
 #include "core/number_text.h"
@@ -40,6 +41,7 @@ const char* const player_script = R"JS(
   const speedBox = document.getElementById("speed"), viewBox = document.getElementById("view");
   const clock = document.getElementById("clock");
   const M = D.markers.length, F = D.times.length, T = D.times[F - 1], P = D.poinsot || null;
+  const B = D.bodies.length;
   let t = 0, playing = false, last = null, speed = D.speed, view = D.view, yaw = 0.6, pitch = 0.35;
   slider.max = T; slider.step = D.step / 4;
   speedBox.value = String(speed);
@@ -59,6 +61,26 @@ const char* const player_script = R"JS(
     return out;
   }
   function turn(R, v) { return [R[0] * v[0] + R[1] * v[1] + R[2] * v[2], R[3] * v[0] + R[4] * v[1] + R[5] * v[2], R[6] * v[0] + R[7] * v[1] + R[8] * v[2]]; }
+  // The bodies' rotations at time t: between the frames linearly, then made orthonormal again
+  // (Gram–Schmidt on the columns), so that a fast spin between frames does not shrink the body.
+  function rotationsAt(time) {
+    const all = between(D.rotations, 9 * B, time), out = [];
+    for (let b = 0; b < B; ++b) {
+      const R = all.slice(9 * b, 9 * b + 9), c = [0, 1, 2].map(j => [R[j], R[3 + j], R[6 + j]]);
+      const dot = (u, v) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+      const unit = u => { const n = Math.sqrt(dot(u, u)); return u.map(x => x / n); };
+      c[0] = unit(c[0]);
+      c[1] = unit(c[1].map((x, k) => x - dot(c[1], c[0]) * c[0][k]));
+      c[2] = [c[0][1] * c[1][2] - c[0][2] * c[1][1], c[0][2] * c[1][0] - c[0][0] * c[1][2], c[0][0] * c[1][1] - c[0][1] * c[1][0]];
+      out.push([c[0][0], c[1][0], c[2][0], c[0][1], c[1][1], c[2][1], c[0][2], c[1][2], c[2][2]]);
+    }
+    return out;
+  }
+  // Body b's point r (in its axes, from its centre of mass) in the scene, for rotation R.
+  function bodyPoint(b, R, time, r) {
+    const c = position(D.bodies[b].centre, time), q = turn(R, r);
+    return [c[0] + q[0], c[1] + q[1], c[2] + q[2]];
+  }
   // Poinsot's construction: the plane's half width covers the ellipsoid and the herpolhode.
   let planeHalf = 0;
   if (P) {
@@ -86,13 +108,19 @@ const char* const player_script = R"JS(
         hi = [Math.max(hi[0], q[0]), Math.max(hi[1], q[1])];
       }
     }
-    for (let f = 0; f < F && !P; ++f)
-      for (let m = 0; m < M; ++m) {
-        if (!D.markers[m].name) continue;
-        const q = project(position(m, f * D.step));
-        lo = [Math.min(lo[0], q[0]), Math.min(lo[1], q[1])];
-        hi = [Math.max(hi[0], q[0]), Math.max(hi[1], q[1])];
+    const include = r => {
+      const q = project(r);
+      lo = [Math.min(lo[0], q[0]), Math.min(lo[1], q[1])];
+      hi = [Math.max(hi[0], q[0]), Math.max(hi[1], q[1])];
+    };
+    for (let f = 0; f < F && !P; ++f) {
+      for (let m = 0; m < M; ++m) if (D.markers[m].name) include(position(m, f * D.step));
+      for (let b = 0; b < B; ++b) {
+        const R = D.rotations.slice((f * B + b) * 9, (f * B + b) * 9 + 9);
+        for (const line of D.bodies[b].outline)
+          for (let k = 0; k < line.length; k += 3) include(bodyPoint(b, R, f * D.step, line.slice(k, k + 3)));
       }
+    }
     const span = Math.max(hi[0] - lo[0], hi[1] - lo[1], 1e-9);
     box = {cx: (lo[0] + hi[0]) / 2, cy: (lo[1] + hi[1]) / 2, scale: 0.8 * Math.min(canvas.width, canvas.height) / span};
   }
@@ -183,13 +211,38 @@ const char* const player_script = R"JS(
         g.lineTo(at[m][0], at[m][1]); g.stroke();
       }
     }
+    // The ground through the pivot: a grid square normal to gravity (a line seen edge-on).
+    if (D.ground) {
+      const G = D.ground, at = (a, b) => [0, 1, 2].map(k => G.centre[k] + G.half * (a * G.u[k] + b * G.v[k]));
+      for (let k = -2; k <= 2; ++k) {
+        polyline([at(k / 2, -1), at(k / 2, 1)], "#bbb", 1.5);
+        polyline([at(-1, k / 2), at(1, k / 2)], "#bbb", 1.5);
+      }
+    }
+    // The bodies: outlines turned to time t, and their axes 1, 2, 3 from the centre of mass.
+    const turns = rotationsAt(t);
+    for (let b = 0; b < B; ++b) {
+      const body = D.bodies[b], R = turns[b];
+      for (const line of body.outline) {
+        const points = [];
+        for (let k = 0; k < line.length; k += 3) points.push(bodyPoint(b, R, t, line.slice(k, k + 3)));
+        polyline(points, "#2060c0", body.shape === "stick" ? 5 : 2);
+      }
+      ["#9467bd", "#8c564b", "#17becf"].forEach((colour, k) => {
+        const e = [0, 0, 0]; e[k] = 0.75 * body.size;
+        polyline([bodyPoint(b, R, t, [0, 0, 0]), bodyPoint(b, R, t, e)], colour, 1.5);
+      });
+    }
     g.strokeStyle = "#444"; g.lineWidth = 3;
     for (const r of D.rods) { g.beginPath(); g.moveTo(at[r[0]][0], at[r[0]][1]); g.lineTo(at[r[1]][0], at[r[1]][1]); g.stroke(); }
     g.strokeStyle = "#2ca02c"; g.lineWidth = 2;
     for (const s of D.springs) coil(at[s[0]], at[s[1]]);
     for (let m = 0; m < M; ++m) {
       const k = D.markers[m];
-      if (k.name === "pivot") { g.fillStyle = "#000"; g.fillRect(at[m][0] - 5, at[m][1] - 5, 10, 10); }
+      if (k.name === "pivot" || k.name === "support") {
+        g.fillStyle = k.name === "pivot" ? "#000" : "#7f7f7f"; // a moving support in grey
+        g.fillRect(at[m][0] - 5, at[m][1] - 5, 10, 10);
+      }
       if (!k.point) continue;
       g.fillStyle = "#d62728"; g.beginPath();
       g.arc(at[m][0], at[m][1], 6 + 14 * Math.cbrt(k.mass / heaviest), 0, 2 * Math.PI); g.fill();
@@ -199,6 +252,7 @@ const char* const player_script = R"JS(
     slider.value = t;
     const world = [];
     for (let m = 0; m < M; ++m) world.push(position(m, t));
+    canvas.dataset.rotations = JSON.stringify(turns);
     publish(world);
   }
   // Timers, not requestAnimationFrame: a headless browser (the test) runs timers on virtual
@@ -258,7 +312,36 @@ std::string animation_html(const animation_frames& frames, const animation_view&
     data << "],\"springs\":[";
     for (std::size_t s = 0; s < frames.springs.size(); ++s)
         data << (s ? "," : "") << "[" << frames.springs[s].a << "," << frames.springs[s].b << "]";
-    data << "],\"times\":[";
+    data << "],\"bodies\":[";
+    for (std::size_t b = 0; b < frames.bodies.size(); ++b) {
+        const auto& body = frames.bodies[b];
+        data << (b ? "," : "") << "{\"name\":" << nlohmann::json(body.name).dump()
+             << ",\"shape\":" << nlohmann::json(body.shape).dump() << ",\"centre\":" << body.centre
+             << ",\"size\":" << shortest(body.size) << ",\"outline\":[";
+        for (std::size_t l = 0; l < body.outline.size(); ++l) {
+            data << (l ? "," : "") << "[";
+            bool first = true;
+            for (const auto& r : body.outline[l])
+                for (double x : r) {
+                    data << (first ? "" : ",") << shortest(x);
+                    first = false;
+                }
+            data << "]";
+        }
+        data << "]}";
+    }
+    data << "],\"rotations\":[";
+    for (std::size_t k = 0; k < frames.rotations.size(); ++k)
+        data << (k ? "," : "") << shortest(frames.rotations[k]);
+    data << "]";
+    if (frames.ground) {
+        const auto& g = *frames.ground;
+        data << ",\"ground\":{\"centre\":[" << shortest(g.centre[0]) << "," << shortest(g.centre[1]) << ","
+             << shortest(g.centre[2]) << "],\"u\":[" << shortest(g.u[0]) << "," << shortest(g.u[1]) << ","
+             << shortest(g.u[2]) << "],\"v\":[" << shortest(g.v[0]) << "," << shortest(g.v[1]) << ","
+             << shortest(g.v[2]) << "],\"half\":" << shortest(g.half_width) << "}";
+    }
+    data << ",\"times\":[";
     for (std::size_t f = 0; f < frames.times.size(); ++f)
         data << (f ? "," : "") << shortest(frames.times[f]);
     data << "],\"positions\":[";

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file animation_video.cpp
  *  MP4 and GIF of an animation (see animation_output.h): each frame drawn by cairo — the same
- *  picture as the HTML player's canvas: discs, rods, coils, the pivot, trails, Poinsot's
+ *  picture as the HTML player's canvas: discs, bodies by shape with their axes, rods, coils,
+ *  the pivot and moving supports, trails, Poinsot's
  *  construction, a clock and the energy drift — and its pixels piped to ffmpeg, which runs as
  *  every external program does (system/external.h: no shell, its own process group, a timeout). */
 #include "output/animation_output.h"
@@ -181,6 +182,37 @@ point3 marker_at(const animation_frames& frames, std::size_t f, std::size_t m)
     return {p[0], p[1], p[2]};
 }
 
+/// Body b's point r (in its axes, from its centre of mass) in the scene at frame f.
+point3 body_point(const animation_frames& frames, std::size_t f, std::size_t b, const point3& r)
+{
+    const point3 c = marker_at(frames, f, frames.bodies[b].centre);
+    std::array<double, 9> R;
+    std::copy(frames.rotation(f, b), frames.rotation(f, b) + 9, R.begin());
+    const point3 turned = turn(R, r);
+    return {c[0] + turned[0], c[1] + turned[1], c[2] + turned[2]};
+}
+
+/// The bodies: their outlines turned to frame f (a stick thick, others thin), and their body
+/// axes from the centre of mass (1, 2, 3: purple, brown, cyan, as Poinsot's construction's).
+void draw_bodies(cairo_t* g, const canvas_view& v, const animation_frames& frames, std::size_t f)
+{
+    for (std::size_t b = 0; b < frames.bodies.size(); ++b) {
+        const auto& body = frames.bodies[b];
+        for (const auto& line : body.outline) {
+            std::vector<point3> turned;
+            for (const point3& r : line)
+                turned.push_back(body_point(frames, f, b, r));
+            polyline(g, v, turned, 0x2060c0, body.shape == "stick" ? 5 : 2);
+        }
+        const unsigned axis_colours[3] = {0x9467bd, 0x8c564b, 0x17becf};
+        for (int k = 0; k < 3; ++k) {
+            point3 e{0, 0, 0};
+            e[static_cast<std::size_t>(k)] = 0.75 * body.size;
+            polyline(g, v, {body_point(frames, f, b, {0, 0, 0}), body_point(frames, f, b, e)}, axis_colours[k], 1.5);
+        }
+    }
+}
+
 void draw_points(cairo_t* g, const canvas_view& v, const animation_frames& frames, std::size_t f, std::size_t trail)
 {
     const std::size_t markers = frames.markers.size();
@@ -195,6 +227,20 @@ void draw_points(cairo_t* g, const canvas_view& v, const animation_frames& frame
             path.push_back(marker_at(frames, s, m));
         polyline(g, v, path, 0x8fbbd9, 1.5);
     }
+    if (frames.ground) {
+        // The ground through the pivot: a grid square normal to gravity (a line when seen edge-on).
+        const auto& s = *frames.ground;
+        for (int k = -2; k <= 2; ++k) {
+            auto at = [&](double a, double b) {
+                return point3{s.centre[0] + s.half_width * (a * s.u[0] + b * s.v[0]),
+                              s.centre[1] + s.half_width * (a * s.u[1] + b * s.v[1]),
+                              s.centre[2] + s.half_width * (a * s.u[2] + b * s.v[2])};
+            };
+            polyline(g, v, {at(k / 2.0, -1), at(k / 2.0, 1)}, 0xbbbbbb, 1.5);
+            polyline(g, v, {at(-1, k / 2.0), at(1, k / 2.0)}, 0xbbbbbb, 1.5);
+        }
+    }
+    draw_bodies(g, v, frames, f);
     for (const auto& rod : frames.rods)
         polyline(g, v, {marker_at(frames, f, rod.a), marker_at(frames, f, rod.b)}, 0x444444, 3);
     for (const auto& spring : frames.springs)
@@ -202,8 +248,8 @@ void draw_points(cairo_t* g, const canvas_view& v, const animation_frames& frame
     for (std::size_t m = 0; m < markers; ++m) {
         const auto& k = frames.markers[m];
         const auto q = v.screen(marker_at(frames, f, m));
-        if (k.name == "pivot") {
-            colour(g, 0x000000);
+        if (k.name == "pivot" || k.name == "support") {
+            colour(g, k.name == "pivot" ? 0x000000 : 0x7f7f7f); // a moving support in grey
             cairo_rectangle(g, q[0] - 5, q[1] - 5, 10, 10);
             cairo_fill(g);
         }
@@ -232,10 +278,15 @@ void draw_frames(const animation_frames& frames, const animation_view& view,
                     v.include({s * h, u * h, -m.plane_distance});
                 }
     } else {
-        for (std::size_t f = 0; f < count; ++f)
+        for (std::size_t f = 0; f < count; ++f) {
             for (std::size_t k = 0; k < frames.markers.size(); ++k)
                 if (!frames.markers[k].name.empty())
                     v.include(marker_at(frames, f, k));
+            for (std::size_t b = 0; b < frames.bodies.size(); ++b)
+                for (const auto& line : frames.bodies[b].outline)
+                    for (const point3& r : line)
+                        v.include(body_point(frames, f, b, r));
+        }
     }
     v.finish();
     const std::size_t trail = static_cast<std::size_t>(std::lround(view.trail / frames.step));

@@ -35,30 +35,34 @@ std::string gnuplot_number(double x) { return significant(std::abs(x) < 1e-14 ? 
 /// A name of ω_k for gnuplot's labels (plain text, Unicode).
 std::string plain_name(const GiNaC::ex& e) { return print(e, syntax::text); }
 
-/// The polhode on the inertia ellipsoid, drawn in 3D.
-void polhode_figure(report_writer& w, const euler_result& e, const std::string& tag)
+/// The polhode on the inertia ellipsoid of semi-axes `axes`, drawn in 3D: ω's (ωᵀIω = 2T)
+/// or, `scaled`, ρ = ω/√(2T)'s (ρᵀIρ = 1), as the report states the construction.
+void polhode_figure(report_writer& w, const euler_result& e, const std::array<double, 3>& axes,
+                    const std::vector<std::array<double, 3>>& polhode, bool scaled, const std::string& tag)
 {
-    const auto& p = *e.poinsot;
-    if (p.polhode.empty())
+    if (polhode.empty())
         return;
     std::string script = "set parametric\nset view equal xyz\nset view 64, 28, 1.2\nset ticslevel 0\nset hidden3d\n"
                          "set urange [0:2*pi]\nset vrange [-pi/2:pi/2]\nset isosamples 25, 13\n"
                          "set key at screen 0.98, 0.97 right top\nset xtics 0.5 offset 0, -0.5\nset ytics 0.5\nset ztics 0.5\n";
-    script += "set xlabel '" + plain_name(e.omega[0]) + "'\nset ylabel '" + plain_name(e.omega[1]) + "'\nset zlabel '" +
-              plain_name(e.omega[2]) + "'\n";
+    const std::string per = scaled ? "/√(2T)" : "";
+    script += "set xlabel '" + plain_name(e.omega[0]) + per + "'\nset ylabel '" + plain_name(e.omega[1]) + per +
+              "'\nset zlabel '" + plain_name(e.omega[2]) + per + "'\n";
     script += "$polhode << EOD\n";
-    for (const auto& point : p.polhode)
+    for (const auto& point : polhode)
         script += gnuplot_number(point[0]) + " " + gnuplot_number(point[1]) + " " + gnuplot_number(point[2]) + "\n";
-    const auto& first = p.polhode.front();
+    const auto& first = polhode.front();
     script += gnuplot_number(first[0]) + " " + gnuplot_number(first[1]) + " " + gnuplot_number(first[2]) + "\nEOD\n";
-    script += "splot " + gnuplot_number(p.ellipsoid_axes[0]) + "*cos(u)*cos(v), " + gnuplot_number(p.ellipsoid_axes[1]) +
-              "*sin(u)*cos(v), " + gnuplot_number(p.ellipsoid_axes[2]) +
+    script += "splot " + gnuplot_number(axes[0]) + "*cos(u)*cos(v), " + gnuplot_number(axes[1]) +
+              "*sin(u)*cos(v), " + gnuplot_number(axes[2]) +
               "*sin(v) with lines lc rgb '#c8c8c8' title 'inertia ellipsoid', "
               "$polhode using 1:2:3 with lines lw 2.5 lc rgb '#c00000' title 'polhode'\n";
     w.figure(tag + "polhode", script, 12, 10,
              "The polhode of body " + body_title(e.body) +
-                 ": the tip of $\\boldsymbol{\\omega}$ over one period, on the inertia ellipsoid "
-                 "$\\boldsymbol{\\omega}^{T}\\mathbf{I}\\boldsymbol{\\omega} = 2T$.");
+                 (scaled ? ": the tip of $\\boldsymbol{\\rho} = \\boldsymbol{\\omega}/\\sqrt{2T}$ over one period, on the "
+                           "inertia ellipsoid $\\boldsymbol{\\rho}^{T}\\mathbf{I}\\boldsymbol{\\rho} = 1$."
+                         : ": the tip of $\\boldsymbol{\\omega}$ over one period, on the inertia ellipsoid "
+                           "$\\boldsymbol{\\omega}^{T}\\mathbf{I}\\boldsymbol{\\omega} = 2T$."));
 }
 
 /// The seed's Figure 8: Poinsot's construction in space at t = 0 — the inertia ellipsoid
@@ -111,7 +115,7 @@ void poinsot_figure(report_writer& w, const poinsot_motion& m, const std::string
                  ": the inertia ellipsoid $\\boldsymbol{\\rho}^{T}\\mathbf{I}\\boldsymbol{\\rho} = 1$ at $t = 0$, "
                  "touching the invariable plane (normal to $\\mathbf{L}$, at $\\sqrt{2T}/|\\mathbf{L}| = " +
                  report_writer::number(m.plane_distance, 6) +
-                 "$ from the centre) at $\\boldsymbol{\\rho} = \\boldsymbol{\\omega}/\\sqrt{2T}$; the polhode on the "
+                 "$ from the centre) at the tip of $\\boldsymbol{\\rho}$; the polhode on the "
                  "ellipsoid and the herpolhode it rolls out on the plane over $t \\le " +
                  report_writer::number(m.times.back(), 4) + "$.");
 }
@@ -231,30 +235,51 @@ void write_body_euler(report_writer& w, const euler_result& e)
         omega_figure(w, e, tag);
     }
     if (e.poinsot) {
-        const auto& p = *e.poinsot;
-        w.text("Poinsot's construction: ").latex("$\\boldsymbol{\\omega}$").text(" lies on the inertia ellipsoid ")
-            .latex("$\\boldsymbol{\\omega}^{T}\\mathbf{I}\\boldsymbol{\\omega} = 2T$")
-            .text(" with the semi-axes ")
-            .latex("$\\sqrt{2T/I_{k}} = " + report_writer::number(p.ellipsoid_axes[0], 8) + ",\\ " +
-                   report_writer::number(p.ellipsoid_axes[1], 8) + ",\\ " + report_writer::number(p.ellipsoid_axes[2], 8) + "$")
-            .text(", which rolls without slipping on the invariable plane normal to ")
-            .latex("$\\mathbf{L}$")
-            .text(" at the distance ")
-            .latex("$2T/|\\mathbf{L}| = " + report_writer::number(p.plane_distance, 8) + "$")
-            .text(" from the centre. The curve ").latex("$\\boldsymbol{\\omega}(t)$")
-            .text(" traces on the ellipsoid is the polhode.\n");
-        polhode_figure(w, e, tag);
+        // One normalization, stated once: ρ = ω/√(2T) when the construction was drawn (its
+        // figure and the player use it), else ω on ωᵀIω = 2T.
+        const poinsot_motion* motion = nullptr;
         if (w.result().poinsot)
             for (const poinsot_motion& m : *w.result().poinsot)
-                if (m.body == e.body) {
-                    w.text("The ellipsoid ").latex("$\\boldsymbol{\\rho}^{T}\\mathbf{I}\\boldsymbol{\\rho} = 1$")
-                        .text(" of ").latex("$\\boldsymbol{\\rho} = \\boldsymbol{\\omega}/\\sqrt{2T}$")
-                        .text(", fixed in the body, turns with it and rolls without slipping on the invariable plane: "
-                              "the point of contact lies on the instantaneous axis, so it is at rest. Euler's "
-                              "equations and the orientation integrated together (" + m.method + ", " +
-                              std::to_string(m.steps) + " steps) draw it in space.\n");
-                    poinsot_figure(w, m, tag);
-                }
+                if (m.body == e.body && !m.polhode.empty())
+                    motion = &m;
+        const auto& p = *e.poinsot;
+        if (motion) {
+            const poinsot_motion& m = *motion;
+            w.text("Poinsot's construction, in the normalization ")
+                .latex("$\\boldsymbol{\\rho} = \\boldsymbol{\\omega}/\\sqrt{2T}$")
+                .text(" (used from here on): ").latex("$\\boldsymbol{\\rho}$").text(" lies on the inertia ellipsoid ")
+                .latex("$\\boldsymbol{\\rho}^{T}\\mathbf{I}\\boldsymbol{\\rho} = 1$")
+                .text(", fixed in the body, with the semi-axes ")
+                // Three pieces of mathematics, so that the line may break between them.
+                .latex("$1/\\sqrt{I_{k}} = " + report_writer::number(m.semi_axes[0], 8) + "$")
+                .text(", ")
+                .latex("$" + report_writer::number(m.semi_axes[1], 8) + "$")
+                .text(", ")
+                .latex("$" + report_writer::number(m.semi_axes[2], 8) + "$")
+                .text("; it rolls without slipping on the invariable plane normal to ").latex("$\\mathbf{L}$")
+                .text(" at the distance ")
+                .latex("$\\sqrt{2T}/|\\mathbf{L}| = " + report_writer::number(m.plane_distance, 8) + "$")
+                .text(" from the centre: the point of contact lies on the instantaneous axis, so it is at rest. The curve ")
+                .latex("$\\boldsymbol{\\rho}(t)$").text(" traces on the ellipsoid is the polhode.\n");
+            polhode_figure(w, e, m.semi_axes, m.polhode, true, tag);
+            w.text("Euler's equations and the orientation integrated together (" + m.method + ", " +
+                   std::to_string(m.steps) + " steps) draw the construction in space.\n");
+            poinsot_figure(w, m, tag);
+        } else {
+            w.text("Poinsot's construction: ").latex("$\\boldsymbol{\\omega}$").text(" lies on the inertia ellipsoid ")
+                .latex("$\\boldsymbol{\\omega}^{T}\\mathbf{I}\\boldsymbol{\\omega} = 2T$")
+                .text(" with the semi-axes ")
+                .latex("$\\sqrt{2T/I_{k}} = " + report_writer::number(p.ellipsoid_axes[0], 8) + ",\\ " +
+                       report_writer::number(p.ellipsoid_axes[1], 8) + ",\\ " +
+                       report_writer::number(p.ellipsoid_axes[2], 8) + "$")
+                .text(", which rolls without slipping on the invariable plane normal to ")
+                .latex("$\\mathbf{L}$")
+                .text(" at the distance ")
+                .latex("$2T/|\\mathbf{L}| = " + report_writer::number(p.plane_distance, 8) + "$")
+                .text(" from the centre. The curve ").latex("$\\boldsymbol{\\omega}(t)$")
+                .text(" traces on the ellipsoid is the polhode.\n");
+            polhode_figure(w, e, p.ellipsoid_axes, p.polhode, false, tag);
+        }
     }
     if (e.stability.size() == 3) {
         w.text("Steady rotation about each principal axis, perturbed slightly:");

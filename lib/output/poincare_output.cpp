@@ -33,13 +33,17 @@ void write_poincare_csv(std::ostream& out, const poincare_result& result)
 
 void plot_poincare(const std::string& path, const poincare_result& result, const std::string& title)
 {
-    const std::size_t width = result.width(), n = result.coordinates.size(), j = result.free;
+    const std::size_t width = result.width(), n = result.coordinates.size();
+    const std::size_t across = result.axes.horizontal, up = result.axes.vertical;
+    auto label = [&](std::size_t column) {
+        return column > n ? result.coordinates[column - 1 - n] + "'" : result.coordinates[column - 1];
+    };
     // One block per orbit (blank lines between), coloured by the orbit's index.
     std::ostringstream data;
     for (std::size_t k = 0; k < result.orbits.size(); ++k) {
         const std::vector<double>& points = result.orbits[k].points;
         for (std::size_t p = 0; p + width <= points.size(); p += width)
-            data << shortest(points[p + 1 + j]) << ' ' << shortest(points[p + 1 + n + j]) << ' ' << k << '\n';
+            data << shortest(points[p + across]) << ' ' << shortest(points[p + up]) << ' ' << k << '\n';
         data << "\n\n";
     }
     const poincare_section& s = result.section;
@@ -49,8 +53,8 @@ void plot_poincare(const std::string& path, const poincare_result& result, const
                            ", energy " + shortest(result.energy);
     std::ostringstream body;
     body << "set title " << gnuplot_string(title + ": " + subtitle) << " noenhanced\n"
-         << "set xlabel " << gnuplot_string(result.coordinates[j]) << " noenhanced\n"
-         << "set ylabel " << gnuplot_string(result.coordinates[j] + "'") << " noenhanced\n"
+         << "set xlabel " << gnuplot_string(label(across)) << " noenhanced\n"
+         << "set ylabel " << gnuplot_string(label(up)) << " noenhanced\n"
          << "set tics out\nunset key\nunset colorbox\n"
             "set palette defined (0 '#1f77b4', 1 '#2ca02c', 2 '#d62728', 3 '#9467bd', 4 '#ff7f0e', 5 '#17becf')\n";
     if (result.crossings() == 0)
@@ -74,6 +78,10 @@ std::string poincare_summary_text(const poincare_result& result)
         << " of E = " << shortest(result.energy) << " (relative to "
         << (result.has_minimum ? "E minus the minimum " + shortest(result.minimum) : std::string("max(|E|, 1)"))
         << ")\n";
+    if (result.overweight_starts > 0)
+        out << "poincare: " << result.overweight_starts
+            << " draws of the starts found a velocity ellipsoid larger than its sampled bound: the starts are "
+               "not quite uniform there\n";
     if (std::size_t failed = result.failures()) {
         for (std::size_t k = 0; k < result.orbits.size(); ++k)
             if (!result.orbits[k].failure.empty()) {

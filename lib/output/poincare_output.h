@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file poincare_output.h
  *  Writers of a Poincaré section (ensemble/poincare.h): CSV (one row per crossing, orbit
- *  by orbit), the picture drawn by gnuplot (the free coordinate against its velocity, one
- *  colour per orbit), and the summary for the terminal. Numbers in CSV are the shortest
+ *  by orbit, every coordinate and velocity), the picture drawn by gnuplot (the two
+ *  quantities of result.axes, by default a free coordinate against its velocity, one colour
+ *  per orbit), and the summary for the terminal. Numbers in CSV are the shortest
  *  decimals that read back as the same double, so the file is byte-identical for any
  *  number of threads. */
 #pragma once
@@ -14,7 +15,7 @@
 
 namespace lagrange {
 
-/// `orbit,t,q1,q2,q1_dot,q2_dot`, then one line per crossing (orbit 0 first, in time order).
+/// `orbit,t,q1,…,qn,q1_dot,…,qn_dot`, then one line per crossing (orbit 0 first, in time order).
 void write_poincare_csv(std::ostream& out, const poincare_result& result);
 
 /// The section as a picture, SVG, PNG or PDF by the extension (draw_gnuplot). Throws

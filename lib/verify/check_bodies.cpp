@@ -244,7 +244,10 @@ std::vector<omega_state> integrate_free(const Eigen::Matrix3d& tensor, const ome
         const Eigen::Vector3d rate = -inverse * omega.cross(tensor * omega);
         dw = {rate[0], rate[1], rate[2]};
     };
-    auto stepper = odeint::make_controlled(1e-13, 1e-13, odeint::runge_kutta_fehlberg78<omega_state>());
+    // The absolute tolerance in ω's own scale: a body turning at 1e-6 rad/s would otherwise be
+    // integrated to a relative 1e-7 only, and its closed form judged against that.
+    const double size = std::max(std::sqrt(start[0] * start[0] + start[1] * start[1] + start[2] * start[2]), 1e-300);
+    auto stepper = odeint::make_controlled(1e-13 * size, 1e-13, odeint::runge_kutta_fehlberg78<omega_state>());
     std::vector<omega_state> out;
     omega_state w = start;
     double t = 0;

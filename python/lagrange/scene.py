@@ -306,7 +306,7 @@ class Scene:
         # run.animate(): the player of this run (its scene, values, initial state, span, tolerance)
         run._scene_animate = lambda **player: self.animate(
             until=float(parts["t"][-1]), values=values, initial=initial,
-            tolerance=float(s.get("tolerance", 1e-9)), native=native, **player)
+            tolerance=float(s.get("tolerance", 1e-9)), native=native, project_initial=project_initial, **player)
         return run
 
     def workprecision(self, values=None, initial=None, **settings):
@@ -358,13 +358,13 @@ class Scene:
         return PoincareSection(out)
 
     def animate(self, until=None, fps=30, speed=1, trail=0, view="", values=None, initial=None, tolerance=1e-9,
-                native=True):
+                native=True, project_initial=False):
         """The self-contained HTML player of ``lagrange animate -o FILE.html`` (docs/pictures.md):
         an :class:`Animation`, which Jupyter shows as the player and ``.save(path)`` writes.
         ``until`` (default: the scene's `simulate until`), ``fps`` frames per unit of simulated
         time, ``speed``, ``trail``, ``view`` ("xy", "xz", "3d"; "": by the scene), ``values``,
-        ``initial`` and ``tolerance`` as for :meth:`simulate`. A free body is drawn by Poinsot's
-        construction."""
+        ``initial``, ``tolerance`` and ``project_initial`` as for :meth:`simulate`. A free body is
+        drawn by Poinsot's construction."""
         _check_settings({"until": until, "tolerance": tolerance})
         for name, value in (("fps", fps), ("speed", speed), ("trail", trail)):
             if isinstance(value, bool) or not isinstance(value, (int, float, numpy.integer, numpy.floating)) \
@@ -373,7 +373,7 @@ class Scene:
                                  f"number (got {value!r})")
         html = _lagrange.animate(self._model, _values_lines(values), _initial_lines(initial, self.coordinates),
                                  None if until is None else float(until), float(fps), float(tolerance), bool(native),
-                                 float(speed), float(trail), view)
+                                 float(speed), float(trail), view, bool(project_initial))
         return Animation(html)
 
     def inertia(self):

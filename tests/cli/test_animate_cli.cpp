@@ -329,3 +329,284 @@ TEST_CASE("cli: the player opens paused at #t=2.5 with the bobs where the simula
     CHECK(t <= 2.0);
     CHECK(attribute(playing, "data-playing") == "true");
 }
+
+namespace {
+
+/// Two uniform rods (examples/compound_double_pendulum.lag): the lower one hangs from the
+/// upper one's end, th2 relative to it.
+const std::string rods_text = "scene \"Compound double pendulum\"\nparameters m l g\ncoordinates th1 th2\n"
+                              "body upper stick(l) mass m axis y at (l/2*sin(th1), -l/2*cos(th1), 0) "
+                              "orientation rotations(z th1)\n"
+                              "body lower stick(l) mass m axis y attached to upper "
+                              "at (l/2*sin(th2), -l/2 - l/2*cos(th2), 0) orientation rotations(z th2)\n"
+                              "gravity g along (0, -1, 0)\nvalues m = 1, l = 1.5, g = 9.81\n"
+                              "initial th1 = 1.2, th2 = -0.4\nsimulate until 2 step 0.1\n";
+
+/// The scene's picture frame in the xy view, as the writers fit it: every named marker and
+/// every point of the bodies' outlines at every frame, 80% of the smaller side.
+struct framing {
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300}, scale = 1;
+    std::array<double, 2> pixel(double x, double y, int width, int height) const
+    {
+        return {width / 2.0 + (x - (lo[0] + hi[0]) / 2) * scale, height / 2.0 - (y - (lo[1] + hi[1]) / 2) * scale};
+    }
+};
+
+framing page_framing(const nlohmann::json& data, int smaller_side)
+{
+    framing f;
+    const std::size_t frames = data["times"].size(), markers = data["markers"].size(), bodies = data["bodies"].size();
+    auto include = [&](double x, double y) {
+        f.lo[0] = std::min(f.lo[0], x), f.hi[0] = std::max(f.hi[0], x);
+        f.lo[1] = std::min(f.lo[1], y), f.hi[1] = std::max(f.hi[1], y);
+    };
+    for (std::size_t n = 0; n < frames; ++n) {
+        for (std::size_t m = 0; m < markers; ++m)
+            if (!data["markers"][m]["name"].get<std::string>().empty())
+                include(data["positions"][(n * markers + m) * 3], data["positions"][(n * markers + m) * 3 + 1]);
+        for (std::size_t b = 0; b < bodies; ++b) {
+            const std::size_t c = data["bodies"][b]["centre"];
+            const double cx = data["positions"][(n * markers + c) * 3], cy = data["positions"][(n * markers + c) * 3 + 1];
+            const auto& R = data["rotations"];
+            const std::size_t r0 = (n * bodies + b) * 9;
+            for (const auto& line : data["bodies"][b]["outline"])
+                for (std::size_t k = 0; k + 2 < line.size(); k += 3) {
+                    const double x = line[k], y = line[k + 1], z = line[k + 2];
+                    include(cx + R[r0].get<double>() * x + R[r0 + 1].get<double>() * y + R[r0 + 2].get<double>() * z,
+                            cy + R[r0 + 3].get<double>() * x + R[r0 + 4].get<double>() * y + R[r0 + 5].get<double>() * z);
+                }
+        }
+    }
+    f.scale = 0.8 * smaller_side / std::max(f.hi[0] - f.lo[0], f.hi[1] - f.lo[1]);
+    return f;
+}
+
+} // namespace
+
+TEST_CASE("cli: animate draws placed rigid bodies by shape and pivot in the page's data", "[cli][animate]")
+{
+    // The heavy top: a body given by its inertia is drawn as the ellipsoid of the uniform solid
+    // with the same moments (semi-axes sqrt(5 (I_j + I_k - I_i) / 2M)), held by a rod to the
+    // pivot it turns about; the compound pendulum's rods as sticks of length l.
+    const std::string top = std::string(LAGRANGE_SOURCE_DIR) + "/examples/heavy_top.lag";
+    const std::string html = temporary_file("top.html", "");
+    REQUIRE(run_cli("animate " + top + " --until 1 --fps 10 -o " + html, "", 60).exit_code == 0);
+    const nlohmann::json data = page_data(read_file(html));
+    REQUIRE(data["bodies"].size() == 1);
+    CHECK(data["bodies"][0]["shape"] == "inertia ellipsoid");
+    // A = 0.3, C = 0.2, M = 1: semi-axes sqrt(5 C / 2) = 0.7071 (twice) and sqrt(5 (2A - C) / 2) = 1.
+    CHECK(std::abs(data["bodies"][0]["size"].get<double>() - 1) <= 1e-9);
+    const std::size_t markers = data["markers"].size(), centre = data["bodies"][0]["centre"];
+    bool pivot = false;
+    for (std::size_t m = 0; m < markers; ++m)
+        pivot = pivot || data["markers"][m]["name"] == "pivot";
+    CHECK(pivot);
+    bool stem = false;
+    for (const auto& rod : data["rods"])
+        stem = stem || (rod[0] == centre && data["markers"][rod[1].get<std::size_t>()]["name"] == "pivot");
+    CHECK(stem);
+    // Each frame's rotation is zxz(φ, θ, ψ) of the simulation: its third column (the symmetry
+    // axis) points from the pivot to the centre of mass, at distance l = 0.5.
+    for (std::size_t f = 0; f < data["times"].size(); ++f) {
+        const auto& R = data["rotations"];
+        for (int k = 0; k < 3; ++k)
+            CHECK(std::abs(R[f * 9 + 3 * k + 2].get<double>() * 0.5 -
+                           data["positions"][(f * markers + centre) * 3 + k].get<double>()) <= 1e-9);
+    }
+
+    const std::string rods = temporary_file("rods.lag", rods_text), rods_html = temporary_file("rods.html", "");
+    REQUIRE(run_cli("animate " + rods + " -o " + rods_html, "", 60).exit_code == 0);
+    const nlohmann::json pair = page_data(read_file(rods_html));
+    REQUIRE(pair["bodies"].size() == 2);
+    for (const auto& body : pair["bodies"]) {
+        CHECK(body["shape"] == "stick");
+        CHECK(std::abs(body["size"].get<double>() - 0.75) <= 1e-12);
+    }
+    CHECK(pair["view"] == "xy"); // the sticks stay in the plane
+    // The upper stick reaches the pivot itself: a pivot, and no rod to its centre.
+    bool pair_pivot = false;
+    for (const auto& marker : pair["markers"])
+        pair_pivot = pair_pivot || marker["name"] == "pivot";
+    CHECK(pair_pivot);
+    CHECK(pair["rods"].empty());
+    // The ground through the pivot, normal to gravity (0, -1, 0): u and v in the xz plane.
+    REQUIRE(pair.contains("ground"));
+    for (const char* axis : {"u", "v"}) {
+        CHECK(std::abs(pair["ground"][axis][1].get<double>()) <= 1e-15);
+        CHECK(std::abs(std::hypot(pair["ground"][axis][0].get<double>(), pair["ground"][axis][2].get<double>()) - 1) <=
+              1e-15);
+    }
+    CHECK(pair["ground"]["half"].get<double>() > 0);
+    // The heavy top's ground is normal to (0, 0, -1).
+    REQUIRE(data.contains("ground"));
+    CHECK(std::abs(data["ground"]["u"][2].get<double>()) <= 1e-15);
+    CHECK(std::abs(data["ground"]["v"][2].get<double>()) <= 1e-15);
+}
+
+TEST_CASE("cli: animate draws a moving support and ties the point to it", "[cli][animate]")
+{
+    // The Kapitza pendulum: the bob at (l sin φ, a cos γt − l cos φ) hangs from the support
+    // (0, a cos γt), which moves with t alone (a = 0.05, γ = 120, l = 1).
+    const std::string html = temporary_file("kapitza.html", "");
+    REQUIRE(run_cli("animate " + std::string(LAGRANGE_SOURCE_DIR) + "/examples/kapitza_pendulum.lag --values gamma=120 --until 0.5 "
+                    "--fps 40 -o " + html, "", 60).exit_code == 0);
+    const nlohmann::json data = page_data(read_file(html));
+    const std::size_t markers = data["markers"].size();
+    std::size_t support = markers;
+    for (std::size_t m = 0; m < markers; ++m)
+        if (data["markers"][m]["name"] == "support")
+            support = m;
+    REQUIRE(support < markers);
+    REQUIRE(data["rods"].size() == 1);
+    CHECK(data["rods"][0][0] == 0);
+    CHECK(data["rods"][0][1] == support);
+    for (std::size_t f = 0; f < data["times"].size(); ++f) {
+        const double t = data["times"][f];
+        CHECK(std::abs(data["positions"][(f * markers + support) * 3].get<double>()) <= 1e-15);
+        CHECK(std::abs(data["positions"][(f * markers + support) * 3 + 1].get<double>() - 0.05 * std::cos(120 * t)) <=
+              1e-12);
+    }
+}
+
+TEST_CASE("cli: animate's video draws each rod's tip and axis where the simulation's orientation puts them",
+          "[cli][animate][ffmpeg]")
+{
+    const std::string scene = temporary_file("rods_video.lag", rods_text);
+    const std::string mp4 = temporary_file("rods.mp4", ""), html = temporary_file("rods_video.html", "");
+    const std::string csv = temporary_file("rods.csv", ""), rgb = temporary_file("rods_frame.rgb", "");
+    REQUIRE(run_cli("animate " + scene + " --fps 10 -o " + mp4, "", 120).exit_code == 0);
+    REQUIRE(run_cli("animate " + scene + " --fps 10 -o " + html, "", 60).exit_code == 0);
+    REQUIRE(run_cli("simulate " + scene + " --csv " + csv, "", 60).exit_code == 0);
+    const framing frame = page_framing(page_data(read_file(html)), 480);
+    REQUIRE(std::system(("ffmpeg -v error -y -i " + mp4 +
+                         " -vf 'select=eq(n\\,13)' -frames:v 1 -f rawvideo -pix_fmt rgb24 " + rgb).c_str()) == 0);
+    const std::string pixels = read_file(rgb);
+    REQUIRE(pixels.size() == 640u * 480u * 3u);
+    auto pixel = [&](int c, int r) {
+        return reinterpret_cast<const unsigned char*>(pixels.data()) + (r * 640 + c) * 3;
+    };
+    // Whether a pixel of the given test lies within `radius` pixels of (column, row).
+    auto near = [&](std::array<double, 2> at, double radius, const auto& is) {
+        for (int r = static_cast<int>(at[1] - radius); r <= static_cast<int>(at[1] + radius); ++r)
+            for (int c = static_cast<int>(at[0] - radius); c <= static_cast<int>(at[0] + radius); ++c)
+                if (r >= 0 && r < 480 && c >= 0 && c < 640 && std::hypot(c - at[0], r - at[1]) <= radius &&
+                    is(pixel(c, r)))
+                    return true;
+        return false;
+    };
+    auto rod_blue = [](const unsigned char* p) { return p[2] > 140 && p[0] < 100 && p[1] > 40 && p[1] < 150; };
+    auto purple = [](const unsigned char* p) { return p[0] > 110 && p[2] > 150 && p[1] < 140 && p[0] < 190; };
+    // Frame 13: t = 1.3. The rods' ends and axis 1 in closed form from the simulated angles.
+    const auto [th1, th2] = simulated_angles(csv, 1.3);
+    const double l = 1.5, a = th1 + th2;
+    const double hinge[2] = {l * std::sin(th1), -l * std::cos(th1)};
+    const double tip[2] = {hinge[0] + l * std::sin(a), hinge[1] - l * std::cos(a)};
+    const double lower_centre[2] = {hinge[0] + l / 2 * std::sin(a), hinge[1] - l / 2 * std::cos(a)};
+    const std::array<double, 2> tip_pixel = frame.pixel(tip[0], tip[1], 640, 480);
+    INFO("the lower rod's tip at pixel (" << tip_pixel[0] << ", " << tip_pixel[1] << ")");
+    CHECK(near(tip_pixel, 4, rod_blue));
+    // Beyond the tip, along the rod, there is no rod.
+    const double beyond = 14 / frame.scale;
+    CHECK(!near(frame.pixel(tip[0] + beyond * std::sin(a), tip[1] - beyond * std::cos(a), 640, 480), 4, rod_blue));
+    // Along the rod, three quarters down.
+    CHECK(near(frame.pixel(hinge[0] + 0.75 * l * std::sin(a), hinge[1] - 0.75 * l * std::cos(a), 640, 480), 3, rod_blue));
+    // Body axis 1 of the lower rod, R e1 = (cos a, sin a), drawn 0.75 × l/2 from its centre:
+    // purple near its far end, not on the other side.
+    const double reach = 0.75 * l / 2 * 0.9;
+    CHECK(near(frame.pixel(lower_centre[0] + reach * std::cos(a), lower_centre[1] + reach * std::sin(a), 640, 480), 3,
+               purple));
+    CHECK(!near(frame.pixel(lower_centre[0] - reach * std::cos(a), lower_centre[1] - reach * std::sin(a), 640, 480), 3,
+                purple));
+    // The pivot: black at the origin.
+    CHECK(near(frame.pixel(0, 0, 640, 480), 3, [](const unsigned char* p) { return p[0] < 40 && p[1] < 40 && p[2] < 40; }));
+}
+
+TEST_CASE("cli: the player draws placed bodies at the simulation's pose", "[cli][animate][chromium]")
+{
+    const std::string scene = temporary_file("rods_browser.lag", rods_text);
+    const std::string html = temporary_file("rods_browser.html", ""), csv = temporary_file("rods_browser.csv", "");
+    REQUIRE(run_cli("animate " + scene + " --fps 10 -o " + html, "", 60).exit_code == 0);
+    REQUIRE(run_cli("simulate " + scene + " --csv " + csv, "", 60).exit_code == 0);
+    std::array<std::string, 2> shots;
+    for (double t : {0.7, 1.6}) {
+        std::ostringstream url;
+        url << "file://" << html << "#t=" << t;
+        const std::string dom = chromium_dom(url.str(), 1000);
+        REQUIRE(dom.find("id=\"stage\"") != std::string::npos);
+        CHECK(attribute(dom, "data-playing") == "false");
+        const nlohmann::json turns = nlohmann::json::parse(attribute(dom, "data-rotations"));
+        REQUIRE(turns.size() == 2);
+        const auto [th1, th2] = simulated_angles(csv, t);
+        // R = R_z(th1) for the upper rod, R_z(th1 + th2) for the lower one (its angle is relative).
+        for (std::size_t b = 0; b < 2; ++b) {
+            const double a = b == 0 ? th1 : th1 + th2;
+            const double expected[9] = {std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1};
+            for (std::size_t k = 0; k < 9; ++k)
+                CHECK(std::abs(turns[b][k].get<double>() - expected[k]) <= 1e-7);
+        }
+        // The centres of mass among the drawn markers, where the simulation has them.
+        const nlohmann::json world = nlohmann::json::parse(attribute(dom, "data-world"));
+        REQUIRE(world.size() >= 2);
+        CHECK(std::abs(world[0][0].get<double>() - 0.75 * std::sin(th1)) <= 1e-7);
+        CHECK(std::abs(world[1][0].get<double>() - (1.5 * std::sin(th1) + 0.75 * std::sin(th1 + th2))) <= 1e-7);
+        const std::string png = temporary_file("rods_shot.png", "");
+        std::ostringstream shot;
+        shot << "timeout 120 chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=1000 "
+                "--window-size=700,700 --screenshot=" << png << " '" << url.str() << "' 2>/dev/null";
+        command_output(shot.str());
+        shots[t > 1] = read_file(png);
+        REQUIRE(shots[t > 1].compare(1, 3, "PNG") == 0);
+    }
+    CHECK(shots[0] != shots[1]);
+}
+
+TEST_CASE("cli: animate runs a scene with constraints as simulate does and keeps the rod", "[cli][animate]")
+{
+    // A pendulum in Cartesian coordinates held by the constraint x² + y² = l² (l = 2): every
+    // frame on the circle, the rod to the pivot drawn, and the frames where `simulate` puts the bob.
+    const std::string scene = temporary_file("rod.lag", "scene \"Rod pendulum\"\nparameters m g l\ncoordinates x y\n"
+                                                        "point P mass m at (x, y)\ngravity g along (0, -1)\n"
+                                                        "constraint rod: x^2 + y^2 = l^2\nvalues m = 1, g = 9.81, l = 2\n"
+                                                        "initial x = 1.2, y = -1.6\nsimulate until 2 step 0.1\n");
+    const std::string html = temporary_file("rod.html", ""), csv = temporary_file("rod.csv", "");
+    REQUIRE(run_cli("animate " + scene + " --fps 10 -o " + html, "", 60).exit_code == 0);
+    REQUIRE(run_cli("simulate " + scene + " --csv " + csv, "", 60).exit_code == 0);
+    const nlohmann::json data = page_data(read_file(html));
+    REQUIRE(data["times"].size() == 21);
+    REQUIRE(data["rods"].size() == 1);
+    const std::size_t markers = data["markers"].size();
+    CHECK(data["markers"][data["rods"][0][1].get<std::size_t>()]["name"] == "pivot");
+    std::istringstream rows(read_file(csv));
+    std::string line;
+    std::getline(rows, line);
+    std::size_t compared = 0;
+    while (std::getline(rows, line)) {
+        double t, x, y;
+        REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf", &t, &x, &y) == 3);
+        const std::size_t f = static_cast<std::size_t>(std::lround(t * 10));
+        const double px = data["positions"][f * markers * 3], py = data["positions"][f * markers * 3 + 1];
+        CHECK(std::abs(std::hypot(px, py) - 2) <= 1e-9);
+        CHECK(std::abs(px - x) <= 1e-6);
+        CHECK(std::abs(py - y) <= 1e-6);
+        ++compared;
+    }
+    CHECK(compared == 21);
+    for (const auto& drift : data["drift"])
+        CHECK(std::abs(drift.get<double>()) <= 1e-7);
+
+    // Off the constraints: bad input at the value, as for simulate; --project-initial starts on them.
+    const std::string off = temporary_file("rod_off.lag", "scene \"Rod pendulum\"\nparameters m g l\ncoordinates x y\n"
+                                                          "point P mass m at (x, y)\ngravity g along (0, -1)\n"
+                                                          "constraint rod: x^2 + y^2 = l^2\nvalues m = 1, g = 9.81, l = 2\n"
+                                                          "initial x = 1.2, y = -1.5\nsimulate until 1\n");
+    cli_result refused = run_cli("animate " + off + " -o " + html, "", 60);
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.err, Catch::Contains(":8:22: error: the initial state is off the constraints (`rod` by 0.31)"));
+    CHECK_THAT(refused.err, Catch::Contains("initial x = 1.2, y = -1.5\n                     ^"));
+    REQUIRE(run_cli("animate " + off + " --project-initial -o " + html, "", 60).exit_code == 0);
+    const nlohmann::json projected = page_data(read_file(html));
+    for (std::size_t f = 0; f < projected["times"].size(); ++f)
+        CHECK(std::abs(std::hypot(projected["positions"][f * projected["markers"].size() * 3].get<double>(),
+                                  projected["positions"][f * projected["markers"].size() * 3 + 1].get<double>()) -
+                       2) <= 1e-9);
+}

@@ -85,3 +85,31 @@ TEST_CASE("cli: poincare draws the section as SVG", "[cli][poincare][gnuplot]")
         ++paths;
     CHECK(uses + paths >= 400);
 }
+
+TEST_CASE("cli: poincare of three coordinates writes every quantity and draws the chosen axes",
+          "[cli][poincare][gnuplot]")
+{
+    const std::string three = scenes + "three_oscillators.lag";
+    const std::string args = "poincare " + three + " --section \"x = 0, x' > 0\" --energy 1 --orbits 6 --crossings 20";
+    cli_result one = run_cli(args + " --threads 1", "", 60);
+    cli_result two = run_cli(args + " --threads 2", "", 60);
+    REQUIRE(one.exit_code == 0);
+    CHECK(one.out == two.out);
+    CHECK(one.out.rfind("orbit,t,x,y,z,x_dot,y_dot,z_dot\n", 0) == 0);
+    CHECK_THAT(one.err, Catch::Contains("120 crossings of 6 orbits"));
+
+    const std::string svg = temporary_file("section_zz.svg", "");
+    cli_result drawn = run_cli(args + " --axes \"z, z'\" -o " + svg, "", 60);
+    REQUIRE(drawn.exit_code == 0);
+    const std::string picture = read_file(svg);
+    // gnuplot writes the axes' labels as text.
+    CHECK(picture.find(">z'</text>") != std::string::npos);
+
+    cli_result bad = run_cli(args + " --axes \"y, w'\" -o " + svg);
+    CHECK(bad.exit_code == 2);
+    CHECK_THAT(bad.err, Catch::Contains("--axes:1:4: error: `w` is not a coordinate of the scene"));
+    CHECK_THAT(bad.err, Catch::Contains("y, w'\n   ^"));
+    cli_result level = run_cli(args + " --axes \"x, y\"");
+    CHECK(level.exit_code == 2);
+    CHECK_THAT(level.err, Catch::Contains("is the section's coordinate"));
+}

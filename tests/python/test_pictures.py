@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """scene.poincare(): the command line's Poincaré section as numpy arrays, the same numbers
 as `lagrange poincare`'s CSV (compared by value), the same for 1 and 2 threads, the energy
-kept at every crossing (H written out here), and its errors; scene.animate(): the command
+kept at every crossing (H written out here), a section of three coordinates, and its errors; scene.animate(): the command
 line's player."""
 import os
 import subprocess
@@ -54,6 +54,21 @@ def test_poincare_is_the_same_on_one_and_two_threads_and_keeps_the_energy(henon_
     assert numpy.max(numpy.abs(energy(one.q, one.q_dot) - 1 / 12)) <= 1e-9
 
 
+def test_poincare_of_three_coordinates_has_every_column_on_its_ellipse():
+    # Three uncoupled oscillators (k = 1, 2, 3): each orbit's (y, y') and (z, z') stay on their
+    # ellipses (1/2) y'^2 + y^2 = E_y and (1/2) z'^2 + (3/2) z^2 = E_z.
+    scene = lagrange.Scene.from_file(os.path.join(HERE, "..", "scenes", "three_oscillators.lag"))
+    section = scene.poincare("x = 0, x' > 0", 1, orbits=4, crossings=20, tolerance=1e-10, threads=2)
+    assert section.coordinates == ["x", "y", "z"]
+    assert section.q.shape == (80, 3) and section.q_dot.shape == (80, 3)
+    numpy.testing.assert_allclose(section.q[:, 0], 0, atol=1e-12)
+    for k in range(4):
+        rows = section.orbit == k
+        y, z, v, w = section.q[rows, 1], section.q[rows, 2], section.q_dot[rows, 1], section.q_dot[rows, 2]
+        numpy.testing.assert_allclose(0.5 * v ** 2 + y ** 2, 0.5 * v[0] ** 2 + y[0] ** 2, atol=1e-9)
+        numpy.testing.assert_allclose(0.5 * w ** 2 + 1.5 * z ** 2, 0.5 * w[0] ** 2 + 1.5 * z[0] ** 2, atol=1e-9)
+
+
 def test_poincare_errors(henon_heiles):
     with pytest.raises(lagrange.SceneError) as error:
         henon_heiles.poincare("psi = 0", 0.1)
@@ -93,3 +108,14 @@ def test_a_runs_animate_is_the_scenes_player_of_that_run():
     assert type(animation).__name__ == "Animation"
     assert animation.html == scene.animate(until=2, fps=10, tolerance=1e-8, initial={"theta": 0.4}).html
     assert animation.html != scene.animate(until=2, fps=10, tolerance=1e-8).html
+
+
+def test_animate_keeps_a_constraint_and_projects_only_when_asked():
+    # The Cartesian rod pendulum x² + y² = l² (l = 2), started off the circle.
+    scene = lagrange.Scene.from_text("scene \"Rod\"\nparameters m g l\ncoordinates x y\npoint P mass m at (x, y)\n"
+                           "gravity g along (0, -1)\nconstraint rod: x^2 + y^2 = l^2\nvalues m = 1, g = 9.81, l = 2\n"
+                           "initial x = 1.2, y = -1.5\n")
+    with pytest.raises(lagrange.SceneError, match="off the constraints"):
+        scene.animate(until=1, fps=10)
+    page = scene.animate(until=1, fps=10, project_initial=True)
+    assert "lagrangePlayer" in page._repr_html_()
