@@ -191,22 +191,21 @@ std::vector<double> orbit(const double* start, double tolerance, std::size_t cro
             break;
         const double t1 = run.t();
         const double* after = run.y();
-        std::vector<double> times{t0, t1}, sides{before[0], after[0]};
+        double times[9] = {t0, t1}, sides[9] = {before[0], after[0]};
+        int samples = 2;
         // Both ends on one side, going towards x = 0 at the start and away at the end: the
         // orbit may have passed through and back within the step, so look inside it.
         if (sides[0] * sides[1] > 0 && sides[0] * before[2] < 0 && sides[1] * after[2] > 0) {
-            times.assign(1, t0);
-            sides.assign(1, before[0]);
             for (int s = 1; s < 8; ++s) {
-                const double t = t0 + (t1 - t0) * s / 8;
-                run.dense(t, at);
-                times.push_back(t);
-                sides.push_back(at[0]);
+                times[s] = t0 + (t1 - t0) * s / 8;
+                run.dense(times[s], at);
+                sides[s] = at[0];
             }
-            times.push_back(t1);
-            sides.push_back(after[0]);
+            times[8] = t1;
+            sides[8] = after[0];
+            samples = 9;
         }
-        for (std::size_t s = 0; s + 1 < times.size() && count < crossings; ++s) {
+        for (int s = 0; s + 1 < samples && count < crossings; ++s) {
             if (!(sides[s] < 0 && sides[s + 1] >= 0))
                 continue;
             double t = times[s + 1], x[4];
