@@ -13,9 +13,10 @@
  *        crossings as `lagrange poincare` does; prints `seconds crossings steps`
  *    hand_loop simulate TOLERANCE UNTIL OUTPUTS REPEATS M m l g THETA PHI
  *        the double pendulum from rest at (THETA, PHI), its state at OUTPUTS + 1 equally spaced
- *        times kept (as `lagrange simulate`); prints `seconds steps error theta phi theta' phi'`
- *        (seconds: the fastest of REPEATS runs; error: against the same loop at TOLERANCE/1000,
- *        max over the times of the state's difference over the largest state, as simulate's) */
+ *        times kept and its energy checked there (as `lagrange simulate`); prints `seconds steps
+ *        error energy_drift theta phi theta' phi'` at the end (seconds: the fastest of REPEATS
+ *        runs; error: against the same loop at TOLERANCE/1000, max over the times of the state's
+ *        difference over the largest state, as simulate's) */
 #include "hand_dop853.h"
 
 #include <boost/math/tools/roots.hpp>
@@ -52,6 +53,12 @@ struct double_pendulum {
         dy[1] = w2;
         dy[2] = (r1 * l - m * l * c * r2) / det;
         dy[3] = ((M + m) * l * r2 - l * c * r1) / det;
+    }
+    double energy(const double* y) const
+    {
+        const double w1 = y[2], w2 = y[3];
+        return 0.5 * (M + m) * l * l * w1 * w1 + m * l * l * std::cos(y[0] - y[1]) * w1 * w2 +
+               0.5 * m * l * l * w2 * w2 - (M + m) * g * l * std::cos(y[0]) - m * g * l * std::cos(y[1]);
     }
 };
 
@@ -278,10 +285,13 @@ int poincare(int argc, char** argv)
     return 0;
 }
 
-/// The double pendulum's states at outputs + 1 times, as simulate keeps them.
+/// The double pendulum's states at outputs + 1 times, as simulate keeps them, with the
+/// largest drift of the energy there relative to its height above the equilibrium at rest.
 std::vector<std::vector<double>> trajectory(const double_pendulum& f, const double* y0, double tolerance,
-                                            double until, std::size_t outputs, long& steps)
+                                            double until, std::size_t outputs, long& steps, double& drift)
 {
+    const double rest[4] = {0, 0, 0, 0}, e0 = f.energy(y0), scale = std::abs(e0 - f.energy(rest));
+    drift = 0;
     hand::dop853<4, double_pendulum> run(f, tolerance);
     run.start(0, y0, until);
     std::vector<std::vector<double>> states;
@@ -299,6 +309,7 @@ std::vector<std::vector<double>> trajectory(const double_pendulum& f, const doub
             run.dense(t, at.data());
             states.push_back(at);
         }
+        drift = std::max(drift, std::abs(f.energy(states.back().data()) - e0) / scale);
     }
     steps = run.steps();
     return states;
@@ -315,15 +326,16 @@ int simulate(int argc, char** argv)
     const double step_tolerance = std::max(tolerance / 12, 1e-15);
     double best = std::numeric_limits<double>::infinity();
     long steps = 0;
+    double drift = 0, reference_drift = 0;
     std::vector<std::vector<double>> states;
     for (std::size_t r = 0; r < repeats; ++r) {
         const auto started = std::chrono::steady_clock::now();
-        states = trajectory(f, y0, step_tolerance, until, outputs, steps);
+        states = trajectory(f, y0, step_tolerance, until, outputs, steps, drift);
         best = std::min(best, seconds_since(started));
     }
     long reference_steps = 0;
     const auto reference =
-        trajectory(f, y0, std::max(step_tolerance / 1000, 1e-15), until, outputs, reference_steps);
+        trajectory(f, y0, std::max(step_tolerance / 1000, 1e-15), until, outputs, reference_steps, reference_drift);
     double difference = 0, size = 0;
     for (std::size_t k = 0; k < states.size(); ++k) {
         double d = 0, s = 0;
@@ -335,8 +347,8 @@ int simulate(int argc, char** argv)
         size = std::max(size, std::sqrt(s));
     }
     const std::vector<double>& end = states.back();
-    std::printf("%.9f %ld %.3g %.17g %.17g %.17g %.17g\n", best, steps, difference / size, end[0], end[1], end[2],
-                end[3]);
+    std::printf("%.9f %ld %.3g %.3g %.17g %.17g %.17g %.17g\n", best, steps, difference / size, drift, end[0], end[1],
+                end[2], end[3]);
     return 0;
 }
 
