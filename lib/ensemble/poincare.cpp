@@ -102,6 +102,8 @@ public:
         const motion_expressions motion = motion_at_values(scene, equations, values);
         std::vector<GiNaC::ex> rhs_outputs = motion.mass;
         rhs_outputs.insert(rhs_outputs.end(), motion.force.begin(), motion.force.end());
+        identity_mass = motion.mass.size() == 4 && motion.mass[0].is_equal(1) && motion.mass[1].is_zero() &&
+                        motion.mass[2].is_zero() && motion.mass[3].is_equal(1);
         try {
             rhs_ = expression_program(rhs_outputs, symbols);
             energy_ = expression_program({at_values(equations.energy, scene, values)}, symbols);
@@ -177,6 +179,8 @@ private:
 
 public:
     std::string evaluation;
+    /// M is the identity (Cartesian coordinates of unit mass, as Hénon–Heiles): q̈ = f.
+    bool identity_mass = false;
 };
 
 /// The right-hand side for DOP853: (q̇, q̈) with M q̈ = f.
@@ -188,6 +192,11 @@ struct orbit_rhs {
         problem->mass_and_force(t, x, *work);
         dxdt[0] = x[2];
         dxdt[1] = x[3];
+        if (problem->identity_mass) { // the solve's own numbers for M = 1, without its division
+            dxdt[2] = work->outputs[4];
+            dxdt[3] = work->outputs[5];
+            return;
+        }
         if (!solve_mass_matrix(work->outputs.data(), 2, work->factor.data(), dxdt + 2))
             throw computation_error(singular_mass_matrix_message(t, x, 4));
     }
