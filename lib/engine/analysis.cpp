@@ -624,7 +624,8 @@ void run_stage(stage_context& context, const stage_definition& stage, const budg
         const simulation_result& s = *context.result.simulation;
         context.result.stages.back().parts = {
             {"preparation (equations compiled or loaded, linearization)", s.preparation_seconds},
-            {"integration (" + std::to_string(s.integration_runs) + " runs: the run reported, its reference and reruns)",
+            {"integration (" + std::to_string(s.integration_runs) + (s.integration_runs == 1 ? " run" : " runs") +
+                 ": the run reported, reference runs and reruns)",
              s.integration_seconds}};
     }
 }

@@ -76,8 +76,8 @@ struct point_rhs {
     }
 
     /// The motion alone (no tangents) with N coordinates known at compile time: the copies
-    /// and the mass matrix's solve inline (through operator() they call memmove and a loop
-    /// over n, a fifth of an ensemble's time on the double pendulum). The same numbers.
+    /// and the mass matrix's solve inline (through operator() they call memmove and loop over
+    /// a run-time n, out of line). The same numbers.
     template <std::size_t N>
     [[gnu::always_inline]] void motion(double t, const double* x, double* dxdt) const
     {
