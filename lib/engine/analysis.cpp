@@ -619,6 +619,15 @@ void run_stage(stage_context& context, const stage_definition& stage, const budg
     }
     std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     context.result.stages.push_back({stage.name, elapsed.count()});
+    if (stage.id == stage_id::simulation && context.result.simulation &&
+        context.result.simulation->integration_runs > 0) {
+        const simulation_result& s = *context.result.simulation;
+        context.result.stages.back().parts = {
+            {"preparation (equations compiled or loaded, linearization)", s.preparation_seconds},
+            {"integration (" + std::to_string(s.integration_runs) + (s.integration_runs == 1 ? " run" : " runs") +
+                 ": the run reported, reference runs and reruns)",
+             s.integration_seconds}};
+    }
 }
 
 /// Whether a budget overrun in `stage` leaves the wanted frequencies to be given numerically.

@@ -39,6 +39,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lagrange {
@@ -46,6 +47,9 @@ namespace lagrange {
 struct stage_time {
     std::string stage;
     double seconds;
+    /// Where some of the time went, for the text and LaTeX `--timings` (JSON's `timings`
+    /// keeps one number per stage): the simulation's preparation and integration.
+    std::vector<std::pair<std::string, double>> parts = {};
 };
 
 /// Everything the stages computed for one scene.

@@ -75,6 +75,29 @@ struct point_rhs {
             program.run(work->symbols.data(), work->scratch, out);
     }
 
+    /// The motion alone (no tangents) with N coordinates known at compile time: the copies
+    /// and the mass matrix's solve inline (through operator() they call memmove and loop over
+    /// a run-time n, out of line). The same numbers.
+    template <std::size_t N>
+    [[gnu::always_inline]] void motion(double t, const double* x, double* dxdt) const
+    {
+        double* symbols = work->symbols.data();
+        for (std::size_t i = 0; i < 2 * N; ++i)
+            symbols[i] = x[i];
+        symbols[2 * N] = t;
+        double* outputs = work->outputs.data();
+        evaluate(native_rhs, *rhs_program, outputs);
+        for (std::size_t i = 0; i < N; ++i)
+            dxdt[i] = x[N + i];
+        if (!solve_mass_matrix(outputs, N, work->factor.data(), dxdt + N)) [[unlikely]]
+            singular(t, x, 2 * N);
+    }
+
+    [[noreturn, gnu::noinline]] static void singular(double t, const double* x, std::size_t size)
+    {
+        throw computation_error(singular_mass_matrix_message(t, x, size));
+    }
+
     void operator()(double t, const double* x, double* dxdt) const
     {
         double* symbols = work->symbols.data();
@@ -115,12 +138,10 @@ struct point_rhs {
 };
 
 /// The measure of one run from x0: the state, then the tangent vectors (one for Lyapunov, 2n for Floquet).
-template <int Dim>
-void run_point(const point_rhs& f_in, const ensemble_measure& measure, const ensemble_settings& settings,
-               double until, double tolerance, std::vector<double>& x0, double* values, std::size_t& steps)
+template <int Dim, class F>
+void run_point_with(F& f, std::size_t n, const ensemble_measure& measure, const ensemble_settings& settings,
+                    double until, double tolerance, std::vector<double>& x0, double* values, std::size_t& steps)
 {
-    point_rhs f = f_in;
-    const std::size_t n = f.n;
     dop853_stepper<Dim> stepper(x0.size(), tolerance);
     auto advance = [&](double t_end) {
         if (!stepper.step(f, t_end))
@@ -221,6 +242,23 @@ void run_point(const point_rhs& f_in, const ensemble_measure& measure, const ens
         return;
     }
     }
+}
+
+/// run_point_with on point_rhs, inlined at a fixed size when the state is (q, q̇) alone.
+template <int Dim>
+void run_point(const point_rhs& f_in, const ensemble_measure& measure, const ensemble_settings& settings,
+               double until, double tolerance, std::vector<double>& x0, double* values, std::size_t& steps)
+{
+    point_rhs f = f_in;
+    if constexpr (Dim > 0 && Dim % 2 == 0) {
+        if (f.tangents == 0 && 2 * f.n == static_cast<std::size_t>(Dim)) {
+            auto motion = [&f](double t, const double* x, double* dxdt) LAGRANGE_LAMBDA_INLINE {
+                f.motion<Dim / 2>(t, x, dxdt);
+            };
+            return run_point_with<Dim>(motion, f.n, measure, settings, until, tolerance, x0, values, steps);
+        }
+    }
+    run_point_with<Dim>(f, f.n, measure, settings, until, tolerance, x0, values, steps);
 }
 
 } // namespace

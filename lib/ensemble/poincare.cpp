@@ -108,6 +108,10 @@ public:
         const motion_expressions motion = motion_at_values(scene, equations, values);
         std::vector<GiNaC::ex> rhs_outputs = motion.mass;
         rhs_outputs.insert(rhs_outputs.end(), motion.force.begin(), motion.force.end());
+        identity_mass = true;
+        for (std::size_t i = 0; i < n_; ++i)
+            for (std::size_t j = 0; j < n_; ++j)
+                identity_mass = identity_mass && motion.mass[i * n_ + j].is_equal(i == j ? 1 : 0);
         try {
             rhs_ = expression_program(rhs_outputs, symbols);
             energy_ = expression_program({at_values(equations.energy, scene, values)}, symbols);
@@ -130,11 +134,14 @@ public:
 
     std::size_t coordinates() const { return n_; }
 
-    /// M (row-major) then f at (t, x) into work.outputs.
-    void mass_and_force(double t, const double* x, workspace& work) const
+    /// M (row-major) then f at (t, x) into work.outputs. Inline, with the state copied entry
+    /// by entry (std::copy called memmove): it runs at every stage of every step.
+    [[gnu::always_inline]] void mass_and_force(double t, const double* x, workspace& work) const
     {
-        std::copy(x, x + 2 * n_, work.symbols.begin());
-        work.symbols[2 * n_] = t;
+        double* symbols = work.symbols.data();
+        for (std::size_t i = 0; i < 2 * n_; ++i)
+            symbols[i] = x[i];
+        symbols[2 * n_] = t;
         if (native_rhs_)
             native_rhs_(work.symbols.data(), work.outputs.data());
         else
@@ -184,17 +191,23 @@ private:
 
 public:
     std::string evaluation;
+    /// M is the identity (Cartesian coordinates of unit mass, as Hénon–Heiles): q̈ = f.
+    bool identity_mass = false;
 };
 
 /// The right-hand side for DOP853: (q̇, q̈) with M q̈ = f.
 struct orbit_rhs {
     const section_problem* problem = nullptr;
     workspace* work = nullptr;
-    void operator()(double t, const double* x, double* dxdt) const
+    [[gnu::always_inline]] void operator()(double t, const double* x, double* dxdt) const
     {
         const std::size_t n = problem->coordinates();
         problem->mass_and_force(t, x, *work);
         std::copy(x + n, x + 2 * n, dxdt);
+        if (problem->identity_mass) { // the solve's own numbers for M = 1, without its division
+            std::copy(work->outputs.data() + n * n, work->outputs.data() + n * n + n, dxdt + n);
+            return;
+        }
         if (!solve_mass_matrix(work->outputs.data(), n, work->factor.data(), dxdt + n))
             throw computation_error(singular_mass_matrix_message(t, x, 2 * n));
     }
@@ -795,22 +808,23 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
             found_now.clear();
             for (int copy = 0; copy < (levels[1] != levels[0] ? 2 : 1); ++copy) {
                 const double level = levels[copy];
-                std::vector<double> times{t0, t1}, sides{before[k] - level, after[k] - level};
+                // On the stack: a vector here was a malloc and a free per step.
+                double times[9] = {t0, t1}, sides[9] = {before[k] - level, after[k] - level};
+                std::size_t samples = 2;
                 // Both ends on one side, moving towards the level at the start and away at the
                 // end: the orbit may have dipped through and back; look inside the step.
                 if (sides[0] * sides[1] > 0 && sides[0] * before[n + k] < 0 && sides[1] * after[n + k] > 0) {
-                    times.assign(1, t0);
-                    sides.assign(1, sides[0]);
                     for (int s = 1; s < 8; ++s) {
                         const double t = t0 + (t1 - t0) * s / 8;
                         stepper.interpolate(f, t, at.data());
-                        times.push_back(t);
-                        sides.push_back(at[k] - level);
+                        times[s] = t;
+                        sides[s] = at[k] - level;
                     }
-                    times.push_back(t1);
-                    sides.push_back(after[k] - level);
+                    times[8] = t1;
+                    sides[8] = after[k] - level;
+                    samples = 9;
                 }
-                for (std::size_t s = 0; s + 1 < times.size(); ++s) {
+                for (std::size_t s = 0; s + 1 < samples; ++s) {
                     const bool up = sides[s] < 0 && sides[s + 1] >= 0, down = sides[s] > 0 && sides[s + 1] <= 0;
                     if (!(up && section.direction >= 0) && !(down && section.direction <= 0))
                         continue;

@@ -335,6 +335,14 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
     };
     options.progress = labelled("simulating with " + to_string(method));
 
+    // Every integration of the stage, counted and its run time added up (`--timings`).
+    auto timed_integrate = [&result](const ode_system& which, ode_method how, const std::vector<double>& start,
+                                     const integration_options& with) {
+        trajectory run = integrate(which, how, start, with);
+        result.integration_seconds += run.seconds;
+        ++result.integration_runs;
+        return run;
+    };
     std::string exact_basis = "against the exact normal-mode solution of the linear equations";
     if (prepared.free_body)
         exact_basis = "against " + prepared.free_body->exact_kind() + " of Euler's equations";
@@ -367,7 +375,7 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         error_estimate found;
         trajectory check;
         try {
-            check = integrate(system, reference, x0, fine);
+            check = timed_integrate(system, reference, x0, fine);
             found = {trajectory_difference(run, check),
                      "against " + to_string(reference) + " at tolerance " + message_number(fine.tolerance, 3)};
         } catch (const computation_error& error) {
@@ -391,7 +399,7 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
                 std::vector<double> moved = x0;
                 for (double& v : moved)
                     v += direction * v * 0x1p-52;
-                moved_runs.push_back(integrate(system, reference, moved, fine));
+                moved_runs.push_back(timed_integrate(system, reference, moved, fine));
                 fine.max_seconds = std::max(1.0, fine.max_seconds - moved_runs.back().seconds);
             }
             double rounding = 2 * std::max({trajectory_difference(check, moved_runs[0]),
@@ -411,7 +419,7 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
     auto seconds_spent = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     };
-    result.run = integrate(system, method, x0, options);
+    result.run = timed_integrate(system, method, x0, options);
     result.run_tolerance = options.tolerance;
     error_estimate first = estimate(result.run, options.tolerance, settings.max_seconds - seconds_spent());
     result.error_estimate = first.value;
@@ -440,7 +448,7 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
         again.max_seconds = std::max(1.0, left);
         again.progress = labelled("rerunning with " + to_string(method) + " at tolerance " + message_number(tighter, 3));
         try {
-            trajectory run = integrate(system, method, x0, again);
+            trajectory run = timed_integrate(system, method, x0, again);
             error_estimate next = estimate(run, tighter, settings.max_seconds - seconds_spent());
             if (!next.value)
                 break;
@@ -487,14 +495,22 @@ simulation_result simulate(const model& scene, const equations_of_motion& equati
                            const std::optional<std::vector<GiNaC::ex>>& equilibrium,
                            const simulation_settings& settings)
 {
+    const auto started = std::chrono::steady_clock::now();
     prepared_motion prepared = prepare(scene, equations, equilibrium, settings);
-    return run_simulation(scene, prepared, settings);
+    const std::chrono::duration<double> preparation = std::chrono::steady_clock::now() - started;
+    simulation_result result = run_simulation(scene, prepared, settings);
+    result.preparation_seconds = preparation.count();
+    return result;
 }
 
 simulation_result simulate_free_body(const model& scene, const simulation_settings& settings)
 {
+    const auto started = std::chrono::steady_clock::now();
     prepared_motion prepared = prepare_free_body(scene, settings);
-    return run_simulation(scene, prepared, settings);
+    const std::chrono::duration<double> preparation = std::chrono::steady_clock::now() - started;
+    simulation_result result = run_simulation(scene, prepared, settings);
+    result.preparation_seconds = preparation.count();
+    return result;
 }
 
 workprecision_result free_body_work_precision(const model& scene, const simulation_settings& settings)

@@ -100,6 +100,12 @@ struct simulation_result {
     std::optional<double> initial_residual;   ///< of the `initial` state, when it was projected
     std::optional<std::vector<double>> projected_initial; ///< (q, q̇) it was projected to
     std::vector<constraint_event> constraint_events;
+    /// Where the stage's time went (`--timings`): the equations compiled or loaded and the
+    /// linearization that picks the method; and every integration (the run reported, its
+    /// reference runs and reruns), added up. 0 runs: not measured (constrained scenes).
+    double preparation_seconds = 0;
+    double integration_seconds = 0;
+    std::size_t integration_runs = 0;
 };
 
 /// Frequency spread above which `auto` picks the implicit BDF method.

@@ -257,8 +257,11 @@ void write_text(std::ostream& out, const analysis& result, const document_option
         out << "\nnote: " << note << '\n';
     if (options.timings) {
         out << "\nStages\n";
-        for (const stage_time& s : result.stages)
+        for (const stage_time& s : result.stages) {
             out << "  " << s.stage << ": " << seconds(s.seconds) << " s\n";
+            for (const auto& [part, time] : s.parts)
+                out << "    " << part << ": " << seconds(time) << " s\n";
+        }
     }
 }
 
@@ -283,8 +286,11 @@ void write_latex(std::ostream& out, const analysis& result, const document_optio
             family.latex(out, result, options);
     if (options.timings) {
         out << "\\subsection*{Stages}\n\\begin{tabular}{lr}\n";
-        for (const stage_time& s : result.stages)
+        for (const stage_time& s : result.stages) {
             out << latex_text(s.stage) << " & " << seconds(s.seconds) << " s\\\\\n";
+            for (const auto& [part, time] : s.parts)
+                out << "\\quad " << latex_text(part) << " & " << seconds(time) << " s\\\\\n";
+        }
         out << "\\end{tabular}\n";
     }
     if (!options.latex_body)

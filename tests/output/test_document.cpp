@@ -46,6 +46,43 @@ TEST_CASE("document: JSON has the spec's keys, with stages always present", "[do
     CHECK(nlohmann::json::parse(timed.str())["timings"].contains("lagrangian"));
 }
 
+TEST_CASE("document: timings split the simulation into preparation and integration", "[document]")
+{
+    // examples/double_pendulum.lag: its first run misses the tolerance and is rerun tighter.
+    model scene = load("parameters M m l g\ncoordinates theta phi\n"
+                       "point upper mass M at (l*sin(theta), -l*cos(theta))\n"
+                       "point lower mass m at (l*sin(theta) + l*sin(phi), -l*cos(theta) - l*cos(phi))\n"
+                       "gravity g along (0, -1)\nvalues M = 1, m = 0.01, l = 1, g = 9.81\n"
+                       "initial theta = 0, phi = 0.05, theta' = 0, phi' = 0\nsimulate until 60\n");
+    analysis a = analyze(scene, {product::simulation});
+    REQUIRE(a.simulation);
+    const simulation_result& s = *a.simulation;
+    // Each run has one reference run at tolerance/1000: two runs, four with the rerun.
+    CHECK(s.integration_runs == (s.missed_error ? 4u : 2u));
+    CHECK(s.integration_seconds >= s.run.seconds);
+    auto stage = std::find_if(a.stages.begin(), a.stages.end(),
+                              [](const stage_time& t) { return t.stage == "simulation"; });
+    REQUIRE(stage != a.stages.end());
+    REQUIRE(stage->parts.size() == 2);
+    CHECK(stage->parts[0].second == s.preparation_seconds);
+    CHECK(stage->parts[1].second == s.integration_seconds);
+    CHECK(s.preparation_seconds + s.integration_seconds <= stage->seconds);
+
+    std::ostringstream timed, plain, json;
+    write_text(timed, a, document_options{true});
+    write_text(plain, a);
+    const std::string runs = "    integration (" + std::to_string(s.integration_runs) + " runs";
+    CHECK(timed.str().find(runs) != std::string::npos);
+    CHECK(timed.str().find("    preparation (") != std::string::npos);
+    CHECK(plain.str().find("integration (") == std::string::npos);
+    // JSON's timings keep one number per stage.
+    write_json(json, a, document_options{true});
+    nlohmann::json timings = nlohmann::json::parse(json.str())["timings"];
+    CHECK(timings.size() == a.stages.size());
+    for (const stage_time& t : a.stages)
+        CHECK(timings[t.stage] == t.seconds);
+}
+
 TEST_CASE("document: text shows dots over velocities and Greek letters", "[document]")
 {
     model scene = load(pendulum);
