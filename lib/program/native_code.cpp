@@ -128,6 +128,8 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     // -ffp-contract=off: no fused multiply-adds where the interpreter has none (with -mfma, or
     // on a CPU where FMA is the baseline), so native code rounds as the interpreter does;
     // only SLEEF's sines and cosines may differ from libm's, by an ulp or two.
+    // -fno-tree-slp-vectorize: GCC's packing of straight-line code into vectors took a third
+    // of a large program's compile, and its packed code ran slower (docs/benchmarks.md).
     bool too_large = false, timed_out = false;
     std::string failure; // why the last attempt failed
     const file_cache cache("native");
@@ -151,7 +153,8 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         }
         const std::string suffix = with_sleef ? "_sleef.so" : ".so";
         const std::string library = folder->path() + "/programs" + suffix;
-        std::vector<std::string> arguments = {cc, "-O2", "-fno-math-errno", "-ffp-contract=off", "-shared", "-fPIC"};
+        std::vector<std::string> arguments = {cc, "-O2", "-fno-tree-slp-vectorize", "-fno-math-errno",
+                                                 "-ffp-contract=off", "-shared", "-fPIC"};
         if (with_sleef)
             arguments.insert(arguments.end(), {"-mavx2", "-mfma"});
         arguments.insert(arguments.end(), {"-o", library, source});
