@@ -81,7 +81,14 @@ public:
     /// sincos (its 3.5-ulp one; the source then needs sleef_declarations, AVX2 and
     /// -lsleef): arguments that need no sine or cosine are evaluated first, so each batch
     /// holds all the arguments of its nesting depth. Without it, libm's sin and cos.
-    std::string c_source(const std::string& name, bool sleef_sincos = false) const;
+    /// A program of more than 3 × `part_statements` statements is written as functions of
+    /// about that many statements each, which GCC compiles in much less time than one (its
+    /// optimizer is superlinear in a function's size); the values one part passes to a later
+    /// one go through a local array. The same operations in the same order either way, so
+    /// the results are the same. 0: always one function.
+    static constexpr std::size_t default_part_statements = 2000;
+    std::string c_source(const std::string& name, bool sleef_sincos = false,
+                         std::size_t part_statements = default_part_statements) const;
     /// The C declarations that code from c_source(…, true) needs: SLEEF's function with its
     /// types spelled as GCC vectors (the same ABI as <sleef.h>'s __m256d), so that no
     /// compilation has to parse <immintrin.h>, a large header.

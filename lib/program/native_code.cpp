@@ -140,7 +140,7 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         if (with_sleef)
             code << expression_program::sleef_declarations();
         for (std::size_t k = 0; k < programs.size(); ++k)
-            code << programs[k]->c_source("program_" + std::to_string(k), with_sleef);
+            code << programs[k]->c_source("program_" + std::to_string(k), with_sleef, limits.part_statements);
         code << "void (*lagrange_programs[])(const double*, double*) = {";
         for (std::size_t k = 0; k < programs.size(); ++k)
             code << (k ? ", " : "") << "program_" << k;
