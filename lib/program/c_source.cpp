@@ -60,6 +60,12 @@ struct statement {
 
 std::string expression_program::c_source(const std::string& name, bool sleef_sincos, std::size_t part_statements) const
 {
+    return c_units(name, sleef_sincos, part_statements, 1).front();
+}
+
+std::vector<std::string> expression_program::c_units(const std::string& name, bool sleef_sincos,
+                                                     std::size_t part_statements, std::size_t units) const
+{
     using op = instruction::code;
     // The statements in order. With SLEEF, depth by depth: the depth of a slot is the most
     // sines and cosines nested on any path to it, so the slots of depth D − 1 are all known
@@ -247,12 +253,18 @@ std::string expression_program::c_source(const std::string& name, bool sleef_sin
         }
         emit_outputs(0);
         c << "}\n";
-        return c.str();
+        return {c.str()};
     }
+    // Parts in units: the first unit holds the first parts and the function that calls them all,
+    // the others later parts, hidden (not exported from the library) but not static.
+    units = std::max<std::size_t>(1, std::min(units, parts));
+    std::vector<std::string> text(units);
+    auto unit_of = [&](std::size_t part) { return part * units / parts; };
+    const std::string signature = "(const double* restrict s, double* restrict r, double* restrict out)";
     for (std::size_t part = 0; part < parts; ++part) {
         // noinline: inlined back into one function, the parts would take as long to compile.
-        c << "__attribute__((noinline)) static void " << name << "_" << part
-          << "(const double* restrict s, double* restrict r, double* restrict out)\n{\n";
+        c << "__attribute__((noinline" << (unit_of(part) ? ", visibility(\"hidden\"))) void " : ")) static void ")
+          << name << "_" << part << signature << "\n{\n";
         // The constants, symbols and negations this part reads from others, made again (their
         // operands have lower slots, so slot order puts each after what it reads).
         std::vector<bool> needed(code_.size(), false);
@@ -291,13 +303,19 @@ std::string expression_program::c_source(const std::string& name, bool sleef_sin
         }
         emit_outputs(part);
         c << "}\n";
+        text[unit_of(part)] += c.str();
+        c.str("");
     }
+    for (std::size_t part = 0; part < parts; ++part)
+        if (unit_of(part))
+            c << "__attribute__((visibility(\"hidden\"))) void " << name << "_" << part << signature << ";\n";
     c << "static void " << name << "(const double* s, double* out)\n{\n    double r[" << std::max<std::size_t>(shared_count, 1)
       << "];\n";
     for (std::size_t part = 0; part < parts; ++part)
         c << "    " << name << "_" << part << "(s, r, out);\n";
     c << "}\n";
-    return c.str();
+    text.front() += c.str();
+    return text;
 }
 
 } // namespace lagrange

@@ -89,6 +89,11 @@ public:
     static constexpr std::size_t default_part_statements = 2000;
     std::string c_source(const std::string& name, bool sleef_sincos = false,
                          std::size_t part_statements = default_part_statements) const;
+    /// c_source's parts in up to `units` C translation units, to be compiled side by side and
+    /// linked together: the first holds the function `NAME` and the first parts, the others
+    /// the later parts (hidden functions NAME_k). One unit when the program is not split.
+    std::vector<std::string> c_units(const std::string& name, bool sleef_sincos, std::size_t part_statements,
+                                     std::size_t units) const;
     /// The C declarations that code from c_source(…, true) needs: SLEEF's function with its
     /// types spelled as GCC vectors (the same ABI as <sleef.h>'s __m256d), so that no
     /// compilation has to parse <immintrin.h>, a large header.
