@@ -81,12 +81,12 @@ public:
     /// sincos (its 3.5-ulp one; the source then needs sleef_declarations, AVX2 and
     /// -lsleef): arguments that need no sine or cosine are evaluated first, so each batch
     /// holds all the arguments of its nesting depth. Without it, libm's sin and cos.
-    /// A program of more than 3 × `part_statements` statements is written as functions of
-    /// about that many statements each, which GCC compiles in much less time than one (its
+    /// A program of more than 3 × `part_statements` statements is written as functions of at
+    /// most `part_statements` statements each, which GCC compiles in much less time than one (its
     /// optimizer is superlinear in a function's size); the values one part passes to a later
     /// one go through a local array. The same operations in the same order either way, so
     /// the results are the same. 0: always one function.
-    static constexpr std::size_t default_part_statements = 2000;
+    static constexpr std::size_t default_part_statements = 2500;
     std::string c_source(const std::string& name, bool sleef_sincos = false,
                          std::size_t part_statements = default_part_statements) const;
     /// c_source's parts in up to `units` C translation units, to be compiled side by side and
