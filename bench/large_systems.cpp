@@ -11,9 +11,10 @@
  *                                     (lagrange::motion_form)
  *    large_systems --scene N          the chain with values, an initial state and `simulate`
  *  bench/large_systems.sh runs it for N = 2 … 50 beside the whole `simulate` command. */
-#include "engine/analysis.h"
 #include "helpers/chain_recursion.h"
 #include "helpers/chain_scene.h"
+#include "mechanics/equations_of_motion.h"
+#include "mechanics/lagrangian.h"
 #include "numeric/compiled_motion.h"
 #include "scene/lower.h"
 
@@ -93,8 +94,11 @@ int main(int argc, char** argv)
 
     auto start = clock_type::now();
     lagrange::model scene = lagrange::load_model(lagrange::source_text("chain.lag", scene_with_values(n)));
-    lagrange::analysis result = lagrange::analyze(scene, {lagrange::product::equations});
-    lagrange::compiled_motion motion(scene, *result.equations, lagrange::first_value_point(scene), form);
+    // What `simulate` derives: M and f, not the printed equations (refused beyond 1000 terms).
+    const lagrange::simplifier simplify = lagrange::make_simplifier(scene);
+    const lagrange::equations_of_motion equations =
+        lagrange::derive_equations_of_motion(scene, lagrange::derive_lagrangian(scene, simplify), simplify, false);
+    lagrange::compiled_motion motion(scene, equations, lagrange::first_value_point(scene), form);
     const double derive_seconds = seconds_since(start);
     start = clock_type::now();
     std::string why;

@@ -85,7 +85,19 @@ public:
     /// sincos (its 3.5-ulp one; the source then needs sleef_declarations, AVX2 and
     /// -lsleef): arguments that need no sine or cosine are evaluated first, so each batch
     /// holds all the arguments of its nesting depth. Without it, libm's sin and cos.
-    std::string c_source(const std::string& name, bool sleef_sincos = false) const;
+    /// A program of more than 3 × `part_statements` statements is written as functions of at
+    /// most `part_statements` statements each, which GCC compiles in much less time than one (its
+    /// optimizer is superlinear in a function's size); the values one part passes to a later
+    /// one go through a local array. The same operations in the same order either way, so
+    /// the results are the same. 0: always one function.
+    static constexpr std::size_t default_part_statements = 2500;
+    std::string c_source(const std::string& name, bool sleef_sincos = false,
+                         std::size_t part_statements = default_part_statements) const;
+    /// c_source's parts in up to `units` C translation units, to be compiled side by side and
+    /// linked together: the first holds the function `NAME` and the first parts, the others
+    /// the later parts (hidden functions NAME_k). One unit when the program is not split.
+    std::vector<std::string> c_units(const std::string& name, bool sleef_sincos, std::size_t part_statements,
+                                     std::size_t units) const;
     /// The C declarations that code from c_source(…, true) needs: SLEEF's function with its
     /// types spelled as GCC vectors (the same ABI as <sleef.h>'s __m256d), so that no
     /// compilation has to parse <immintrin.h>, a large header.

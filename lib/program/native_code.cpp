@@ -16,6 +16,7 @@
 #include <cstring>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 namespace lagrange {
 
@@ -120,7 +121,6 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     }
     if (std::string unsafe; !trusted_folder(temporary, &unsafe))
         return refuse("the temporary folder " + temporary + " (TMPDIR) is not safe for compiled code: " + unsafe);
-    const std::string source = folder->path() + "/programs.c";
     const char* compiler = std::getenv("LAGRANGE_CC");
     const bool chosen = compiler && *compiler;
     const std::string cc = chosen ? compiler : "cc";
@@ -128,22 +128,38 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
     // -ffp-contract=off: no fused multiply-adds where the interpreter has none (with -mfma, or
     // on a CPU where FMA is the baseline), so native code rounds as the interpreter does;
     // only SLEEF's sines and cosines may differ from libm's, by an ulp or two.
+    // -fno-tree-slp-vectorize: GCC's packing of straight-line code into vectors took a third
+    // of a large program's compile, and its packed code ran slower (docs/benchmarks.md).
     bool too_large = false, timed_out = false;
     std::string failure; // why the last attempt failed
     const file_cache cache("native");
     void* handle = nullptr; // the loaded library: compiled now, or found in the cache
+    // A large program's parts in two translation units compiled side by side (then linked),
+    // where there are two cores or more: GCC uses one core per compile.
+    const std::size_t units = std::thread::hardware_concurrency() >= 2 ? 2 : 1;
     auto build = [&](bool with_sleef) {
-        std::ostringstream code;
-        code << "#include <math.h>\n";
-        if (with_sleef)
-            code << expression_program::sleef_declarations();
+        std::vector<std::string> sources(1);
+        const std::string header =
+            std::string("#include <math.h>\n") + (with_sleef ? expression_program::sleef_declarations() : "");
+        for (std::size_t k = 0; k < programs.size(); ++k) {
+            std::vector<std::string> parts =
+                programs[k]->c_units("program_" + std::to_string(k), with_sleef, limits.part_statements, units);
+            sources.resize(std::max(sources.size(), parts.size()));
+            for (std::size_t u = 0; u < parts.size(); ++u)
+                sources[u] += parts[u];
+        }
+        std::ostringstream table;
+        table << "void (*lagrange_programs[])(const double*, double*) = {";
         for (std::size_t k = 0; k < programs.size(); ++k)
-            code << programs[k]->c_source("program_" + std::to_string(k), with_sleef);
-        code << "void (*lagrange_programs[])(const double*, double*) = {";
-        for (std::size_t k = 0; k < programs.size(); ++k)
-            code << (k ? ", " : "") << "program_" << k;
-        code << "};\nconst unsigned long lagrange_program_count = " << programs.size() << ";\n";
-        if (code.tellp() > static_cast<std::streamoff>(limits.max_source_bytes)) {
+            table << (k ? ", " : "") << "program_" << k;
+        table << "};\nconst unsigned long lagrange_program_count = " << programs.size() << ";\n";
+        sources.front() += table.str();
+        std::size_t bytes = 0;
+        for (std::string& unit : sources) {
+            unit = header + unit;
+            bytes += unit.size();
+        }
+        if (bytes > limits.max_source_bytes) {
             too_large = true;
             failure = "the equations' C source is larger than " + std::to_string(limits.max_source_bytes >> 20) +
                       " MB, too large for compiling to pay off";
@@ -151,18 +167,52 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
         }
         const std::string suffix = with_sleef ? "_sleef.so" : ".so";
         const std::string library = folder->path() + "/programs" + suffix;
-        std::vector<std::string> arguments = {cc, "-O2", "-fno-math-errno", "-ffp-contract=off", "-shared", "-fPIC"};
+        // The commands: one, or a compile per unit and a link.
+        std::vector<std::string> options = {cc, "-O2", "-fno-tree-slp-vectorize", "-fno-math-errno",
+                                            "-ffp-contract=off", "-fPIC"};
         if (with_sleef)
-            arguments.insert(arguments.end(), {"-mavx2", "-mfma"});
-        arguments.insert(arguments.end(), {"-o", library, source});
+            options.insert(options.end(), {"-mavx2", "-mfma"});
+        std::vector<std::string> libraries;
         if (with_sleef)
-            arguments.push_back("-lsleef");
-        arguments.push_back("-lm");
-        // The cache's key: the command (without the private folder's paths) and the source.
+            libraries.push_back("-lsleef");
+        libraries.push_back("-lm");
+        std::vector<std::string> files, objects;
+        std::vector<std::vector<std::string>> compiles;
+        for (std::size_t u = 0; u < sources.size(); ++u) {
+            const std::string stem = "programs" + (u ? "_" + std::to_string(u) : std::string());
+            files.push_back(stem + ".c");
+            objects.push_back(folder->path() + "/" + stem + ".o");
+        }
+        std::vector<std::string> link;
+        if (sources.size() == 1) {
+            std::vector<std::string> command = options;
+            command.insert(command.end(), {"-shared", "-o", library, folder->path() + "/" + files[0]});
+            command.insert(command.end(), libraries.begin(), libraries.end());
+            compiles.push_back(command);
+        } else {
+            for (std::size_t u = 0; u < sources.size(); ++u) {
+                std::vector<std::string> command = options;
+                command.insert(command.end(), {"-c", "-o", objects[u], folder->path() + "/" + files[u]});
+                compiles.push_back(command);
+            }
+            link = {cc, "-shared", "-o", library};
+            link.insert(link.end(), objects.begin(), objects.end());
+            link.insert(link.end(), libraries.begin(), libraries.end());
+        }
+        // The cache's key: the commands (without the private folder's paths) and the sources.
         std::string key;
-        for (const std::string& a : arguments)
-            key += (a == library ? "OUTPUT" : a == source ? "SOURCE" : a) + "\n";
-        key += code.str();
+        auto add_command = [&](const std::vector<std::string>& command) {
+            for (const std::string& a : command)
+                key += (a.compare(0, folder->path().size() + 1, folder->path() + "/") == 0
+                            ? "FOLDER/" + a.substr(folder->path().size() + 1)
+                            : a) +
+                       "\n";
+        };
+        for (const auto& command : compiles)
+            add_command(command);
+        add_command(link);
+        for (const std::string& unit : sources)
+            key += unit;
         // A hit is loaded from a copy in our private folder of the bytes the cache checked,
         // never from the cache's own path; one that does not load, or lacks the programs, is
         // removed and compiled again (so it is replaced, and cannot spoil later runs). Not
@@ -188,43 +238,82 @@ std::shared_ptr<native_module> native_module::compile(const std::vector<const ex
                 cache.remove(key);
         }
         try {
-            folder->write("programs.c", code.str());
+            for (std::size_t u = 0; u < sources.size(); ++u)
+                folder->write(files[u], sources[u]);
         } catch (const temporary_error& e) {
             failure = temporary_problem(e);
             return false;
         }
-        // TMPDIR: the compiler's own temporary files go into the private folder too.
-        program_result run = run_program(arguments, folder->path(), "cc.log", {"TMPDIR=" + folder->path()},
-                                          limits.seconds);
-        if (run.timed_out) {
-            timed_out = true;
-            failure = "compiling the equations took longer than the time budget";
-            return false;
-        }
-        if (run.start_error != 0) {
-            const int e = run.start_error;
-            failure = e == ENOSPC || e == EDQUOT
-                          ? temporary_problem(temporary_error("", e, temporary))
-                      : e == ENOENT || e == EACCES || e == ENOEXEC || e == ENOTDIR || e == ELOOP || e == EPERM
-                          ? "no C compiler was found to compile the equations: " + cc_named + " could not be started (" +
-                                std::strerror(e) + ")"
-                          : "the C compiler " + cc_named + " could not be started (" + std::strerror(e) + ")";
-            return false;
-        }
-        if (run.exit_code != 0) {
-            std::string log;
-            try {
-                log = folder->read("cc.log");
-            } catch (const computation_error&) {
+        // One command; "" when it succeeded, else why not (`late`: it ran out of time).
+        auto run_cc = [&](const std::vector<std::string>& command, const std::string& log_name, bool& late) {
+            // TMPDIR: the compiler's own temporary files go into the private folder too.
+            program_result run = run_program(command, folder->path(), log_name, {"TMPDIR=" + folder->path()},
+                                              limits.seconds);
+            if (run.timed_out) {
+                late = true;
+                return std::string("compiling the equations took longer than the time budget");
             }
-            failure = std::string(log.find("No space left on device") != std::string::npos
-                                      ? "the temporary folder " + temporary + " (TMPDIR) is full: "
-                                      : "") +
-                      "compile error: " + cc_named +
-                      (run.signal ? " was ended by signal " + std::to_string(run.signal)
-                                  : " exited with status " + std::to_string(run.exit_code)) +
-                      ": " + first_lines(log, folder->path());
-            return false;
+            if (run.start_error != 0) {
+                const int e = run.start_error;
+                return e == ENOSPC || e == EDQUOT
+                           ? temporary_problem(temporary_error("", e, temporary))
+                       : e == ENOENT || e == EACCES || e == ENOEXEC || e == ENOTDIR || e == ELOOP || e == EPERM
+                           ? "no C compiler was found to compile the equations: " + cc_named +
+                                 " could not be started (" + std::strerror(e) + ")"
+                           : "the C compiler " + cc_named + " could not be started (" + std::strerror(e) + ")";
+            }
+            if (run.exit_code != 0) {
+                std::string log;
+                try {
+                    log = folder->read(log_name);
+                } catch (const computation_error&) {
+                }
+                return std::string(log.find("No space left on device") != std::string::npos
+                                       ? "the temporary folder " + temporary + " (TMPDIR) is full: "
+                                       : "") +
+                       "compile error: " + cc_named +
+                       (run.signal ? " was ended by signal " + std::to_string(run.signal)
+                                   : " exited with status " + std::to_string(run.exit_code)) +
+                       ": " + first_lines(log, folder->path());
+            }
+            return std::string();
+        };
+        std::vector<std::string> failures(compiles.size());
+        std::vector<char> late(compiles.size(), 0);
+        {
+            std::vector<std::thread> others;
+            for (std::size_t u = 1; u < compiles.size(); ++u)
+                others.emplace_back([&, u] {
+                    bool l = false;
+                    try {
+                        failures[u] = run_cc(compiles[u], "cc_" + std::to_string(u) + ".log", l);
+                    } catch (const std::exception& e) { // nothing may leave a thread
+                        failures[u] = std::string("the C compiler could not be run: ") + e.what();
+                    }
+                    late[u] = l;
+                });
+            bool l = false;
+            try {
+                failures[0] = run_cc(compiles[0], "cc.log", l);
+            } catch (const std::exception& e) { // the others are joined first
+                failures[0] = std::string("the C compiler could not be run: ") + e.what();
+            }
+            late[0] = l;
+            for (std::thread& t : others)
+                t.join();
+        }
+        for (std::size_t u = 0; u < compiles.size(); ++u)
+            if (!failures[u].empty()) {
+                failure = failures[u];
+                timed_out = late[u] != 0;
+                return false;
+            }
+        if (!link.empty()) {
+            bool l = false;
+            failure = run_cc(link, "link.log", l);
+            timed_out = l;
+            if (!failure.empty())
+                return false;
         }
         handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!handle) {

@@ -23,6 +23,8 @@ namespace lagrange {
 struct native_limits {
     double seconds = 120;
     std::size_t max_source_bytes = 4u << 20;
+    /// Statements per function of a large program (expression_program::c_source).
+    std::size_t part_statements = expression_program::default_part_statements;
 };
 
 /// A loaded native module with one function per program.

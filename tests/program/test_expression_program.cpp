@@ -330,3 +330,54 @@ TEST_CASE("native code: without SLEEF to link, libm's sines, and the same values
     program.run(at.data(), scratch, interpreted.data());
     CHECK(out == interpreted); // libm's sin and cos, and no contraction: the interpreter's numbers
 }
+
+TEST_CASE("native code in parts: the same numbers as one function, with and without SLEEF",
+          "[expression_program][native][cc]")
+{
+    // Parts of 3 statements: values cross parts through the array (products, sums, sines and
+    // their nested arguments), constants, symbols and negations are made again in each part,
+    // and an output may come from any part.
+    GiNaC::symbol x("x"), y("y"), z("z");
+    std::vector<GiNaC::ex> symbols = {x, y, z};
+    const GiNaC::ex shared = x * y + GiNaC::numeric(3, 7) * z;
+    std::vector<GiNaC::ex> outputs = {GiNaC::sin(shared) * x - y,
+                                      GiNaC::cos(shared * z) + GiNaC::pow(shared, 3),
+                                      -z,
+                                      GiNaC::numeric(5, 3),
+                                      GiNaC::sin(GiNaC::cos(x) * shared) / (1 + y * y),
+                                      shared * GiNaC::sqrt(2 + x * x) - GiNaC::cos(z - x) * y};
+    expression_program program(outputs, symbols);
+    for (bool sleef : {true, false}) {
+        INFO("SLEEF " << sleef);
+        const std::string parts = program.c_source("p", sleef, 3), whole = program.c_source("p", sleef, 0);
+        CHECK(parts.find("p_2(s, r, out);") != std::string::npos);
+        CHECK(whole.find("p_0") == std::string::npos);
+    }
+    lagrange::native_limits in_parts, whole;
+    in_parts.part_statements = 3;
+    whole.part_statements = 0;
+    for (const char* setting : {"1", "0"}) {
+        INFO("LAGRANGE_SLEEF=" << setting);
+        setenv("LAGRANGE_SLEEF", setting, 1);
+        std::string why;
+        std::shared_ptr<lagrange::native_module> a = lagrange::native_module::compile({&program}, in_parts, &why);
+        std::shared_ptr<lagrange::native_module> b = lagrange::native_module::compile({&program}, whole, &why);
+        unsetenv("LAGRANGE_SLEEF");
+        INFO(why);
+        REQUIRE(a);
+        REQUIRE(b);
+        CHECK(a->sleef() == b->sleef());
+        std::mt19937 random(11);
+        std::uniform_real_distribution<double> value(-3, 3);
+        for (int point = 0; point < 100; ++point) {
+            std::vector<double> at = {value(random), value(random), value(random)}, first(outputs.size()),
+                                second(outputs.size()), interpreted(outputs.size()), scratch;
+            a->get(0)(at.data(), first.data());
+            b->get(0)(at.data(), second.data());
+            CHECK(first == second); // the same operations in the same order
+            program.run(at.data(), scratch, interpreted.data());
+            for (std::size_t k = 0; k < outputs.size(); ++k)
+                CHECK(std::abs(first[k] - interpreted[k]) <= 1e-12 * std::max(1.0, std::abs(interpreted[k])));
+        }
+    }
+}
