@@ -125,11 +125,10 @@ std::vector<std::string> expression_program::c_units(const std::string& name, bo
     }
 
     // Parts: a program of more than 3 × part_statements statements goes into functions of at
-    // most part_statements (GCC's optimizer takes time superlinear in the size of a function: a
-    // 50-link chain's right-hand side compiled in 28 s as one function, in 3.5 s as parts), as
-    // many as a multiple of `units`, of even size, so that the units take about as long to
-    // compile. Smaller programs stay one function: the 20-link chain's (4,066 statements)
-    // compiles in 0.5 s so, and ran 25% slower in two parts.
+    // most part_statements (GCC's optimizer takes time superlinear in the size of a function),
+    // as many as a multiple of `units`, of even size, so that the units take about as long to
+    // compile. Smaller programs stay one function, which evaluates faster than its parts
+    // (docs/benchmarks.md, "Large systems").
     // A slot one part makes and a later part reads passes through the array r, except
     // constants, symbols and their negations, which each part makes again.
     std::size_t total = 0;
