@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 
 namespace lagrange {
@@ -464,35 +465,81 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
             frames.rods.push_back({c, pivot});
     }
     frames.markers[pivot].name = held[pivot] ? "pivot" : "";
-    // The ground: where the pivot is fixed, normal to gravity (its direction is normalized).
-    if (held[pivot] && scene.gravity) {
+    // The ground: where the pivot is fixed, normal to gravity (its direction is normalized);
+    // without a pivot, the plane a body keeps resting or rolling on.
+    if (scene.gravity) {
         double g[3] = {0, 0, 0};
         for (std::size_t k = 0; k < scene.gravity->direction.size() && k < 3; ++k)
             g[k] = real_value(at_values(scene.gravity->direction[k], scene, values), "gravity's direction");
-        // u: the coordinate axis least along g, made normal to it; v = g × u.
-        std::size_t least = 0;
-        for (std::size_t k = 1; k < 3; ++k)
-            if (std::abs(g[k]) < std::abs(g[least]))
-                least = k;
-        double u[3] = {0, 0, 0};
-        u[least] = 1;
-        for (int k = 0; k < 3; ++k)
-            u[k] -= g[least] * g[k];
-        const double norm = std::hypot(u[0], u[1], u[2]);
-        animation_frames::ground_square ground;
-        for (int k = 0; k < 3; ++k)
-            ground.u[static_cast<std::size_t>(k)] = u[k] / norm;
-        ground.v = {g[1] * ground.u[2] - g[2] * ground.u[1], g[2] * ground.u[0] - g[0] * ground.u[2],
-                    g[0] * ground.u[1] - g[1] * ground.u[0]};
+        std::optional<std::array<double, 3>> centre;
         double reach = 0;
-        for (std::size_t f = 0; f < frames.times.size(); ++f)
-            for (std::size_t k = 0; k < m; ++k)
-                if (k != pivot && !frames.markers[k].name.empty())
-                    reach = std::max(reach, distance(f, k, pivot));
-        for (const auto& body : frames.bodies)
-            reach = std::max(reach, body.size);
-        ground.half_width = reach / 4;
-        frames.ground = ground;
+        if (held[pivot]) {
+            centre = std::array<double, 3>{frames.at(0, pivot)[0], frames.at(0, pivot)[1], frames.at(0, pivot)[2]};
+            for (std::size_t f = 0; f < frames.times.size(); ++f)
+                for (std::size_t k = 0; k < m; ++k)
+                    if (k != pivot && !frames.markers[k].name.empty())
+                        reach = std::max(reach, distance(f, k, pivot));
+            for (const auto& body : frames.bodies)
+                reach = std::max(reach, body.size);
+        } else {
+            // A moving body whose lowest point along g stays at one height (to a hundredth of its
+            // size, the outline's sampling): the ground through that point's mean, under all of
+            // the lowest points.
+            for (std::size_t b = 0; b < nb && !centre && frames.times.size() > 1; ++b) {
+                const double size = frames.bodies[b].size;
+                std::vector<std::array<double, 3>> lowest;
+                for (std::size_t f = 0; f < frames.times.size(); ++f) {
+                    const double *R = frames.rotation(f, b), *c = frames.at(f, frames.bodies[b].centre);
+                    std::array<double, 3> low{};
+                    double depth = -std::numeric_limits<double>::infinity();
+                    for (const auto& line : frames.bodies[b].outline)
+                        for (const point3& r : line) {
+                            std::array<double, 3> w;
+                            for (int i = 0; i < 3; ++i)
+                                w[static_cast<std::size_t>(i)] = c[i] + R[3 * i] * r[0] + R[3 * i + 1] * r[1] + R[3 * i + 2] * r[2];
+                            const double d = w[0] * g[0] + w[1] * g[1] + w[2] * g[2];
+                            if (d > depth) {
+                                depth = d;
+                                low = w;
+                            }
+                        }
+                    lowest.push_back(low);
+                }
+                auto depth_of = [&](const std::array<double, 3>& w) { return w[0] * g[0] + w[1] * g[1] + w[2] * g[2]; };
+                bool level = moves(frames.bodies[b].centre);
+                for (const auto& w : lowest)
+                    level = level && std::abs(depth_of(w) - depth_of(lowest.front())) <= 1e-2 * size;
+                if (!level)
+                    continue;
+                std::array<double, 3> mean{};
+                for (const auto& w : lowest)
+                    for (std::size_t i = 0; i < 3; ++i)
+                        mean[i] += w[i] / static_cast<double>(lowest.size());
+                for (const auto& w : lowest)
+                    reach = std::max(reach, 4 * (std::hypot(w[0] - mean[0], w[1] - mean[1], w[2] - mean[2]) + size));
+                centre = mean;
+            }
+        }
+        if (centre) {
+            // u: the coordinate axis least along g, made normal to it; v = g × u.
+            std::size_t least = 0;
+            for (std::size_t k = 1; k < 3; ++k)
+                if (std::abs(g[k]) < std::abs(g[least]))
+                    least = k;
+            double u[3] = {0, 0, 0};
+            u[least] = 1;
+            for (int k = 0; k < 3; ++k)
+                u[k] -= g[least] * g[k];
+            const double norm = std::hypot(u[0], u[1], u[2]);
+            animation_frames::ground_square ground;
+            for (int k = 0; k < 3; ++k)
+                ground.u[static_cast<std::size_t>(k)] = u[k] / norm;
+            ground.v = {g[1] * ground.u[2] - g[2] * ground.u[1], g[2] * ground.u[0] - g[0] * ground.u[2],
+                        g[0] * ground.u[1] - g[1] * ground.u[0]};
+            ground.centre = *centre;
+            ground.half_width = reach / 4;
+            frames.ground = ground;
+        }
     }
     for (std::size_t s = 0; s < supports.size(); ++s)
         frames.markers[pivot + 1 + s].name = held[pivot + 1 + s] ? "support" : "";

@@ -60,10 +60,11 @@ struct animation_frames {
     std::vector<body_drawing> bodies;
     /// Frame after frame, each body's rotation R (its axes' components in the scene's), row by row.
     std::vector<double> rotations;
-    /// The ground the pivot is fixed in, when the scene has gravity and a pivot holds something:
-    /// a square through the pivot, normal to gravity (seen edge-on, a line, in a planar view).
+    /// The ground, when the scene has gravity: the one the pivot is fixed in, when a pivot holds
+    /// something, else the plane a moving body's lowest point stays on (rolling or sliding); a
+    /// square normal to gravity (seen edge-on, a line, in a planar view).
     struct ground_square {
-        std::array<double, 3> centre{}; ///< the pivot
+        std::array<double, 3> centre{}; ///< the pivot, or the mean of the body's lowest points
         std::array<double, 3> u{}, v{}; ///< two unit vectors in it, normal to gravity
         double half_width = 0;          ///< a quarter of the largest distance from the pivot drawn
     };

@@ -211,7 +211,8 @@ const char* const player_script = R"JS(
         g.lineTo(at[m][0], at[m][1]); g.stroke();
       }
     }
-    // The ground through the pivot: a grid square normal to gravity (a line seen edge-on).
+    // The ground (through the pivot, or under a body resting on it): a grid square normal to
+    // gravity (a line seen edge-on).
     if (D.ground) {
       const G = D.ground, at = (a, b) => [0, 1, 2].map(k => G.centre[k] + G.half * (a * G.u[k] + b * G.v[k]));
       for (let k = -2; k <= 2; ++k) {

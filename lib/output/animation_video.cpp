@@ -228,7 +228,8 @@ void draw_points(cairo_t* g, const canvas_view& v, const animation_frames& frame
         polyline(g, v, path, 0x8fbbd9, 1.5);
     }
     if (frames.ground) {
-        // The ground through the pivot: a grid square normal to gravity (a line when seen edge-on).
+        // The ground (through the pivot, or under a body resting on it): a grid square normal to
+        // gravity (a line when seen edge-on).
         const auto& s = *frames.ground;
         for (int k = -2; k <= 2; ++k) {
             auto at = [&](double a, double b) {

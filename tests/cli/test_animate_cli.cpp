@@ -610,3 +610,36 @@ TEST_CASE("cli: animate runs a scene with constraints as simulate does and keeps
                                   projected["positions"][f * projected["markers"].size() * 3 + 1].get<double>()) -
                        2) <= 1e-9);
 }
+
+TEST_CASE("cli: animate draws the ground a body rolls on and none under a falling one", "[cli][animate]")
+{
+    // The rolling coin has no pivot: its disk's lowest point stays at z = 0 (to the outline's
+    // sampling), so the ground is the plane z = 0, normal to gravity (0, 0, -1), under the whole path.
+    const std::string html = temporary_file("coin.html", "");
+    REQUIRE(run_cli("animate " + std::string(LAGRANGE_SOURCE_DIR) + "/examples/rolling_coin.lag -o " + html +
+                        " --until 2",
+                    "", 120)
+                .exit_code == 0);
+    const nlohmann::json data = page_data(read_file(html));
+    REQUIRE(data.contains("ground"));
+    const auto& ground = data["ground"];
+    CHECK(std::abs(ground["centre"][2].get<double>()) <= 1e-3 * 0.1);
+    CHECK(std::abs(ground["u"][2].get<double>()) <= 1e-15);
+    CHECK(std::abs(ground["v"][2].get<double>()) <= 1e-15);
+    // Every frame's coin centre lies over the square.
+    const std::size_t markers = data["markers"].size(), centre = data["bodies"][0]["centre"].get<std::size_t>();
+    for (std::size_t f = 0; f < data["times"].size(); ++f)
+        for (int k = 0; k < 2; ++k)
+            CHECK(std::abs(data["positions"][(f * markers + centre) * 3 + k].get<double>() -
+                           ground["centre"][k].get<double>()) <= ground["half"].get<double>());
+
+    // A ball falling freely: its lowest point drops, so there is no ground.
+    const std::string falling = temporary_file("falling.lag", "parameters m g r\ncoordinates x z\n"
+                                                              "body B ball(r) mass m at (x, 0, z)\n"
+                                                              "gravity g along (0, 0, -1)\n"
+                                                              "values m = 1, g = 9.81, r = 0.1\n"
+                                                              "initial z = 1, x' = 0.5\nsimulate until 0.4\n");
+    const std::string falling_html = temporary_file("falling.html", "");
+    REQUIRE(run_cli("animate " + falling + " -o " + falling_html, "", 60).exit_code == 0);
+    CHECK_FALSE(page_data(read_file(falling_html)).contains("ground"));
+}
