@@ -213,6 +213,40 @@ struct orbit_rhs {
     }
 };
 
+/// visit(q) at every point of a grid of `points` values of each free coordinate from low to
+/// high (q's other entries as they are), the first free coordinate the fastest.
+template <class Visit>
+void for_each_grid_point(std::vector<double>& q, const std::vector<std::size_t>& free, const std::vector<double>& low,
+                         const std::vector<double>& high, std::size_t points, Visit&& visit)
+{
+    std::vector<std::size_t> index(free.size(), 0);
+    for (bool more = true; more;) {
+        for (std::size_t i = 0; i < free.size(); ++i)
+            q[free[i]] = low[free[i]] + (high[free[i]] - low[free[i]]) * index[i] / (points - 1);
+        visit(q);
+        more = false;
+        for (std::size_t i = 0; i < free.size() && !more; ++i) {
+            if (++index[i] < points)
+                more = true;
+            else
+                index[i] = 0;
+        }
+    }
+}
+
+/// The largest speed of one free coordinate where ½ s v² ≤ room (0 where none is allowed).
+double widest_speed(double room, double stiff)
+{
+    return room >= 0 && stiff > 0 ? std::sqrt(2 * room / stiff) : 0.0;
+}
+
+/// The volume of the velocity ellipsoid ½ vᵀ S v ≤ room, up to a constant factor:
+/// room^(m/2) / sqrt(det S), with S = L Lᵀ from `factor`.
+double ellipsoid_weight(double room, const Eigen::LLT<Eigen::MatrixXd>& factor)
+{
+    return std::pow(room, 0.5 * static_cast<double>(factor.rows())) / factor.matrixLLT().diagonal().prod();
+}
+
 /// Where the orbits start: a box of the free coordinates on the section that holds the part
 /// of it the energy reaches, and a bound on each free coordinate's speed there.
 struct start_region {
@@ -539,21 +573,11 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
     std::vector<double> lowest(n), q(n);
     q[k] = lowest[k] = L;
     double lowest_v = HUGE_VAL;
-    std::vector<std::size_t> index(m, 0);
-    for (bool more = true; more;) {
-        for (std::size_t i = 0; i < m; ++i)
-            q[free[i]] = window_low[free[i]] + (window_high[free[i]] - window_low[free[i]]) * index[i] / (grid - 1);
-        const double v = potential(q);
-        if (v < lowest_v && v <= E && visible(q, work))
-            lowest = q, lowest_v = v;
-        more = false;
-        for (std::size_t i = 0; i < m && !more; ++i) {
-            if (++index[i] < grid)
-                more = true;
-            else
-                index[i] = 0;
-        }
-    }
+    for_each_grid_point(q, free, window_low, window_high, grid, [&](const std::vector<double>& at) {
+        const double v = potential(at);
+        if (v < lowest_v && v <= E && visible(at, work))
+            lowest = at, lowest_v = v;
+    });
     const std::string& qk_name = scene.coordinates[k].name;
     if (lowest_v > E)
         return outside("the section " + qk_name + " = " + shortest(L) + " lies outside the energy surface h = " +
@@ -657,30 +681,18 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
     double heaviest = 0;
     const std::size_t speed_grid =
         m == 1 ? 257 : static_cast<std::size_t>(std::ceil(std::pow(256.0, 1.0 / m))) + 1;
-    std::fill(index.begin(), index.end(), 0);
-    for (bool more = true; more;) {
-        for (std::size_t i = 0; i < m; ++i)
-            q[free[i]] = region.low[free[i]] + (region.high[free[i]] - region.low[free[i]]) * index[i] / (speed_grid - 1);
-        const quadratic f = velocity_form(q, work);
+    for_each_grid_point(q, free, region.low, region.high, speed_grid, [&](const std::vector<double>& at) {
+        const quadratic f = velocity_form(at, work);
         const double room = std::max(0.0, E - f.v);
         const Eigen::MatrixXd s = stiffness(f);
         if (m == 1) {
-            const double stiff = s(0, 0);
-            region.widest[free[0]] = std::max(region.widest[free[0]], stiff > 0 ? std::sqrt(2 * room / stiff) : 0.0);
+            region.widest[free[0]] = std::max(region.widest[free[0]], widest_speed(room, s(0, 0)));
         } else if (room > 0) {
             Eigen::LLT<Eigen::MatrixXd> factor(s);
             if (factor.info() == Eigen::Success)
-                heaviest = std::max(heaviest, std::pow(room, 0.5 * static_cast<double>(m)) /
-                                                  factor.matrixL().toDenseMatrix().diagonal().prod());
+                heaviest = std::max(heaviest, ellipsoid_weight(room, factor));
         }
-        more = false;
-        for (std::size_t i = 0; i < m && !more; ++i) {
-            if (++index[i] < speed_grid)
-                more = true;
-            else
-                index[i] = 0;
-        }
-    }
+    });
     for (double& w : region.widest)
         w *= 1.05; // the grid misses the peak between its points
     heaviest *= 1.25;
@@ -703,7 +715,7 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
     const std::size_t per_try = m == 1 ? 2 : m + 2 + 2 * ((m + 1) / 2);
     const std::size_t tries = m == 1 ? 10000 : 100000;
     auto draw_start = [&](std::size_t index, std::vector<double>& x0, workspace& w) {
-        std::vector<double> at(n), v(m);
+        std::vector<double> at(n);
         Eigen::VectorXd speeds(m);
         for (std::size_t draw = 0; draw < tries * per_try; draw += per_try) {
             at[k] = L;
@@ -717,9 +729,7 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
             const double room = E - f.v;
             if (m == 1) {
                 // One free coordinate: |v| against the bound itself (as sqrt(2 room / s)).
-                const double stiff = stiffness(f)(0, 0);
-                const double bound = room >= 0 && stiff > 0 ? std::sqrt(2 * room / stiff) : 0.0;
-                if (!(std::abs(speeds(0)) <= bound) || !visible(at, w))
+                if (!(std::abs(speeds(0)) <= widest_speed(room, stiffness(f)(0, 0))) || !visible(at, w))
                     continue;
             } else {
                 if (!(room > 0))
@@ -727,8 +737,7 @@ poincare_result compute_poincare(const model& scene, const equations_of_motion& 
                 const Eigen::LLT<Eigen::MatrixXd> factor(stiffness(f));
                 if (factor.info() != Eigen::Success)
                     continue;
-                const double weight = std::pow(room, 0.5 * static_cast<double>(m)) /
-                                      factor.matrixL().toDenseMatrix().diagonal().prod();
+                const double weight = ellipsoid_weight(room, factor);
                 if (weight > heaviest)
                     ++overweight;
                 if (!(uniform(settings.seed, index, draw + m) * heaviest <= weight) || !visible(at, w))
