@@ -471,10 +471,10 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
         double g[3] = {0, 0, 0};
         for (std::size_t k = 0; k < scene.gravity->direction.size() && k < 3; ++k)
             g[k] = real_value(at_values(scene.gravity->direction[k], scene, values), "gravity's direction");
-        std::optional<std::array<double, 3>> centre;
+        std::optional<point3> centre;
         double reach = 0;
         if (held[pivot]) {
-            centre = std::array<double, 3>{frames.at(0, pivot)[0], frames.at(0, pivot)[1], frames.at(0, pivot)[2]};
+            centre = point3{frames.at(0, pivot)[0], frames.at(0, pivot)[1], frames.at(0, pivot)[2]};
             for (std::size_t f = 0; f < frames.times.size(); ++f)
                 for (std::size_t k = 0; k < m; ++k)
                     if (k != pivot && !frames.markers[k].name.empty())
@@ -485,33 +485,32 @@ animation_frames compute_animation(const model& scene, const equations_of_motion
             // A moving body whose lowest point along g stays at one height (to a hundredth of its
             // size, the outline's sampling): the ground through that point's mean, under all of
             // the lowest points.
+            auto depth_of = [&](const point3& w) { return w[0] * g[0] + w[1] * g[1] + w[2] * g[2]; };
             for (std::size_t b = 0; b < nb && !centre && frames.times.size() > 1; ++b) {
                 const double size = frames.bodies[b].size;
-                std::vector<std::array<double, 3>> lowest;
+                std::vector<point3> lowest;
                 for (std::size_t f = 0; f < frames.times.size(); ++f) {
                     const double *R = frames.rotation(f, b), *c = frames.at(f, frames.bodies[b].centre);
-                    std::array<double, 3> low{};
+                    point3 low{};
                     double depth = -std::numeric_limits<double>::infinity();
                     for (const auto& line : frames.bodies[b].outline)
                         for (const point3& r : line) {
-                            std::array<double, 3> w;
-                            for (int i = 0; i < 3; ++i)
-                                w[static_cast<std::size_t>(i)] = c[i] + R[3 * i] * r[0] + R[3 * i + 1] * r[1] + R[3 * i + 2] * r[2];
-                            const double d = w[0] * g[0] + w[1] * g[1] + w[2] * g[2];
-                            if (d > depth) {
+                            point3 w;
+                            for (std::size_t i = 0; i < 3; ++i)
+                                w[i] = c[i] + R[3 * i] * r[0] + R[3 * i + 1] * r[1] + R[3 * i + 2] * r[2];
+                            if (const double d = depth_of(w); d > depth) {
                                 depth = d;
                                 low = w;
                             }
                         }
                     lowest.push_back(low);
                 }
-                auto depth_of = [&](const std::array<double, 3>& w) { return w[0] * g[0] + w[1] * g[1] + w[2] * g[2]; };
                 bool level = moves(frames.bodies[b].centre);
                 for (const auto& w : lowest)
                     level = level && std::abs(depth_of(w) - depth_of(lowest.front())) <= 1e-2 * size;
                 if (!level)
                     continue;
-                std::array<double, 3> mean{};
+                point3 mean{};
                 for (const auto& w : lowest)
                     for (std::size_t i = 0; i < 3; ++i)
                         mean[i] += w[i] / static_cast<double>(lowest.size());
