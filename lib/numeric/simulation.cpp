@@ -491,26 +491,32 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
 
 } // namespace
 
-simulation_result simulate(const model& scene, const equations_of_motion& equations,
-                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
-                           const simulation_settings& settings)
+namespace {
+
+/// The motion that `prepare_motion` makes, run, with the preparation's time (`--timings`).
+template <class Prepare>
+simulation_result prepared_and_run(const model& scene, const simulation_settings& settings, Prepare&& prepare_motion)
 {
     const auto started = std::chrono::steady_clock::now();
-    prepared_motion prepared = prepare(scene, equations, equilibrium, settings);
+    prepared_motion prepared = prepare_motion();
     const std::chrono::duration<double> preparation = std::chrono::steady_clock::now() - started;
     simulation_result result = run_simulation(scene, prepared, settings);
     result.preparation_seconds = preparation.count();
     return result;
 }
 
+} // namespace
+
+simulation_result simulate(const model& scene, const equations_of_motion& equations,
+                           const std::optional<std::vector<GiNaC::ex>>& equilibrium,
+                           const simulation_settings& settings)
+{
+    return prepared_and_run(scene, settings, [&] { return prepare(scene, equations, equilibrium, settings); });
+}
+
 simulation_result simulate_free_body(const model& scene, const simulation_settings& settings)
 {
-    const auto started = std::chrono::steady_clock::now();
-    prepared_motion prepared = prepare_free_body(scene, settings);
-    const std::chrono::duration<double> preparation = std::chrono::steady_clock::now() - started;
-    simulation_result result = run_simulation(scene, prepared, settings);
-    result.preparation_seconds = preparation.count();
-    return result;
+    return prepared_and_run(scene, settings, [&] { return prepare_free_body(scene, settings); });
 }
 
 workprecision_result free_body_work_precision(const model& scene, const simulation_settings& settings)
