@@ -197,16 +197,8 @@ TEST_CASE("ensemble: bad --grid and --measure are errors located in the option",
     lagrange::model scene = load(read_file(pendulum));
     auto require_grid_error = [&](const std::string& grid, int column, const std::string& fragment,
                                   bool random = false) {
-        INFO("--grid " << grid);
-        try {
-            lagrange::parse_ensemble_grid(grid, scene, random);
-            FAIL("no error");
-        } catch (const lagrange::scene_error& e) {
-            INFO(e.what());
-            CHECK(e.where().file == "--grid");
-            CHECK(e.where().column == column);
-            CHECK(std::string(e.what()).find(fragment) != std::string::npos);
-        }
+        require_option_error("--grid", grid, [&] { lagrange::parse_ensemble_grid(grid, scene, random); }, column,
+                             fragment);
     };
     require_grid_error("theta", 1, "name=from..to:count");
     require_grid_error("psi=0..1:3", 1, "`psi` is neither a coordinate");

@@ -133,16 +133,7 @@ TEST_CASE("poincare: a bad --section is an error located in the option", "[ensem
 {
     lagrange::model scene = load(read_file(scenes + "henon_heiles.lag"));
     auto require_error = [&](const std::string& text, int column, const std::string& fragment) {
-        INFO("--section " << text);
-        try {
-            lagrange::parse_poincare_section(text, scene);
-            FAIL("no error");
-        } catch (const lagrange::scene_error& e) {
-            INFO(e.what());
-            CHECK(e.where().file == "--section");
-            CHECK(e.where().column == column);
-            CHECK(std::string(e.what()).find(fragment) != std::string::npos);
-        }
+        require_option_error("--section", text, [&] { lagrange::parse_poincare_section(text, scene); }, column, fragment);
     };
     require_error("psi = 0, psi' > 0", 1, "`psi` is not a coordinate");
     require_error("x = 0, z' > 0", 8, "`z` is not a coordinate");
@@ -269,16 +260,7 @@ TEST_CASE("poincare: --axes picks two of the section's quantities and a scene of
     CHECK(axes.horizontal == 1);
     CHECK(axes.vertical == 6);
     auto require_error = [&](const std::string& text, int column, const std::string& fragment) {
-        INFO("--axes " << text);
-        try {
-            lagrange::parse_poincare_axes(text, scene, section);
-            FAIL("no error");
-        } catch (const lagrange::scene_error& e) {
-            INFO(e.what());
-            CHECK(e.where().file == "--axes");
-            CHECK(e.where().column == column);
-            CHECK(std::string(e.what()).find(fragment) != std::string::npos);
-        }
+        require_option_error("--axes", text, [&] { lagrange::parse_poincare_axes(text, scene, section); }, column, fragment);
     };
     require_error("x, w'", 4, "`w` is not a coordinate");
     require_error("y, z", 1, "the section's coordinate");

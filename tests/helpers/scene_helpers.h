@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file scene_helpers.h
- *  Helpers shared by the tests: load a scene from text, expect an error at a position,
+ *  Helpers shared by the tests: load a scene from text, expect an error at a position (in a
+ *  scene or in a command-line option),
  *  a chain of pendulums, find a scene's symbol by name. */
 #pragma once
 
@@ -32,6 +33,24 @@ inline void require_error(const std::string& text, int line, int column, const s
         CHECK(e.where().column == column);
         CHECK(std::string(e.what()).find(fragment) != std::string::npos);
         CHECK(e.has_line_text());
+    }
+}
+
+/// Runs parse(), the parsing of `text` given to a command-line option, expecting a scene_error
+/// located in the pseudo-file `option` at `column` whose message contains `fragment`.
+template <class Parse>
+void require_option_error(const std::string& option, const std::string& text, Parse&& parse, int column,
+                          const std::string& fragment)
+{
+    INFO(option << " " << text);
+    try {
+        parse();
+        FAIL("no error");
+    } catch (const lagrange::scene_error& e) {
+        INFO(e.what());
+        CHECK(e.where().file == option);
+        CHECK(e.where().column == column);
+        CHECK(std::string(e.what()).find(fragment) != std::string::npos);
     }
 }
 
