@@ -41,6 +41,17 @@ public:
 
     int slot(const GiNaC::ex& e) { return value(e, false); }
 
+    /// Compiles a definition: its symbol reads the slot of its value from now on.
+    void define(const program_definition& d)
+    {
+        if (!GiNaC::is_a<GiNaC::symbol>(d.symbol))
+            throw std::invalid_argument("a definition names a symbol");
+        const int s = slot(d.value);
+        defined_.emplace(d.symbol, s);
+        if (!variant_.empty() && !is_invariant(d.value))
+            variant_.push_back(d.symbol);
+    }
+
 private:
     /// The slot of e, or of −e: the same subexpression, sum or product, with either sign,
     /// is compiled once. Sums add their terms in canonical order, and a sum that is a
@@ -191,6 +202,8 @@ private:
             return constant(GiNaC::ex_to<GiNaC::numeric>(value));
         }
         if (GiNaC::is_a<GiNaC::symbol>(e)) {
+            if (auto found = defined_.find(e); found != defined_.end())
+                return found->second;
             for (std::size_t k = 0; k < symbols_.size(); ++k)
                 if (e.is_equal(symbols_[k])) {
                     instruction i;
@@ -260,6 +273,7 @@ private:
     std::unordered_map<std::string, int> memo_;
     canonical_keys keys_;
     std::vector<GiNaC::ex> variant_; ///< the symbols not named invariant, when some are
+    std::map<GiNaC::ex, int, GiNaC::ex_is_less> defined_; ///< the slot of each defined symbol
 };
 
 // ---- the three arithmetics, as overloads the interpreter picks from ----
@@ -750,11 +764,14 @@ void expression_program::check_block(const double* s, std::size_t count, a_prior
                                            : a_priori_status::holds;
 }
 
-expression_program::expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols,
+expression_program::expression_program(const std::vector<program_definition>& definitions,
+                                       const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols,
                                        const std::vector<GiNaC::ex>& invariant)
 {
     compiler build(symbols, invariant, code_, algebraic_);
     // The same operations in every process: see compiler::value.
+    for (const program_definition& d : definitions)
+        build.define(d);
     for (const GiNaC::ex& e : outputs)
         outputs_.push_back(build.slot(e));
     for (const instruction& i : code_)

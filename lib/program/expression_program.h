@@ -60,11 +60,23 @@ LAGRANGE_ALWAYS_INLINE inline bool in_a_priori_range(double magnitude)
 /// names symbols that keep their value from one evaluation to the next (parameters given
 /// as arguments): a product's part in them alone is computed as one value, shared by every
 /// product with the same part, before the rest is multiplied on.
+/// `definitions`: intermediate quantities, each a symbol defined by an expression in the
+/// symbols and the symbols defined before it, computed once in that order (the steps of a
+/// recursion, numeric/point_tree.h); the outputs may read them too. A definition is
+/// compiled whether an output reads it or not.
+struct program_definition {
+    GiNaC::ex symbol, value;
+};
 class expression_program {
 public:
     expression_program() = default;
     expression_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& symbols,
-                       const std::vector<GiNaC::ex>& invariant = {});
+                       const std::vector<GiNaC::ex>& invariant = {})
+        : expression_program({}, outputs, symbols, invariant)
+    {
+    }
+    expression_program(const std::vector<program_definition>& definitions, const std::vector<GiNaC::ex>& outputs,
+                       const std::vector<GiNaC::ex>& symbols, const std::vector<GiNaC::ex>& invariant = {});
 
     std::size_t output_count() const { return outputs_.size(); }
     /// The instructions, in order (slot k is instruction k), and the slot of each output:
