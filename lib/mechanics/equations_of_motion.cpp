@@ -127,6 +127,7 @@ equations_of_motion derive_equations_of_motion(const model& scene, const lagrang
     for (const coordinate& c : scene.coordinates)
         result.momenta.push_back(differentiate(l, c.velocity));
     result.energy = -l;
+    result.potential = lagrangian.potential_built;
     result.forces = derive_generalized_forces(scene, simplify);
     for (std::size_t i = 0; i < n; ++i) {
         const GiNaC::ex& p = result.momenta[i];

@@ -41,6 +41,7 @@ struct equations_of_motion {
     /// Q: dissipation, dampers and applied forces (mechanics/forces.h), in `forcing` and the residuals.
     generalized_forces forces;
     GiNaC::ex energy;                    ///< the energy function h = Σ q̇_i p_i − L [E]
+    GiNaC::ex potential;                 ///< V as built (lagrangian_result::potential_built) [E]
     /// The scene's constraints, when it has some: then M q̈ = f + Aᵀλ with A q̈ = −c, and the
     /// residuals below less Σ_k a_ki λ_k.
     std::optional<constraint_equations> constraints;

@@ -77,6 +77,16 @@ bool kinetic_is_quadratic_form(const model& scene)
 
 } // namespace
 
+GiNaC::ex gravity_potential(const model& scene, const GiNaC::ex& mass, const std::vector<GiNaC::ex>& position)
+{
+    if (!scene.gravity)
+        return 0;
+    GiNaC::ex height_along = 0;
+    for (std::size_t k = 0; k < 3; ++k)
+        height_along += scene.gravity->direction[k] * position[k];
+    return -mass * scene.gravity->strength * height_along;
+}
+
 lagrangian_result derive_lagrangian(const model& scene, const simplifier& simplify)
 {
     lagrangian_result result;
@@ -87,12 +97,7 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
         for (const GiNaC::ex& x : p.position)
             velocity.push_back(time_derivative(x, scene));
         kinetic += GiNaC::numeric(1, 2) * p.mass * squared_length(velocity);
-        if (scene.gravity) {
-            GiNaC::ex height_along = 0;
-            for (std::size_t k = 0; k < 3; ++k)
-                height_along += scene.gravity->direction[k] * p.position[k];
-            potential -= p.mass * scene.gravity->strength * height_along;
-        }
+        potential += gravity_potential(scene, p.mass, p.position);
     }
     // Rigid bodies placed in the coordinates: ½ M v² of the centre of mass, ½ ωᵀ I ω with
     // ω from the rates of the rotation sequence (bodies/orientation.cpp), and gravity on the
@@ -107,12 +112,7 @@ lagrangian_result derive_lagrangian(const model& scene, const simplifier& simpli
             for (const GiNaC::ex& x : *b.position)
                 velocity.push_back(time_derivative(x, scene));
             kinetic += GiNaC::numeric(1, 2) * inertia.mass * squared_length(velocity);
-            if (scene.gravity) {
-                GiNaC::ex height_along = 0;
-                for (std::size_t k = 0; k < 3; ++k)
-                    height_along += scene.gravity->direction[k] * (*b.position)[k];
-                potential -= inertia.mass * scene.gravity->strength * height_along;
-            }
+            potential += gravity_potential(scene, inertia.mass, *b.position);
         }
         if (b.orientation) {
             const std::vector<GiNaC::ex>& angles = *b.orientation;

@@ -38,6 +38,10 @@ struct lagrangian_result {
     std::shared_ptr<const harmonic_lagrangian> harmonic;
 };
 
+/// −m g·r: the potential of a mass m at `position` (3 components) in the scene's gravity
+/// (0 without gravity).
+GiNaC::ex gravity_potential(const model& scene, const GiNaC::ex& mass, const std::vector<GiNaC::ex>& position);
+
 /// Builds T, V and L. Throws scene_error-free computation_error if a spring's
 /// length has no value (coincident fixed ends).
 lagrangian_result derive_lagrangian(const model& scene, const simplifier& simplify);
