@@ -7,7 +7,8 @@
  *  compiled_motion::rhs (native), beside a hand-written O(N) recursion for the same chain
  *  (the rod tensions solved along the chain, a tridiagonal system), measured in the same run
  *  on the same states, with their largest relative difference.
- *    large_systems N [calls [FORM]]   one table row; FORM: automatic, expanded or single_angles
+ *    large_systems N [calls [FORM]]   one table row; FORM: automatic, expanded, single_angles
+ *                                     or recursive
  *                                     (lagrange::motion_form)
  *    large_systems --scene N          the chain with values, an initial state and `simulate`
  *  bench/large_systems.sh runs it for N = 2 … 50 beside the whole `simulate` command. */
@@ -89,6 +90,7 @@ int main(int argc, char** argv)
     const std::string form_name = argc > 3 ? argv[3] : "automatic";
     const lagrange::motion_form form = form_name == "expanded"        ? lagrange::motion_form::expanded
                                        : form_name == "single_angles" ? lagrange::motion_form::single_angles
+                                       : form_name == "recursive"     ? lagrange::motion_form::recursive
                                                                       : lagrange::motion_form::automatic;
     setenv("LAGRANGE_CACHE", "0", 1); // the first run's compile, every time
 
@@ -146,7 +148,8 @@ int main(int argc, char** argv)
                              timed([&](const double* state, double* out) { motion.rhs(0, state, out); }), calls);
     std::printf("%d %.4f %.3f %s %.1f %.1f %.2f %.1e %zu %s\n", n, derive_seconds, compile_seconds,
                 native ? "native" : "interpreted", ours_ns, hand_ns, ours_ns / hand_ns, difference,
-                motion.instructions(), motion.single_angles() ? "single_angles" : "expanded");
+                motion.instructions(),
+                motion.recursive() ? "recursive" : motion.single_angles() ? "single_angles" : "expanded");
     if (!native)
         std::fprintf(stderr, "N = %d: %s\n", n, why.c_str());
     return difference < 1e-9 ? 0 : 1;

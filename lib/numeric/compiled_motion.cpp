@@ -5,6 +5,7 @@
 
 #include "algebra/budget.h"
 #include "algebra/calculus.h"
+#include "numeric/point_tree.h"
 #include "numeric/mass_matrix.h"
 #include "numeric/values.h"
 #include "program/angle_sums.h"
@@ -97,11 +98,16 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
     std::vector<GiNaC::ex> rhs_outputs = motion.mass;
     rhs_outputs.insert(rhs_outputs.end(), motion.force.begin(), motion.force.end());
     single_angles_ = form == motion_form::single_angles ||
-                     (form == motion_form::automatic && n_ >= single_angles_coordinates);
+                     (form != motion_form::expanded && n_ >= single_angles_coordinates);
     if (single_angles_)
         for (GiNaC::ex& e : rhs_outputs)
             e = expand_angle_sums(e);
     const std::vector<GiNaC::ex> jacobian_outputs = motion_jacobian(scene, motion);
+    std::optional<point_tree_recursion> recursion;
+    if (form == motion_form::recursive || (form == motion_form::automatic && n_ >= recursive_coordinates))
+        recursion = point_tree_accelerations(scene, equations,
+                                             [&](const GiNaC::ex& e) { return at_values(e, scene, values); });
+    recursive_ = recursion.has_value();
 
     const GiNaC::ex energy = at_values(equations.energy, scene, values);
     // A cyclic coordinate (L holds its velocity, not itself) conserves its momentum.
@@ -128,6 +134,12 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
 
     try {
         rhs_program_ = expression_program(rhs_outputs, symbols);
+        if (recursion) {
+            std::vector<GiNaC::ex> derivatives(symbols.begin() + static_cast<std::ptrdiff_t>(n_),
+                                               symbols.begin() + static_cast<std::ptrdiff_t>(2 * n_));
+            derivatives.insert(derivatives.end(), recursion->accelerations.begin(), recursion->accelerations.end());
+            recursive_program_ = expression_program(recursion->definitions, derivatives, symbols);
+        }
         jacobian_program_ = expression_program(jacobian_outputs, symbols);
         energy_program_ = expression_program({energy}, symbols);
         momentum_program_ = expression_program(cyclic_momenta, symbols);
@@ -150,7 +162,7 @@ void compiled_motion::solve(double t, const double* x, double* acceleration, boo
         symbols_[2 * n_] = t;
         symbols = symbols_.data();
     }
-    if (native_.rhs)
+    if (native_.rhs && !recursive_)
         native_.rhs(symbols, outputs_.data());
     else
         rhs_program_.run(symbols, scratch_, outputs_.data());
@@ -160,8 +172,24 @@ void compiled_motion::solve(double t, const double* x, double* acceleration, boo
 
 void compiled_motion::rhs(double t, const double* x, double* dxdt) const
 {
-    std::copy(x + n_, x + 2 * n_, dxdt);
-    solve(t, x, dxdt + n_);
+    if (recursive_) {
+        const double* symbols = x;
+        if (explicit_time_) {
+            std::copy(x, x + 2 * n_, symbols_.begin());
+            symbols_[2 * n_] = t;
+            symbols = symbols_.data();
+        }
+        if (native_.rhs)
+            native_.rhs(symbols, dxdt);
+        else
+            recursive_program_.run(symbols, scratch_, dxdt);
+        for (std::size_t i = n_; i < 2 * n_; ++i)
+            if (!std::isfinite(dxdt[i])) // a zero pivot: M is singular here, its solve says so
+                solve(t, x, dxdt + n_);
+    } else {
+        std::copy(x + n_, x + 2 * n_, dxdt);
+        solve(t, x, dxdt + n_);
+    }
     if (accumulates_work_)
         dxdt[2 * n_] = power(t, x);
 }
@@ -221,12 +249,12 @@ void compiled_motion::jacobian(double t, const double* x, double* out) const
 
 bool compiled_motion::compile_native(const native_limits& limits, std::string* why)
 {
-    return native_.compile(rhs_program_, jacobian_program_, limits, why);
+    return native_.compile(recursive_ ? recursive_program_ : rhs_program_, jacobian_program_, limits, why);
 }
 
 bool compiled_motion::compile_native_rhs(const native_limits& limits, std::string* why)
 {
-    return native_.compile(rhs_program_, limits, why);
+    return native_.compile(recursive_ ? recursive_program_ : rhs_program_, limits, why);
 }
 
 bool compiled_motion::compile_native_jacobian(const native_limits& limits, std::string* why)
@@ -264,7 +292,7 @@ ode_system compiled_motion::system(double energy_scale) const
             {"energy_balance", [this](const double* x) { return energy(x) - x[2 * n_]; }, energy_scale});
     // The compiled right-hand side knows the state (q, q̇) only, not the work W.
     if (native_.rhs && !accumulates_work_)
-        s.compiled = ode_system::compiled_rhs{native_.rhs, n_, explicit_time_};
+        s.compiled = ode_system::compiled_rhs{native_.rhs, recursive_ ? 0 : n_, explicit_time_};
     return s;
 }
 

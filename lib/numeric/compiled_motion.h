@@ -26,11 +26,17 @@ namespace lagrange {
 /// difference q_i − q_j with its own sine and cosine. `single_angles`: those written through
 /// the sines and cosines of the single angles (program/angle_sums.h), the link directions a
 /// recursion along a chain passes on: n sines and cosines instead of n², and products.
-/// `automatic`: single angles from single_angles_coordinates on.
-enum class motion_form { automatic, expanded, single_angles };
+/// `recursive`: q̈ by the articulated-body recursion of a tree of point masses
+/// (numeric/point_tree.h), O(n), without M (which the Jacobian still takes, in the automatic
+/// form); the automatic form where the scene is no such tree.
+/// `automatic`: single angles from single_angles_coordinates on, the recursion from
+/// recursive_coordinates on.
+enum class motion_form { automatic, expanded, single_angles, recursive };
 /// Where single angles start to pay (bench/large_systems.sh, docs/benchmarks.md): chains of
 /// 2 to 4 links evaluate as fast either way, from 5 on single angles are faster.
 constexpr std::size_t single_angles_coordinates = 5;
+/// Where the recursion starts to pay (likewise).
+constexpr std::size_t recursive_coordinates = 3;
 
 class compiled_motion {
 public:
@@ -46,12 +52,18 @@ public:
     bool conservative() const { return conservative_; }
     /// The state ends with the work W of the generalized forces (see above).
     bool accumulates_work() const { return accumulates_work_; }
-    std::size_t instructions() const { return rhs_program_.instruction_count(); }
+    std::size_t instructions() const
+    {
+        return (recursive_ ? recursive_program_ : rhs_program_).instruction_count();
+    }
     /// Whether the right-hand side takes single angles (see motion_form).
     bool single_angles() const { return single_angles_; }
+    /// Whether the right-hand side is the recursion (see motion_form).
+    bool recursive() const { return recursive_; }
 
-    /// dxdt = (q̇, q̈) with M q̈ = f solved by LDLᵀ; throws computation_error when M
-    /// is not positive definite at x.
+    /// dxdt = (q̇, q̈) with M q̈ = f solved by LDLᵀ, or by the recursion; throws
+    /// computation_error when M is not positive definite at x (the recursion: when a
+    /// q̈ is not finite, M's solve says why).
     void rhs(double t, const double* x, double* dxdt) const;
     /// ∂(q̇, q̈)/∂(q, q̇), row-major 2n × 2n: ∂q̈/∂y = M⁻¹ (∂f/∂y − (∂M/∂y) q̈).
     void jacobian(double t, const double* x, double* out) const;
@@ -83,7 +95,11 @@ private:
     bool explicit_time_ = false;          ///< t appears in M or f at the parameter values
     bool accumulates_work_ = false;
     bool single_angles_ = false;
+    bool recursive_ = false;
     expression_program rhs_program_;      ///< M (row-major, n²) then f (n)
+    /// dxdt = (q̇, q̈) by the recursion, when recursive_ (then native_.rhs is this program's,
+    /// and the Jacobian's M and f are interpreted)
+    expression_program recursive_program_;
     expression_program power_program_;    ///< Σ Q_i q̇_i, then its derivatives by q and q̇ (2n)
     expression_program jacobian_program_; ///< ∂M/∂q_k (n³), ∂f/∂q (n²), ∂f/∂q̇ (n²)
     expression_program energy_program_;

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /** @file test_compiled_motion.cpp
- *  The forms of the compiled right-hand side (motion_form): the single-angle form against
- *  the expanded one and both against the chain's O(N) recursion by hand, at random states. */
+ *  The forms of the compiled right-hand side (motion_form): the single-angle form and the
+ *  recursion of a tree of points against the expanded one, and against the chain's O(N)
+ *  recursion by hand, at random states. */
 #include "engine/analysis.h"
 #include "numeric/compiled_motion.h"
+#include "numeric/values.h"
 #include "helpers/chain_recursion.h"
 #include "helpers/scene_helpers.h"
 
@@ -109,4 +111,187 @@ TEST_CASE("compiled_motion: native code in parts gives the numbers of one functi
         CHECK(by_parts == by_whole);
         CHECK(relative_difference(by_parts, by_hand) < 1e-12);
     }
+}
+
+namespace {
+
+/// The recursive form (numeric/point_tree.h) against the expanded one at random states
+/// (angles and rates both in [−2, 2]), at the scene's first values and t = 0.7; whether the
+/// scene is such a tree is `tree`. Both interpreted, and with `native` both compiled too.
+void check_recursion(const std::string& text, bool tree, bool native = false)
+{
+    lagrange::model scene = load(text);
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    const auto point = lagrange::merged_values(scene); // with the inputs
+    lagrange::compiled_motion expanded(scene, *a.equations, point, lagrange::motion_form::expanded);
+    lagrange::compiled_motion recursive(scene, *a.equations, point, lagrange::motion_form::recursive);
+    REQUIRE(recursive.recursive() == tree);
+    if (!tree)
+        return;
+    if (native) {
+        std::string why;
+        REQUIRE(expanded.compile_native_rhs({}, &why));
+        REQUIRE(recursive.compile_native_rhs({}, &why));
+    }
+    const std::size_t d = expanded.dimension();
+    std::mt19937_64 random(41);
+    std::uniform_real_distribution<double> value(-2, 2);
+    for (int state = 0; state < 30; ++state) {
+        std::vector<double> x(d, 0.0), by_expanded(d), by_recursion(d);
+        for (std::size_t i = 0; i < 2 * expanded.coordinates(); ++i)
+            x[i] = value(random);
+        expanded.rhs(0.7, x.data(), by_expanded.data());
+        recursive.rhs(0.7, x.data(), by_recursion.data());
+        CHECK(relative_difference(by_recursion, by_expanded) < 1e-13);
+    }
+}
+
+const std::string branching = R"(parameters g m1 m2 m3 m4 l1 l2 l3 l4 k c
+coordinates q1 q2 q3 q4
+point P1 mass m1 at (l1*sin(q1), -l1*cos(q1))
+point P2 mass m2 at (l1*sin(q1) + l2*sin(q2), -l1*cos(q1) - l2*cos(q2))
+point P3 mass m3 at (l1*sin(q1) + l3*sin(q3), -l1*cos(q1) - l3*cos(q3))
+point P4 mass m4 at (l1*sin(q1) + l3*sin(q3) + l4*sin(q4), -l1*cos(q1) - l3*cos(q3) - l4*cos(q4))
+gravity g along (0, -1)
+spring k between P2 and P4 rest l1
+dissipation F = 1/2*c*(q2' - q1')^2
+values g = 9.81, m1 = 1.5, m2 = 0.7, m3 = 1.1, m4 = 0.4, l1 = 1, l2 = 0.8, l3 = 1.2, l4 = 0.5, k = 30, c = 0.3
+)";
+
+const std::string spatial = R"(parameters g m M l L k b F0 w
+coordinates z a e
+input u
+point A mass M at (0, 0, z)
+point B mass m at (l*sin(a), 0, z - l*cos(a))
+point C mass m at (l*sin(a), L*sin(e), z - l*cos(a) - L*cos(e))
+gravity g along (0, 0, -1)
+spring k between A and (0, 0, 0)
+damper b between B and C
+force on C (u, 0, 0)
+values g = 9.81, m = 0.6, M = 2, l = 1.1, L = 0.7, k = 40, b = 0.2, F0 = 1, w = 3, u = F0*cos(w*t)
+)";
+
+} // namespace
+
+TEST_CASE("compiled_motion: the recursion agrees with the expanded form", "[compiled_motion]")
+{
+    SECTION("chains from 2 to 20 links, and the hand recursion")
+    {
+        for (int links : {2, 3, 6, 13, 20}) {
+            std::vector<double> masses, lengths;
+            std::string values = "values g = 9.81";
+            for (int k = 1; k <= links; ++k) {
+                masses.push_back(1 + 0.1 * k);
+                lengths.push_back(1 - 0.01 * k);
+                values += ", m" + std::to_string(k) + " = " + std::to_string(masses.back()) + ", l" +
+                          std::to_string(k) + " = " + std::to_string(lengths.back());
+            }
+            const std::string text = lagrange_test::chain_scene(links) + values + "\n";
+            check_recursion(text, true);
+            lagrange::model scene = load(text);
+            lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+            lagrange::compiled_motion automatic(scene, *a.equations, lagrange::first_value_point(scene));
+            CHECK(automatic.recursive() == (static_cast<std::size_t>(links) >= lagrange::recursive_coordinates));
+            const lagrange_test::tension_chain hand(masses, lengths, 9.81);
+            const std::size_t d = 2 * static_cast<std::size_t>(links);
+            std::vector<double> x(d), ours(d), theirs(d);
+            for (std::size_t i = 0; i < d; ++i)
+                x[i] = i < d / 2 ? 0.3 * std::sin(1.0 + static_cast<double>(i)) : std::cos(static_cast<double>(i));
+            automatic.rhs(0, x.data(), ours.data());
+            hand(x.data(), theirs.data());
+            CHECK(relative_difference(ours, theirs) < 1e-12);
+        }
+    }
+    SECTION("a branching tree with a spring between branches and dissipation")
+    {
+        check_recursion(branching, true);
+    }
+    SECTION("in space: a bead on a spring carrying a pendulum in two planes, a damper and a driven input")
+    {
+        check_recursion(spatial, true);
+    }
+    SECTION("the cart-pole: a rail and a pendulum upright")
+    {
+        check_recursion(R"(parameters mc mp l g
+coordinates x theta
+input F
+point C mass mc at (x, 0)
+point B mass mp at (x + l*sin(theta), l*cos(theta))
+gravity g along (0, -1)
+force on C (F, 0)
+values mc = 1, mp = 0.2, l = 0.5, g = 9.81, F = 0.3
+)",
+                        true);
+    }
+    SECTION("no tree: relative angles, two masses on one rod, a spherical pendulum, a body")
+    {
+        check_recursion(R"(parameters m l g
+coordinates a b c
+point P mass m at (l*sin(a), -l*cos(a))
+point Q mass m at (l*sin(a) + l*sin(a + b), -l*cos(a) - l*cos(a + b))
+point R mass m at (l*sin(a) + l*sin(a + b) + l*sin(c), -l*cos(a) - l*cos(a + b) - l*cos(c))
+gravity g along (0, -1)
+values m = 1, l = 1, g = 9.81
+)",
+                        false);
+        check_recursion(R"(parameters m l g
+coordinates a b c
+point P mass m at (l/2*sin(a), -l/2*cos(a))
+point Q mass m at (l*sin(a), -l*cos(a))
+point R mass m at (l*sin(a) + l*sin(b), -l*cos(a) - l*cos(b))
+point S mass m at (l*sin(a) + l*sin(b) + l*sin(c), -l*cos(a) - l*cos(b) - l*cos(c))
+gravity g along (0, -1)
+values m = 1, l = 1, g = 9.81
+)",
+                        false);
+        check_recursion(R"(parameters m l g
+coordinates theta phi z
+point P mass m at (l*sin(theta)*cos(phi), l*sin(theta)*sin(phi), -l*cos(theta))
+point Q mass m at (0, 0, z)
+point R mass m at (1, 0, z)
+gravity g along (0, 0, -1)
+values m = 1, l = 1, g = 9.81
+)",
+                        false);
+    }
+    SECTION("a massless node keeps the expanded form")
+    {
+        check_recursion(R"(parameters m l g
+coordinates a b c
+point Q mass m at (l*sin(a) + l*sin(b), -l*cos(a) - l*cos(b))
+point R mass m at (l*sin(a) + l*sin(b) + l*sin(c), -l*cos(a) - l*cos(b) - l*cos(c))
+gravity g along (0, -1)
+values m = 1, l = 1, g = 9.81
+)",
+                        false);
+    }
+}
+
+TEST_CASE("compiled_motion: the compiled recursion agrees with the compiled expanded form", "[compiled_motion][cc]")
+{
+    check_recursion(branching, true, true);
+    check_recursion(spatial, true, true);
+}
+
+TEST_CASE("compiled_motion: where the recursion's pivot vanishes, M's solve refuses the state", "[compiled_motion]")
+{
+    // s = ∂(q³)/∂q = 0 at q = 0: M is singular there, and the recursion divides by zero.
+    lagrange::model scene = load(R"(parameters m
+coordinates q r s
+point A mass m at (q^3, 0)
+point B mass m at (q^3, r)
+point C mass m at (q^3 + s, r)
+values m = 1
+)");
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    const auto point = lagrange::first_value_point(scene);
+    lagrange::compiled_motion recursive(scene, *a.equations, point, lagrange::motion_form::recursive);
+    lagrange::compiled_motion expanded(scene, *a.equations, point, lagrange::motion_form::expanded);
+    REQUIRE(recursive.recursive());
+    std::vector<double> x{0, 0.5, 0.2, 1, 0.3, -0.4}, by_recursion(6), by_expanded(6);
+    CHECK_THROWS_AS(recursive.rhs(0, x.data(), by_recursion.data()), lagrange::computation_error);
+    x[0] = 0.5;
+    recursive.rhs(0, x.data(), by_recursion.data());
+    expanded.rhs(0, x.data(), by_expanded.data());
+    CHECK(relative_difference(by_recursion, by_expanded) < 1e-13);
 }
