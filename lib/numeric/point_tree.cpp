@@ -6,6 +6,9 @@
 #include "numeric/point_tree.h"
 
 #include "algebra/calculus.h"
+#include "algebra/rotation.h"
+#include "bodies/inertia.h"
+#include "bodies/orientation.h"
 #include "mechanics/lagrangian.h"
 
 #include <algorithm>
@@ -84,53 +87,77 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
                                                               const std::function<GiNaC::ex(const GiNaC::ex&)>& at)
 {
     const std::size_t n = scene.coordinates.size();
-    if (n == 0 || scene.points.empty() || !scene.bodies.empty() || !scene.kinetic_terms.is_zero() ||
+    if (n == 0 || (scene.points.empty() && scene.bodies.empty()) || !scene.kinetic_terms.is_zero() ||
         scene.lagrangian_terms || !scene.constraints.empty() || !scene.contacts.empty())
         return std::nullopt;
     for (const coordinate& c : scene.coordinates)
         if (scene.potential_terms.has(c.velocity))
             return std::nullopt;
 
-    // Each coordinate's displacement, the same in every point that moves with it, and each
-    // point's coordinates.
-    const std::size_t dimension = scene.points.front().position.size();
-    std::vector<std::optional<vector>> displacement(n);
-    std::vector<std::vector<std::size_t>> moved_by;
-    GiNaC::ex gravity = 0; // the points' part of V, which the root's acceleration stands for
-    for (const point_mass& p : scene.points) {
-        const auto moves = displacements(p.position, scene);
-        if (!moves || p.position.size() != dimension)
+    // What moves: the points, and each body as its mass at its centre and its rotational
+    // energy ½ tr(Ṙ J Ṙᵀ) (bodies/orientation.h), which must move with one coordinate alone.
+    struct item {
+        GiNaC::ex mass;
+        std::map<std::size_t, vector> displacement; ///< by coordinate
+        std::vector<std::size_t> set;               ///< the coordinates it moves with
+        GiNaC::ex rotational = 0;
+    };
+    std::vector<item> items;
+    GiNaC::ex gravity = 0; // the items' part of V, which the root's acceleration stands for
+    auto add = [&](const GiNaC::ex& mass, const vector& position) {
+        const auto moves = displacements(position, scene);
+        if (!moves || position.size() != 3)
+            return false;
+        item i{mass, *moves, {}, 0};
+        for (const auto& entry : *moves)
+            i.set.push_back(entry.first);
+        items.push_back(i);
+        gravity += gravity_potential(scene, mass, position);
+        return true;
+    };
+    for (const point_mass& p : scene.points)
+        if (!add(p.mass, p.position))
             return std::nullopt;
-        std::vector<std::size_t> set;
-        for (const auto& [j, d] : *moves) {
-            if (!displacement[j])
-                displacement[j] = d;
-            for (std::size_t c = 0; c < dimension; ++c)
-                if (!(d[c] - (*displacement[j])[c]).expand().is_zero())
-                    return std::nullopt;
-            set.push_back(j);
-        }
-        moved_by.push_back(set);
-        gravity += gravity_potential(scene, p.mass, p.position);
+    for (const rigid_body& b : scene.bodies) {
+        if (b.omega)
+            return std::nullopt;
+        if (!b.position && !b.orientation)
+            continue;
+        const inertia_result inertia = derive_inertia(b);
+        if (!add(inertia.mass, b.position ? *b.position : vector(3, 0)))
+            return std::nullopt;
+        if (!b.orientation)
+            continue;
+        item& i = items.back();
+        i.rotational = at(rotational_energy_from_rate(rotation_sequence(b.rotation_axes, *b.orientation),
+                                                     inertia.tensor, scene))
+                           .expand();
+        for (std::size_t j = 0; j < n; ++j)
+            if (i.rotational.has(scene.coordinates[j].position) || i.rotational.has(scene.coordinates[j].velocity))
+                if (std::find(i.set.begin(), i.set.end(), j) == i.set.end())
+                    i.set.insert(std::upper_bound(i.set.begin(), i.set.end(), j), j);
+        if (i.rotational.has(scene.time))
+            return std::nullopt;
     }
 
-    // The tree: the path of coordinate j is what every point moving with j moves with; its
+    // The tree: the path of coordinate j is what every item moving with j moves with; its
     // parent is the coordinate whose path is that path less j.
     std::vector<std::optional<std::vector<std::size_t>>> path(n);
-    for (const std::vector<std::size_t>& set : moved_by)
-        for (std::size_t j : set) {
+    for (const item& i : items)
+        for (std::size_t j : i.set) {
             if (!path[j]) {
-                path[j] = set;
+                path[j] = i.set;
                 continue;
             }
             std::vector<std::size_t> common;
-            std::set_intersection(path[j]->begin(), path[j]->end(), set.begin(), set.end(), std::back_inserter(common));
+            std::set_intersection(path[j]->begin(), path[j]->end(), i.set.begin(), i.set.end(),
+                                  std::back_inserter(common));
             path[j] = common;
         }
     std::vector<std::optional<std::size_t>> parent(n);
     for (std::size_t j = 0; j < n; ++j) {
         if (!path[j])
-            return std::nullopt; // a coordinate that moves no point
+            return std::nullopt; // a coordinate that moves nothing
         std::vector<std::size_t> ancestors;
         std::copy_if(path[j]->begin(), path[j]->end(), std::back_inserter(ancestors),
                      [&](std::size_t a) { return a != j; });
@@ -142,108 +169,181 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
         if (!parent[j])
             return std::nullopt;
     }
-    // Each point hangs at the deepest coordinate it moves with, and moves with its path.
-    std::vector<GiNaC::ex> node_mass(n, 0);
-    for (std::size_t k = 0; k < scene.points.size(); ++k) {
-        const std::vector<std::size_t>& set = moved_by[k];
-        if (set.empty())
-            continue; // a fixed point
-        const std::size_t deepest = *std::max_element(
-            set.begin(), set.end(), [&](std::size_t a, std::size_t b) { return path[a]->size() < path[b]->size(); });
-        if (*path[deepest] != set)
+
+    // Each node's attachments: the distinct displacements of what hangs at it (its items,
+    // where an item's node is the deepest coordinate it moves with) and of where each child's
+    // subtree hangs on it, which must be one attachment for the whole subtree.
+    struct attachment {
+        vector displacement;
+        GiNaC::ex mass = 0;
+        vector axis, bias_acceleration;
+        std::vector<vector> inertia;
+        vector bias;
+    };
+    std::vector<std::vector<attachment>> attachments(n);
+    std::vector<GiNaC::ex> rotational(n, 0);
+    auto attach = [&](std::size_t j, const vector& d) {
+        for (std::size_t a = 0; a < attachments[j].size(); ++a) {
+            bool same = true;
+            for (std::size_t c = 0; c < 3 && same; ++c)
+                same = (d[c] - attachments[j][a].displacement[c]).expand().is_zero();
+            if (same)
+                return a;
+        }
+        attachments[j].push_back(attachment{d});
+        return attachments[j].size() - 1;
+    };
+    auto displacement_of = [](const item& i, std::size_t j) {
+        auto found = i.displacement.find(j);
+        return found == i.displacement.end() ? vector(3, 0) : found->second;
+    };
+    std::vector<std::optional<std::size_t>> hangs_at(n); // the attachment on the parent
+    for (const item& i : items) {
+        if (i.set.empty())
+            continue; // fixed
+        const std::size_t node = *std::max_element(i.set.begin(), i.set.end(), [&](std::size_t a, std::size_t b) {
+            return path[a]->size() < path[b]->size();
+        });
+        if (*path[node] != i.set)
             return std::nullopt;
-        node_mass[deepest] += at(scene.points[k].mass);
+        for (std::size_t j = 0; j < n; ++j)
+            if (j != node && (i.rotational.has(scene.coordinates[j].position) ||
+                              i.rotational.has(scene.coordinates[j].velocity)))
+                return std::nullopt; // turns with another coordinate than the one it hangs at
+        attachments[node][attach(node, displacement_of(i, node))].mass += at(i.mass);
+        rotational[node] += i.rotational;
+        // Along its path, each coordinate's subtree hangs at one attachment of its parent.
+        for (std::size_t j : i.set) {
+            if (!parent[j])
+                continue;
+            const std::size_t a = attach(*parent[j], displacement_of(i, *parent[j]));
+            if (hangs_at[j] && *hangs_at[j] != a)
+                return std::nullopt;
+            hangs_at[j] = a;
+        }
     }
-    for (GiNaC::ex& m : node_mass)
-        if (GiNaC::is_a<GiNaC::numeric>(m) && !(GiNaC::ex_to<GiNaC::numeric>(m).is_positive()))
+    // Each node needs mass that it moves, or a rotation, and no mass below zero: then its
+    // pivot D ≥ Σ m_a |s_a|² + k is positive wherever M is regular, and not finite where it is
+    // singular. A node of massless rods, D = s·(Σ articulated inertia)·s alone, can round to a
+    // small number where M is singular.
+    for (std::size_t j = 0; j < n; ++j) {
+        GiNaC::ex moved = rotational[j];
+        for (const attachment& a : attachments[j]) {
+            if (GiNaC::is_a<GiNaC::numeric>(a.mass) && GiNaC::ex_to<GiNaC::numeric>(a.mass).is_negative())
+                return std::nullopt;
+            if (std::any_of(a.displacement.begin(), a.displacement.end(), [](const GiNaC::ex& d) { return !d.is_zero(); }))
+                moved += a.mass;
+        }
+        if (moved.is_zero())
             return std::nullopt;
+    }
 
     // Outward order: by depth, then by the scene's order.
     std::vector<std::size_t> order(n);
     for (std::size_t j = 0; j < n; ++j)
         order[j] = j;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return path[a]->size() < path[b]->size(); });
-    std::vector<bool> has_children(n, false);
-    for (std::size_t j = 0; j < n; ++j)
-        if (parent[j])
-            has_children[*parent[j]] = true;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return path[a]->size() < path[b]->size(); });
 
     const GiNaC::ex rest_of_potential = (equations.potential - gravity).expand();
     steps recursion;
-    std::vector<vector> axis(n), bias_acceleration(n), u_vector(n);
-    std::vector<GiNaC::ex> force(n), inverse_pivot(n);
-    std::vector<std::vector<vector>> inertia(n, std::vector<vector>(dimension, vector(dimension, 0)));
-    std::vector<vector> bias(n, vector(dimension, 0));
+    std::vector<GiNaC::ex> force(n);
     for (std::size_t j = 0; j < n; ++j) {
         const coordinate& c = scene.coordinates[j];
-        vector s, a;
-        for (const GiNaC::ex& d : *displacement[j]) {
-            const GiNaC::ex derivative = differentiate(at(d), c.position);
-            s.push_back(derivative);
-            a.push_back(differentiate(derivative, c.position) * GiNaC::pow(c.velocity, 2));
+        for (attachment& a : attachments[j]) {
+            vector s, b;
+            for (const GiNaC::ex& d : a.displacement) {
+                const GiNaC::ex derivative = differentiate(at(d), c.position);
+                s.push_back(derivative);
+                b.push_back(differentiate(derivative, c.position) * GiNaC::pow(c.velocity, 2));
+            }
+            a.axis = recursion.define(s);
+            a.bias_acceleration = recursion.define(b);
+            a.inertia.assign(3, vector(3, 0));
+            for (std::size_t r = 0; r < 3; ++r)
+                a.inertia[r][r] = a.mass;
+            a.bias.assign(3, 0);
         }
-        axis[j] = recursion.define(s);
-        bias_acceleration[j] = recursion.define(a);
-        for (std::size_t r = 0; r < dimension; ++r)
-            inertia[j][r][r] = node_mass[j];
-        force[j] = at(equations.forces.total[j] - differentiate(rest_of_potential, c.position));
+        // A rotation ½ k(q) q̇² adds k q̈ + ½ k′ q̇² to the coordinate's equation.
+        const GiNaC::ex k = rotational[j].diff(c.velocity, 2);
+        rotational[j] = recursion.define(k);
+        force[j] = at(equations.forces.total[j] - differentiate(rest_of_potential, c.position)) -
+                   differentiate(k, c.position) * GiNaC::pow(c.velocity, 2) / 2;
     }
 
-    // Inwards: each node's articulated inertia and bias, passed to its parent.
-    std::vector<GiNaC::ex> rest_force(n);
+    // Inwards: each node's articulated inertia Σ I_a − U Uᵀ/D and bias Σ (I_a c_a + p_a) + U u/D,
+    // passed to the attachment its parent carries it at.
+    std::vector<vector> u_vector(n);
+    std::vector<GiNaC::ex> rest_force(n), inverse_pivot(n);
     for (auto it = order.rbegin(); it != order.rend(); ++it) {
         const std::size_t j = *it;
-        std::vector<vector>& inertia_j = inertia[j];
-        for (std::size_t r = 0; r < dimension; ++r)
-            for (std::size_t k = r; k < dimension; ++k)
-                inertia_j[r][k] = inertia_j[k][r] = recursion.define(inertia_j[r][k]);
-        const vector p = recursion.define(bias[j]);
-        vector u(dimension);
-        for (std::size_t r = 0; r < dimension; ++r)
-            u[r] = dot(inertia_j[r], axis[j]);
-        u_vector[j] = recursion.define(u);
-        inverse_pivot[j] = recursion.define(1 / recursion.define(dot(axis[j], u_vector[j])));
-        rest_force[j] = recursion.define(force[j] - dot(axis[j], p));
+        vector coupling(3, 0), carried(3, 0);
+        std::vector<vector> total(3, vector(3, 0));
+        GiNaC::ex pivot = rotational[j], rest = force[j];
+        for (attachment& a : attachments[j]) {
+            for (std::size_t r = 0; r < 3; ++r)
+                for (std::size_t k = r; k < 3; ++k)
+                    a.inertia[r][k] = a.inertia[k][r] = recursion.define(a.inertia[r][k]);
+            a.bias = recursion.define(a.bias);
+            vector along(3), load(3);
+            for (std::size_t r = 0; r < 3; ++r) {
+                along[r] = dot(a.inertia[r], a.axis);
+                load[r] = dot(a.inertia[r], a.bias_acceleration) + a.bias[r];
+            }
+            load = recursion.define(load);
+            for (std::size_t r = 0; r < 3; ++r) {
+                coupling[r] += along[r];
+                carried[r] += load[r];
+                for (std::size_t k = 0; k < 3; ++k)
+                    total[r][k] += a.inertia[r][k];
+            }
+            pivot += dot(a.axis, along);
+            rest -= dot(a.axis, load);
+        }
+        u_vector[j] = recursion.define(coupling);
+        inverse_pivot[j] = recursion.define(1 / recursion.define(pivot));
+        rest_force[j] = recursion.define(rest);
         if (!parent[j])
             continue;
-        // I − U Uᵀ/D and p + (I − U Uᵀ/D) c + U u/D, added to the parent's.
         const GiNaC::ex weight = recursion.define(rest_force[j] * inverse_pivot[j]);
-        std::vector<vector> articulated(dimension, vector(dimension));
-        for (std::size_t r = 0; r < dimension; ++r)
-            for (std::size_t k = r; k < dimension; ++k)
-                articulated[r][k] = articulated[k][r] =
-                    recursion.define(inertia_j[r][k] - u_vector[j][r] * u_vector[j][k] * inverse_pivot[j]);
-        std::vector<vector>& inertia_parent = inertia[*parent[j]];
-        vector& bias_parent = bias[*parent[j]];
-        for (std::size_t r = 0; r < dimension; ++r) {
-            for (std::size_t k = 0; k < dimension; ++k)
-                inertia_parent[r][k] += articulated[r][k];
-            bias_parent[r] += p[r] + dot(articulated[r], bias_acceleration[j]) + u_vector[j][r] * weight;
+        attachment& on = attachments[*parent[j]][*hangs_at[j]];
+        for (std::size_t r = 0; r < 3; ++r) {
+            for (std::size_t k = r; k < 3; ++k) {
+                const GiNaC::ex articulated =
+                    recursion.define(total[r][k] - u_vector[j][r] * u_vector[j][k] * inverse_pivot[j]);
+                on.inertia[r][k] += articulated;
+                if (k != r)
+                    on.inertia[k][r] += articulated;
+            }
+            on.bias[r] += carried[r] + u_vector[j][r] * weight;
         }
     }
 
     // Outwards: the accelerations, with gravity as the root's acceleration −g.
-    vector root(dimension, 0);
+    vector root(3, 0);
     if (scene.gravity)
-        for (std::size_t r = 0; r < dimension; ++r)
+        for (std::size_t r = 0; r < 3; ++r)
             root[r] = -at(scene.gravity->strength * scene.gravity->direction[r]);
-    std::vector<vector> acceleration(n);
+    std::vector<std::vector<vector>> acceleration(n); // of each attachment that carries a child
     point_tree_recursion result;
     result.accelerations.resize(n);
     for (std::size_t j : order) {
-        const vector& base = parent[j] ? acceleration[*parent[j]] : root;
-        vector before(dimension);
-        for (std::size_t r = 0; r < dimension; ++r)
-            before[r] = base[r] + bias_acceleration[j][r];
-        before = recursion.define(before);
-        const GiNaC::ex q2 = recursion.define((rest_force[j] - dot(u_vector[j], before)) * inverse_pivot[j]);
+        const vector& base = parent[j] ? acceleration[*parent[j]][*hangs_at[j]] : root;
+        const GiNaC::ex q2 = recursion.define((rest_force[j] - dot(u_vector[j], base)) * inverse_pivot[j]);
         result.accelerations[j] = q2;
-        if (!has_children[j])
-            continue;
-        acceleration[j].resize(dimension);
-        for (std::size_t r = 0; r < dimension; ++r)
-            acceleration[j][r] = before[r] + axis[j][r] * q2;
-        acceleration[j] = recursion.define(acceleration[j]);
+        acceleration[j].resize(attachments[j].size());
+        for (std::size_t a = 0; a < attachments[j].size(); ++a) {
+            const attachment& at_a = attachments[j][a];
+            bool carries_child = false;
+            for (std::size_t i = 0; i < n; ++i)
+                carries_child = carries_child || (parent[i] == j && hangs_at[i] == a);
+            if (!carries_child)
+                continue;
+            vector next(3);
+            for (std::size_t r = 0; r < 3; ++r)
+                next[r] = base[r] + at_a.bias_acceleration[r] + at_a.axis[r] * q2;
+            acceleration[j][a] = recursion.define(next);
+        }
     }
     result.definitions = std::move(recursion.definitions);
     return result;

@@ -223,7 +223,51 @@ values mc = 1, mp = 0.2, l = 0.5, g = 9.81, F = 0.3
 )",
                         true);
     }
-    SECTION("no tree: relative angles, two masses on one rod, a spherical pendulum, a body")
+    SECTION("two masses on one rod, and a compound chain of rods in absolute angles")
+    {
+        check_recursion(R"(parameters m l g
+coordinates a b c
+point P mass m at (l/2*sin(a), -l/2*cos(a))
+point Q mass 2*m at (l*sin(a), -l*cos(a))
+point R mass m at (l*sin(a) + l*sin(b), -l*cos(a) - l*cos(b))
+point S mass m at (l*sin(a) + l/3*sin(b) + l*sin(c), -l*cos(a) - l/3*cos(b) - l*cos(c))
+gravity g along (0, -1)
+values m = 1.3, l = 0.9, g = 9.81
+)",
+                        true);
+        check_recursion(R"(parameters m l g
+coordinates a b c
+body A stick(l) mass m axis y at (l/2*sin(a), -l/2*cos(a), 0) orientation rotations(z a)
+body B stick(l) mass m axis y at (l*sin(a) + l/2*sin(b), -l*cos(a) - l/2*cos(b), 0) orientation rotations(z b)
+body C stick(l) mass 2*m axis y at (l*sin(a) + l*sin(b) + l/2*sin(c), -l*cos(a) - l*cos(b) - l/2*cos(c), 0) \
+    orientation rotations(z c)
+gravity g along (0, -1, 0)
+values m = 1.1, l = 0.8, g = 9.81
+)",
+                        true);
+    }
+    SECTION("a cart carrying a wheel that turns about its centre and a physical pendulum")
+    {
+        check_recursion(R"(parameters M m l g k
+coordinates x phi theta
+point C mass 3*M at (x, 0, 0)
+body W stick(l) mass M axis y at (x, 0, 0) orientation rotations(z phi)
+body P stick(l) mass m at (x, l/2*sin(theta), -l/2*cos(theta)) orientation zxz(0, theta, 0)
+spring k between (x, 0, 0) and (0, 0, 0)
+gravity g along (0, 0, -1)
+values M = 2, m = 0.7, l = 0.6, g = 9.81, k = 5
+)",
+                        true);
+        // An angle that is not the coordinate itself: k(q) q̇²/2 with k′ ≠ 0.
+        check_recursion(R"(parameters M l
+coordinates x a
+point C mass M at (x, 0, 0)
+body W stick(l) mass M axis y at (x + sin(a), 0, 0) orientation rotations(z a^2/2 + a)
+values M = 2, l = 0.6
+)",
+                        true);
+    }
+    SECTION("no tree: relative angles, a spherical pendulum, a body turning with two angles")
     {
         check_recursion(R"(parameters m l g
 coordinates a b c
@@ -235,21 +279,20 @@ values m = 1, l = 1, g = 9.81
 )",
                         false);
         check_recursion(R"(parameters m l g
-coordinates a b c
-point P mass m at (l/2*sin(a), -l/2*cos(a))
-point Q mass m at (l*sin(a), -l*cos(a))
-point R mass m at (l*sin(a) + l*sin(b), -l*cos(a) - l*cos(b))
-point S mass m at (l*sin(a) + l*sin(b) + l*sin(c), -l*cos(a) - l*cos(b) - l*cos(c))
-gravity g along (0, -1)
-values m = 1, l = 1, g = 9.81
-)",
-                        false);
-        check_recursion(R"(parameters m l g
 coordinates theta phi z
 point P mass m at (l*sin(theta)*cos(phi), l*sin(theta)*sin(phi), -l*cos(theta))
 point Q mass m at (0, 0, z)
 point R mass m at (1, 0, z)
 gravity g along (0, 0, -1)
+values m = 1, l = 1, g = 9.81
+)",
+                        false);
+        check_recursion(R"(parameters m l g
+coordinates a b c
+body A stick(l) mass m at (l/2*sin(a), -l/2*cos(a), 0) orientation rotations(z a, x b)
+point Q mass m at (l*sin(a) + l*sin(b), -l*cos(a) - l*cos(b), 0)
+point R mass m at (0, 0, c)
+gravity g along (0, -1, 0)
 values m = 1, l = 1, g = 9.81
 )",
                         false);
