@@ -35,10 +35,10 @@ wall() {
 echo "planar N-link chain, $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg) at start"
 [ -n "$mujoco" ] && echo "MuJoCo $mujoco_version (mj_forward)" || echo "MuJoCo: skipped (libmujoco-dev is not installed)"
 echo
-echo "| N | derive s | first compile s | lagrange ns | hand O(N) ns | ratio | MuJoCo ns | MuJoCo/lagrange | simulate, no cache s | simulate, cached s | agreement |"
-echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| N | form | derive s | first compile s | lagrange ns | hand O(N) ns | ratio | MuJoCo ns | MuJoCo/lagrange | simulate, no cache s | simulate, cached s | agreement |"
+echo "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for n in "${sizes[@]}"; do
-  read -r _ derive compile mode ours hand ratio difference _ < <("$build/bench/large_systems" "$n")
+  read -r _ derive compile mode ours hand ratio difference _ form < <("$build/bench/large_systems" "$n")
   [ "$mode" = native ] || compile="$compile ($mode)"
   peer="-" peer_ratio="-"
   if [ -n "$mujoco" ]; then
@@ -50,7 +50,7 @@ for n in "${sizes[@]}"; do
   mkdir -p "$work/cache"
   XDG_CACHE_HOME=$work/cache "$lagrange" simulate "$work/chain$n.lag" >/dev/null 2>&1 || true
   warm=$(XDG_CACHE_HOME=$work/cache wall "$lagrange" simulate "$work/chain$n.lag")
-  echo "| $n | $derive | $compile | $ours | $hand | $ratio | $peer | $peer_ratio | $cold | $warm | $difference |"
+  echo "| $n | $form | $derive | $compile | $ours | $hand | $ratio | $peer | $peer_ratio | $cold | $warm | $difference |"
 done
 echo
 echo "ratio: lagrange ns / hand ns (1 is the O(N) recursion's speed); agreement: largest relative"
