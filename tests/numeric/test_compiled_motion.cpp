@@ -368,3 +368,51 @@ TEST_CASE("compiled_motion: DOP853 on the compiled recursion follows the expande
     REQUIRE(by_recursion.invariant_drift.size() == 1);
     CHECK(by_recursion.invariant_drift[0].second < 1e-10);
 }
+
+TEST_CASE("compiled_motion: the recursion agrees on generated trees", "[compiled_motion]")
+{
+    // Random trees of 3 to 7 coordinates: each coordinate moves a node from a random earlier
+    // one (or the ground) along a pendulum arc in one of two planes, a straight rail or a
+    // parabola; a point of random mass hangs at each node, some with a second point at
+    // another place on the same arc; random springs join random points, and gravity pulls
+    // along a random direction.
+    std::mt19937_64 random(2026);
+    std::uniform_real_distribution<double> size(0.5, 1.5);
+    auto number = [&] { return std::to_string(size(random)); };
+    for (int scene_number = 0; scene_number < 12; ++scene_number) {
+        const int n = 3 + static_cast<int>(random() % 5);
+        std::string coordinates = "coordinates", points;
+        std::vector<std::vector<std::string>> position(n); // x, y, z of each node
+        for (int j = 0; j < n; ++j) {
+            const std::string q = "q" + std::to_string(j + 1), l = number();
+            coordinates += " " + q;
+            const int from = static_cast<int>(random() % static_cast<unsigned>(j + 1)) - 1;
+            std::vector<std::string> base = from < 0 ? std::vector<std::string>{"0", "0", "0"} : position[from];
+            std::vector<std::string> step;
+            switch (random() % 4) {
+            case 0: step = {l + "*sin(" + q + ")", "-" + l + "*cos(" + q + ")", "0"}; break;
+            case 1: step = {"0", l + "*sin(" + q + ")", "-" + l + "*cos(" + q + ")"}; break;
+            case 2: step = {q, "0", "0"}; break;
+            default: step = {q, l + "*" + q + "^2", "0"}; break;
+            }
+            for (int c = 0; c < 3; ++c)
+                position[j].push_back(base[c] + " + " + step[c]);
+            points += "point P" + std::to_string(j + 1) + " mass " + number() + " at (" + position[j][0] + ", " +
+                      position[j][1] + ", " + position[j][2] + ")\n";
+            if (random() % 3 == 0) // a second mass at half the step
+                points += "point H" + std::to_string(j + 1) + " mass " + number() + " at (" + base[0] + " + (" +
+                          step[0] + ")/2, " + base[1] + " + (" + step[1] + ")/2, " + base[2] + " + (" + step[2] +
+                          ")/2)\n";
+        }
+        for (int k = 0; k < 2; ++k) {
+            const unsigned a = static_cast<unsigned>(random() % static_cast<unsigned>(n));
+            const unsigned b = (a + 1 + static_cast<unsigned>(random() % static_cast<unsigned>(n - 1))) % n;
+            points += "spring " + number() + " between P" + std::to_string(a + 1) + " and P" + std::to_string(b + 1) +
+                      " rest " + number() + "\n";
+        }
+        const std::string text = "parameters g\n" + coordinates + "\n" + points + "gravity g along (" + number() +
+                                 ", -" + number() + ", " + number() + ")\nvalues g = 9.81\n";
+        INFO(text);
+        check_recursion(text, true);
+    }
+}
