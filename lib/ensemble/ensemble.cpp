@@ -8,6 +8,7 @@
 #include "numeric/dop853.h"
 #include "numeric/floquet.h"
 #include "numeric/mass_matrix.h"
+#include "numeric/point_tree.h"
 #include "numeric/values.h"
 
 #include <Eigen/Eigenvalues>
@@ -57,11 +58,13 @@ struct ensemble_problem::run_result {
 
 namespace {
 
-/// The right-hand side (q̇, q̈) with M q̈ = f, and with `tangents` > 0 also the variational
-/// equations v̇ = J v for that many tangent vectors v after the state.
+/// The right-hand side (q̇, q̈) with M q̈ = f, or from a program that writes it (`recursive`),
+/// and with `tangents` > 0 also the variational equations v̇ = J v for that many tangent
+/// vectors v after the state (M q̈ = f only).
 struct point_rhs {
     std::size_t n = 0;
     std::size_t tangents = 0;
+    bool recursive = false;
     native_module::function native_rhs = nullptr, native_jacobian = nullptr;
     const expression_program* rhs_program = nullptr;
     const expression_program* jacobian_program = nullptr;
@@ -85,6 +88,13 @@ struct point_rhs {
         for (std::size_t i = 0; i < 2 * N; ++i)
             symbols[i] = x[i];
         symbols[2 * N] = t;
+        if (recursive) {
+            evaluate(native_rhs, *rhs_program, dxdt);
+            for (std::size_t i = N; i < 2 * N; ++i)
+                if (!std::isfinite(dxdt[i])) [[unlikely]] // a zero pivot: M is singular
+                    singular(t, x, 2 * N);
+            return;
+        }
         double* outputs = work->outputs.data();
         evaluate(native_rhs, *rhs_program, outputs);
         for (std::size_t i = 0; i < N; ++i)
@@ -103,6 +113,13 @@ struct point_rhs {
         double* symbols = work->symbols.data();
         std::copy(x, x + 2 * n, symbols);
         symbols[2 * n] = t;
+        if (recursive) {
+            evaluate(native_rhs, *rhs_program, dxdt);
+            for (std::size_t i = n; i < 2 * n; ++i)
+                if (!std::isfinite(dxdt[i]))
+                    singular(t, x, 2 * n);
+            return;
+        }
         evaluate(native_rhs, *rhs_program, work->outputs.data());
         std::copy(x + n, x + 2 * n, dxdt);
         if (!solve_mass_matrix(work->outputs.data(), n, work->factor.data(), dxdt + n, tangents > 0))
@@ -348,6 +365,16 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
     const bool tangents = definition.tangents != measure_definition::tangent_vectors::none;
     if (tangents)
         jacobian_outputs = motion_jacobian(scene, motion);
+    std::optional<point_tree_recursion> recursion;
+    if (!tangents && n_ >= recursive_coordinates)
+        recursion = point_tree_accelerations(scene, equations,
+                                             [&](const GiNaC::ex& e) { return at_values(e, scene, values); });
+    recursive_ = recursion.has_value();
+    if (recursion) {
+        rhs_outputs.assign(symbols.begin() + static_cast<std::ptrdiff_t>(n_),
+                           symbols.begin() + static_cast<std::ptrdiff_t>(2 * n_));
+        rhs_outputs.insert(rhs_outputs.end(), recursion->accelerations.begin(), recursion->accelerations.end());
+    }
     // The scene's initial state (zeros where not given), possibly in the gridded parameters.
     for (int part = 0; part < 2; ++part)
         for (const coordinate& c : scene.coordinates) {
@@ -363,7 +390,8 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
     if (definition.one_period)
         floquet_setup(scene, equations, time, values, parameter_symbols, initial_outputs);
     try {
-        rhs_program_ = expression_program(rhs_outputs, symbols);
+        rhs_program_ = recursion ? expression_program(recursion->definitions, rhs_outputs, symbols)
+                                 : expression_program(rhs_outputs, symbols);
         jacobian_program_ = expression_program(jacobian_outputs, symbols);
         initial_program_ = expression_program(initial_outputs, parameter_symbols);
     } catch (const std::invalid_argument& error) {
@@ -498,6 +526,7 @@ ensemble_problem::run_result ensemble_problem::integrate(const double* x_start, 
     point_rhs f;
     f.n = n;
     f.tangents = tangents;
+    f.recursive = recursive_;
     f.native_rhs = native_rhs_;
     f.native_jacobian = native_jacobian_;
     f.rhs_program = &rhs_program_;

@@ -118,6 +118,8 @@ public:
     const ensemble_settings& settings() const { return settings_; }
     /// "native code" or why the interpreter runs.
     const std::string& evaluation() const { return evaluation_; }
+    /// Whether q̈ comes from the recursion of a tree (see rhs_program_).
+    bool recursive() const { return recursive_; }
     /// A fingerprint of what the rows depend on (columns, points, settings, evaluation), so that
     /// processes of one MPI run can check that they compute the same ensemble.
     std::uint64_t signature() const;
@@ -151,7 +153,10 @@ private:
     std::size_t n_ = 0;              ///< coordinates
     std::vector<std::string> columns_;
     std::vector<std::size_t> gridded_parameters_; ///< scene parameter index of each program parameter
-    expression_program rhs_program_;      ///< M then f in (q, q̇, t, gridded parameters)
+    /// M then f in (q, q̇, t, gridded parameters), or (q̇, q̈) by the recursion of a tree
+    /// (numeric/point_tree.h) where compiled_motion would take it and no tangents are needed
+    expression_program rhs_program_;
+    bool recursive_ = false;
     expression_program jacobian_program_; ///< ∂M/∂q_k (n³), ∂f/∂q (n²), ∂f/∂q̇ (n²)
     expression_program initial_program_;  ///< the scene's initial (q, q̇) in the gridded parameters
     /// floquet_stable: |ω₀|, the drive's base frequency, in the gridded parameters; the period

@@ -7,6 +7,7 @@
 #include "engine/analysis.h"
 #include "ensemble/run.h"
 #include "helpers/scene_helpers.h"
+#include "numeric/compiled_motion.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -167,6 +168,38 @@ TEST_CASE("ensemble: final states of the harmonic oscillator and flip times of a
             CHECK_THAT(r[2], WithinAbs(t, 1e-12));
         else
             CHECK(std::isinf(r[2]));
+    }
+}
+
+TEST_CASE("ensemble: a tree's final states by the recursion agree with the expanded form", "[ensemble]")
+{
+    // A 3-link chain gridded over its first angle and the middle mass (a parameter symbol in
+    // the recursion): each final state against compiled_motion's expanded form at that point.
+    const std::string text = chain_scene(3) +
+                             "values g = 9.81, m1 = 1, m2 = 1.5, m3 = 0.7, l1 = 1, l2 = 0.8, l3 = 1.2\n"
+                             "initial q1 = 0.5, q2 = -0.3, q3 = 0.2, q2' = 1\n";
+    lagrange::model scene = load(text);
+    const double until = 1.5;
+    lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+    lagrange::ensemble_settings settings;
+    settings.until = until;
+    lagrange::ensemble_problem problem(scene, *a.equations, lagrange::parse_ensemble_grid("q1=-1..1:3, m2=0.5..2:2", scene, false),
+                                       lagrange::parse_ensemble_measure("final", scene), settings);
+    CHECK(problem.recursive());
+    computed finals = run(scene, "q1=-1..1:3, m2=0.5..2:2", "final", until);
+    CHECK(finals.summary.worst_error < 1e-7);
+    for (const std::vector<double>& r : finals.rows) {
+        auto values = lagrange::first_value_point(scene);
+        values["m2"] = GiNaC::numeric(std::to_string(r[1]).c_str());
+        lagrange::compiled_motion expanded(scene, *a.equations, values, lagrange::motion_form::expanded);
+        lagrange::integration_options options;
+        options.until = until;
+        options.tolerance = 1e-12;
+        const lagrange::trajectory reference = lagrange::integrate(
+            expanded.system(), lagrange::ode_method::dop853, {r[0], -0.3, 0.2, 0, 1, 0}, options);
+        INFO("q1 = " << r[0] << ", m2 = " << r[1]);
+        for (std::size_t i = 0; i < 6; ++i)
+            CHECK_THAT(r[2 + i], WithinAbs(reference.final_state[i], 1e-6));
     }
 }
 
