@@ -111,6 +111,11 @@ private:
     mutable std::vector<double> scratch_, symbols_, outputs_, factor_, jacobian_outputs_;
 };
 
+/// Whether `recursion` (writing q̇ then q̈) gives the q̈ of M q̈ = f from `mass_and_force` (M
+/// row-major, then f) at three fixed states, to 1e-8 of the largest; both read (q, q̇, t). States
+/// where M is singular are skipped.
+bool recursion_agrees(const expression_program& recursion, const expression_program& mass_and_force, std::size_t n);
+
 /// The programs' symbols in the state's order: q1 … qn, q̇1 … q̇n, then t.
 std::vector<GiNaC::ex> state_symbols(const model& scene);
 

@@ -416,3 +416,19 @@ TEST_CASE("compiled_motion: the recursion agrees on generated trees", "[compiled
         check_recursion(text, true);
     }
 }
+
+TEST_CASE("compiled_motion: the guard on the recursion tells a wrong q̈ from a right one", "[compiled_motion]")
+{
+    // The pendulum m l² q̈ = −m g l sin q (m = 2, l = 0.5, g = 9.81) against recursions that
+    // give q̈ = −(g/l) sin q, and twice that.
+    GiNaC::realsymbol q("q"), v("v"), t("t");
+    const std::vector<GiNaC::ex> symbols{q, v, t};
+    const GiNaC::ex g = GiNaC::numeric(981, 100), l = GiNaC::numeric(1, 2), m = 2;
+    const lagrange::expression_program mass_and_force({m * l * l, -m * g * l * GiNaC::sin(q)}, symbols);
+    GiNaC::realsymbol step("$0");
+    const std::vector<lagrange::program_definition> definitions{{step, -g / l * GiNaC::sin(q)}};
+    const lagrange::expression_program right(definitions, std::vector<GiNaC::ex>{v, step}, symbols);
+    const lagrange::expression_program wrong({v, -2 * g / l * GiNaC::sin(q)}, symbols);
+    CHECK(lagrange::recursion_agrees(right, mass_and_force, 1));
+    CHECK_FALSE(lagrange::recursion_agrees(wrong, mass_and_force, 1));
+}
