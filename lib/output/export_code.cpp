@@ -107,18 +107,32 @@ std::vector<std::string> write_program(const expression_program& program, dialec
     std::vector<std::string> slot(code.size());
     const char* end = d == dialect::python ? "\n" : ";\n";
     const char* declare = d == dialect::c ? "const double " : "";
+    // Only what an output reads: a program's definitions (the steps of a recursion) are
+    // compiled whether read or not, and an unread one would be an unused variable in C.
+    std::vector<bool> live(code.size(), false);
+    for (int s : program.output_slots())
+        live[static_cast<std::size_t>(s)] = true;
+    for (std::size_t k = code.size(); k-- > 0;) {
+        if (!live[k] || code[k].op == op::constant || code[k].op == op::symbol)
+            continue;
+        live[static_cast<std::size_t>(code[k].first)] = true;
+        if (code[k].op == op::add || code[k].op == op::mul)
+            live[static_cast<std::size_t>(code[k].second)] = true;
+    }
     // In C an argument's sine and cosine come from one lagrange_sincos call, at the first of
     // the two: the instructions' indices, or past the program's end for one not taken.
     std::map<int, std::pair<std::size_t, std::size_t>> pairs; // argument slot → (sine, cosine)
     if (d == dialect::c)
         for (std::size_t k = 0; k < code.size(); ++k)
-            if (code[k].op == op::sine || code[k].op == op::cosine) {
+            if (live[k] && (code[k].op == op::sine || code[k].op == op::cosine)) {
                 auto [at, fresh] = pairs.try_emplace(code[k].first, code.size() + k, code.size() + k);
                 std::size_t& first = code[k].op == op::sine ? at->second.first : at->second.second;
                 first = std::min(first, k); // a repeated one reads the first's value
             }
     for (std::size_t k = 0; k < code.size(); ++k) {
         const instruction& i = code[k];
+        if (!live[k])
+            continue;
         if (d == dialect::c && (i.op == op::sine || i.op == op::cosine)) {
             const auto [sine, cosine] = pairs.at(i.first);
             slot[k] = names.temporary + std::to_string(i.op == op::sine ? sine : cosine);
