@@ -6,6 +6,7 @@
 #include "program/angle_sums.h"
 
 #include "numeric/compiled_motion.h"
+#include "numeric/point_tree.h"
 #include "algebra/calculus.h"
 #include "algebra/budget.h"
 #include "algebra/canonical_order.h"
@@ -170,6 +171,11 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
         out.forcing = program(forcing);
         out.energy = program({equations.energy});
         out.derivatives = program(derivatives);
+        // The recursion with the parameters left symbols (`at` the identity), as the engine
+        // takes it from recursive_coordinates on (compiled_motion.cpp).
+        if (n >= recursive_coordinates)
+            if (std::optional<point_tree_recursion> tree = point_tree_accelerations(scene, equations))
+                out.recursion = expression_program(tree->definitions, tree->accelerations, symbols, parameters);
         if (!constraint_parts.empty()) {
             out.constraint_parts = program(constraint_parts);
             out.constraint_derivatives = program(constraint_derivatives);

@@ -244,9 +244,14 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
       << "extern const char *const " << name << "_state_names[" << name << "_NX];\n"
       << "extern const char *const " << name << "_parameter_names[" << name << "_NP > 0 ? " << name << "_NP : 1];\n\n"
       << constrained_declarations(system, name, args)
-      << (constrained ? "" : "/* dxdt = f(t, x, u, p). Returns 0, or 1 where the mass matrix is not positive definite. */\n")
+      << (constrained ? ""
+          : system.recursion
+              ? "/* dxdt = f(t, x, u, p), q'' by the articulated-body recursion. Returns 0, or 1 where a q'' is\n"
+                "   not finite: where the mass matrix is singular (a zero pivot of the recursion). */\n"
+              : "/* dxdt = f(t, x, u, p). Returns 0, or 1 where the mass matrix is not positive definite. */\n")
       << (constrained ? "" : "int " + name + "_rhs" + args + ", double *dxdt);\n")
-      << "/* dfdx = df/dx (NX x NX) and dfdu = df/du (NX x NU; may be NULL). Returns as " << name << "_rhs. */\n"
+      << "/* dfdx = df/dx (NX x NX) and dfdu = df/du (NX x NU; may be NULL). Returns 0, or 1 where "
+      << (constrained ? "[M -A^T; A 0] is singular" : "the mass matrix is not positive definite") << ". */\n"
       << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu);\n"
       << "/* The mass matrix M (NQ x NQ) and the forcing F (NQ) of M q'' = F" << (constrained ? " + A^T lambda" : "")
       << ". */\n"
@@ -297,7 +302,8 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
             for (const instruction& i : program->code())
                 found = found || i.op == op;
         for (const std::optional<expression_program>* program :
-             {&system.linear, &system.constraint_parts, &system.constraint_derivatives, &system.conserved})
+             {&system.recursion, &system.linear, &system.constraint_parts, &system.constraint_derivatives,
+              &system.conserved})
             if (*program)
                 for (const instruction& i : (*program)->code())
                     found = found || i.op == op;
@@ -348,17 +354,24 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
     if (constrained) {
         c << constrained_functions(system, names, name, args);
     } else {
-        c << "int " << name << "_rhs" << args << ", double *dxdt)\n{\n"
-          << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
-          << "    lagrange_mass_and_forcing(t, x, u, p, m);\n";
-        if (n == 2) // Cramer's rule, as the engine solves two coordinates
-            c << "    {\n        const double det = m[0] * m[3] - m[1] * m[1];\n"
+        c << "int " << name << "_rhs" << args << ", double *dxdt)\n{\n";
+        if (system.recursion) // O(n), as the engine from recursive_coordinates on; the stores last: dxdt may be x
+            c << "    double qdd[" << nq << "];\n    int i;\n" << c_body(*system.recursion, names, system, "qdd")
+              << "    for (i = 0; i < " << nq << "; ++i)\n        if (!isfinite(qdd[i]))\n            return 1;\n"
+              << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
+              << "        dxdt[" << nq << " + i] = qdd[i];\n    }\n    return 0;\n}\n\n";
+        else if (n == 2) // Cramer's rule, as the engine solves two coordinates
+            c << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
+              << "    lagrange_mass_and_forcing(t, x, u, p, m);\n"
+              << "    {\n        const double det = m[0] * m[3] - m[1] * m[1];\n"
               << "        if (!(m[0] > 0.0 && det > 0.0))\n            return 1;\n"
               << "        dxdt[2] = (m[3] * m[4] - m[1] * m[5]) / det;\n"
               << "        dxdt[3] = (m[0] * m[5] - m[1] * m[4]) / det;\n    }\n"
               << "    dxdt[0] = x[2];\n    dxdt[1] = x[3];\n    (void)i;\n    return 0;\n}\n\n";
         else
-            c << "    if (lagrange_factor(m))\n        return 1;\n"
+            c << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
+              << "    lagrange_mass_and_forcing(t, x, u, p, m);\n"
+              << "    if (lagrange_factor(m))\n        return 1;\n"
               << "    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
               << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
               << "        dxdt[" << nq << " + i] = m[" << nq << " * " << nq << " + i];\n    }\n    return 0;\n}\n\n";

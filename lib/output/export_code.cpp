@@ -27,7 +27,7 @@ const std::set<std::string>& keywords(dialect d)
         "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return", "short",
         "signed", "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void", "volatile",
         "while", "_Bool", "_Complex", "_Imaginary", "sin", "cos", "sqrt", "exp", "log", "pow", "fabs", "NAN",
-        "INFINITY", "HUGE_VAL", "main", "uint64_t", "lagrange_augmented", "lagrange_augmented_system",
+        "INFINITY", "HUGE_VAL", "isfinite", "main", "uint64_t", "lagrange_augmented", "lagrange_augmented_system",
         "lagrange_constraint_derivatives", "lagrange_constraint_parts", "lagrange_derivatives",
         "lagrange_factor", "lagrange_ipow", "lagrange_linear", "lagrange_lu_solve", "lagrange_mass_and_forcing",
         "lagrange_sincos", "lagrange_solve"};
@@ -192,6 +192,11 @@ std::string provenance(const model& scene, const exported_system& system, const 
         << (scene.file.empty() ? "<stdin>" : scene.file) << (scene.title.empty() ? "" : ", \"" + scene.title + "\"")
         << ".\n"
         << comment << "The equations of motion M(t, q, q', u, p) q'' = F(t, q, q', u, p), as x' = f(t, x, u, p).\n"
+        << (system.recursion ? comment + "rhs takes q'' from the articulated-body recursion of the scene's tree of "
+                                         "point masses, in O(n)\n" +
+                                   comment + "steps without M; mass_matrix, forcing and jacobian are of M and F.\n"
+            : system.constraint_parts ? std::string()
+                                      : comment + "rhs solves M q'' = F for q''.\n")
         << comment << "State x (" << 2 * system.coordinates << "): " << list(system.state_names) << ".\n"
         << comment << "Parameters p (" << system.parameter_names.size() << "): " << list(system.parameter_names)
         << ".\n"
