@@ -44,6 +44,10 @@ argument_place place_of(int k, const exported_system& system);
 std::vector<std::string> write_program(const expression_program& program, dialect d, const naming& names,
                                        const std::string& indent, std::ostringstream& lines, std::set<int>& used);
 
+/// Whether the C code of `program` calls lagrange_sincos2 (it takes the sines and cosines of
+/// two or more symbols).
+bool takes_sincos_pairs(const expression_program& program);
+
 /// What the header comment of every file says: where the code came from, the orders, the units
 /// and the renamed names, each line starting with `comment`.
 std::string provenance(const model& scene, const exported_system& system, const naming& names,

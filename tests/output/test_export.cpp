@@ -590,11 +590,13 @@ TEST_CASE("export: the C sines and cosines are within 2 ulp of long double libm"
 {
     // The exported file's own lagrange_sincos (it is static: the check includes the .c file),
     // against sinl and cosl rounded to double, on arguments where reductions go wrong: next to
-    // multiples of pi/2, tiny, large, beyond the inlined range, and not finite.
+    // multiples of pi/2, tiny, large, beyond the inlined range, and not finite; and its
+    // lagrange_sincos2, two arguments at a time, against it bit for bit.
     const std::string folder = folder_for("c-sincos");
     REQUIRE(run_cli("export " + examples + "double_pendulum.lag --to c -o " + folder).exit_code == 0);
     std::ofstream(folder + "/sincos.c") << R"(#include "double_pendulum.c"
 #include <stdio.h>
+#include <string.h>
 static double ulps(double got, long double exact)
 {
     const double e = (double)exact;
@@ -604,11 +606,11 @@ static double ulps(double got, long double exact)
 }
 int main(void)
 {
-    double worst = 0.0, s, c;
+    double worst = 0.0, s, c, previous = 0.5, s2[2], c2[2];
     unsigned long long seed = 12345;
-    long i;
+    long i, differ = 0;
     for (i = 0; i < 4000000; ++i) {
-        double x, u;
+        double x, u, s1, c1;
         seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
         u = (double)(seed >> 11) / 9007199254740992.0 - 0.5;
         switch (i % 5) {
@@ -621,6 +623,14 @@ int main(void)
         lagrange_sincos(x, &s, &c);
         if (ulps(s, sinl((long double)x)) > worst) worst = ulps(s, sinl((long double)x));
         if (ulps(c, cosl((long double)x)) > worst) worst = ulps(c, cosl((long double)x));
+        /* two at a time: the same bits as one at a time */
+        if (i % 7 == 0) x = i % 2 ? -0.0 : (i % 3 ? NAN : INFINITY);
+        lagrange_sincos(x, &s, &c);
+        lagrange_sincos(previous, &s1, &c1);
+        lagrange_sincos2(x, previous, &s2[0], &c2[0], &s2[1], &c2[1]);
+        differ += memcmp(&s, &s2[0], sizeof s) != 0 || memcmp(&c, &c2[0], sizeof c) != 0 ||
+                  memcmp(&s1, &s2[1], sizeof s) != 0 || memcmp(&c1, &c2[1], sizeof c) != 0;
+        previous = x;
     }
     printf("%.3f", worst);
     lagrange_sincos(-0.0, &s, &c);
@@ -628,19 +638,21 @@ int main(void)
     lagrange_sincos(NAN, &s, &c);
     printf(" %d", isnan(s) && isnan(c));
     lagrange_sincos(INFINITY, &s, &c);
-    printf(" %d\n", isnan(s) && isnan(c));
+    printf(" %d", isnan(s) && isnan(c));
+    printf(" %ld\n", differ);
     return 0;
 }
 )";
     const std::string cc = configured_compiler();
     const std::vector<double> r = read_numbers(run_shell("cd " + folder + " && " + cc +
                                                           " -std=c99 -O2 -o sincos sincos.c -lm 2>&1 && ./sincos"));
-    REQUIRE(r.size() == 5);
+    REQUIRE(r.size() == 6);
     CHECK(r[0] <= 2.0);
     CHECK(r[1] == 1.0); // sin(-0) = -0
     CHECK(r[2] == 1.0); // cos(-0) = 1
     CHECK(r[3] == 1.0); // NaN in, NaN out
     CHECK(r[4] == 1.0); // and for an infinity
+    CHECK(r[5] == 0.0); // lagrange_sincos2 gives the bits of two lagrange_sincos calls
 
 }
 
