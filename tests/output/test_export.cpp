@@ -5,7 +5,8 @@
  *  central differences of its own right-hand side to 1e-6; for the double pendulum, the
  *  heavy top, the damped driven oscillator (an input) and a 10-link chain; the exported
  *  equilibrium, T and V against `state_space`; the rolling coin's constrained export against
- *  simulate and the engine's multipliers. And bad input. */
+ *  simulate and the engine's multipliers; for trees of point masses, each target's rhs by the
+ *  articulated-body recursion against its own M and F solved (1e-12). And bad input. */
 #include "helpers/chain_scene.h"
 #include "helpers/cli_runner.h"
 #include "helpers/tools.h"
@@ -297,6 +298,176 @@ TEST_CASE("export: the Octave functions work with ode45 and reproduce simulate",
             << "printf('%.17g ', X(end, :));\nprintf('%.17g\\n', worst);\n";
         check_against(expected,
                       read_numbers(run_shell("cd " + folder + " && octave-cli --no-gui --quiet check.m 2>&1")));
+    }
+}
+
+namespace {
+
+/// Trees of point masses, whose exported rhs takes q'' from the articulated-body recursion: a
+/// 3-link chain, and a cart on a spring and a damper, pushed by an input, carrying a double
+/// pendulum; with their sizes, and the index of a parameter (a rod's length) that makes M
+/// singular at 0.
+struct tree_case {
+    std::string file, name;
+    int coordinates, inputs, singular;
+};
+
+std::vector<tree_case> tree_cases()
+{
+    static const std::string chain =
+        temporary_file("tree_chain.lag", chain_scene(3) + "values g = 9.81, m1 = 1.1, l1 = 0.9, m2 = 0.7, l2 = 1.3, "
+                                                          "m3 = 0.5, l3 = 0.6\n");
+    static const std::string cart = temporary_file(
+        "tree_cart.lag", "parameters mc m1 m2 l1 l2 g k b\ncoordinates x th1 th2\ninput F\n"
+                         "point C mass mc at (x, 0)\n"
+                         "point P1 mass m1 at (x + l1*sin(th1), -l1*cos(th1))\n"
+                         "point P2 mass m2 at (x + l1*sin(th1) + l2*sin(th2), -l1*cos(th1) - l2*cos(th2))\n"
+                         "gravity g along (0, -1)\nspring k between C and (0, 0)\ndamper b between C and (0, 0)\n"
+                         "force on C (F, 0)\n"
+                         "values mc = 1.5, m1 = 0.4, m2 = 0.3, l1 = 0.6, l2 = 0.5, g = 9.81, k = 20, b = 0.7\n");
+    return {{chain, "tree_chain", 3, 0, 4}, {cart, "tree_cart", 3, 1, 4}};
+}
+
+/// What every target's check prints: the largest difference of rhs's q'' from M q'' = F solved
+/// with the exported mass_matrix and forcing, relative to the largest q'', over random states,
+/// inputs and times in [-2, 2]; whether rhs's q' is x's; and whether rhs reports the singular
+/// M of a rod of length 0 (C: returns nonzero; Python: LinAlgError; Octave: a q'' not finite).
+void check_tree(const std::vector<double>& printed)
+{
+    REQUIRE(printed.size() == 3);
+    CHECK(printed[0] <= 1e-12);
+    CHECK(printed[1] == 1.0);
+    CHECK(printed[2] == 1.0);
+}
+
+} // namespace
+
+TEST_CASE("export: a tree's C rhs takes the recursion and agrees with M and F", "[export][cc]")
+{
+    for (const tree_case& c : tree_cases()) {
+        INFO(c.file);
+        const std::string folder = folder_for("c-" + c.name);
+        REQUIRE(run_cli("export " + c.file + " --to c -o " + folder).exit_code == 0);
+        CHECK(read_file(folder + "/" + c.name + ".c").find("articulated-body recursion") != std::string::npos);
+        std::ofstream(folder + "/tree.c") << replace_all(replace_all(R"(#include "NAME.h"
+#include <math.h>
+#include <stdio.h>
+static double uniform(unsigned long long *seed)
+{
+    *seed = *seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*seed >> 11) / 9007199254740992.0 * 4.0 - 2.0;
+}
+int main(void)
+{
+    double x[NAME_NX], dxdt[NAME_NX], M[NAME_NQ * NAME_NQ], F[NAME_NQ], u[NAME_NU + 1], p[NAME_NP], worst = 0.0;
+    unsigned long long seed = 2026;
+    int k, i, j, r, ok = 1;
+    for (i = 0; i < NAME_NP; ++i)
+        p[i] = NAME_default_p[i];
+    for (k = 0; k < 2000; ++k) {
+        const double t = uniform(&seed);
+        long double a[NAME_NQ][NAME_NQ + 1], q[NAME_NQ], largest = 0, difference = 0;
+        for (i = 0; i < NAME_NX; ++i)
+            x[i] = uniform(&seed);
+        for (i = 0; i < NAME_NU; ++i)
+            u[i] = uniform(&seed);
+        ok = ok && NAME_rhs(t, x, u, p, dxdt) == 0;
+        NAME_mass_matrix(t, x, u, p, M);
+        NAME_forcing(t, x, u, p, F);
+        /* M q'' = F by Gaussian elimination with partial pivoting, in long double */
+        for (i = 0; i < NAME_NQ; ++i) {
+            for (j = 0; j < NAME_NQ; ++j)
+                a[i][j] = M[i * NAME_NQ + j];
+            a[i][NAME_NQ] = F[i];
+        }
+        for (j = 0; j < NAME_NQ; ++j) {
+            int best = j;
+            for (i = j + 1; i < NAME_NQ; ++i)
+                if (fabsl(a[i][j]) > fabsl(a[best][j]))
+                    best = i;
+            for (r = 0; r <= NAME_NQ; ++r) {
+                const long double swap = a[j][r];
+                a[j][r] = a[best][r];
+                a[best][r] = swap;
+            }
+            for (i = j + 1; i < NAME_NQ; ++i)
+                for (r = NAME_NQ; r >= j; --r)
+                    a[i][r] -= a[i][j] / a[j][j] * a[j][r];
+        }
+        for (i = NAME_NQ - 1; i >= 0; --i) {
+            q[i] = a[i][NAME_NQ];
+            for (j = i + 1; j < NAME_NQ; ++j)
+                q[i] -= a[i][j] * q[j];
+            q[i] /= a[i][i];
+        }
+        for (i = 0; i < NAME_NQ; ++i) {
+            largest = fabsl(q[i]) > largest ? fabsl(q[i]) : largest;
+            difference = fabsl(dxdt[NAME_NQ + i] - q[i]) > difference ? fabsl(dxdt[NAME_NQ + i] - q[i]) : difference;
+            ok = ok && dxdt[i] == x[NAME_NQ + i];
+        }
+        worst = (double)(difference / largest) > worst ? (double)(difference / largest) : worst;
+    }
+    p[SINGULAR] = 0.0;
+    printf("%.17g %d %d\n", worst, ok, NAME_rhs(0.5, x, u, p, dxdt) != 0);
+    return 0;
+}
+)", "NAME", c.name), "SINGULAR", std::to_string(c.singular));
+        const std::string cc = configured_compiler();
+        check_tree(read_numbers(run_shell("cd " + folder + " && " + cc +
+                                          " -std=c99 -Wall -Wextra -pedantic -Werror -O2 -o tree tree.c " + c.name +
+                                          ".c -lm 2>&1 && ./tree")));
+    }
+}
+
+TEST_CASE("export: a tree's Python rhs takes the recursion and agrees with M and F", "[export][scipy]")
+{
+    for (const tree_case& c : tree_cases()) {
+        INFO(c.file);
+        const std::string folder = folder_for("py-" + c.name);
+        REQUIRE(run_cli("export " + c.file + " --to python -o " + folder).exit_code == 0);
+        std::ofstream(folder + "/check.py")
+            << "import sys\nsys.path.insert(0, " << nlohmann::json(folder).dump() << ")\n"
+            << "import numpy as np\nimport " << c.name << " as m\n"
+            << "assert 'articulated-body recursion' in m.__doc__\n"
+            << "rng = np.random.default_rng(2026)\nn = 2000\n"
+            << "t, x, u = rng.uniform(-2, 2, n), rng.uniform(-2, 2, (n, m.NX)), rng.uniform(-2, 2, (n, m.NU))\n"
+            << "p = np.broadcast_to(m.DEFAULTS, (n, m.NP))\n"
+            << "f = m.rhs(t, x, p, u)\n"
+            << "q = np.linalg.solve(m.mass_matrix(t, x, p, u), m.forcing(t, x, p, u)[..., None])[..., 0]\n"
+            << "worst = np.max(np.max(np.abs(f[:, m.NQ:] - q), axis=1) / np.max(np.abs(q), axis=1))\n"
+            // one state at a time (on Python floats) as in the batch
+            << "for j in range(50):\n"
+            << "    one = m.rhs(t[j], x[j], m.DEFAULTS, u[j])\n"
+            << "    worst = max(worst, np.max(np.abs(one[m.NQ:] - q[j])) / np.max(np.abs(q[j])))\n"
+            << "velocities = int(np.array_equal(f[:, :m.NQ], x[:, m.NQ:]))\n"
+            << "singular = m.DEFAULTS.copy()\nsingular[" << c.singular << "] = 0\nreported = 0\n"
+            << "for state in (x[0], x[:3]):\n"
+            << "    try:\n        m.rhs(0.5, state, singular, u[0])\n"
+            << "    except np.linalg.LinAlgError:\n        reported += 1\n"
+            << "print(repr(worst), velocities, int(reported == 2))\n";
+        check_tree(read_numbers(run_shell("/usr/bin/python3 -W ignore " + folder + "/check.py")));
+    }
+}
+
+TEST_CASE("export: a tree's Octave rhs takes the recursion and agrees with M and F", "[export][octave]")
+{
+    for (const tree_case& c : tree_cases()) {
+        INFO(c.file);
+        const std::string folder = folder_for("octave-" + c.name);
+        REQUIRE(run_cli("export " + c.file + " --to octave -o " + folder).exit_code == 0);
+        CHECK(read_file(folder + "/" + c.name + "_rhs.m").find("articulated-body recursion") != std::string::npos);
+        const std::string n = c.name;
+        std::ofstream(folder + "/check.m")
+            << "rand('state', 2026);\np = " << n << "_defaults();\nnq = " << c.coordinates << ";\nnu = " << c.inputs
+            << ";\nworst = 0;\nvelocities = 1;\n"
+            << "for k = 1:300\n  t = 4 * rand() - 2;\n  x = 4 * rand(2 * nq, 1) - 2;\n  u = 4 * rand(nu, 1) - 2;\n"
+            << "  f = " << n << "_rhs(t, x, p, u);\n"
+            << "  q = " << n << "_mass_matrix(t, x, p, u) \\ " << n << "_forcing(t, x, p, u);\n"
+            << "  worst = max(worst, max(abs(f(nq + 1:end) - q)) / max(abs(q)));\n"
+            << "  velocities = velocities && isequal(f(1:nq), x(nq + 1:end));\nend\n"
+            << "p(" << c.singular + 1 << ") = 0;\nf = " << n << "_rhs(0.5, x, p, u);\n"
+            << "printf('%.17g %d %d\\n', worst, velocities, any(~isfinite(f)));\n";
+        check_tree(read_numbers(run_shell("cd " + folder + " && octave-cli --no-gui --quiet check.m 2>&1")));
     }
 }
 
