@@ -6,6 +6,7 @@
 #include "program/angle_sums.h"
 
 #include "numeric/compiled_motion.h"
+#include "numeric/point_tree.h"
 #include "algebra/calculus.h"
 #include "algebra/budget.h"
 #include "algebra/canonical_order.h"
@@ -177,6 +178,16 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
     } catch (const std::invalid_argument& error) {
         throw computation_error(std::string("the equations of motion cannot be exported: ") + error.what());
     }
+    // The recursion with the parameters left symbols (`at` the identity), as the engine takes
+    // it from recursive_coordinates on (compiled_motion.cpp); rhs solves M q̈ = F without it.
+    if (n >= recursive_coordinates)
+        if (std::optional<point_tree_recursion> tree = point_tree_accelerations(scene, equations)) {
+            try {
+                out.recursion = expression_program(tree->definitions, tree->accelerations, symbols, parameters);
+            } catch (const std::invalid_argument&) {
+                // not compilable: the export goes without it, as without linear
+            }
+        }
     if (linearization)
         out.linear = linear_program(scene, *linearization, symbols);
     if (conserved) {

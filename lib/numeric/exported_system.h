@@ -2,9 +2,10 @@
 /** @file exported_system.h
  *  The equations of motion as the functions that exported code evaluates (`lagrange
  *  export`): M(t, q, q̇, u, p) and F(t, q, q̇, u, p) of M q̈ = F, the energy function, and
- *  the derivatives that make the Jacobians of ẋ = f(t, x, u, p), x = (q, q̇), each compiled
- *  once into straight-line programs with their common subexpressions shared. Parameters and
- *  inputs stay symbols: the exported functions take them as arguments. */
+ *  the derivatives that make the Jacobians of ẋ = f(t, x, u, p), x = (q, q̇), and for a tree
+ *  of point masses q̈ by the articulated-body recursion, each compiled once into
+ *  straight-line programs with their common subexpressions shared. Parameters and inputs
+ *  stay symbols: the exported functions take them as arguments. */
 #pragma once
 
 #include "core/model.h"
@@ -28,6 +29,11 @@ struct exported_system {
     expression_program mass;        ///< M, row-major n × n [the kinetic energy's unit / (q/time)²]
     expression_program mass_and_forcing; ///< M then F in one program (their common parts once): the right-hand side's
     expression_program forcing;     ///< F (n): ∂L/∂q − (dM/dt) q̇ − ∂p/∂t + Q
+    /// q̈ (n) by the articulated-body recursion (numeric/point_tree.h), O(n) where solving
+    /// M q̈ = F is O(n³): the right-hand side's form, as the engine's own, when the scene is a
+    /// tree of point masses with at least recursive_coordinates coordinates. A zero pivot
+    /// of the recursion (where M is singular) makes a q̈ infinite or NaN.
+    std::optional<expression_program> recursion;
     expression_program energy;      ///< h = Σ q̇ ∂L/∂q̇ − L (1) [energy]
     /// ∂M/∂q_k for each k (n³, k slowest), ∂F/∂q (n², row i = F_i), ∂F/∂q̇ (n²), ∂F/∂u (n·m)
     expression_program derivatives;

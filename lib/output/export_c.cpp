@@ -55,6 +55,74 @@ static inline void lagrange_sincos(double x, double *s, double *c)
 
 )";
 
+/// Two arguments' sines and cosines: lagrange_sincos's operations in the same order (so the
+/// same values), written lane by lane as straight-line code, which compilers at -O2 (GCC's and
+/// Clang's SLP vectorizers) take two lanes at a time; the exceptions (0, beyond 8e5) after.
+constexpr const char* sincos2_source = R"(/* The sines and cosines of x0 and x1: the values of two lagrange_sincos calls, written
+   lane by lane so that a compiler can evaluate both lanes at once. */
+static inline void lagrange_sincos2(double x0, double x1, double *s0, double *c0, double *s1, double *c1)
+{
+    union { double d; uint64_t u; } shifted[2], ps[2], pc[2], so[2], co[2];
+    const double x[2] = {x0, x1};
+    double q[2], r[2], z[2], z2[2], z4[2], ss[2], cs[2], s[2], c[2];
+    uint64_t swap[2];
+    int i;
+    shifted[0].d = x[0] * 6.36619772367581382433e-01 + 0x1.8p52;
+    shifted[1].d = x[1] * 6.36619772367581382433e-01 + 0x1.8p52;
+    q[0] = shifted[0].d - 0x1.8p52;
+    q[1] = shifted[1].d - 0x1.8p52;
+    r[0] = (((x[0] - q[0] * 1.57079632673412561417e+00) - q[0] * 6.07710050630396597660e-11)
+            - q[0] * 2.02226624871116645580e-21) - q[0] * 8.47842766036889956997e-32;
+    r[1] = (((x[1] - q[1] * 1.57079632673412561417e+00) - q[1] * 6.07710050630396597660e-11)
+            - q[1] * 2.02226624871116645580e-21) - q[1] * 8.47842766036889956997e-32;
+    z[0] = r[0] * r[0];
+    z[1] = r[1] * r[1];
+    z2[0] = z[0] * z[0];
+    z2[1] = z[1] * z[1];
+    z4[0] = z2[0] * z2[0];
+    z4[1] = z2[1] * z2[1];
+    ss[0] = (-1.66666666666666324348e-01 + z[0] * 8.33333333332248946124e-03)
+            + z2[0] * (-1.98412698298579493134e-04 + z[0] * 2.75573137070700676789e-06)
+            + z4[0] * (-2.50507602534068634195e-08 + z[0] * 1.58969099521155010221e-10);
+    ss[1] = (-1.66666666666666324348e-01 + z[1] * 8.33333333332248946124e-03)
+            + z2[1] * (-1.98412698298579493134e-04 + z[1] * 2.75573137070700676789e-06)
+            + z4[1] * (-2.50507602534068634195e-08 + z[1] * 1.58969099521155010221e-10);
+    cs[0] = (4.16666666666666019037e-02 + z[0] * -1.38888888888741095749e-03)
+            + z2[0] * (2.48015872894767294178e-05 + z[0] * -2.75573143513906633035e-07)
+            + z4[0] * (2.08757232129817482790e-09 + z[0] * -1.13596475577881948265e-11);
+    cs[1] = (4.16666666666666019037e-02 + z[1] * -1.38888888888741095749e-03)
+            + z2[1] * (2.48015872894767294178e-05 + z[1] * -2.75573143513906633035e-07)
+            + z4[1] * (2.08757232129817482790e-09 + z[1] * -1.13596475577881948265e-11);
+    ps[0].d = r[0] + (r[0] * z[0]) * ss[0];
+    ps[1].d = r[1] + (r[1] * z[1]) * ss[1];
+    pc[0].d = (1.0 - 0.5 * z[0]) + z2[0] * cs[0];
+    pc[1].d = (1.0 - 0.5 * z[1]) + z2[1] * cs[1];
+    swap[0] = (uint64_t)0 - (shifted[0].u & 1);
+    swap[1] = (uint64_t)0 - (shifted[1].u & 1);
+    so[0].u = ((ps[0].u & ~swap[0]) | (pc[0].u & swap[0])) ^ ((shifted[0].u & 2) << 62);
+    so[1].u = ((ps[1].u & ~swap[1]) | (pc[1].u & swap[1])) ^ ((shifted[1].u & 2) << 62);
+    co[0].u = ((pc[0].u & ~swap[0]) | (ps[0].u & swap[0])) ^ (((shifted[0].u + 1) & 2) << 62);
+    co[1].u = ((pc[1].u & ~swap[1]) | (ps[1].u & swap[1])) ^ (((shifted[1].u + 1) & 2) << 62);
+    s[0] = so[0].d;
+    s[1] = so[1].d;
+    c[0] = co[0].d;
+    c[1] = co[1].d;
+    for (i = 0; i < 2; ++i) {
+        if (x[i] == 0.0) /* sin(-0) = -0 */
+            s[i] = x[i];
+        if (!(fabs(x[i]) <= 8.0e5)) {
+            s[i] = sin(x[i]);
+            c[i] = cos(x[i]);
+        }
+    }
+    *s0 = s[0];
+    *c0 = c[0];
+    *s1 = s[1];
+    *c1 = c[1];
+}
+
+)";
+
 /// The body of a C function that evaluates `program` into out[]: the symbols' aliases, the
 /// program, the stores; arguments it does not read are cast to void.
 std::string c_body(const expression_program& program, const naming& names, const exported_system& system,
@@ -244,9 +312,14 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
       << "extern const char *const " << name << "_state_names[" << name << "_NX];\n"
       << "extern const char *const " << name << "_parameter_names[" << name << "_NP > 0 ? " << name << "_NP : 1];\n\n"
       << constrained_declarations(system, name, args)
-      << (constrained ? "" : "/* dxdt = f(t, x, u, p). Returns 0, or 1 where the mass matrix is not positive definite. */\n")
+      << (constrained ? ""
+          : system.recursion
+              ? "/* dxdt = f(t, x, u, p), q'' by the articulated-body recursion. Returns 0, or 1 where a q'' is\n"
+                "   not finite: where the mass matrix is singular (a zero pivot of the recursion). */\n"
+              : "/* dxdt = f(t, x, u, p). Returns 0, or 1 where the mass matrix is not positive definite. */\n")
       << (constrained ? "" : "int " + name + "_rhs" + args + ", double *dxdt);\n")
-      << "/* dfdx = df/dx (NX x NX) and dfdu = df/du (NX x NU; may be NULL). Returns as " << name << "_rhs. */\n"
+      << "/* dfdx = df/dx (NX x NX) and dfdu = df/du (NX x NU; may be NULL). Returns 0, or 1 where "
+      << (constrained ? "[M -A^T; A 0] is singular" : "the mass matrix is not positive definite") << ". */\n"
       << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu);\n"
       << "/* The mass matrix M (NQ x NQ) and the forcing F (NQ) of M q'' = F" << (constrained ? " + A^T lambda" : "")
       << ". */\n"
@@ -290,22 +363,28 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
     }
     c << "\n";
     // Helpers only where used: an unused static function is a warning.
+    std::vector<const expression_program*> programs = {&system.mass, &system.forcing, &system.mass_and_forcing,
+                                                       &system.derivatives, &system.energy};
+    for (const std::optional<expression_program>* program :
+         {&system.recursion, &system.linear, &system.constraint_parts, &system.constraint_derivatives,
+          &system.conserved})
+        if (*program)
+            programs.push_back(&**program);
     auto uses = [&](instruction::code op) {
         bool found = false;
-        for (const expression_program* program : {&system.mass, &system.forcing, &system.mass_and_forcing,
-                                                  &system.derivatives, &system.energy})
+        for (const expression_program* program : programs)
             for (const instruction& i : program->code())
                 found = found || i.op == op;
-        for (const std::optional<expression_program>* program :
-             {&system.linear, &system.constraint_parts, &system.constraint_derivatives, &system.conserved})
-            if (*program)
-                for (const instruction& i : (*program)->code())
-                    found = found || i.op == op;
         return found;
     };
     const bool powers = uses(instruction::code::integer_power);
+    bool pairs = false;
+    for (const expression_program* program : programs)
+        pairs = pairs || takes_sincos_pairs(*program);
     if (uses(instruction::code::sine) || uses(instruction::code::cosine))
         c << sincos_source;
+    if (pairs)
+        c << sincos2_source;
     if (powers)
         c << "static double lagrange_ipow(double a, int n)\n{\n    double r = 1.0;\n    int k = n < 0 ? -n : n;\n"
           << "    for (; k > 0; --k)\n        r *= a;\n    return n < 0 ? 1.0 / r : r;\n}\n\n";
@@ -348,17 +427,24 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
     if (constrained) {
         c << constrained_functions(system, names, name, args);
     } else {
-        c << "int " << name << "_rhs" << args << ", double *dxdt)\n{\n"
-          << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
-          << "    lagrange_mass_and_forcing(t, x, u, p, m);\n";
-        if (n == 2) // Cramer's rule, as the engine solves two coordinates
-            c << "    {\n        const double det = m[0] * m[3] - m[1] * m[1];\n"
+        c << "int " << name << "_rhs" << args << ", double *dxdt)\n{\n";
+        if (system.recursion) // O(n), as the engine from recursive_coordinates on; the stores last: dxdt may be x
+            c << "    double qdd[" << nq << "];\n    int i;\n" << c_body(*system.recursion, names, system, "qdd")
+              << "    for (i = 0; i < " << nq << "; ++i)\n        if (!isfinite(qdd[i]))\n            return 1;\n"
+              << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
+              << "        dxdt[" << nq << " + i] = qdd[i];\n    }\n    return 0;\n}\n\n";
+        else if (n == 2) // Cramer's rule, as the engine solves two coordinates
+            c << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
+              << "    lagrange_mass_and_forcing(t, x, u, p, m);\n"
+              << "    {\n        const double det = m[0] * m[3] - m[1] * m[1];\n"
               << "        if (!(m[0] > 0.0 && det > 0.0))\n            return 1;\n"
               << "        dxdt[2] = (m[3] * m[4] - m[1] * m[5]) / det;\n"
               << "        dxdt[3] = (m[0] * m[5] - m[1] * m[4]) / det;\n    }\n"
               << "    dxdt[0] = x[2];\n    dxdt[1] = x[3];\n    (void)i;\n    return 0;\n}\n\n";
         else
-            c << "    if (lagrange_factor(m))\n        return 1;\n"
+            c << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
+              << "    lagrange_mass_and_forcing(t, x, u, p, m);\n"
+              << "    if (lagrange_factor(m))\n        return 1;\n"
               << "    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
               << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
               << "        dxdt[" << nq << " + i] = m[" << nq << " * " << nq << " + i];\n    }\n    return 0;\n}\n\n";

@@ -27,10 +27,10 @@ const std::set<std::string>& keywords(dialect d)
         "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return", "short",
         "signed", "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void", "volatile",
         "while", "_Bool", "_Complex", "_Imaginary", "sin", "cos", "sqrt", "exp", "log", "pow", "fabs", "NAN",
-        "INFINITY", "HUGE_VAL", "main", "uint64_t", "lagrange_augmented", "lagrange_augmented_system",
+        "INFINITY", "HUGE_VAL", "isfinite", "main", "uint64_t", "lagrange_augmented", "lagrange_augmented_system",
         "lagrange_constraint_derivatives", "lagrange_constraint_parts", "lagrange_derivatives",
         "lagrange_factor", "lagrange_ipow", "lagrange_linear", "lagrange_lu_solve", "lagrange_mass_and_forcing",
-        "lagrange_sincos", "lagrange_solve"};
+        "lagrange_sincos", "lagrange_sincos2", "lagrange_solve"};
     static const std::set<std::string> python = {
         "False", "None", "True", "and", "as", "assert", "async", "await", "break", "class", "continue", "def",
         "del", "elif", "else", "except", "finally", "for", "from", "global", "if", "import", "in", "is", "lambda",
@@ -99,30 +99,108 @@ argument_place place_of(int k, const exported_system& system)
     return {'u', k - 2 * n - 1 - parameters};
 }
 
+namespace {
+
+using op = instruction::code;
+
+/// Which instructions an output reads: a program's definitions (the steps of a recursion)
+/// are compiled whether read or not, and an unread one would be an unused variable in C.
+std::vector<bool> live_instructions(const expression_program& program)
+{
+    const std::vector<instruction>& code = program.code();
+    std::vector<bool> live(code.size(), false);
+    for (int s : program.output_slots())
+        live[static_cast<std::size_t>(s)] = true;
+    for (std::size_t k = code.size(); k-- > 0;) {
+        if (!live[k] || code[k].op == op::constant || code[k].op == op::symbol)
+            continue;
+        live[static_cast<std::size_t>(code[k].first)] = true;
+        if (code[k].op == op::add || code[k].op == op::mul)
+            live[static_cast<std::size_t>(code[k].second)] = true;
+    }
+    return live;
+}
+
+/// Each argument slot whose sine or cosine is taken: the indices of its (first) sine and
+/// cosine, or past the program's end for one not taken.
+std::map<int, std::pair<std::size_t, std::size_t>> sincos_pairs(const expression_program& program,
+                                                                 const std::vector<bool>& live)
+{
+    const std::vector<instruction>& code = program.code();
+    std::map<int, std::pair<std::size_t, std::size_t>> pairs;
+    for (std::size_t k = 0; k < code.size(); ++k)
+        if (live[k] && (code[k].op == op::sine || code[k].op == op::cosine)) {
+            auto [at, fresh] = pairs.try_emplace(code[k].first, code.size() + k, code.size() + k);
+            std::size_t& first = code[k].op == op::sine ? at->second.first : at->second.second;
+            first = std::min(first, k); // a repeated one reads the first's value
+        }
+    return pairs;
+}
+
+/// The arguments that lagrange_sincos2 takes two at a time in C: those that are symbols
+/// (known from the start), in the order of their first sine or cosine, an even count.
+std::vector<int> paired_arguments(const expression_program& program,
+                                  const std::map<int, std::pair<std::size_t, std::size_t>>& pairs)
+{
+    std::vector<std::pair<std::size_t, int>> first; // (first use, argument slot)
+    for (const auto& [argument, uses] : pairs)
+        if (program.code()[static_cast<std::size_t>(argument)].op == op::symbol)
+            first.emplace_back(std::min(uses.first, uses.second), argument);
+    std::sort(first.begin(), first.end());
+    std::vector<int> out;
+    for (std::size_t k = 0; k + 1 < first.size(); k += 2)
+        out.insert(out.end(), {first[k].second, first[k + 1].second});
+    return out;
+}
+
+} // namespace
+
+bool takes_sincos_pairs(const expression_program& program)
+{
+    const std::vector<bool> live = live_instructions(program);
+    return !paired_arguments(program, sincos_pairs(program, live)).empty();
+}
+
 std::vector<std::string> write_program(const expression_program& program, dialect d, const naming& names,
                                        const std::string& indent, std::ostringstream& lines, std::set<int>& used)
 {
-    using op = instruction::code;
     const std::vector<instruction>& code = program.code();
     std::vector<std::string> slot(code.size());
     const char* end = d == dialect::python ? "\n" : ";\n";
     const char* declare = d == dialect::c ? "const double " : "";
+    const std::vector<bool> live = live_instructions(program);
     // In C an argument's sine and cosine come from one lagrange_sincos call, at the first of
-    // the two: the instructions' indices, or past the program's end for one not taken.
-    std::map<int, std::pair<std::size_t, std::size_t>> pairs; // argument slot → (sine, cosine)
-    if (d == dialect::c)
-        for (std::size_t k = 0; k < code.size(); ++k)
-            if (code[k].op == op::sine || code[k].op == op::cosine) {
-                auto [at, fresh] = pairs.try_emplace(code[k].first, code.size() + k, code.size() + k);
-                std::size_t& first = code[k].op == op::sine ? at->second.first : at->second.second;
-                first = std::min(first, k); // a repeated one reads the first's value
+    // the two; the arguments that are symbols two at a time from lagrange_sincos2, first
+    // (its two lanes are taken at once where the compiler vectorizes straight-line code).
+    std::map<int, std::pair<std::size_t, std::size_t>> pairs;
+    std::set<int> paired;
+    if (d == dialect::c) {
+        pairs = sincos_pairs(program, live);
+        const std::vector<int> arguments = paired_arguments(program, pairs);
+        paired.insert(arguments.begin(), arguments.end());
+        for (std::size_t k = 0; k < arguments.size(); k += 2) {
+            std::string declared, pointers, values;
+            for (int argument : {arguments[k], arguments[k + 1]}) {
+                const int symbol = code[static_cast<std::size_t>(argument)].first;
+                used.insert(symbol);
+                values += names.symbols[static_cast<std::size_t>(symbol)] + ", ";
+                for (std::size_t at : {pairs.at(argument).first, pairs.at(argument).second}) {
+                    declared += (declared.empty() ? "" : ", ") + names.temporary + std::to_string(at);
+                    pointers += ", &" + names.temporary + std::to_string(at);
+                }
             }
+            lines << indent << "double " << declared << ";\n"
+                  << indent << "lagrange_sincos2(" << values.substr(0, values.size() - 2) << pointers << ");\n";
+        }
+    }
     for (std::size_t k = 0; k < code.size(); ++k) {
         const instruction& i = code[k];
+        if (!live[k])
+            continue;
         if (d == dialect::c && (i.op == op::sine || i.op == op::cosine)) {
             const auto [sine, cosine] = pairs.at(i.first);
             slot[k] = names.temporary + std::to_string(i.op == op::sine ? sine : cosine);
-            if (k == std::min(sine, cosine))
+            if (k == std::min(sine, cosine) && !paired.count(i.first))
                 lines << indent << "double " << names.temporary << sine << ", " << names.temporary << cosine << ";\n"
                       << indent << "lagrange_sincos(" << slot[static_cast<std::size_t>(i.first)] << ", &"
                       << names.temporary << sine << ", &" << names.temporary << cosine << ");\n";
@@ -178,6 +256,11 @@ std::string provenance(const model& scene, const exported_system& system, const 
         << (scene.file.empty() ? "<stdin>" : scene.file) << (scene.title.empty() ? "" : ", \"" + scene.title + "\"")
         << ".\n"
         << comment << "The equations of motion M(t, q, q', u, p) q'' = F(t, q, q', u, p), as x' = f(t, x, u, p).\n"
+        << (system.recursion ? comment + "rhs takes q'' from the articulated-body recursion of the scene's tree of "
+                                         "point masses, in O(n)\n" +
+                                   comment + "steps without M; mass_matrix, forcing and jacobian are of M and F.\n"
+            : system.constraint_parts ? std::string()
+                                      : comment + "rhs solves M q'' = F for q''.\n")
         << comment << "State x (" << 2 * system.coordinates << "): " << list(system.state_names) << ".\n"
         << comment << "Parameters p (" << system.parameter_names.size() << "): " << list(system.parameter_names)
         << ".\n"

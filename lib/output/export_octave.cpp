@@ -19,10 +19,12 @@ std::string octave_defaults(const std::string& name, std::size_t inputs)
            std::to_string(inputs) + ", 1);\n  end\n";
 }
 
+/// A function file that evaluates `program` into `result`, its outputs as `rows` × `columns`
+/// (row by row) after `leading`, rows of the result computed otherwise ("x(3:4); ").
 std::string octave_function(const std::string& name, const std::string& function, const std::string& doc,
                             const expression_program& program, const naming& names, const exported_system& system,
                             const std::string& result, std::size_t rows, std::size_t columns,
-                            const std::string& header)
+                            const std::string& header, const std::string& leading = "")
 {
     std::ostringstream lines;
     std::set<int> used;
@@ -37,7 +39,7 @@ std::string octave_function(const std::string& name, const std::string& function
             out << "  " << names.symbols[static_cast<std::size_t>(k)] << " = " << at.array << "(" << at.index + 1
                 << ");\n";
     }
-    out << lines.str() << "  " << result << " = [";
+    out << lines.str() << "  " << result << " = [" << leading;
     for (std::size_t r = 0; r < rows; ++r) {
         for (std::size_t c = 0; c < columns; ++c)
             out << (c ? ", " : "") << outputs[r * columns + c];
@@ -149,6 +151,14 @@ std::vector<exported_file> export_octave(const model& scene, const exported_syst
     if (system.constraint_parts) {
         for (exported_file& file : constrained_files(system, names, name, header))
             files.push_back(std::move(file));
+    } else if (system.recursion) { // O(n), as the engine from recursive_coordinates on
+        files.push_back({name + "_rhs.m",
+                         octave_function(name, "rhs",
+                                         "dx/dt = f(t, x, u, p) as a column, q'' by the articulated-body recursion "
+                                         "(Inf or NaN where M is singular);\n  % for ode45 and ode15s: ode45(@(t, x) " +
+                                             name + "_rhs(t, x, p), tspan, x0).",
+                                         *system.recursion, names, system, "dxdt", n, 1, header,
+                                         "x(" + std::to_string(n + 1) + ":" + std::to_string(2 * n) + "); ")});
     } else {
         std::ostringstream rhs;
         rhs << "function dxdt = " << name << "_rhs(t, x, p, u)\n"
@@ -158,6 +168,8 @@ std::vector<exported_file> export_octave(const model& scene, const exported_syst
             << "  M = " << name << "_mass_matrix(t, x, p, u);\n  F = " << name << "_forcing(t, x, p, u);\n"
             << "  dxdt = [x(" << n + 1 << ":" << 2 * n << "); M \\ F];\nend\n";
         files.push_back({name + "_rhs.m", rhs.str()});
+    }
+    if (!system.constraint_parts) {
         std::ostringstream jac;
         jac << "function [dfdx, dfdu] = " << name << "_jacobian(t, x, p, u)\n"
             << "  % df/dx (NX x NX) and df/du (NX x NU): d(q'')/dy = M \\ (dF/dy - (dM/dy) q'').\n" << header

@@ -38,11 +38,15 @@ struct argument_place {
 };
 argument_place place_of(int k, const exported_system& system);
 
-/// One program as straight-line code: `lines` gets an assignment per instruction that is
-/// neither a symbol nor a constant (those are written where they are used); returns the text
-/// of each output. `used` gets the index of every symbol the program reads.
+/// One program as straight-line code: `lines` gets an assignment per instruction that an
+/// output reads and that is neither a symbol nor a constant (those are written where they are
+/// used); returns the text of each output. `used` gets the index of every symbol it reads.
 std::vector<std::string> write_program(const expression_program& program, dialect d, const naming& names,
                                        const std::string& indent, std::ostringstream& lines, std::set<int>& used);
+
+/// Whether the C code of `program` calls lagrange_sincos2 (it takes the sines and cosines of
+/// two or more symbols).
+bool takes_sincos_pairs(const expression_program& program);
 
 /// What the header comment of every file says: where the code came from, the orders, the units
 /// and the renamed names, each line starting with `comment`.

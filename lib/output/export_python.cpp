@@ -156,35 +156,50 @@ std::vector<exported_file> export_python(const model& scene, const exported_syst
                               *system.conserved, names, system, "_vector");
     py << python_function("_derivatives", "dM/dq_k (k slowest), dF/dq, dF/dq', dF/du, flattened.",
                           system.derivatives, names, system, "_vector");
+    if (system.recursion)
+        py << python_function("_recursion", "q'' by the articulated-body recursion, shape (..., NQ).", *system.recursion,
+                              names, system, "_vector");
     if (system.constraint_parts)
         py << constrained_functions(system, names, quoted_list(system.constraint_names));
+    else if (system.recursion) // O(n), as the engine from recursive_coordinates on
+        py << "def rhs(t, x, p=None, u=None):\n"
+           << "    \"\"\"dx/dt = f(t, x, u, p), shape (..., NX), q'' by the articulated-body recursion;\n"
+           << "    numpy.linalg.LinAlgError where M is singular (a zero pivot: a q'' not finite).\"\"\"\n"
+           << "    t, x, p, u, shape = _arguments(t, x, p, u)\n"
+           << "    try:\n        qdd = _recursion(t, x, p, u)\n"
+           << "    except ZeroDivisionError:  # one state, on Python floats\n"
+           << "        raise np.linalg.LinAlgError(\"singular mass matrix\") from None\n"
+           << "    if not np.isfinite(qdd).all():\n"
+           << "        raise np.linalg.LinAlgError(\"singular mass matrix\")\n"
+           << "    return np.concatenate([np.broadcast_to(np.asarray(x)[..., NQ:], shape + (NQ,)), qdd], axis=-1)\n\n\n";
     else
         py << "def rhs(t, x, p=None, u=None):\n"
-       << "    \"\"\"dx/dt = f(t, x, u, p), shape (..., NX); numpy.linalg.LinAlgError where M is singular.\"\"\"\n"
-       << "    t, x, p, u, shape = _arguments(t, x, p, u)\n"
-       << "    both = _mass_and_forcing(t, x, p, u)\n"
-       << "    mass, force = both[..., :NQ * NQ].reshape(shape + (NQ, NQ)), both[..., NQ * NQ:]\n"
-       << "    qdd = np.linalg.solve(mass, force[..., None])[..., 0]\n"
-       << "    return np.concatenate([np.broadcast_to(np.asarray(x)[..., NQ:], shape + (NQ,)), qdd], axis=-1)\n\n\n"
-       << "def jacobian(t, x, p=None, u=None):\n"
-       << "    \"\"\"(df/dx of shape (..., NX, NX), df/du of shape (..., NX, NU)).\"\"\"\n"
-       << "    t, x, p, u, shape = _arguments(t, x, p, u)\n"
-       << "    both = _mass_and_forcing(t, x, p, u)\n"
-       << "    mass, force = both[..., :NQ * NQ].reshape(shape + (NQ, NQ)), both[..., NQ * NQ:]\n"
-       << "    d = _derivatives(t, x, p, u)\n"
-       << "    dmass = d[..., :NQ ** 3].reshape(shape + (NQ, NQ, NQ))\n"
-       << "    dfq = d[..., NQ ** 3:NQ ** 3 + NQ * NQ].reshape(shape + (NQ, NQ))\n"
-       << "    dfv = d[..., NQ ** 3 + NQ * NQ:NQ ** 3 + 2 * NQ * NQ].reshape(shape + (NQ, NQ))\n"
-       << "    dfu = d[..., NQ ** 3 + 2 * NQ * NQ:].reshape(shape + (NQ, NU))\n"
-       << "    qdd = np.linalg.solve(mass, force[..., None])[..., 0]\n"
-       << "    # d(q'')/dy = M^-1 (dF/dy - (dM/dy) q''): dM/dq_k q'' as column k\n"
-       << "    dq = np.linalg.solve(mass, dfq - np.einsum(\"...kij,...j->...ik\", dmass, qdd))\n"
-       << "    dv = np.linalg.solve(mass, dfv)\n"
-       << "    dfdx = np.zeros(shape + (NX, NX))\n"
-       << "    dfdx[..., :NQ, NQ:] = np.eye(NQ)\n    dfdx[..., NQ:, :NQ] = dq\n    dfdx[..., NQ:, NQ:] = dv\n"
-       << "    dfdu = np.zeros(shape + (NX, NU))\n"
-       << "    if NU:\n        dfdu[..., NQ:, :] = np.linalg.solve(mass, dfu)\n"
-       << "    return dfdx, dfdu\n";
+           << "    \"\"\"dx/dt = f(t, x, u, p), shape (..., NX); numpy.linalg.LinAlgError where M is singular.\"\"\"\n"
+           << "    t, x, p, u, shape = _arguments(t, x, p, u)\n"
+           << "    both = _mass_and_forcing(t, x, p, u)\n"
+           << "    mass, force = both[..., :NQ * NQ].reshape(shape + (NQ, NQ)), both[..., NQ * NQ:]\n"
+           << "    qdd = np.linalg.solve(mass, force[..., None])[..., 0]\n"
+           << "    return np.concatenate([np.broadcast_to(np.asarray(x)[..., NQ:], shape + (NQ,)), qdd], axis=-1)\n\n\n";
+    if (!system.constraint_parts)
+        py << "def jacobian(t, x, p=None, u=None):\n"
+           << "    \"\"\"(df/dx of shape (..., NX, NX), df/du of shape (..., NX, NU)).\"\"\"\n"
+           << "    t, x, p, u, shape = _arguments(t, x, p, u)\n"
+           << "    both = _mass_and_forcing(t, x, p, u)\n"
+           << "    mass, force = both[..., :NQ * NQ].reshape(shape + (NQ, NQ)), both[..., NQ * NQ:]\n"
+           << "    d = _derivatives(t, x, p, u)\n"
+           << "    dmass = d[..., :NQ ** 3].reshape(shape + (NQ, NQ, NQ))\n"
+           << "    dfq = d[..., NQ ** 3:NQ ** 3 + NQ * NQ].reshape(shape + (NQ, NQ))\n"
+           << "    dfv = d[..., NQ ** 3 + NQ * NQ:NQ ** 3 + 2 * NQ * NQ].reshape(shape + (NQ, NQ))\n"
+           << "    dfu = d[..., NQ ** 3 + 2 * NQ * NQ:].reshape(shape + (NQ, NU))\n"
+           << "    qdd = np.linalg.solve(mass, force[..., None])[..., 0]\n"
+           << "    # d(q'')/dy = M^-1 (dF/dy - (dM/dy) q''): dM/dq_k q'' as column k\n"
+           << "    dq = np.linalg.solve(mass, dfq - np.einsum(\"...kij,...j->...ik\", dmass, qdd))\n"
+           << "    dv = np.linalg.solve(mass, dfv)\n"
+           << "    dfdx = np.zeros(shape + (NX, NX))\n"
+           << "    dfdx[..., :NQ, NQ:] = np.eye(NQ)\n    dfdx[..., NQ:, :NQ] = dq\n    dfdx[..., NQ:, NQ:] = dv\n"
+           << "    dfdu = np.zeros(shape + (NX, NU))\n"
+           << "    if NU:\n        dfdu[..., NQ:, :] = np.linalg.solve(mass, dfu)\n"
+           << "    return dfdx, dfdu\n";
     if (system.linear)
         py << "\n\n"
            << python_function("_linear", "The equilibrium's state, then T and V, flattened.", *system.linear, names,

@@ -5,7 +5,8 @@
  *  central differences of its own right-hand side to 1e-6; for the double pendulum, the
  *  heavy top, the damped driven oscillator (an input) and a 10-link chain; the exported
  *  equilibrium, T and V against `state_space`; the rolling coin's constrained export against
- *  simulate and the engine's multipliers. And bad input. */
+ *  simulate and the engine's multipliers; for trees of point masses, each target's rhs by the
+ *  articulated-body recursion against its own M and F solved (1e-12). And bad input. */
 #include "helpers/chain_scene.h"
 #include "helpers/cli_runner.h"
 #include "helpers/tools.h"
@@ -300,6 +301,176 @@ TEST_CASE("export: the Octave functions work with ode45 and reproduce simulate",
     }
 }
 
+namespace {
+
+/// Trees of point masses, whose exported rhs takes q'' from the articulated-body recursion: a
+/// 3-link chain, and a cart on a spring and a damper, pushed by an input, carrying a double
+/// pendulum; with their sizes, and the index of a parameter (a rod's length) that makes M
+/// singular at 0.
+struct tree_case {
+    std::string file, name;
+    int coordinates, inputs, singular;
+};
+
+std::vector<tree_case> tree_cases()
+{
+    static const std::string chain =
+        temporary_file("tree_chain.lag", chain_scene(3) + "values g = 9.81, m1 = 1.1, l1 = 0.9, m2 = 0.7, l2 = 1.3, "
+                                                          "m3 = 0.5, l3 = 0.6\n");
+    static const std::string cart = temporary_file(
+        "tree_cart.lag", "parameters mc m1 m2 l1 l2 g k b\ncoordinates x th1 th2\ninput F\n"
+                         "point C mass mc at (x, 0)\n"
+                         "point P1 mass m1 at (x + l1*sin(th1), -l1*cos(th1))\n"
+                         "point P2 mass m2 at (x + l1*sin(th1) + l2*sin(th2), -l1*cos(th1) - l2*cos(th2))\n"
+                         "gravity g along (0, -1)\nspring k between C and (0, 0)\ndamper b between C and (0, 0)\n"
+                         "force on C (F, 0)\n"
+                         "values mc = 1.5, m1 = 0.4, m2 = 0.3, l1 = 0.6, l2 = 0.5, g = 9.81, k = 20, b = 0.7\n");
+    return {{chain, "tree_chain", 3, 0, 4}, {cart, "tree_cart", 3, 1, 4}};
+}
+
+/// What every target's check prints: the largest difference of rhs's q'' from M q'' = F solved
+/// with the exported mass_matrix and forcing, relative to the largest q'', over random states,
+/// inputs and times in [-2, 2]; whether rhs's q' is x's; and whether rhs reports the singular
+/// M of a rod of length 0 (C: returns nonzero; Python: LinAlgError; Octave: a q'' not finite).
+void check_tree(const std::vector<double>& printed)
+{
+    REQUIRE(printed.size() == 3);
+    CHECK(printed[0] <= 1e-12);
+    CHECK(printed[1] == 1.0);
+    CHECK(printed[2] == 1.0);
+}
+
+} // namespace
+
+TEST_CASE("export: a tree's C rhs takes the recursion and agrees with M and F", "[export][cc]")
+{
+    for (const tree_case& c : tree_cases()) {
+        INFO(c.file);
+        const std::string folder = folder_for("c-" + c.name);
+        REQUIRE(run_cli("export " + c.file + " --to c -o " + folder).exit_code == 0);
+        CHECK(read_file(folder + "/" + c.name + ".c").find("articulated-body recursion") != std::string::npos);
+        std::ofstream(folder + "/tree.c") << replace_all(replace_all(R"(#include "NAME.h"
+#include <math.h>
+#include <stdio.h>
+static double uniform(unsigned long long *seed)
+{
+    *seed = *seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*seed >> 11) / 9007199254740992.0 * 4.0 - 2.0;
+}
+int main(void)
+{
+    double x[NAME_NX], dxdt[NAME_NX], M[NAME_NQ * NAME_NQ], F[NAME_NQ], u[NAME_NU + 1], p[NAME_NP], worst = 0.0;
+    unsigned long long seed = 2026;
+    int k, i, j, r, ok = 1;
+    for (i = 0; i < NAME_NP; ++i)
+        p[i] = NAME_default_p[i];
+    for (k = 0; k < 2000; ++k) {
+        const double t = uniform(&seed);
+        long double a[NAME_NQ][NAME_NQ + 1], q[NAME_NQ], largest = 0, difference = 0;
+        for (i = 0; i < NAME_NX; ++i)
+            x[i] = uniform(&seed);
+        for (i = 0; i < NAME_NU; ++i)
+            u[i] = uniform(&seed);
+        ok = ok && NAME_rhs(t, x, u, p, dxdt) == 0;
+        NAME_mass_matrix(t, x, u, p, M);
+        NAME_forcing(t, x, u, p, F);
+        /* M q'' = F by Gaussian elimination with partial pivoting, in long double */
+        for (i = 0; i < NAME_NQ; ++i) {
+            for (j = 0; j < NAME_NQ; ++j)
+                a[i][j] = M[i * NAME_NQ + j];
+            a[i][NAME_NQ] = F[i];
+        }
+        for (j = 0; j < NAME_NQ; ++j) {
+            int best = j;
+            for (i = j + 1; i < NAME_NQ; ++i)
+                if (fabsl(a[i][j]) > fabsl(a[best][j]))
+                    best = i;
+            for (r = 0; r <= NAME_NQ; ++r) {
+                const long double swap = a[j][r];
+                a[j][r] = a[best][r];
+                a[best][r] = swap;
+            }
+            for (i = j + 1; i < NAME_NQ; ++i)
+                for (r = NAME_NQ; r >= j; --r)
+                    a[i][r] -= a[i][j] / a[j][j] * a[j][r];
+        }
+        for (i = NAME_NQ - 1; i >= 0; --i) {
+            q[i] = a[i][NAME_NQ];
+            for (j = i + 1; j < NAME_NQ; ++j)
+                q[i] -= a[i][j] * q[j];
+            q[i] /= a[i][i];
+        }
+        for (i = 0; i < NAME_NQ; ++i) {
+            largest = fabsl(q[i]) > largest ? fabsl(q[i]) : largest;
+            difference = fabsl(dxdt[NAME_NQ + i] - q[i]) > difference ? fabsl(dxdt[NAME_NQ + i] - q[i]) : difference;
+            ok = ok && dxdt[i] == x[NAME_NQ + i];
+        }
+        worst = (double)(difference / largest) > worst ? (double)(difference / largest) : worst;
+    }
+    p[SINGULAR] = 0.0;
+    printf("%.17g %d %d\n", worst, ok, NAME_rhs(0.5, x, u, p, dxdt) != 0);
+    return 0;
+}
+)", "NAME", c.name), "SINGULAR", std::to_string(c.singular));
+        const std::string cc = configured_compiler();
+        check_tree(read_numbers(run_shell("cd " + folder + " && " + cc +
+                                          " -std=c99 -Wall -Wextra -pedantic -Werror -O2 -o tree tree.c " + c.name +
+                                          ".c -lm 2>&1 && ./tree")));
+    }
+}
+
+TEST_CASE("export: a tree's Python rhs takes the recursion and agrees with M and F", "[export][scipy]")
+{
+    for (const tree_case& c : tree_cases()) {
+        INFO(c.file);
+        const std::string folder = folder_for("py-" + c.name);
+        REQUIRE(run_cli("export " + c.file + " --to python -o " + folder).exit_code == 0);
+        std::ofstream(folder + "/check.py")
+            << "import sys\nsys.path.insert(0, " << nlohmann::json(folder).dump() << ")\n"
+            << "import numpy as np\nimport " << c.name << " as m\n"
+            << "assert 'articulated-body recursion' in m.__doc__\n"
+            << "rng = np.random.default_rng(2026)\nn = 2000\n"
+            << "t, x, u = rng.uniform(-2, 2, n), rng.uniform(-2, 2, (n, m.NX)), rng.uniform(-2, 2, (n, m.NU))\n"
+            << "p = np.broadcast_to(m.DEFAULTS, (n, m.NP))\n"
+            << "f = m.rhs(t, x, p, u)\n"
+            << "q = np.linalg.solve(m.mass_matrix(t, x, p, u), m.forcing(t, x, p, u)[..., None])[..., 0]\n"
+            << "worst = np.max(np.max(np.abs(f[:, m.NQ:] - q), axis=1) / np.max(np.abs(q), axis=1))\n"
+            // one state at a time (on Python floats) as in the batch
+            << "for j in range(50):\n"
+            << "    one = m.rhs(t[j], x[j], m.DEFAULTS, u[j])\n"
+            << "    worst = max(worst, np.max(np.abs(one[m.NQ:] - q[j])) / np.max(np.abs(q[j])))\n"
+            << "velocities = int(np.array_equal(f[:, :m.NQ], x[:, m.NQ:]))\n"
+            << "singular = m.DEFAULTS.copy()\nsingular[" << c.singular << "] = 0\nreported = 0\n"
+            << "for state in (x[0], x[:3]):\n"
+            << "    try:\n        m.rhs(0.5, state, singular, u[0])\n"
+            << "    except np.linalg.LinAlgError:\n        reported += 1\n"
+            << "print(repr(worst), velocities, int(reported == 2))\n";
+        check_tree(read_numbers(run_shell("/usr/bin/python3 -W ignore " + folder + "/check.py")));
+    }
+}
+
+TEST_CASE("export: a tree's Octave rhs takes the recursion and agrees with M and F", "[export][octave]")
+{
+    for (const tree_case& c : tree_cases()) {
+        INFO(c.file);
+        const std::string folder = folder_for("octave-" + c.name);
+        REQUIRE(run_cli("export " + c.file + " --to octave -o " + folder).exit_code == 0);
+        CHECK(read_file(folder + "/" + c.name + "_rhs.m").find("articulated-body recursion") != std::string::npos);
+        const std::string n = c.name;
+        std::ofstream(folder + "/check.m")
+            << "rand('state', 2026);\np = " << n << "_defaults();\nnq = " << c.coordinates << ";\nnu = " << c.inputs
+            << ";\nworst = 0;\nvelocities = 1;\n"
+            << "for k = 1:300\n  t = 4 * rand() - 2;\n  x = 4 * rand(2 * nq, 1) - 2;\n  u = 4 * rand(nu, 1) - 2;\n"
+            << "  f = " << n << "_rhs(t, x, p, u);\n"
+            << "  q = " << n << "_mass_matrix(t, x, p, u) \\ " << n << "_forcing(t, x, p, u);\n"
+            << "  worst = max(worst, max(abs(f(nq + 1:end) - q)) / max(abs(q)));\n"
+            << "  velocities = velocities && isequal(f(1:nq), x(nq + 1:end));\nend\n"
+            << "p(" << c.singular + 1 << ") = 0;\nf = " << n << "_rhs(0.5, x, p, u);\n"
+            << "printf('%.17g %d %d\\n', worst, velocities, any(~isfinite(f)));\n";
+        check_tree(read_numbers(run_shell("cd " + folder + " && octave-cli --no-gui --quiet check.m 2>&1")));
+    }
+}
+
 TEST_CASE("export: the C equilibrium, T and V give state_space's A and B", "[export][cc]")
 {
     for (const auto& [name, velocity_free] : linear_cases) {
@@ -590,11 +761,13 @@ TEST_CASE("export: the C sines and cosines are within 2 ulp of long double libm"
 {
     // The exported file's own lagrange_sincos (it is static: the check includes the .c file),
     // against sinl and cosl rounded to double, on arguments where reductions go wrong: next to
-    // multiples of pi/2, tiny, large, beyond the inlined range, and not finite.
+    // multiples of pi/2, tiny, large, beyond the inlined range, and not finite; and its
+    // lagrange_sincos2, two arguments at a time, against it bit for bit.
     const std::string folder = folder_for("c-sincos");
     REQUIRE(run_cli("export " + examples + "double_pendulum.lag --to c -o " + folder).exit_code == 0);
     std::ofstream(folder + "/sincos.c") << R"(#include "double_pendulum.c"
 #include <stdio.h>
+#include <string.h>
 static double ulps(double got, long double exact)
 {
     const double e = (double)exact;
@@ -604,11 +777,11 @@ static double ulps(double got, long double exact)
 }
 int main(void)
 {
-    double worst = 0.0, s, c;
+    double worst = 0.0, s, c, previous = 0.5, s2[2], c2[2];
     unsigned long long seed = 12345;
-    long i;
+    long i, differ = 0;
     for (i = 0; i < 4000000; ++i) {
-        double x, u;
+        double x, u, s1, c1;
         seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
         u = (double)(seed >> 11) / 9007199254740992.0 - 0.5;
         switch (i % 5) {
@@ -621,6 +794,14 @@ int main(void)
         lagrange_sincos(x, &s, &c);
         if (ulps(s, sinl((long double)x)) > worst) worst = ulps(s, sinl((long double)x));
         if (ulps(c, cosl((long double)x)) > worst) worst = ulps(c, cosl((long double)x));
+        /* two at a time: the same bits as one at a time */
+        if (i % 7 == 0) x = i % 2 ? -0.0 : (i % 3 ? NAN : INFINITY);
+        lagrange_sincos(x, &s, &c);
+        lagrange_sincos(previous, &s1, &c1);
+        lagrange_sincos2(x, previous, &s2[0], &c2[0], &s2[1], &c2[1]);
+        differ += memcmp(&s, &s2[0], sizeof s) != 0 || memcmp(&c, &c2[0], sizeof c) != 0 ||
+                  memcmp(&s1, &s2[1], sizeof s) != 0 || memcmp(&c1, &c2[1], sizeof c) != 0;
+        previous = x;
     }
     printf("%.3f", worst);
     lagrange_sincos(-0.0, &s, &c);
@@ -628,19 +809,21 @@ int main(void)
     lagrange_sincos(NAN, &s, &c);
     printf(" %d", isnan(s) && isnan(c));
     lagrange_sincos(INFINITY, &s, &c);
-    printf(" %d\n", isnan(s) && isnan(c));
+    printf(" %d", isnan(s) && isnan(c));
+    printf(" %ld\n", differ);
     return 0;
 }
 )";
     const std::string cc = configured_compiler();
     const std::vector<double> r = read_numbers(run_shell("cd " + folder + " && " + cc +
                                                           " -std=c99 -O2 -o sincos sincos.c -lm 2>&1 && ./sincos"));
-    REQUIRE(r.size() == 5);
+    REQUIRE(r.size() == 6);
     CHECK(r[0] <= 2.0);
     CHECK(r[1] == 1.0); // sin(-0) = -0
     CHECK(r[2] == 1.0); // cos(-0) = 1
     CHECK(r[3] == 1.0); // NaN in, NaN out
     CHECK(r[4] == 1.0); // and for an infinity
+    CHECK(r[5] == 0.0); // lagrange_sincos2 gives the bits of two lagrange_sincos calls
 
 }
 
