@@ -171,6 +171,11 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
         out.forcing = program(forcing);
         out.energy = program({equations.energy});
         out.derivatives = program(derivatives);
+        // The recursion with the parameters left symbols (`at` the identity), as the engine
+        // takes it from recursive_coordinates on (compiled_motion.cpp).
+        if (n >= recursive_coordinates)
+            if (std::optional<point_tree_recursion> tree = point_tree_accelerations(scene, equations))
+                out.recursion = expression_program(tree->definitions, tree->accelerations, symbols, parameters);
         if (!constraint_parts.empty()) {
             out.constraint_parts = program(constraint_parts);
             out.constraint_derivatives = program(constraint_derivatives);
@@ -178,16 +183,6 @@ exported_system export_system(const model& scene, const equations_of_motion& equ
     } catch (const std::invalid_argument& error) {
         throw computation_error(std::string("the equations of motion cannot be exported: ") + error.what());
     }
-    // The recursion with the parameters left symbols (`at` the identity), as the engine takes
-    // it from recursive_coordinates on (compiled_motion.cpp); rhs solves M q̈ = F without it.
-    if (n >= recursive_coordinates)
-        if (std::optional<point_tree_recursion> tree = point_tree_accelerations(scene, equations)) {
-            try {
-                out.recursion = expression_program(tree->definitions, tree->accelerations, symbols, parameters);
-            } catch (const std::invalid_argument&) {
-                // not compilable: the export goes without it, as without linear
-            }
-        }
     if (linearization)
         out.linear = linear_program(scene, *linearization, symbols);
     if (conserved) {
