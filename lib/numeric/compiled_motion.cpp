@@ -211,9 +211,9 @@ void compiled_motion::rhs(double t, const double* x, double* dxdt) const
             native_.rhs(symbols, dxdt);
         else
             recursive_program_.run(symbols, scratch_, dxdt);
-        for (std::size_t i = n_; i < 2 * n_; ++i)
-            if (!std::isfinite(dxdt[i])) // a zero pivot: M is singular here, its solve says so
-                solve(t, x, dxdt + n_);
+        // A zero pivot: M is singular here, and its solve says so.
+        if (std::any_of(dxdt + n_, dxdt + 2 * n_, [](double a) { return !std::isfinite(a); }))
+            solve(t, x, dxdt + n_);
     } else {
         std::copy(x + n_, x + 2 * n_, dxdt);
         solve(t, x, dxdt + n_);
