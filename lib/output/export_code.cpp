@@ -257,7 +257,7 @@ std::string provenance(const model& scene, const exported_system& system, const 
         << ".\n"
         << comment << "The equations of motion M(t, q, q', u, p) q'' = F(t, q, q', u, p), as x' = f(t, x, u, p).\n"
         << (system.recursion ? comment + "rhs takes q'' from the articulated-body recursion of the scene's tree of "
-                                         "point masses, in O(n)\n" +
+                                         "points and bodies, in O(n)\n" +
                                    comment + "steps without M; mass_matrix, forcing and jacobian are of M and F.\n"
             : system.constraint_parts ? std::string()
                                       : comment + "rhs solves M q'' = F for q''.\n")

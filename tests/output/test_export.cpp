@@ -303,9 +303,9 @@ TEST_CASE("export: the Octave functions work with ode45 and reproduce simulate",
 
 namespace {
 
-/// Trees of point masses, whose exported rhs takes q'' from the articulated-body recursion: a
-/// 3-link chain, and a cart on a spring and a damper, pushed by an input, carrying a double
-/// pendulum; with their sizes, and the index of a parameter (a rod's length) that makes M
+/// Trees of points and bodies, whose exported rhs takes q'' from the articulated-body recursion:
+/// a 3-link chain, a cart on a spring and a damper, pushed by an input, carrying a double
+/// pendulum, and a chain of three rods each turning with its own angle; with their sizes, and the index of a parameter (a rod's length) that makes M
 /// singular at 0.
 struct tree_case {
     std::string file, name;
@@ -325,7 +325,16 @@ std::vector<tree_case> tree_cases()
                          "gravity g along (0, -1)\nspring k between C and (0, 0)\ndamper b between C and (0, 0)\n"
                          "force on C (F, 0)\n"
                          "values mc = 1.5, m1 = 0.4, m2 = 0.3, l1 = 0.6, l2 = 0.5, g = 9.81, k = 20, b = 0.7\n");
-    return {{chain, "tree_chain", 3, 0, 4}, {cart, "tree_cart", 3, 1, 4}};
+    static const std::string rods = temporary_file(
+        "tree_rods.lag",
+        "parameters m l g\ncoordinates a b c\n"
+        "body A stick(l) mass m axis y at (l/2*sin(a), -l/2*cos(a), 0) orientation rotations(z a)\n"
+        "body B stick(l) mass m axis y at (l*sin(a) + l/2*sin(b), -l*cos(a) - l/2*cos(b), 0) "
+        "orientation rotations(z b)\n"
+        "body C stick(l) mass 2*m axis y at (l*sin(a) + l*sin(b) + l/2*sin(c), -l*cos(a) - l*cos(b) - l/2*cos(c), 0) "
+        "orientation rotations(z c)\n"
+        "gravity g along (0, -1, 0)\nvalues m = 1.1, l = 0.8, g = 9.81\n");
+    return {{chain, "tree_chain", 3, 0, 4}, {cart, "tree_cart", 3, 1, 4}, {rods, "tree_rods", 3, 0, 1}};
 }
 
 /// What every target's check prints: the largest difference of rhs's q'' from M q'' = F solved
