@@ -26,7 +26,8 @@ const std::set<std::string>& keywords(dialect d)
         "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum", "extern",
         "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return", "short",
         "signed", "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void", "volatile",
-        "while", "_Bool", "_Complex", "_Imaginary", "sin", "cos", "sqrt", "exp", "log", "pow", "fabs", "NAN",
+        "while", "_Bool", "_Complex", "_Imaginary", "sin", "cos", "sqrt", "exp", "log", "pow", "fabs", "sinh", "cosh",
+        "tanh", "asin", "acos", "atan", "NAN",
         "INFINITY", "HUGE_VAL", "isfinite", "main", "uint64_t", "lagrange_augmented", "lagrange_augmented_system",
         "lagrange_constraint_derivatives", "lagrange_constraint_parts", "lagrange_derivatives",
         "lagrange_factor", "lagrange_ipow", "lagrange_linear", "lagrange_lu_solve", "lagrange_mass_and_forcing",
@@ -232,6 +233,16 @@ std::vector<std::string> write_program(const expression_program& program, dialec
         case op::cosine: value = (d == dialect::python ? "np.cos(" : "cos(") + a + ")"; break;
         case op::exponential: value = (d == dialect::python ? "np.exp(" : "exp(") + a + ")"; break;
         case op::logarithm: value = (d == dialect::python ? "np.log(" : "log(") + a + ")"; break;
+        // C99's <math.h>, NumPy's (elementwise along the batch axes) and Octave's (elementwise)
+        case op::hyperbolic_sine: value = (d == dialect::python ? "np.sinh(" : "sinh(") + a + ")"; break;
+        case op::hyperbolic_cosine: value = (d == dialect::python ? "np.cosh(" : "cosh(") + a + ")"; break;
+        case op::hyperbolic_tangent: value = (d == dialect::python ? "np.tanh(" : "tanh(") + a + ")"; break;
+        case op::arcsine: value = (d == dialect::python ? "np.arcsin(" : "asin(") + a + ")"; break;
+        case op::arccosine: value = (d == dialect::python ? "np.arccos(" : "acos(") + a + ")"; break;
+        case op::arctangent: value = (d == dialect::python ? "np.arctan(" : "atan(") + a + ")"; break;
+        case op::absolute:
+            value = (d == dialect::python ? "np.abs(" : d == dialect::c ? "fabs(" : "abs(") + a + ")";
+            break;
         }
         slot[k] = names.temporary + std::to_string(k);
         lines << indent << declare << slot[k] << " = " << value << end;

@@ -223,6 +223,14 @@ std::vector<std::string> expression_program::c_units(const std::string& name, bo
         case op::cosine: c << "cos(" << a << ")"; break;
         case op::exponential: c << "exp(" << a << ")"; break;
         case op::logarithm: c << "log(" << a << ")"; break;
+        // libm's (<math.h>, C99); SLEEF stays for sines and cosines only
+        case op::hyperbolic_sine: c << "sinh(" << a << ")"; break;
+        case op::hyperbolic_cosine: c << "cosh(" << a << ")"; break;
+        case op::hyperbolic_tangent: c << "tanh(" << a << ")"; break;
+        case op::arcsine: c << "asin(" << a << ")"; break;
+        case op::arccosine: c << "acos(" << a << ")"; break;
+        case op::arctangent: c << "atan(" << a << ")"; break;
+        case op::absolute: c << "fabs(" << a << ")"; break;
         }
         c << ";\n";
         if (shared[k] >= 0)

@@ -241,6 +241,11 @@ private:
             throw std::invalid_argument("the power " + to_text(e) + " has no real numeric exponent");
         }
         if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 1) {
+            // the conjugate of a real is itself; of anything else, not a real function
+            if (is_ex_the_function(e, GiNaC::conjugate_function) && e.op(0).info(GiNaC::info_flags::real))
+                return slot(e.op(0));
+            if (is_ex_the_function(e, GiNaC::abs)) // exact in every arithmetic: stays algebraic
+                return unary(code::absolute, slot(e.op(0)));
             int argument = slot(e.op(0));
             algebraic_ = false;
             if (is_ex_the_function(e, GiNaC::sin))
@@ -254,6 +259,18 @@ private:
             if (is_ex_the_function(e, GiNaC::tan)) // tan u = sin u / cos u
                 return binary(code::mul, unary(code::sine, argument),
                               unary(code::recip, unary(code::cosine, argument)));
+            if (is_ex_the_function(e, GiNaC::sinh))
+                return unary(code::hyperbolic_sine, argument);
+            if (is_ex_the_function(e, GiNaC::cosh))
+                return unary(code::hyperbolic_cosine, argument);
+            if (is_ex_the_function(e, GiNaC::tanh))
+                return unary(code::hyperbolic_tangent, argument);
+            if (is_ex_the_function(e, GiNaC::asin))
+                return unary(code::arcsine, argument);
+            if (is_ex_the_function(e, GiNaC::acos))
+                return unary(code::arccosine, argument);
+            if (is_ex_the_function(e, GiNaC::atan))
+                return unary(code::arctangent, argument);
         }
         throw std::invalid_argument("cannot evaluate " + to_text(e) + " numerically");
     }
@@ -292,6 +309,13 @@ double sine(double a) { return std::sin(a); }
 double cosine(double a) { return std::cos(a); }
 double exponential(double a) { return std::exp(a); }
 double logarithm(double a) { return std::log(a); }
+double hyperbolic_sine(double a) { return std::sinh(a); }
+double hyperbolic_cosine(double a) { return std::cosh(a); }
+double hyperbolic_tangent(double a) { return std::tanh(a); }
+double arcsine(double a) { return std::asin(a); }
+double arccosine(double a) { return std::acos(a); }
+double arctangent(double a) { return std::atan(a); }
+double absolute(double a) { return std::fabs(a); }
 
 bounded_double add(bounded_double a, bounded_double b) { return running::add(a, b); }
 bounded_double mul(bounded_double a, bounded_double b) { return running::mul(a, b); }
@@ -317,6 +341,63 @@ bounded_double logarithm(bounded_double a)
     double e = a.error < m ? -std::log1p(-a.error / m) * 1.01 : infinity;
     return {v, e + 2 * unit_roundoff * std::abs(v) + unit_roundoff};
 }
+// The error of an argument x̂ ± e carried through f is at most e·max |f′| over the interval
+// (mean value theorem), times 1.01 for the roundings of that product; 0 where e is, NaN where
+// e is. libm's own rounding: glibc documents at most 2 ulps for sinh, cosh and tanh and 1 for
+// asin, acos and atan; twice that is allowed, an ulp being at most 2u·|value|.
+constexpr double hyperbolic_rounding = 8 * unit_roundoff, inverse_rounding = 4 * unit_roundoff;
+bounded_double hyperbolic_sine(bounded_double a)
+{
+    // |sinh′| = cosh, largest at the end of the interval farthest from 0
+    double v = std::sinh(a.value);
+    double e = a.error == 0 ? 0.0 : a.error * std::cosh(std::abs(a.value) + a.error) * 1.01;
+    return {v, e + hyperbolic_rounding * std::abs(v)};
+}
+bounded_double hyperbolic_cosine(bounded_double a)
+{
+    // |cosh′| = |sinh|, largest at the end of the interval farthest from 0
+    double v = std::cosh(a.value);
+    double e = a.error == 0 ? 0.0 : a.error * std::sinh(std::abs(a.value) + a.error) * 1.01;
+    return {v, e + hyperbolic_rounding * v};
+}
+/// The smallest |t| in [x̂ − e, x̂ + e]: where |tanh′| and |atan′|, which fall with |t|, are largest.
+double nearest_zero(bounded_double a) { return std::max(std::abs(a.value) - a.error, 0.0); }
+bounded_double hyperbolic_tangent(bounded_double a)
+{
+    // |tanh′| = 1/cosh², at most 1; and tanh lies in (−1, 1), so no error exceeds 2
+    double v = std::tanh(a.value), c = std::cosh(nearest_zero(a));
+    double e = a.error == 0 ? 0.0 : std::min(a.error / (c * c) * 1.01, 2.0);
+    return {v, e + hyperbolic_rounding * std::abs(v)};
+}
+bounded_double arctangent(bounded_double a)
+{
+    // |atan′| = 1/(1 + t²), at most 1; and atan lies in (−π/2, π/2)
+    double v = std::atan(a.value), d = nearest_zero(a);
+    double e = a.error == 0 ? 0.0 : std::min(a.error / (1 + d * d) * 1.01, 3.2);
+    return {v, e + inverse_rounding * std::abs(v)};
+}
+/// The error an argument's error makes in asin or acos, whose derivatives ±1/√(1 − t²) grow
+/// without bound towards ±1: e/√(1 − D²) with D = |x̂| + e rounded up, at most π (the width of
+/// their ranges); infinite where the interval reaches ±1, since the exact argument may lie
+/// beyond, where neither is real.
+double arcsine_propagated(bounded_double a)
+{
+    if (a.error == 0)
+        return 0.0;
+    double far = std::nextafter(std::abs(a.value) + a.error, infinity); // NaN for NaN
+    return far < 1 ? std::min(a.error / std::sqrt((1 - far) * (1 + far)) * 1.01, 3.2) : infinity;
+}
+bounded_double arcsine(bounded_double a)
+{
+    double v = std::asin(a.value);
+    return {v, arcsine_propagated(a) + inverse_rounding * std::abs(v)};
+}
+bounded_double arccosine(bounded_double a)
+{
+    double v = std::acos(a.value);
+    return {v, arcsine_propagated(a) + inverse_rounding * std::abs(v)};
+}
+bounded_double absolute(bounded_double a) { return {std::fabs(a.value), a.error}; } // ||x| − |x̂|| ≤ |x − x̂|
 
 double_double add(double_double a, double_double b) { return dd::add(a, b); }
 double_double mul(double_double a, double_double b) { return dd::mul(a, b); }
@@ -337,6 +418,42 @@ double_double exponential(double_double a)
     return dd::two_sum(v, v * a.lo);
 }
 double_double logarithm(double_double a) { return dd::two_sum(std::log(a.hi), a.lo / a.hi); }
+double_double hyperbolic_sine(double_double a) { return dd::two_sum(std::sinh(a.hi), std::cosh(a.hi) * a.lo); }
+double_double hyperbolic_cosine(double_double a) { return dd::two_sum(std::cosh(a.hi), std::sinh(a.hi) * a.lo); }
+double_double hyperbolic_tangent(double_double a)
+{
+    double t = std::tanh(a.hi);
+    return dd::two_sum(t, (1 - t) * (1 + t) * a.lo);
+}
+double_double arctangent(double_double a) { return dd::two_sum(std::atan(a.hi), a.lo / (1 + a.hi * a.hi)); }
+/// asin and acos in double-double. Below |hi| = 3/4 the first-order term. Beyond, where the
+/// derivatives grow without bound and the low part may be as large as a quarter of 1 − |hi|,
+/// from w = 1 − |x| (1 − |hi| is exact there, and two_sum takes the low part off exactly):
+/// acos |x| = 2 asin √(w/2), within a few u relative, and asin |x| = π/2 − acos |x|. An
+/// argument past ±1 by its low part alone (w < 0) is taken as ±1, the value the double run
+/// reads; past ±1 by its high part, NaN.
+constexpr double_double half_pi{0x1.921fb54442d18p0, 0x1.1a62633145c07p-54};
+double acos_of_magnitude(double_double a)
+{
+    const double_double w = dd::two_sum(1 - std::abs(a.hi), a.hi < 0 ? a.lo : -a.lo);
+    return 2 * std::asin(std::sqrt(std::max(w.hi + w.lo, 0.0) / 2));
+}
+double_double arcsine(double_double a)
+{
+    if (!(std::abs(a.hi) >= 0.75) || std::abs(a.hi) > 1)
+        return dd::two_sum(std::asin(a.hi), a.lo / std::sqrt((1 - a.hi) * (1 + a.hi)));
+    const double_double r = dd::add(half_pi, {-acos_of_magnitude(a), 0});
+    return a.hi < 0 ? dd::neg(r) : r;
+}
+double_double arccosine(double_double a)
+{
+    if (!(std::abs(a.hi) >= 0.75) || std::abs(a.hi) > 1)
+        return dd::two_sum(std::acos(a.hi), -a.lo / std::sqrt((1 - a.hi) * (1 + a.hi)));
+    const double r = acos_of_magnitude(a);
+    return a.hi < 0 ? dd::add(dd::add(half_pi, half_pi), {-r, 0}) : double_double{r, 0};
+}
+// exact: the double-double of |x|, keeping its ~32 digits
+double_double absolute(double_double a) { return {std::fabs(a.hi), a.hi < 0 ? -a.lo : a.lo}; }
 
 template <class number>
 number integer_power(number base, int exponent)
@@ -428,11 +545,20 @@ a_priori_bound bound_of(const instruction& i, const std::vector<a_priori_bound>&
             r = one_more_rounding(r);
         return {true, n % 2 == 0 ? 1 : a.sign, r};
     }
+    case op::absolute:
+        // |x(1 + θ)| = |x|(1 + θ): the same relative error
+        return a.known ? a_priori_bound{true, a.sign != 0 ? 1 : 0, a.relative} : unknown_bound();
     case op::real_power:
     case op::sine:
     case op::cosine:
     case op::exponential:
-    case op::logarithm: return unknown_bound();
+    case op::logarithm:
+    case op::hyperbolic_sine:
+    case op::hyperbolic_cosine:
+    case op::hyperbolic_tangent:
+    case op::arcsine:
+    case op::arccosine:
+    case op::arctangent: return unknown_bound();
     }
     return unknown_bound();
 }
@@ -462,7 +588,8 @@ double widest_safe_exponent(const std::vector<instruction>& code, const std::vec
         switch (i.op) {
         case op::constant: r.low = r.high = std::log2(std::abs(i.value)); break;
         case op::symbol: r.low_slope = r.high_slope = 1; break;
-        case op::neg: r = a; break;
+        case op::neg:
+        case op::absolute: r = a; break;
         case op::add: {
             // terms of one sign: at least either term, at most twice the larger
             const bool a_zero = bounds.at(static_cast<std::size_t>(i.first)).sign == 0;
@@ -532,6 +659,13 @@ void interpret(const std::vector<instruction>& code, const std::vector<int>& out
         case op::cosine: s[k] = cosine(s[i.first]); break;
         case op::exponential: s[k] = exponential(s[i.first]); break;
         case op::logarithm: s[k] = logarithm(s[i.first]); break;
+        case op::hyperbolic_sine: s[k] = hyperbolic_sine(s[i.first]); break;
+        case op::hyperbolic_cosine: s[k] = hyperbolic_cosine(s[i.first]); break;
+        case op::hyperbolic_tangent: s[k] = hyperbolic_tangent(s[i.first]); break;
+        case op::arcsine: s[k] = arcsine(s[i.first]); break;
+        case op::arccosine: s[k] = arccosine(s[i.first]); break;
+        case op::arctangent: s[k] = arctangent(s[i.first]); break;
+        case op::absolute: s[k] = absolute(s[i.first]); break;
         }
     }
     for (std::size_t k = 0; k < outputs.size(); ++k)
@@ -660,6 +794,23 @@ LAGRANGE_ALWAYS_INLINE inline void step_batch(const instruction& i, std::size_t 
     case op::cosine: for (std::size_t j = 0; j < B; ++j) put(j, cosine(A(j)), cosine(Ab(j))); break;
     case op::exponential: for (std::size_t j = 0; j < B; ++j) put(j, exponential(A(j)), exponential(Ab(j))); break;
     case op::logarithm: for (std::size_t j = 0; j < B; ++j) put(j, logarithm(A(j)), logarithm(Ab(j))); break;
+    case op::hyperbolic_sine:
+        for (std::size_t j = 0; j < B; ++j)
+            put(j, hyperbolic_sine(A(j)), hyperbolic_sine(Ab(j)));
+        break;
+    case op::hyperbolic_cosine:
+        for (std::size_t j = 0; j < B; ++j)
+            put(j, hyperbolic_cosine(A(j)), hyperbolic_cosine(Ab(j)));
+        break;
+    case op::hyperbolic_tangent:
+        for (std::size_t j = 0; j < B; ++j)
+            put(j, hyperbolic_tangent(A(j)), hyperbolic_tangent(Ab(j)));
+        break;
+    case op::arcsine: for (std::size_t j = 0; j < B; ++j) put(j, arcsine(A(j)), arcsine(Ab(j))); break;
+    case op::arccosine: for (std::size_t j = 0; j < B; ++j) put(j, arccosine(A(j)), arccosine(Ab(j))); break;
+    case op::arctangent: for (std::size_t j = 0; j < B; ++j) put(j, arctangent(A(j)), arctangent(Ab(j))); break;
+    // exact, and algebraic: vectorized as the steps above
+    case op::absolute: for (std::size_t j = 0; j < B; ++j) put(j, absolute(A(j)), absolute(Ab(j))); break;
     }
 }
 

@@ -20,7 +20,8 @@ namespace lagrange {
 /// One step of a program; operands are earlier slots.
 struct instruction {
     enum class code { constant, symbol, add, mul, neg, recip, square_root, integer_power, real_power,
-                      sine, cosine, exponential, logarithm };
+                      sine, cosine, exponential, logarithm, hyperbolic_sine, hyperbolic_cosine,
+                      hyperbolic_tangent, arcsine, arccosine, arctangent, absolute };
     code op = code::constant;
     int first = 0;          ///< operand slot (or symbol index)
     int second = 0;         ///< second operand slot, or the exponent of integer_power
@@ -31,9 +32,9 @@ struct instruction {
 
 /// What is known of a slot before it runs, where every symbol it reads is positive: its
 /// sign, and a bound on the relative error of its double-double value. Both are known for
-/// slots built from symbols and constants by +, ×, ÷, √ and integer powers without adding
-/// terms of opposite sign (subtraction-free: no cancellation, so every step only adds its
-/// own rounding). Each double-double step is taken to round within 2^-99 relative, eight
+/// slots built from symbols and constants by +, ×, ÷, √, integer powers and abs (exact)
+/// without adding terms of opposite sign (subtraction-free: no cancellation, so every step
+/// only adds its own rounding). Each double-double step is taken to round within 2^-99 relative, eight
 /// times the published bounds of these algorithms (at most 16u², Joldes–Muller–Popescu,
 /// ACM TOMS 44(2), 2017), and as long as no value under- or overflows (run_batch_a_priori
 /// checks that on every point).
@@ -56,7 +57,9 @@ LAGRANGE_ALWAYS_INLINE inline bool in_a_priori_range(double magnitude)
 }
 
 /// Compiled from `outputs`, a list of expressions in `symbols`; throws
-/// std::invalid_argument naming any other symbol or unsupported function. `invariant`
+/// std::invalid_argument naming any other symbol or unsupported function. The functions:
+/// sin cos tan exp log sinh cosh tanh asin acos atan abs, and the conjugate of an argument
+/// GiNaC knows to be real (the derivative of abs at a complex symbol has one). `invariant`
 /// names symbols that keep their value from one evaluation to the next (parameters given
 /// as arguments): a product's part in them alone is computed as one value, shared by every
 /// product with the same part, before the rest is multiplied on.
@@ -84,8 +87,8 @@ public:
     const std::vector<instruction>& code() const { return code_; }
     const std::vector<int>& output_slots() const { return outputs_; }
     std::size_t instruction_count() const { return code_.size(); }
-    /// Only + − × ÷, integer powers and square roots: double-double evaluation keeps
-    /// its ~32 digits and the bound scales with the unit roundoff.
+    /// Only + − × ÷, integer powers, square roots and absolute values: double-double
+    /// evaluation keeps its ~32 digits and the bound scales with the unit roundoff.
     bool algebraic() const { return algebraic_; }
 
     /// Whether the program takes any sine or cosine.

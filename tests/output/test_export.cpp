@@ -3,7 +3,8 @@
  *  `lagrange export`: the exported C, Python and Octave code reproduces `lagrange simulate`
  *  (at tolerance 1e-12) to 1e-8 relative over the same run, and its Jacobian agrees with
  *  central differences of its own right-hand side to 1e-6; for the double pendulum, the
- *  heavy top, the damped driven oscillator (an input) and a 10-link chain; the exported
+ *  heavy top, the damped driven oscillator (an input), a 10-link chain and a scene with
+ *  sinh, cosh, tanh, asin, acos, atan and abs; the exported
  *  equilibrium, T and V against `state_space`; the rolling coin's constrained export against
  *  simulate and the engine's multipliers; for trees of point masses, each target's rhs by the
  *  articulated-body recursion against its own M and F solved (1e-12). And bad input. */
@@ -46,11 +47,18 @@ std::vector<exported_case> cases()
         values += ", m" + std::to_string(k) + " = " + std::to_string(k) + ", l" + std::to_string(k) + " = 0.5";
     static const std::string chain =
         temporary_file("chain10.lag", chain_scene(10) + values + "\ninitial q1 = 0.3, q5 = -0.2\n");
+    // every function beyond sin, cos, tan, exp and log, in M, in F and in their derivatives
+    static const std::string functions = temporary_file(
+        "functions.lag", "parameters m k c g\ncoordinates x y\n"
+                         "T = 1/2*m*(2 + acos(tanh(y)))*x'^2 + 1/2*m*(1 + atan(x)^2 + sinh(x)*tanh(x))*y'^2\n"
+                         "V = k*(cosh(x) - 1) + g*asin(tanh(y))^2 + c*abs(y)^3\n"
+                         "values m = 1, k = 2, c = 0.5, g = 3\ninitial x = 0.4, y = -0.3, y' = 0.2\n");
     return {{examples + "double_pendulum.lag", 2, "", "", ""},
             {examples + "heavy_top.lag", 0.5, "", "", ""},
             {examples + "damped_driven_oscillator.lag", 3, "p[3] * cos(p[4] * t)", "[p[3] * np.cos(p[4] * t)]",
              "p(4) * cos(p(5) * t)"},
-            {chain, 0.5, "", "", ""}};
+            {chain, 0.5, "", "", ""},
+            {functions, 3, "", "", ""}};
 }
 
 /// `lagrange simulate` at tolerance 1e-12: the states at t = 0 and at the end, in state order.
@@ -656,6 +664,24 @@ TEST_CASE("export: bad input is refused with nothing written", "[export]")
     CHECK(body.err.find("has no coordinates") != std::string::npos);
     struct stat info {};
     CHECK(::stat((folder + "/d").c_str(), &info) != 0);
+}
+
+TEST_CASE("export: the functions C code calls are reserved, in names and as the NAME", "[export]")
+{
+    // abs is written fabs in C (sinh, asin and the others are scene functions, never names)
+    const std::string scene = temporary_file("reserved.lag", "parameters m fabs\ncoordinates x\n"
+                                                             "T = 1/2*m*x'^2\nV = fabs*abs(x)^3\n"
+                                                             "values m = 1, fabs = 2\n");
+    const std::string folder = folder_for("reserved");
+    REQUIRE(run_cli("export " + scene + " --to c -o " + folder + "/c").exit_code == 0);
+    const std::string text = read_file(folder + "/c/reserved.c");
+    CHECK(text.find("const double fabs_ = p[1];") != std::string::npos);
+    CHECK(text.find("fabs(x_)") != std::string::npos);
+    for (const char* reserved : {"fabs", "sinh", "cosh", "tanh", "asin", "acos", "atan"}) {
+        INFO(reserved);
+        CHECK(run_cli("export " + scene + " --to c --name " + reserved + " -o " + folder + "/" + reserved).exit_code ==
+              2);
+    }
 }
 
 TEST_CASE("export: names are the scene's, and a keyword is renamed as the header says", "[export]")

@@ -14,6 +14,7 @@
 #include <cln/cln.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <random>
@@ -27,7 +28,12 @@ using status = expression_program::a_priori_status;
 
 const cln::float_format_t digits60 = cln::float_format(60);
 
-cln::cl_F exact(double x) { return cln::cl_float(cln::rational(cln::cl_DF(x)), digits60); }
+cln::cl_F exact(double x)
+{
+    if (x != 0 && std::abs(x) < 0x1p-1000) // CLN's doubles have no subnormals: scaled up and back
+        return cln::scale_float(exact(std::ldexp(x, 200)), -200);
+    return cln::cl_float(cln::rational(cln::cl_DF(x)), digits60);
+}
 cln::cl_F exact(double_double x) { return exact(x.hi) + exact(x.lo); }
 
 /// |x − reference| / |reference|, in units of u² = 2^-106.
@@ -378,6 +384,287 @@ TEST_CASE("native code in parts: the same numbers as one function, with and with
             program.run(at.data(), scratch, interpreted.data());
             for (std::size_t k = 0; k < outputs.size(); ++k)
                 CHECK(std::abs(first[k] - interpreted[k]) <= 1e-12 * std::max(1.0, std::abs(interpreted[k])));
+        }
+    }
+}
+
+namespace {
+
+/// One of the functions beyond sin, cos, tan, exp and log: how to apply it, its hard spots
+/// (each also taken negative) and the largest magnitude of its random arguments.
+struct function_case {
+    const char* name;
+    GiNaC::ex (*apply)(const GiNaC::ex&);
+    std::vector<double> spots;
+    double largest;
+    bool near_one = false; ///< asin, acos: also random arguments 1 − 2^-k
+};
+
+std::vector<function_case> function_cases()
+{
+    const std::vector<double> hyperbolic = {0, 1e-300, 1e-10, 0.5, 1, 3, 19, 20, 40, 100, 700};
+    const std::vector<double> inverse = {0,   1e-300, 1e-10, 0.5, 0.9, 1 - 1e-6, 1 - 0x1p-26, 1 - 0x1p-40,
+                                         1 - 0x1p-52, 1 - 0x1p-53, 1};
+    return {{"sinh", [](const GiNaC::ex& a) -> GiNaC::ex { return GiNaC::sinh(a); }, hyperbolic, 700},
+            {"cosh", [](const GiNaC::ex& a) -> GiNaC::ex { return GiNaC::cosh(a); }, hyperbolic, 700},
+            {"tanh", [](const GiNaC::ex& a) -> GiNaC::ex { return GiNaC::tanh(a); }, hyperbolic, 700},
+            {"asin", [](const GiNaC::ex& a) -> GiNaC::ex { return GiNaC::asin(a); }, inverse, 1, true},
+            {"acos", [](const GiNaC::ex& a) -> GiNaC::ex { return GiNaC::acos(a); }, inverse, 1, true},
+            {"atan", [](const GiNaC::ex& a) -> GiNaC::ex { return GiNaC::atan(a); },
+             {0, 1e-300, 1e-10, 1, 1e8, 1e20, 1e300}, 1e300},
+            {"abs", [](const GiNaC::ex& a) -> GiNaC::ex { return GiNaC::abs(a); }, {0, 1e-300, 1.5, 1e300}, 1e300}};
+}
+
+/// Whether a running bound holds: |value − exact| ≤ error, nothing claimed by an infinite
+/// error, and a value that is not a number only with an infinite error.
+bool holds(lagrange::bounded_double b, const cln::cl_F& reference)
+{
+    if (b.error == HUGE_VAL)
+        return true;
+    if (!std::isfinite(b.value) || !std::isfinite(b.error))
+        return false;
+    return cln::abs(exact(b.value) - reference) <= exact(b.error);
+}
+
+bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+} // namespace
+
+TEST_CASE("hyperbolic, inverse trigonometric functions and abs: each arithmetic against 60 digits",
+          "[expression_program]")
+{
+    // f(x) at an exact argument, f(z·y) at a rounded one (y = 0.1, z = t/y: the product carries
+    // an error into f), and GiNaC's f′(x) and f″(x), which must compile too (x/|x| for abs),
+    // at hard spots (asin and acos at and next to ±1, tanh and atan far out, abs at ±0) and
+    // at random arguments. The double run and the bounded run's value are the same bits; the
+    // running bound contains the 60-digit value (or is infinite, as asin's and acos's must be
+    // where the argument's interval reaches ±1); double-double is within 8u relative of it
+    // for f itself, however ill-conditioned f is there (asin near 1), its argument being nearly exact;
+    // a batch gives the bits of one point's runs.
+    GiNaC::realsymbol x("x"), z("z"), y("y");
+    const std::vector<GiNaC::ex> symbols{x, z, y};
+    constexpr double y0 = 0.1, u = lagrange::unit_roundoff;
+    constexpr std::size_t B = expression_program::batch_size;
+    for (const function_case& f : function_cases()) {
+        INFO(f.name);
+        const GiNaC::ex fx = f.apply(x);
+        const std::vector<GiNaC::ex> outputs{fx, f.apply(z * y), fx.diff(x), fx.diff(x, 2)};
+        const expression_program p(outputs, symbols);
+        CHECK(p.algebraic() == (std::string(f.name) == "abs"));
+        std::vector<double> arguments;
+        for (double s : f.spots)
+            arguments.insert(arguments.end(), {s, -s});
+        std::mt19937 random(1234);
+        std::uniform_real_distribution<double> decade(-8, std::log10(f.largest)), bits(1, 53);
+        for (int k = 0; k < 300; ++k) {
+            const double magnitude = f.near_one && k % 2 ? 1 - std::exp2(-bits(random)) : std::pow(10.0, decade(random));
+            arguments.push_back(k % 3 ? magnitude : -magnitude);
+        }
+        std::vector<double> points;
+        for (double t : arguments)
+            points.insert(points.end(), {t, t / y0, y0});
+        double worst_ratio = 0; // error / bound
+        int infinite = 0;
+        std::vector<double> scratch, batch(outputs.size() * 4 * B), plain(outputs.size());
+        std::vector<lagrange::bounded_double> bounded_scratch, bounded(outputs.size());
+        std::vector<double_double> dd_scratch, dd(outputs.size());
+        for (std::size_t first = 0; first < arguments.size(); first += B) {
+            const std::size_t count = std::min(B, arguments.size() - first);
+            p.run_batch(&points[3 * first], 3, count, scratch, batch.data());
+            for (std::size_t j = 0; j < count; ++j) {
+                const double* at = &points[3 * (first + j)];
+                p.run(at, bounded_scratch, bounded.data());
+                p.run(at, dd_scratch, dd.data());
+                std::vector<double> plain_scratch;
+                p.run(at, plain_scratch, plain.data());
+                const cln::cl_RA product = cln::rational(cln::cl_DF(at[1])) * cln::rational(cln::cl_DF(at[2]));
+                // the double-double product z·y is exact short of under- and overflow (Dekker's
+                // splitting overflows, the FMA and Dekker low parts underflow differently)
+                const bool exact_product = at[0] == 0 || (std::abs(at[0]) > 1e-270 && std::abs(at[0]) < 1e290);
+                for (std::size_t k = 0; k < outputs.size(); ++k) {
+                    INFO("output " << k << " at x = " << at[0] << ", z·y = " << at[1] << "·" << at[2]);
+                    const bool dd_meant = (k != 1 || exact_product) && (k < 2 || std::abs(at[0]) < 1e30);
+                    const double* lane = &batch[k * 4 * B + j];
+                    if (dd_meant) {
+                        CHECK(same(lane[0], dd[k].hi));
+                        CHECK(same(lane[B], dd[k].lo));
+                    }
+                    CHECK(same(lane[2 * B], bounded[k].value));
+                    CHECK(same(lane[3 * B], bounded[k].error));
+                    CHECK(same(plain[k], bounded[k].value));
+                    if (k == 1 && f.near_one && cln::abs(product) > 1)
+                        continue; // the exact argument is outside the domain
+                    if (k >= 2 && ((f.near_one && std::abs(at[0]) == 1) || (std::string(f.name) == "abs" && at[0] == 0) ||
+                                   std::abs(at[0]) > 1e30))
+                        continue; // no derivative there (or running::recip squares past overflow)
+                    if (k >= 2 && std::isnan(bounded[k].error))
+                        continue; // 0·∞ in a product of the derivative's arithmetic: no bound claimed
+                    const cln::cl_F value = reference(outputs[k], symbols, {at[0], at[1], at[2]});
+                    INFO("double " << bounded[k].value << " ± " << bounded[k].error << ", exact "
+                                   << cln::double_approx(value));
+                    CHECK(holds(bounded[k], value));
+                    if (bounded[k].error == HUGE_VAL) {
+                        ++infinite;
+                        CHECK(f.near_one); // only where the derivative is unbounded
+                        CHECK(std::abs(at[0]) > 0.9); // z·y is about x
+                    } else if (holds(bounded[k], value) && bounded[k].error > 0) {
+                        const double error = cln::double_approx(cln::abs(exact(bounded[k].value) - value));
+                        worst_ratio = std::max(worst_ratio, error / bounded[k].error);
+                    }
+                    if (k == 0 && std::isfinite(bounded[k].value)) // f at an exact argument: only libm's rounding
+                        CHECK(bounded[k].error <= 8 * u * std::abs(bounded[k].value));
+                    if (k < 2 && dd_meant) { // double-double: double accuracy, whatever the conditioning
+                        const double relative =
+                            cln::zerop(value) ? std::abs(dd[k].hi) + std::abs(dd[k].lo)
+                                              : cln::double_approx(cln::abs((exact(dd[k]) - value) / value));
+                        CHECK(relative <= 8 * u);
+                    }
+                }
+            }
+        }
+        INFO("largest error / bound " << worst_ratio << ", infinite bounds " << infinite);
+        CHECK(worst_ratio > 0.01); // the bounds say something
+        if (f.near_one)
+            CHECK(infinite > 0); // f(z·y) with z·y rounded next to ±1
+    }
+}
+
+TEST_CASE("asin and acos at ±1 in double-double: the low part's square root, and no more than the domain",
+          "[expression_program]")
+{
+    // x + y with x = ±1 and y a low part toward 0: the first-order correction would be infinite;
+    // the value is about √(2|y|) off asin(±1). A low part away from 0 is taken as ±1.
+    GiNaC::realsymbol x("x"), y("y");
+    const std::vector<GiNaC::ex> symbols{x, y};
+    const std::vector<GiNaC::ex> outputs{GiNaC::asin(x + y), GiNaC::acos(x + y)};
+    const expression_program p(outputs, symbols);
+    std::vector<double_double> scratch, out(2);
+    std::vector<lagrange::bounded_double> bounded_scratch, bounded(2);
+    for (double one : {1.0, -1.0})
+        for (double low : {0x1p-54, 0x1p-60, 0x1p-80, 0x1p-100}) {
+            const std::vector<double> at{one, -one * low};
+            INFO("x = " << one << ", y = " << at[1]);
+            p.run(at.data(), scratch, out.data());
+            for (std::size_t k = 0; k < 2; ++k) {
+                const cln::cl_F value = reference(outputs[k], symbols, at);
+                const double relative = cln::double_approx(cln::abs((exact(out[k]) - value) / value));
+                CHECK(relative <= 4 * lagrange::unit_roundoff);
+            }
+            // the double x + y rounds to ±1: its interval reaches ±1, so no finite bound
+            p.run(at.data(), bounded_scratch, bounded.data());
+            CHECK(bounded[0].error == HUGE_VAL);
+            CHECK(bounded[1].error == HUGE_VAL);
+            const std::vector<double> beyond{one, one * low};
+            p.run(beyond.data(), scratch, out.data());
+            const std::vector<double> at_one{one, 0};
+            for (std::size_t k = 0; k < 2; ++k) {
+                const cln::cl_F value = reference(outputs[k], symbols, at_one);
+                if (cln::zerop(value)) {
+                    CHECK(out[k].hi == 0);
+                    CHECK(out[k].lo == 0);
+                } else {
+                    CHECK(cln::double_approx(cln::abs((exact(out[k]) - value) / value)) <= 4 * lagrange::unit_roundoff);
+                }
+            }
+        }
+}
+
+TEST_CASE("conjugate compiles where its argument is real, and csgn and complex conjugates do not",
+          "[expression_program]")
+{
+    GiNaC::realsymbol x("x");
+    GiNaC::symbol w("w"); // not known to be real
+    // d|w|/dw = (w + conj w)/(2|w|) for a complex symbol: refused, as before, with the function named
+    const GiNaC::ex complex_derivative = GiNaC::abs(w).diff(w);
+    REQUIRE(complex_derivative.has(GiNaC::conjugate_function(w)));
+    try {
+        expression_program({complex_derivative}, {w});
+        FAIL("compiled");
+    } catch (const std::invalid_argument& e) {
+        CHECK(std::string(e.what()).find("cannot evaluate conjugate(w) numerically") != std::string::npos);
+    }
+    CHECK_THROWS_AS(expression_program({GiNaC::csgn(x)}, {x}), std::invalid_argument);
+    // conj of a real expression held unevaluated is the expression
+    const GiNaC::ex held = GiNaC::conjugate_function(GiNaC::sin(x) + 1).hold();
+    REQUIRE(GiNaC::is_a<GiNaC::function>(held));
+    const expression_program p({held, GiNaC::abs(x).diff(x)}, {x});
+    std::vector<double> scratch, out(2);
+    const double at = -0.75;
+    p.run(&at, scratch, out.data());
+    CHECK(out[0] == std::sin(-0.75) + 1);
+    CHECK(out[1] == -1); // x/|x|
+}
+
+TEST_CASE("a priori bounds: abs keeps the bound of its argument, the other new functions have none",
+          "[expression_program]")
+{
+    // real symbols, so that GiNaC keeps |−ab − 1| (it drops abs of what it knows to be positive);
+    // the a priori analysis takes every symbol positive
+    GiNaC::realsymbol a("a"), b("b");
+    const std::vector<GiNaC::ex> symbols{a, b};
+    const std::vector<GiNaC::ex> outputs{GiNaC::abs(-a * b - 1) * (a + b), GiNaC::abs(a - b), GiNaC::sinh(a),
+                                         GiNaC::cosh(a), GiNaC::tanh(a), GiNaC::asin(1 / (a + 1)),
+                                         GiNaC::acos(1 / (a + 1)), GiNaC::atan(a)};
+    const expression_program p(outputs, symbols);
+    REQUIRE(std::any_of(p.code().begin(), p.code().end(),
+                        [](const lagrange::instruction& i) { return i.op == lagrange::instruction::code::absolute; }));
+    const a_priori_bound& absolute = p.output_bound(0);
+    REQUIRE(absolute.known);
+    CHECK(absolute.sign == 1);
+    CHECK(absolute.relative > 0);
+    CHECK(absolute.relative < 1e-28);
+    CHECK_FALSE(p.output_bound(1).known); // a difference inside
+    for (std::size_t k = 2; k < outputs.size(); ++k)
+        CHECK_FALSE(p.output_bound(k).known);
+    // and the bound holds, in a batch over 2^-30…2^30
+    const expression_program q({outputs[0]}, symbols);
+    constexpr std::size_t B = expression_program::batch_size;
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> exponent(-30, 30);
+    std::vector<double> points(2 * B), scratch;
+    for (double& v : points)
+        v = std::exp2(exponent(random));
+    const double* rows[1];
+    std::vector<status> statuses(B);
+    q.run_batch_a_priori(points.data(), 2, B, scratch, rows, statuses.data());
+    for (std::size_t j = 0; j < B; ++j) {
+        REQUIRE(statuses[j] == status::holds);
+        const double_double value{rows[0][j], rows[0][B + j]};
+        const double error =
+            error_in_u2(value, reference(outputs[0], symbols, {points[2 * j], points[2 * j + 1]})) * 0x1p-106;
+        CHECK(error <= q.output_bound(0).relative);
+    }
+}
+
+TEST_CASE("native code: the hyperbolic and inverse trigonometric functions and abs are libm's, as interpreted",
+          "[expression_program][native][cc]")
+{
+    GiNaC::realsymbol x("x"), y("y");
+    const std::vector<GiNaC::ex> symbols{x, y};
+    std::vector<GiNaC::ex> outputs;
+    for (const function_case& f : function_cases()) {
+        const GiNaC::ex argument = f.near_one ? x * y / 16 : x * y; // no sine: no SLEEF
+        outputs.push_back(f.apply(argument));
+        outputs.push_back(f.apply(argument).diff(x));
+    }
+    const expression_program program(outputs, symbols);
+    const std::string source = program.c_source("p");
+    for (const char* call : {"sinh(", "cosh(", "tanh(", "asin(", "acos(", "atan(", "fabs("})
+        CHECK(source.find(call) != std::string::npos);
+    std::string why;
+    std::shared_ptr<lagrange::native_module> module = lagrange::native_module::compile({&program}, {}, &why);
+    INFO(why);
+    REQUIRE(module);
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> value(-4, 4);
+    std::vector<double> out(outputs.size()), interpreted(outputs.size()), scratch;
+    for (int point = 0; point < 500; ++point) {
+        const std::vector<double> at{value(random), point % 7 == 0 ? 0.0 : value(random)};
+        module->get(0)(at.data(), out.data());
+        program.run(at.data(), scratch, interpreted.data());
+        for (std::size_t k = 0; k < outputs.size(); ++k) {
+            INFO("output " << k << " at " << at[0] << ", " << at[1]);
+            CHECK(same(out[k], interpreted[k])); // the same calls, no contraction: the same bits
         }
     }
 }
