@@ -622,11 +622,13 @@ void run_stage(stage_context& context, const stage_definition& stage, const budg
     if (stage.id == stage_id::simulation && context.result.simulation &&
         context.result.simulation->integration_runs > 0) {
         const simulation_result& s = *context.result.simulation;
-        context.result.stages.back().parts = {
-            {"preparation (equations compiled or loaded, linearization)", s.preparation_seconds},
-            {"integration (" + std::to_string(s.integration_runs) + (s.integration_runs == 1 ? " run" : " runs") +
-                 ": the run reported, reference runs and reruns)",
-             s.integration_seconds}};
+        auto& parts = context.result.stages.back().parts;
+        parts = {{"preparation (equations compiled or loaded, linearization)", s.preparation_seconds}};
+        if (s.jacobian_seconds > 0)
+            parts.push_back({"Jacobian compiled or loaded (the implicit method's)", s.jacobian_seconds});
+        parts.push_back({"integration (" + std::to_string(s.integration_runs) +
+                             (s.integration_runs == 1 ? " run" : " runs") + ": the run reported, reference runs and reruns)",
+                         s.integration_seconds});
     }
 }
 

@@ -314,9 +314,12 @@ simulation_result run_simulation(const model& scene, prepared_motion& prepared, 
     // iteration: compiled then too. The explicit ones never do, so their run waits only for
     // the right-hand side's compile.
     const bool implicit = method == ode_method::bdf || method == ode_method::implicit_midpoint;
-    if (implicit && prepared.motion && prepared.motion->native())
+    if (implicit && prepared.motion && prepared.motion->native()) {
+        const auto started = std::chrono::steady_clock::now();
         if (std::string why; !prepared.motion->compile_native_jacobian(native_limits{settings.compile_seconds}, &why))
             result.evaluation = "native right-hand side, interpreted Jacobian: " + why;
+        result.jacobian_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    }
 
     integration_options options;
     options.until = until;

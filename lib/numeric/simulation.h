@@ -104,6 +104,7 @@ struct simulation_result {
     /// linearization that picks the method; and every integration (the run reported, its
     /// reference runs and reruns), added up. 0 runs: not measured (constrained scenes).
     double preparation_seconds = 0;
+    double jacobian_seconds = 0; ///< the Jacobian compiled or loaded, for an implicit method (0: not)
     double integration_seconds = 0;
     std::size_t integration_runs = 0;
 };

@@ -83,6 +83,24 @@ TEST_CASE("document: timings split the simulation into preparation and integrati
         CHECK(timings[t.stage] == t.seconds);
 }
 
+
+TEST_CASE("document: timings show the Jacobian's compile of an implicit method", "[document][cc]")
+{
+    model scene = load("parameters m l g\ncoordinates theta\npoint P mass m at (l*sin(theta), -l*cos(theta))\n"
+                       "gravity g along (0, -1)\nvalues m = 1, l = 1, g = 9.81\ninitial theta = 0.5\n"
+                       "simulate until 2 method bdf\n");
+    analysis a = analyze(scene, {product::simulation});
+    REQUIRE(a.simulation);
+    const simulation_result& s = *a.simulation;
+    CHECK(s.jacobian_seconds > 0);
+    auto stage = std::find_if(a.stages.begin(), a.stages.end(),
+                              [](const stage_time& t) { return t.stage == "simulation"; });
+    REQUIRE(stage != a.stages.end());
+    REQUIRE(stage->parts.size() == 3);
+    CHECK(stage->parts[1].first.find("Jacobian") != std::string::npos);
+    CHECK(stage->parts[1].second == s.jacobian_seconds);
+    CHECK(s.preparation_seconds + s.jacobian_seconds + s.integration_seconds <= stage->seconds);
+}
 TEST_CASE("document: text shows dots over velocities and Greek letters", "[document]")
 {
     model scene = load(pendulum);
