@@ -301,6 +301,8 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
             rest -= dot(a.axis, load);
         }
         u_vector[j] = recursion.define(coupling);
+        if (pivot.is_zero()) // displacements whose derivatives cancel: M is singular everywhere
+            return std::nullopt;
         inverse_pivot[j] = recursion.define(1 / recursion.define(pivot));
         rest_force[j] = recursion.define(rest);
         if (!parent[j])

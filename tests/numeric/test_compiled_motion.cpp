@@ -5,6 +5,7 @@
  *  recursion by hand, at random states. */
 #include "engine/analysis.h"
 #include "numeric/compiled_motion.h"
+#include "numeric/point_tree.h"
 #include "numeric/values.h"
 #include "helpers/chain_recursion.h"
 #include "helpers/scene_helpers.h"
@@ -296,6 +297,21 @@ gravity g along (0, -1, 0)
 values m = 1, l = 1, g = 9.81
 )",
                         false);
+    }
+    SECTION("a displacement that does not move keeps the expanded form")
+    {
+        // sin(c)² + cos(c)² is 1: R never moves with c, and M is singular.
+        lagrange::model scene = load(R"(parameters m l g
+coordinates a b c
+point P mass m at (l*sin(a), -l*cos(a))
+point Q mass m at (l*sin(a) + l*sin(b), -l*cos(a) - l*cos(b))
+point R mass m at (l*sin(a) + l*sin(b) + sin(c)^2 + cos(c)^2, -l*cos(a) - l*cos(b))
+gravity g along (0, -1)
+values m = 1, l = 1, g = 9.81
+)");
+        REQUIRE(scene.points[2].position[0].has(scene.coordinates[2].position)); // as written
+        lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
+        CHECK_FALSE(lagrange::point_tree_accelerations(scene, *a.equations).has_value());
     }
     SECTION("a massless node keeps the expanded form")
     {
