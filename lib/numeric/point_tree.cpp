@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <string>
 
 namespace lagrange {
@@ -101,6 +102,7 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
         std::map<std::size_t, vector> displacement; ///< by coordinate
         std::vector<std::size_t> set;               ///< the coordinates it moves with
         GiNaC::ex rotational = 0;
+        std::vector<std::size_t> turns_with;        ///< the coordinates in `rotational`
     };
     std::vector<item> items;
     GiNaC::ex gravity = 0; // the items' part of V, which the root's acceleration stands for
@@ -108,7 +110,7 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
         const auto moves = displacements(position, scene);
         if (!moves || position.size() != 3)
             return false;
-        item i{mass, *moves, {}, 0};
+        item i{mass, *moves, {}, 0, {}};
         for (const auto& entry : *moves)
             i.set.push_back(entry.first);
         items.push_back(i);
@@ -134,8 +136,10 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
                            .expand();
         for (std::size_t j = 0; j < n; ++j)
             if (i.rotational.has(scene.coordinates[j].position) || i.rotational.has(scene.coordinates[j].velocity))
-                if (std::find(i.set.begin(), i.set.end(), j) == i.set.end())
-                    i.set.insert(std::upper_bound(i.set.begin(), i.set.end(), j), j);
+                i.turns_with.push_back(j);
+        std::vector<std::size_t> both;
+        std::set_union(i.set.begin(), i.set.end(), i.turns_with.begin(), i.turns_with.end(), std::back_inserter(both));
+        i.set = both;
         if (i.rotational.has(scene.time))
             return std::nullopt;
     }
@@ -206,10 +210,8 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
         });
         if (*path[node] != i.set)
             return std::nullopt;
-        for (std::size_t j = 0; j < n; ++j)
-            if (j != node && (i.rotational.has(scene.coordinates[j].position) ||
-                              i.rotational.has(scene.coordinates[j].velocity)))
-                return std::nullopt; // turns with another coordinate than the one it hangs at
+        if (std::any_of(i.turns_with.begin(), i.turns_with.end(), [&](std::size_t j) { return j != node; }))
+            return std::nullopt; // turns with another coordinate than the one it hangs at
         attachments[node][attach(node, displacement_of(i, node))].mass += at(i.mass);
         rotational[node] += i.rotational;
         // Along its path, each coordinate's subtree hangs at one attachment of its parent.
@@ -247,7 +249,7 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
 
     const GiNaC::ex rest_of_potential = (equations.potential - gravity).expand();
     steps recursion;
-    std::vector<GiNaC::ex> force(n);
+    std::vector<GiNaC::ex> force(n), turning(n); // τ_j, and k of the bodies turning with q_j
     for (std::size_t j = 0; j < n; ++j) {
         const coordinate& c = scene.coordinates[j];
         for (attachment& a : attachments[j]) {
@@ -266,7 +268,7 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
         }
         // A rotation ½ k(q) q̇² adds k q̈ + ½ k′ q̇² to the coordinate's equation.
         const GiNaC::ex k = rotational[j].diff(c.velocity, 2);
-        rotational[j] = recursion.define(k);
+        turning[j] = recursion.define(k);
         force[j] = at(equations.forces.total[j] - differentiate(rest_of_potential, c.position)) -
                    differentiate(k, c.position) * GiNaC::pow(c.velocity, 2) / 2;
     }
@@ -279,7 +281,7 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
         const std::size_t j = *it;
         vector coupling(3, 0), carried(3, 0);
         std::vector<vector> total(3, vector(3, 0));
-        GiNaC::ex pivot = rotational[j], rest = force[j];
+        GiNaC::ex pivot = turning[j], rest = force[j];
         for (attachment& a : attachments[j]) {
             for (std::size_t r = 0; r < 3; ++r)
                 for (std::size_t k = r; k < 3; ++k)
@@ -327,6 +329,10 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
         for (std::size_t r = 0; r < 3; ++r)
             root[r] = -at(scene.gravity->strength * scene.gravity->direction[r]);
     std::vector<std::vector<vector>> acceleration(n); // of each attachment that carries a child
+    std::set<std::pair<std::size_t, std::size_t>> carrying; // (coordinate, attachment)
+    for (std::size_t j = 0; j < n; ++j)
+        if (parent[j])
+            carrying.insert({*parent[j], *hangs_at[j]});
     point_tree_recursion result;
     result.accelerations.resize(n);
     for (std::size_t j : order) {
@@ -335,12 +341,9 @@ std::optional<point_tree_recursion> point_tree_accelerations(const model& scene,
         result.accelerations[j] = q2;
         acceleration[j].resize(attachments[j].size());
         for (std::size_t a = 0; a < attachments[j].size(); ++a) {
-            const attachment& at_a = attachments[j][a];
-            bool carries_child = false;
-            for (std::size_t i = 0; i < n; ++i)
-                carries_child = carries_child || (parent[i] == j && hangs_at[i] == a);
-            if (!carries_child)
+            if (!carrying.count({j, a}))
                 continue;
+            const attachment& at_a = attachments[j][a];
             vector next(3);
             for (std::size_t r = 0; r < 3; ++r)
                 next[r] = base[r] + at_a.bias_acceleration[r] + at_a.axis[r] * q2;
