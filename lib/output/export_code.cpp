@@ -113,10 +113,10 @@ std::vector<bool> live_instructions(const expression_program& program)
     for (int s : program.output_slots())
         live[static_cast<std::size_t>(s)] = true;
     for (std::size_t k = code.size(); k-- > 0;) {
-        if (!live[k] || code[k].op == op::constant || code[k].op == op::symbol)
+        if (!live[k] || !reads_first_slot(code[k].op))
             continue;
         live[static_cast<std::size_t>(code[k].first)] = true;
-        if (code[k].op == op::add || code[k].op == op::mul)
+        if (reads_second_slot(code[k].op))
             live[static_cast<std::size_t>(code[k].second)] = true;
     }
     return live;
@@ -208,7 +208,7 @@ std::vector<std::string> write_program(const expression_program& program, dialec
             continue;
         }
         const std::string a = i.op == op::constant || i.op == op::symbol ? "" : slot[static_cast<std::size_t>(i.first)];
-        const std::string b = i.op == op::add || i.op == op::mul ? slot[static_cast<std::size_t>(i.second)] : "";
+        const std::string b = reads_second_slot(i.op) ? slot[static_cast<std::size_t>(i.second)] : "";
         std::string value;
         switch (i.op) {
         case op::constant: slot[k] = i.value < 0 ? "(" + float_decimal(i.value) + ")" : float_decimal(i.value); continue;

@@ -83,13 +83,10 @@ std::vector<std::string> expression_program::c_units(const std::string& name, bo
         for (std::size_t k = 0; k < code_.size(); ++k) {
             const instruction& i = code_[k];
             int d = 0;
-            switch (i.op) {
-            case op::constant:
-            case op::symbol: break;
-            case op::add:
-            case op::mul: d = std::max(depth[static_cast<std::size_t>(i.first)], depth[static_cast<std::size_t>(i.second)]); break;
-            default: d = depth[static_cast<std::size_t>(i.first)]; break; // unary (integer_power: second is its exponent)
-            }
+            if (reads_first_slot(i.op))
+                d = depth[static_cast<std::size_t>(i.first)];
+            if (reads_second_slot(i.op))
+                d = std::max(d, depth[static_cast<std::size_t>(i.second)]);
             depth[k] = d + (sine_or_cosine(i) ? 1 : 0);
             deepest = std::max(deepest, depth[k]);
         }
@@ -177,13 +174,10 @@ std::vector<std::string> expression_program::c_units(const std::string& name, bo
     };
     auto operands = [&](std::size_t k, auto&& visit) {
         const instruction& i = code_[k];
-        switch (i.op) {
-        case op::constant:
-        case op::symbol: break;
-        case op::add:
-        case op::mul: visit(i.first); visit(i.second); break;
-        default: visit(i.first); break;
-        }
+        if (reads_first_slot(i.op))
+            visit(i.first);
+        if (reads_second_slot(i.op))
+            visit(i.second);
     };
     if (split)
         for (std::size_t k = 0; k < order.size(); ++k) {
@@ -204,7 +198,7 @@ std::vector<std::string> expression_program::c_units(const std::string& name, bo
     auto emit = [&](std::size_t k, std::size_t part) {
         const instruction& i = code_[k];
         c << "    const double v" << k << " = ";
-        const std::string a = name_of(i.first, part), b = i.op == op::add || i.op == op::mul ? name_of(i.second, part) : "";
+        const std::string a = name_of(i.first, part), b = reads_second_slot(i.op) ? name_of(i.second, part) : "";
         switch (i.op) {
         case op::constant:
             c << hexadecimal(i.value);

@@ -482,14 +482,6 @@ double one_more_rounding(double r) { return up(r + double_double_step + r * doub
 
 a_priori_bound unknown_bound() { return {}; }
 
-/// Whether the instruction's `first` (and `second`) are slots, rather than a symbol's index,
-/// an exponent or nothing.
-bool reads_first_slot(instruction::code op)
-{
-    return op != instruction::code::constant && op != instruction::code::symbol;
-}
-bool reads_second_slot(instruction::code op) { return op == instruction::code::add || op == instruction::code::mul; }
-
 a_priori_bound bound_of(const instruction& i, const std::vector<a_priori_bound>& slots)
 {
     using op = instruction::code;

@@ -30,6 +30,17 @@ struct instruction {
     double value_error = 0; ///< constant: |exact − value|
 };
 
+/// Whether an instruction's `first` (and `second`) are slots, rather than a symbol's index,
+/// an exponent (integer_power's second) or nothing: what every reader of a program follows.
+inline bool reads_first_slot(instruction::code op)
+{
+    return op != instruction::code::constant && op != instruction::code::symbol;
+}
+inline bool reads_second_slot(instruction::code op)
+{
+    return op == instruction::code::add || op == instruction::code::mul;
+}
+
 /// What is known of a slot before it runs, where every symbol it reads is positive: its
 /// sign, and a bound on the relative error of its double-double value. Both are known for
 /// slots built from symbols and constants by +, ×, ÷, √, integer powers and abs (exact)
