@@ -428,26 +428,26 @@ std::vector<exported_file> export_c(const model& scene, const exported_system& s
         c << constrained_functions(system, names, name, args);
     } else {
         c << "int " << name << "_rhs" << args << ", double *dxdt)\n{\n";
-        if (system.recursion) // O(n), as the engine from recursive_coordinates on; the stores last: dxdt may be x
+        if (system.recursion) { // O(n), as the engine from recursive_coordinates on; the stores last: dxdt may be x
             c << "    double qdd[" << nq << "];\n    int i;\n" << c_body(*system.recursion, names, system, "qdd")
               << "    for (i = 0; i < " << nq << "; ++i)\n        if (!isfinite(qdd[i]))\n            return 1;\n"
               << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
               << "        dxdt[" << nq << " + i] = qdd[i];\n    }\n    return 0;\n}\n\n";
-        else if (n == 2) // Cramer's rule, as the engine solves two coordinates
+        } else {
             c << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
-              << "    lagrange_mass_and_forcing(t, x, u, p, m);\n"
-              << "    {\n        const double det = m[0] * m[3] - m[1] * m[1];\n"
-              << "        if (!(m[0] > 0.0 && det > 0.0))\n            return 1;\n"
-              << "        dxdt[2] = (m[3] * m[4] - m[1] * m[5]) / det;\n"
-              << "        dxdt[3] = (m[0] * m[5] - m[1] * m[4]) / det;\n    }\n"
-              << "    dxdt[0] = x[2];\n    dxdt[1] = x[3];\n    (void)i;\n    return 0;\n}\n\n";
-        else
-            c << "    double m[" << nq << " * " << nq << " + " << nq << "];\n    int i;\n"
-              << "    lagrange_mass_and_forcing(t, x, u, p, m);\n"
-              << "    if (lagrange_factor(m))\n        return 1;\n"
-              << "    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
-              << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
-              << "        dxdt[" << nq << " + i] = m[" << nq << " * " << nq << " + i];\n    }\n    return 0;\n}\n\n";
+              << "    lagrange_mass_and_forcing(t, x, u, p, m);\n";
+            if (n == 2) // Cramer's rule, as the engine solves two coordinates
+                c << "    {\n        const double det = m[0] * m[3] - m[1] * m[1];\n"
+                  << "        if (!(m[0] > 0.0 && det > 0.0))\n            return 1;\n"
+                  << "        dxdt[2] = (m[3] * m[4] - m[1] * m[5]) / det;\n"
+                  << "        dxdt[3] = (m[0] * m[5] - m[1] * m[4]) / det;\n    }\n"
+                  << "    dxdt[0] = x[2];\n    dxdt[1] = x[3];\n    (void)i;\n    return 0;\n}\n\n";
+            else
+                c << "    if (lagrange_factor(m))\n        return 1;\n"
+                  << "    lagrange_solve(m, m + " << nq << " * " << nq << ");\n"
+                  << "    for (i = 0; i < " << nq << "; ++i) {\n        dxdt[i] = x[" << nq << " + i];\n"
+                  << "        dxdt[" << nq << " + i] = m[" << nq << " * " << nq << " + i];\n    }\n    return 0;\n}\n\n";
+        }
         c << "int " << name << "_jacobian" << args << ", double *dfdx, double *dfdu)\n{\n"
           << "    /* d(q'')/dy = M^-1 (dF/dy - (dM/dy) q''), y each coordinate, velocity and input. */\n"
           << "    double m[" << nq << " * " << nq << " + " << nq << "], column[" << nq << "];\n"
