@@ -88,19 +88,24 @@ struct point_rhs {
         for (std::size_t i = 0; i < 2 * N; ++i)
             symbols[i] = x[i];
         symbols[2 * N] = t;
-        if (recursive) {
-            evaluate(native_rhs, *rhs_program, dxdt);
-            for (std::size_t i = N; i < 2 * N; ++i)
-                if (!std::isfinite(dxdt[i])) [[unlikely]] // a zero pivot: M is singular
-                    singular(t, x, 2 * N);
-            return;
-        }
+        if (recursive)
+            return by_recursion(t, x, dxdt, N);
         double* outputs = work->outputs.data();
         evaluate(native_rhs, *rhs_program, outputs);
         for (std::size_t i = 0; i < N; ++i)
             dxdt[i] = x[N + i];
         if (!solve_mass_matrix(outputs, N, work->factor.data(), dxdt + N)) [[unlikely]]
             singular(t, x, 2 * N);
+    }
+
+    /// The recursion's program writes dxdt (the symbols set); a q̈ not finite is a zero pivot,
+    /// where M is singular.
+    [[gnu::always_inline]] void by_recursion(double t, const double* x, double* dxdt, std::size_t coordinates) const
+    {
+        evaluate(native_rhs, *rhs_program, dxdt);
+        for (std::size_t i = coordinates; i < 2 * coordinates; ++i)
+            if (!std::isfinite(dxdt[i])) [[unlikely]]
+                singular(t, x, 2 * coordinates);
     }
 
     [[noreturn, gnu::noinline]] static void singular(double t, const double* x, std::size_t size)
@@ -113,13 +118,8 @@ struct point_rhs {
         double* symbols = work->symbols.data();
         std::copy(x, x + 2 * n, symbols);
         symbols[2 * n] = t;
-        if (recursive) {
-            evaluate(native_rhs, *rhs_program, dxdt);
-            for (std::size_t i = n; i < 2 * n; ++i)
-                if (!std::isfinite(dxdt[i]))
-                    singular(t, x, 2 * n);
-            return;
-        }
+        if (recursive)
+            return by_recursion(t, x, dxdt, n);
         evaluate(native_rhs, *rhs_program, work->outputs.data());
         std::copy(x + n, x + 2 * n, dxdt);
         if (!solve_mass_matrix(work->outputs.data(), n, work->factor.data(), dxdt + n, tangents > 0))
