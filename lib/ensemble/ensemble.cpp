@@ -8,7 +8,6 @@
 #include "numeric/dop853.h"
 #include "numeric/floquet.h"
 #include "numeric/mass_matrix.h"
-#include "numeric/point_tree.h"
 #include "numeric/values.h"
 
 #include <Eigen/Eigenvalues>
@@ -365,16 +364,6 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
     const bool tangents = definition.tangents != measure_definition::tangent_vectors::none;
     if (tangents)
         jacobian_outputs = motion_jacobian(scene, motion);
-    std::optional<point_tree_recursion> recursion;
-    if (!tangents && n_ >= recursive_coordinates)
-        recursion = point_tree_accelerations(scene, equations,
-                                             [&](const GiNaC::ex& e) { return at_values(e, scene, values); });
-    recursive_ = recursion.has_value();
-    if (recursion) {
-        rhs_outputs.assign(symbols.begin() + static_cast<std::ptrdiff_t>(n_),
-                           symbols.begin() + static_cast<std::ptrdiff_t>(2 * n_));
-        rhs_outputs.insert(rhs_outputs.end(), recursion->accelerations.begin(), recursion->accelerations.end());
-    }
     // The scene's initial state (zeros where not given), possibly in the gridded parameters.
     for (int part = 0; part < 2; ++part)
         for (const coordinate& c : scene.coordinates) {
@@ -390,8 +379,11 @@ ensemble_problem::ensemble_problem(const model& scene, const equations_of_motion
     if (definition.one_period)
         floquet_setup(scene, equations, time, values, parameter_symbols, initial_outputs);
     try {
-        rhs_program_ = recursion ? expression_program(recursion->definitions, rhs_outputs, symbols)
-                                 : expression_program(rhs_outputs, symbols);
+        std::optional<expression_program> rates;
+        if (!tangents && n_ >= recursive_coordinates)
+            rates = recursive_rates(scene, equations, values, symbols);
+        recursive_ = rates.has_value();
+        rhs_program_ = rates ? std::move(*rates) : expression_program(rhs_outputs, symbols);
         jacobian_program_ = expression_program(jacobian_outputs, symbols);
         initial_program_ = expression_program(initial_outputs, parameter_symbols);
     } catch (const std::invalid_argument& error) {

@@ -104,11 +104,6 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
         for (GiNaC::ex& e : rhs_outputs)
             e = expand_angle_sums(e);
     const std::vector<GiNaC::ex> jacobian_outputs = motion_jacobian(scene, motion);
-    std::optional<point_tree_recursion> recursion;
-    if (form == motion_form::recursive || (form == motion_form::automatic && n_ >= recursive_coordinates))
-        recursion = point_tree_accelerations(scene, equations,
-                                             [&](const GiNaC::ex& e) { return at_values(e, scene, values); });
-    recursive_ = recursion.has_value();
 
     const GiNaC::ex energy = at_values(equations.energy, scene, values);
     // A cyclic coordinate (L holds its velocity, not itself) conserves its momentum.
@@ -135,12 +130,11 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
 
     try {
         rhs_program_ = expression_program(rhs_outputs, symbols);
-        if (recursion) {
-            std::vector<GiNaC::ex> derivatives(symbols.begin() + static_cast<std::ptrdiff_t>(n_),
-                                               symbols.begin() + static_cast<std::ptrdiff_t>(2 * n_));
-            derivatives.insert(derivatives.end(), recursion->accelerations.begin(), recursion->accelerations.end());
-            recursive_program_ = expression_program(recursion->definitions, derivatives, symbols);
-        }
+        if (form == motion_form::recursive || (form == motion_form::automatic && n_ >= recursive_coordinates))
+            if (std::optional<expression_program> rates = recursive_rates(scene, equations, values, symbols)) {
+                recursive_program_ = std::move(*rates);
+                recursive_ = true;
+            }
         jacobian_program_ = expression_program(jacobian_outputs, symbols);
         energy_program_ = expression_program({energy}, symbols);
         momentum_program_ = expression_program(cyclic_momenta, symbols);
@@ -157,6 +151,20 @@ compiled_motion::compiled_motion(const model& scene, const equations_of_motion& 
     // M q̈ = f stays in use (the tests require the recursion where the scene is a tree).
     if (recursive_ && !recursion_agrees(recursive_program_, rhs_program_, n_))
         recursive_ = false;
+}
+
+std::optional<expression_program> recursive_rates(const model& scene, const equations_of_motion& equations,
+                                                  const std::map<std::string, GiNaC::ex>& values,
+                                                  const std::vector<GiNaC::ex>& symbols)
+{
+    const std::optional<point_tree_recursion> tree =
+        point_tree_accelerations(scene, equations, [&](const GiNaC::ex& e) { return at_values(e, scene, values); });
+    if (!tree)
+        return std::nullopt;
+    const auto n = static_cast<std::ptrdiff_t>(scene.coordinates.size());
+    std::vector<GiNaC::ex> rates(symbols.begin() + n, symbols.begin() + 2 * n);
+    rates.insert(rates.end(), tree->accelerations.begin(), tree->accelerations.end());
+    return expression_program(tree->definitions, rates, symbols);
 }
 
 bool recursion_agrees(const expression_program& recursion, const expression_program& mass_and_force, std::size_t n)

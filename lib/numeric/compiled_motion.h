@@ -17,6 +17,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -110,6 +111,13 @@ private:
     native_rhs native_;
     mutable std::vector<double> scratch_, symbols_, outputs_, factor_, jacobian_outputs_;
 };
+
+/// The program of (q̇, q̈) by the articulated-body recursion (numeric/point_tree.h) at `values`,
+/// reading `symbols` (q, q̇ first, then t and whatever `values` leaves symbols), or nothing
+/// when the scene is no such tree; throws std::invalid_argument as expression_program does.
+std::optional<expression_program> recursive_rates(const model& scene, const equations_of_motion& equations,
+                                                  const std::map<std::string, GiNaC::ex>& values,
+                                                  const std::vector<GiNaC::ex>& symbols);
 
 /// Whether `recursion` (writing q̇ then q̈) gives the q̈ of M q̈ = f from `mass_and_force` (M
 /// row-major, then f) at three fixed states, to 1e-8 of the largest; both read (q, q̇, t). States
