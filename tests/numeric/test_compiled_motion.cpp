@@ -33,6 +33,16 @@ double relative_difference(const std::vector<double>& a, const std::vector<doubl
     return gap / size;
 }
 
+/// The chain of chain_scene.h with masses[k] and lengths[k] on link k + 1, under g = 9.81.
+std::string chain_with(const std::vector<double>& masses, const std::vector<double>& lengths)
+{
+    std::string values = "values g = 9.81";
+    for (std::size_t k = 0; k < masses.size(); ++k)
+        values += ", m" + std::to_string(k + 1) + " = " + std::to_string(masses[k]) + ", l" + std::to_string(k + 1) +
+                  " = " + std::to_string(lengths[k]);
+    return lagrange_test::chain_scene(static_cast<int>(masses.size())) + values + "\n";
+}
+
 } // namespace
 
 TEST_CASE("compiled_motion: single angles agree with the expanded form and the hand recursion", "[compiled_motion]")
@@ -40,14 +50,11 @@ TEST_CASE("compiled_motion: single angles agree with the expanded form and the h
     for (int links : {2, 5, 8}) {
         INFO(links << " links");
         std::vector<double> masses, lengths;
-        std::string values = "values g = 9.81";
         for (int k = 1; k <= links; ++k) {
             masses.push_back(0.5 + 0.25 * k);
             lengths.push_back(1.5 - 0.125 * k);
-            values += ", m" + std::to_string(k) + " = " + std::to_string(masses.back()) + ", l" + std::to_string(k) +
-                      " = " + std::to_string(lengths.back());
         }
-        lagrange::model scene = load(lagrange_test::chain_scene(links) + values + "\n");
+        lagrange::model scene = load(chain_with(masses, lengths));
         lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
         const auto point = lagrange::first_value_point(scene);
         lagrange::compiled_motion expanded(scene, *a.equations, point, lagrange::motion_form::expanded);
@@ -80,14 +87,11 @@ TEST_CASE("compiled_motion: native code in parts gives the numbers of one functi
     // (the same operations in the same order: equal to the bit) and the hand recursion.
     const int links = 8;
     std::vector<double> masses, lengths;
-    std::string values = "values g = 9.81";
     for (int k = 1; k <= links; ++k) {
         masses.push_back(1 + 0.1 * k);
         lengths.push_back(1 - 0.01 * k);
-        values += ", m" + std::to_string(k) + " = " + std::to_string(masses.back()) + ", l" + std::to_string(k) +
-                  " = " + std::to_string(lengths.back());
     }
-    lagrange::model scene = load(lagrange_test::chain_scene(links) + values + "\n");
+    lagrange::model scene = load(chain_with(masses, lengths));
     lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
     const auto point = lagrange::first_value_point(scene);
     lagrange::compiled_motion in_parts(scene, *a.equations, point), whole(scene, *a.equations, point);
@@ -180,14 +184,11 @@ TEST_CASE("compiled_motion: the recursion agrees with the expanded form", "[comp
     {
         for (int links : {2, 3, 6, 13, 20}) {
             std::vector<double> masses, lengths;
-            std::string values = "values g = 9.81";
             for (int k = 1; k <= links; ++k) {
                 masses.push_back(1 + 0.1 * k);
                 lengths.push_back(1 - 0.01 * k);
-                values += ", m" + std::to_string(k) + " = " + std::to_string(masses.back()) + ", l" +
-                          std::to_string(k) + " = " + std::to_string(lengths.back());
             }
-            const std::string text = lagrange_test::chain_scene(links) + values + "\n";
+            const std::string text = chain_with(masses, lengths);
             check_recursion(text, true);
             lagrange::model scene = load(text);
             lagrange::analysis a = lagrange::analyze(scene, {lagrange::product::equations});
